@@ -1,0 +1,189 @@
+/* semsplat io: the files robotics users already have and the ones we write.
+ *   COLMAP models (binary and text: cameras, images, points3D), splat PLY (3DGS / gsplat layout
+ *   plus f_sem_* features), PNG/JPEG images, .npy arrays, safetensors (mmap), JSON (cJSON).
+ * Readers validate counts against the file size before allocating, reject NaN where a value must
+ * be finite, and name the file and record at fault. Writers write to a temporary name and rename.
+ * Every struct filled by a reader owns its memory; free it with the matching *_free(). */
+#ifndef SEMSPLAT_IO_H
+#define SEMSPLAT_IO_H
+
+#include "semsplat/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- COLMAP ----------------------------------------------------------------------------------- */
+
+/* COLMAP camera model ids (src/colmap/sensor/models.h). Models we read but do not undistort are
+ * kept with their parameters; sp_colmap_camera_to_sp rejects them with a clear message. */
+typedef enum {
+    SP_COLMAP_SIMPLE_PINHOLE = 0, /* f cx cy */
+    SP_COLMAP_PINHOLE = 1,        /* fx fy cx cy */
+    SP_COLMAP_SIMPLE_RADIAL = 2,  /* f cx cy k */
+    SP_COLMAP_RADIAL = 3,         /* f cx cy k1 k2 */
+    SP_COLMAP_OPENCV = 4,         /* fx fy cx cy k1 k2 p1 p2 */
+    SP_COLMAP_OPENCV_FISHEYE = 5,
+    SP_COLMAP_FULL_OPENCV = 6,
+    SP_COLMAP_FOV = 7,
+    SP_COLMAP_SIMPLE_RADIAL_FISHEYE = 8,
+    SP_COLMAP_RADIAL_FISHEYE = 9,
+    SP_COLMAP_THIN_PRISM_FISHEYE = 10
+} sp_colmap_model_id;
+
+const char *sp_colmap_model_name(int model);  /* "PINHOLE", ... or NULL */
+int sp_colmap_model_from_name(const char *name); /* id, or -1 */
+int sp_colmap_model_num_params(int model);    /* or -1 */
+
+typedef struct sp_colmap_camera {
+    uint32_t id;
+    int model;
+    uint64_t width, height;
+    int n_params;
+    double params[16];
+} sp_colmap_camera;
+
+typedef struct sp_colmap_image {
+    uint32_t id;
+    double qvec[4]; /* world-to-camera rotation (w, x, y, z) */
+    double tvec[3]; /* world-to-camera translation */
+    uint32_t camera_id;
+    char *name;
+    size_t n_points2d;
+    double *xys;           /* [n_points2d][2] */
+    int64_t *point3d_ids;  /* [n_points2d], -1 = none */
+} sp_colmap_image;
+
+typedef struct sp_colmap_point {
+    uint64_t id;
+    double xyz[3];
+    uint8_t rgb[3];
+    double error;
+    size_t track_len;
+    uint32_t *track; /* [track_len][2]: image_id, point2d_idx */
+} sp_colmap_point;
+
+typedef struct sp_colmap_model {
+    size_t n_cameras, n_images, n_points;
+    sp_colmap_camera *cameras;
+    sp_colmap_image *images;
+    sp_colmap_point *points;
+} sp_colmap_model;
+
+/* Reads a model folder holding cameras/images/points3D as .bin (preferred) or .txt. `dir` may be
+ * the folder itself or a capture root holding sparse/0/ or sparse/. */
+int sp_colmap_read(const char *dir, sp_colmap_model *m, sp_error *err);
+int sp_colmap_read_bin(const char *dir, sp_colmap_model *m, sp_error *err);
+int sp_colmap_read_txt(const char *dir, sp_colmap_model *m, sp_error *err);
+int sp_colmap_write_bin(const char *dir, const sp_colmap_model *m, sp_error *err);
+int sp_colmap_write_txt(const char *dir, const sp_colmap_model *m, sp_error *err);
+void sp_colmap_free(sp_colmap_model *m);
+/* Resolves `dir` (capture root or model folder) to the folder holding the model files. */
+int sp_colmap_find_model_dir(const char *dir, char *out, size_t cap, sp_error *err);
+
+const sp_colmap_camera *sp_colmap_find_camera(const sp_colmap_model *m, uint32_t id);
+/* Fills a pinhole sp_camera (intrinsics and world-to-camera pose) for image index i. Radial /
+ * OpenCV distortion is carried in cam->distortion; other models fail with SP_E_UNSUPPORTED. */
+int sp_colmap_image_camera(const sp_colmap_model *m, size_t i, sp_camera *cam, sp_error *err);
+
+/* ---- splat PLY -------------------------------------------------------------------------------- */
+
+/* Reads a binary little-endian or ascii PLY in the 3DGS/gsplat layout: x y z [nx ny nz]
+ * f_dc_0..2 f_rest_0..(3(K-1)-1) opacity scale_0..2 rot_0..3 [f_sem_0..d-1]; SH degree inferred
+ * from the f_rest count (0, 9, 24, 45). Any property order, float or double properties. */
+int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err);
+/* Writes binary little-endian in the same layout (f_sem_* when s->feat_dim > 0), atomically. */
+int sp_ply_write_splat(const char *path, const sp_splat *s, sp_error *err);
+
+/* ---- images ----------------------------------------------------------------------------------- */
+
+typedef struct sp_image {
+    int width, height, channels; /* channels 1..4 */
+    int bit_depth;               /* 8 or 16 */
+    void *data;                  /* [H][W][C] uint8_t or uint16_t */
+} sp_image;
+
+/* PNG or JPEG by content (not extension). 8-bit output unless the PNG is 16-bit. */
+int sp_image_read(const char *path, sp_image *img, sp_error *err);
+int sp_image_write_png(const char *path, const sp_image *img, sp_error *err);
+int sp_image_write_jpeg(const char *path, const sp_image *img, int quality, sp_error *err);
+void sp_image_free(sp_image *img);
+/* Float [H][W][3] RGB in [0,1] from an 8/16-bit image (grey expanded, alpha dropped). */
+int sp_image_to_rgbf(const sp_image *img, float **rgb, sp_error *err);
+/* Writes a float [H][W][C] image in [0,1] (clamped) as 8-bit PNG, C in 1..4. */
+int sp_write_png_f32(const char *path, const float *data, int width, int height, int channels,
+                     sp_error *err);
+
+/* ---- .npy ------------------------------------------------------------------------------------- */
+
+typedef enum {
+    SP_DTYPE_F32 = 0,
+    SP_DTYPE_F16,
+    SP_DTYPE_U8,
+    SP_DTYPE_I32,
+    SP_DTYPE_U16,
+    SP_DTYPE_F64,
+    SP_DTYPE_I64,
+    SP_DTYPE_BF16
+} sp_dtype;
+
+size_t sp_dtype_size(sp_dtype t);
+
+typedef struct sp_npy {
+    sp_dtype dtype;
+    int ndim;
+    size_t shape[8];
+    void *data; /* C order */
+} sp_npy;
+
+/* Reads .npy version 1/2/3, little-endian, C or Fortran order (Fortran is transposed to C). */
+int sp_npy_read(const char *path, sp_npy *a, sp_error *err);
+/* Writes C-order little-endian .npy atomically; dtype F32, F16, U8, I32, U16, F64, I64. */
+int sp_npy_write(const char *path, sp_dtype dtype, int ndim, const size_t *shape, const void *data,
+                 sp_error *err);
+size_t sp_npy_count(const sp_npy *a);
+/* Converts any numeric dtype to a new float32 buffer (caller frees with free()). */
+int sp_npy_to_f32(const sp_npy *a, float **out, sp_error *err);
+void sp_npy_free(sp_npy *a);
+
+float sp_half_to_float(uint16_t h);
+uint16_t sp_float_to_half(float f);
+float sp_bf16_to_float(uint16_t h);
+
+/* ---- safetensors ------------------------------------------------------------------------------ */
+
+typedef struct sp_tensor_info {
+    char name[256];
+    sp_dtype dtype;
+    int ndim;
+    size_t shape[8];
+    const void *data; /* into the mapping */
+    size_t nbytes;
+} sp_tensor_info;
+
+typedef struct sp_safetensors {
+    void *map;
+    size_t map_size;
+    size_t n;
+    sp_tensor_info *tensors;
+} sp_safetensors;
+
+/* mmaps the file, parses the JSON header, checks every tensor's offsets and sizes. */
+int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err);
+void sp_safetensors_close(sp_safetensors *st);
+const sp_tensor_info *sp_safetensors_find(const sp_safetensors *st, const char *name);
+/* Writes tensors (host data) as a safetensors file atomically. */
+int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t n, sp_error *err);
+
+/* ---- JSON (cJSON) ----------------------------------------------------------------------------- */
+
+struct cJSON;
+/* Parses a file; errors name the file, line and column. */
+int sp_json_read_file(const char *path, struct cJSON **out, sp_error *err);
+/* Pretty-prints to path atomically. */
+int sp_json_write_file(const char *path, const struct cJSON *json, sp_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

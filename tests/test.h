@@ -1,0 +1,101 @@
+/* A minimal test harness: CHECK macros that count failures, SKIP for missing hardware.
+ * Each test_*.c is one executable; main() calls RUN(test_fn) for each case and returns
+ * TEST_EXIT(). Exit code 77 means skipped (CTest SKIP_RETURN_CODE). */
+#ifndef SEMSPLAT_TEST_H
+#define SEMSPLAT_TEST_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int t_failures = 0, t_checks = 0, t_cases = 0, t_case_failed = 0;
+
+#define CHECK(cond)                                                                    \
+    do {                                                                               \
+        t_checks++;                                                                    \
+        if (!(cond)) {                                                                 \
+            t_failures++;                                                              \
+            t_case_failed = 1;                                                         \
+            fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond);  \
+        }                                                                              \
+    } while (0)
+
+#define CHECK_MSG(cond, ...)                                                           \
+    do {                                                                               \
+        t_checks++;                                                                    \
+        if (!(cond)) {                                                                 \
+            t_failures++;                                                              \
+            t_case_failed = 1;                                                         \
+            fprintf(stderr, "%s:%d: CHECK failed: %s: ", __FILE__, __LINE__, #cond);   \
+            fprintf(stderr, __VA_ARGS__);                                              \
+            fprintf(stderr, "\n");                                                     \
+        }                                                                              \
+    } while (0)
+
+#define CHECK_NEAR(a, b, tol)                                                          \
+    do {                                                                               \
+        double t_a = (double)(a), t_b = (double)(b);                                   \
+        CHECK_MSG(fabs(t_a - t_b) <= (tol), "%s = %.9g, %s = %.9g, tol %g", #a, t_a,   \
+                  #b, t_b, (double)(tol));                                             \
+    } while (0)
+
+/* Checks that an sp_* call succeeded, printing the error message otherwise. */
+#define CHECK_OK(call, errp)                                                           \
+    do {                                                                               \
+        int t_rc = (call);                                                             \
+        CHECK_MSG(t_rc == 0, "%s returned %d: %s", #call, t_rc, (errp)->msg);          \
+    } while (0)
+
+/* Checks that a call failed with `code` and that the message mentions `needle`. */
+#define CHECK_FAILS(call, code, errp, needle)                                          \
+    do {                                                                               \
+        int t_rc = (call);                                                             \
+        CHECK_MSG(t_rc == (code), "%s returned %d, expected %d (%s)", #call, t_rc,     \
+                  (int)(code), (errp)->msg);                                           \
+        CHECK_MSG(strstr((errp)->msg, (needle)) != NULL,                               \
+                  "message '%s' does not mention '%s'", (errp)->msg, (needle));        \
+    } while (0)
+
+#define RUN(fn)                                                                        \
+    do {                                                                               \
+        t_case_failed = 0;                                                             \
+        t_cases++;                                                                     \
+        fn();                                                                          \
+        fprintf(stderr, "%s %s\n", t_case_failed ? "FAIL" : "ok  ", #fn);              \
+    } while (0)
+
+#define TEST_EXIT()                                                                    \
+    (fprintf(stderr, "%d cases, %d checks, %d failed\n", t_cases, t_checks,            \
+             t_failures),                                                              \
+     t_failures ? 1 : 0)
+
+#define TEST_SKIP(why)                                                                 \
+    do {                                                                               \
+        fprintf(stderr, "SKIP: %s\n", why);                                            \
+        exit(77);                                                                      \
+    } while (0)
+
+/* A scratch directory under the build tree for a test's files. */
+static inline const char *test_tmpdir(const char *name)
+{
+    static char buf[1024];
+    snprintf(buf, sizeof buf, "%s/test-tmp/%s", SP_BUILD_DIR, name);
+    char cmd[1200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", buf, buf);
+    if (system(cmd) != 0) fprintf(stderr, "cannot make %s\n", buf);
+    return buf;
+}
+
+/* Deterministic random numbers (xorshift64*), independent of libc. */
+typedef struct { unsigned long long s; } test_rng;
+static inline double test_uniform(test_rng *r)
+{
+    r->s ^= r->s >> 12;
+    r->s ^= r->s << 25;
+    r->s ^= r->s >> 27;
+    return (double)((r->s * 2685821657736338717ULL) >> 11) * (1.0 / 9007199254740992.0);
+}
+static inline double test_range(test_rng *r, double lo, double hi) { return lo + (hi - lo) * test_uniform(r); }
+
+#endif

@@ -1,0 +1,78 @@
+/* Flag parsing and error display shared by the CLI commands. */
+#include "cli.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int cli_is_flag(const char *arg, const char *name)
+{
+    size_t n = strlen(name);
+    return strncmp(arg, name, n) == 0 && (arg[n] == 0 || arg[n] == '=');
+}
+
+const char *cli_flag_value(int argc, char **argv, int *i, const char *name, int *bad)
+{
+    const char *arg = argv[*i];
+    size_t n = strlen(name);
+    if (strncmp(arg, name, n) != 0) return NULL;
+    if (arg[n] == '=') return arg + n + 1;
+    if (arg[n] != 0) return NULL;
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "semsplat: error: %s needs a value\n", name);
+        *bad = 1;
+        return NULL;
+    }
+    (*i)++;
+    return argv[*i];
+}
+
+int cli_fail(const char *cmd, const sp_error *err)
+{
+    fprintf(stderr, "semsplat %s: error: %s\n", cmd, err && err->msg[0] ? err->msg : "failed");
+    return 1;
+}
+
+int cli_usage_error(const char *cmd, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fprintf(stderr, "semsplat %s: error: ", cmd);
+    vfprintf(stderr, fmt, ap);
+    fprintf(stderr, "\n(see 'semsplat %s --help')\n", cmd);
+    va_end(ap);
+    return 2;
+}
+
+int cli_parse_int(const char *cmd, const char *flag, const char *s, long *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (!*s || *end || errno) return cli_usage_error(cmd, "%s: '%s' is not an integer", flag, s);
+    *out = v;
+    return 0;
+}
+
+int cli_parse_float(const char *cmd, const char *flag, const char *s, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (!*s || *end || errno || v != v)
+        return cli_usage_error(cmd, "%s: '%s' is not a number", flag, s);
+    *out = v;
+    return 0;
+}
+
+int cli_parse_size(const char *cmd, const char *flag, const char *s, int *w, int *h)
+{
+    int a, b;
+    char tail;
+    if (sscanf(s, "%dx%d%c", &a, &b, &tail) != 2 || a <= 0 || b <= 0 || a > 16384 || b > 16384)
+        return cli_usage_error(cmd, "%s: '%s' is not a size like 640x480", flag, s);
+    *w = a;
+    *h = b;
+    return 0;
+}

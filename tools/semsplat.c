@@ -1,0 +1,60 @@
+/* semsplat: the command-line entry point. Dispatches `semsplat <command> [flags]` to
+ * tools/cmd_<command>.c. Commands not built into this binary are reported as such. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+
+/* Weak so that each command lives in its own file and the table needs no edit when one is added. */
+#define SP_CMD(name) int cmd_##name(int argc, char **argv) __attribute__((weak));
+#define SP_COMMANDS(X) \
+    X(info) X(render) X(synth) X(train) X(features) X(embed_text) X(lift) X(distill) X(query) \
+    X(align) X(demo)
+SP_COMMANDS(SP_CMD)
+#undef SP_CMD
+
+typedef struct {
+    const char *name;
+    sp_cmd_fn fn;
+    const char *help;
+} command;
+
+static const command commands[] = {
+    {"info", cmd_info, "describe a COLMAP model, splat PLY, image or .npy file"},
+    {"render", cmd_render, "render a splat from COLMAP cameras to PNG"},
+    {"synth", cmd_synth, "render a Gazebo/SDF world into a capture with ground truth"},
+    {"train", cmd_train, "train a Gaussian splat from a COLMAP capture"},
+    {"features", cmd_features, "extract dense per-pixel features (CLIP, .npy, labels) + PCA"},
+    {"embed-text", cmd_embed_text, "print the CLIP embedding of a text"},
+    {"lift", cmd_lift, "lift 2D feature maps into the splat in one pass"},
+    {"distill", cmd_distill, "learn per-Gaussian features by distillation"},
+    {"query", cmd_query, "find a text query in the language-embedded splat"},
+    {"align", cmd_align, "put a splat into the world frame (similarity / floor plane)"},
+    {"demo", cmd_demo, "synth -> train -> features -> lift -> queries on the bundled house"},
+};
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: semsplat <command> [flags]   (semsplat <command> --help for flags)\n\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (commands[i].fn) fprintf(f, "  %-12s %s\n", commands[i].name, commands[i].help);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        if (strcmp(argv[1], commands[i].name) != 0) continue;
+        if (!commands[i].fn) {
+            fprintf(stderr, "semsplat: '%s' is not built into this binary\n", argv[1]);
+            return 2;
+        }
+        return commands[i].fn(argc - 1, argv + 1);
+    }
+    fprintf(stderr, "semsplat: unknown command '%s'\n\n", argv[1]);
+    usage(stderr);
+    return 2;
+}
