@@ -1,0 +1,220 @@
+/* semsplat semantic: the language-embedded splat and the query engine.
+ *
+ * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64) that
+ * decodes to the full text space as  mean + basis^T f  (basis rows orthonormal). It is made by
+ *   - lifting: one pass over the training views; each Gaussian's feature is the compositing-weight
+ *     average of the target features of the pixels it contributes to,
+ *       f_i = sum_p w_ip t_p / sum_p w_ip,   w_ip = alpha_i(p) T_i(p),
+ *     taken exactly from the rasterizer's backward (v_colors = sum_p w_ip v_image_p) with the
+ *     targets and a channel of ones rendered together (D+1 channels, no new kernel);
+ *   - distillation (semsplat distill, through the trainer's feature pass).
+ * It is stored as f_sem_* fields in DIR/splat.ply plus the sidecar DIR/semantic.json and the PCA
+ * files DIR/semantic_pca_mean.npy, DIR/semantic_pca_basis.npy.
+ *
+ * Relevancy (per Gaussian or per pixel, for a text embedding q in the full space):
+ *   raw   s = cos(decode(f), q); a result's `confidence` is the largest raw cosine of the object
+ *         (above ~0.25 a match, below ~0.15 noise);
+ *   rel   = min_k exp(s/T) / (exp(s/T) + exp(s_k/T)) over canonical negatives k ("object",
+ *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
+ *         no preference, used for thresholds and heatmaps.
+ * Localization: 3D-native (relevant Gaussians -> opacity-weighted voxel clustering of centres into
+ * instances) or multi-view (views that see the relevant Gaussians -> rendered features and depth
+ * -> relevant pixels back-projected -> the same clustering). Things that are not there give low
+ * confidence, valid = 0 and no position (NaN), never a random point.
+ *
+ * Ownership: sp_query_engine owns the splat, PCA, cameras and its raster; results own their
+ * buffers (sp_query_result_free). Every function returns 0 or a negative SP_E_* code with err
+ * filled; outputs are unchanged on error unless said otherwise. */
+#ifndef SEMSPLAT_SEMANTIC_H
+#define SEMSPLAT_SEMANTIC_H
+
+#include "semsplat/core.h"
+#include "semsplat/render.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- the decoder (PCA) and relevancy -------------------------------------------------------- */
+
+/* The feature space: d-dim stored features decode to full_dim as mean + basis^T f. Owns both. */
+typedef struct sp_sem_pca {
+    int dim, full_dim;
+    float *mean;  /* [full_dim] */
+    float *basis; /* [dim][full_dim] */
+} sp_sem_pca;
+
+/* Reads mean [full_dim] and basis [dim][full_dim] .npy files (f32/f16/f64). */
+int sp_sem_pca_read(const char *mean_path, const char *basis_path, sp_sem_pca *pca, sp_error *err);
+void sp_sem_pca_free(sp_sem_pca *pca);
+
+#define SP_SEM_MAX_NEGATIVES 8
+#define SP_SEM_DEFAULT_NEGATIVES "object,things,stuff,texture" /* LERF's canonical phrases */
+#define SP_SEM_DEFAULT_TEMPERATURE 0.1f                         /* LERF: softmax of 10 * cos */
+
+/* A text prepared for scoring d-dim features without decoding them: with q unit-length,
+ *   decode(f) . q = q0 + qb . f,  |decode(f)|^2 = m2 + 2 mb . f + f^T G f  (G = basis basis^T). */
+typedef struct sp_sem_scorer {
+    int dim;
+    int n_neg;
+    float temperature;
+    float q0, qb[64];                                   /* the query */
+    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][64]; /* the negatives */
+    float m2, mb[64];
+    float G[64 * 64];
+    int orthonormal; /* G == I within 1e-4: |decode(f)|^2 = m2 + 2 mb.f + |f|^2 */
+} sp_sem_scorer;
+
+/* Prepares a scorer. query [full_dim] and negatives [n_neg][full_dim] need not be unit length.
+ * Fails with SP_E_ARG when dim > 64, n_neg > SP_SEM_MAX_NEGATIVES or a vector is zero. */
+int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *query,
+                       const float *negatives, int n_neg, float temperature, sp_error *err);
+/* Raw cosine and calibrated relevancy of n features [n][dim] (either output may be NULL).
+ * Runs across the pool when given. */
+void sp_sem_score(const sp_sem_scorer *sc, sp_pool *pool, size_t n, const float *features,
+                  float *raw_cos, float *relevancy);
+/* The calibrated relevancy from a raw cosine and the negatives' raw cosines (reference form). */
+float sp_sem_relevancy(float s_query, const float *s_neg, int n_neg, float temperature);
+
+/* ---- lifting ---------------------------------------------------------------------------------- */
+
+/* Supplies the target feature map of view v: [cam.height][cam.width][dim] host floats, and an
+ * optional validity mask [H][W] (NULL = all valid; pixels with mask 0 are ignored). */
+typedef int (*sp_lift_target_fn)(void *user, size_t view, float *target, uint8_t *mask,
+                                 sp_error *err);
+
+typedef struct sp_lift_opts {
+    float min_weight; /* Gaussians whose total weight is below this keep zero features (1e-4) */
+    int mask;         /* pass a mask buffer to the callback */
+} sp_lift_opts;
+
+sp_lift_opts sp_lift_opts_default(void);
+
+/* Sets s->features (reallocated to dim) to the compositing-weight average of the targets over
+ * n_views cameras. weight_out ([n], may be NULL) receives sum_p w_ip. Geometry unchanged. */
+int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, size_t n_views,
+                     sp_lift_target_fn target, void *user, const sp_lift_opts *opts,
+                     float *weight_out, const sp_log *log, sp_error *err);
+
+/* Lifts a feature folder (semsplat features) into the model folder DIR made by `train`: writes
+ * f_sem_* into DIR/splat.ply and DIR/semantic.json with the PCA copied beside it (atomically).
+ * colmap_dir NULL = the capture named in DIR/train.json, else the one in features.json. */
+int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
+                           const char *colmap_dir, sp_device *dev, const sp_log *log,
+                           sp_error *err);
+
+/* Writes DIR/semantic.json and the PCA copies for a splat whose features came from
+ * features_dir by `method` ("lift" or "distill"). */
+int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
+                              const char *colmap_dir, const char *method, sp_error *err);
+
+/* ---- the query engine ------------------------------------------------------------------------- */
+
+typedef enum { SP_QUERY_3D = 0, SP_QUERY_MULTIVIEW = 1 } sp_query_method;
+
+typedef struct sp_query_opts {
+    int method;            /* sp_query_method */
+    char negatives[256];   /* comma-separated canonical negatives ("" = SP_SEM_DEFAULT_NEGATIVES) */
+    float temperature;     /* relevancy temperature (SP_SEM_DEFAULT_TEMPERATURE) */
+    float min_confidence;  /* below this raw cosine the query is "not found" (0.2) */
+    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence (0.6) */
+    float min_relevancy;   /* ... and calibrated relevancy >= this (0.55) */
+    float min_opacity;     /* Gaussians fainter than this are ignored (0.1) */
+    float voxel_m;         /* clustering voxel edge in world units (0.12) */
+    float min_instance_fraction; /* instances lighter than this share of the best are dropped (0.1) */
+    int n_views;           /* multi-view: views rendered and back-projected (4) */
+    int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
+    int heatmap;           /* render relevancy_image (1) */
+    int heatmap_view;      /* -1 = best view, else an index into the cameras */
+} sp_query_opts;
+
+sp_query_opts sp_query_opts_default(void);
+
+typedef struct sp_query_instance {
+    float position[3];   /* world frame */
+    float extent_min[3]; /* robust (2%..98%) bounds of the instance's points */
+    float extent_max[3];
+    float score;         /* summed weight of its points (opacity * relevancy excess) */
+    float confidence;    /* largest raw cosine inside it */
+    int n_points;        /* Gaussians (3D) or pixels (multi-view) */
+} sp_query_instance;
+
+typedef struct sp_query_result {
+    char text[256];
+    int method;          /* sp_query_method used */
+    int valid;           /* 1 when confidence >= min_confidence and an instance was found */
+    float position[3];   /* best instance (world frame); NaN when !valid */
+    float confidence;    /* largest raw cosine (robust max over Gaussians) */
+    float relevancy_max; /* largest calibrated relevancy */
+    int view_index;      /* camera used for the heatmap / best view, -1 = none */
+    char view_name[256];
+    int width, height;           /* of relevancy_image */
+    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made */
+    float *relevancy;            /* [height][width] calibrated relevancy of that view, or NULL */
+    int n_instances;
+    sp_query_instance *instances; /* best first */
+    double ms_embed, ms_relevancy, ms_localize, ms_heatmap, ms_total;
+} sp_query_result;
+
+void sp_query_result_free(sp_query_result *res);
+
+typedef struct sp_query_engine sp_query_engine;
+
+/* Opens a model folder (splat.ply with f_sem_*, semantic.json, PCA, cameras from the sidecar's
+ * COLMAP folder) once; opts NULL = defaults. dev is borrowed (must outlive the engine). */
+int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
+                         sp_device *dev, const sp_log *log, sp_error *err);
+/* Builds an engine from memory (tests, tools): copies splat, pca and cameras. */
+int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,
+                           const sp_camera *cams, size_t n_cams, int label_embedding,
+                           const sp_query_opts *opts, sp_device *dev, const sp_log *log,
+                           sp_error *err);
+void sp_query_engine_free(sp_query_engine *e);
+
+/* Embeds the text (CLIP text tower, or the label embedding for label-feature scenes) and
+ * localizes it. res is filled (free with sp_query_result_free) even when nothing is found. */
+int sp_query_engine_query(sp_query_engine *e, const char *text, sp_query_result *res,
+                          sp_error *err);
+/* Same with a precomputed full_dim embedding (need not be unit length); label names the result. */
+int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
+                                    const char *label, sp_query_result *res, sp_error *err);
+/* Text -> full_dim unit embedding as the engine does it (out [full_dim]). */
+int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err);
+
+sp_query_opts *sp_query_engine_opts(sp_query_engine *e); /* change between queries */
+int sp_query_engine_full_dim(const sp_query_engine *e);
+size_t sp_query_engine_n_cameras(const sp_query_engine *e);
+const sp_splat *sp_query_engine_splat(const sp_query_engine *e);
+const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
+
+/* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
+ * position (array or null), confidence, relevancy_max, view, instances [{position, extent_min,
+ * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms. */
+char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
+
+/* ---- heatmaps --------------------------------------------------------------------------------- */
+
+/* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
+void sp_turbo(float t, float rgb[3]);
+/* Overlays relevancy [H][W] (0.5 = neutral .. 1) in turbo colours on rgb [H][W][3] floats,
+ * writing out [H][W][3] uint8. Pixels at or below 0.5 keep a dimmed RGB. */
+void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int height,
+                        uint8_t *out);
+
+/* ---- frames (semsplat align) ------------------------------------------------------------------ */
+
+/* Umeyama (1991) similarity dst ~ s R src + t from n >= 3 point pairs ([n][3] each); M gets the
+ * 4x4 row-major transform [sR t; 0 1]. Fails on degenerate (collinear) input. */
+int sp_umeyama(const double *src, const double *dst, size_t n, int with_scale, double M[16],
+               double *rms, sp_error *err);
+/* Applies a similarity [sR t] to a splat: means, quats, log_scales and SH (rotated per band). */
+int sp_splat_transform(sp_splat *s, const double M[16], sp_error *err);
+/* RANSAC floor plane on the lowest Gaussians (along the cameras' mean "up" = -y_cam) and a
+ * transform M that maps it to z = 0 with +z up (pointing to the cameras). inliers: fraction. */
+int sp_detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, double M[16],
+                    double normal[3], double *inliers, sp_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
