@@ -1,7 +1,7 @@
-/* The seam between the train module's C code (src/train/*.c) and its CUDA kernels
- * (src/train/cuda/*.cu): the per-element work of one training step (losses, Adam, densification
+/* The seam between the train module's C code (src/train/ (.c)) and its CUDA kernels
+ * (src/train/cuda/ (.cu)): the per-element work of one training step (losses, Adam, densification
  * statistics, column packing). Plain C entry points on DEVICE pointers, compiled only when
- * SP_HAVE_CUDA is defined; the CPU versions in src/train/*.c have exactly the same semantics and
+ * SP_HAVE_CUDA is defined; the CPU versions in src/train/ (.c) have exactly the same semantics and
  * are the reference the CUDA test compares against. All sizes are element counts, all images
  * row-major [H][W][stride]. Every function returns 0 or a negative SP_E_* code (SP_E_DEVICE on a
  * CUDA failure, with the CUDA error string in err). Kernels run on the default stream; functions
