@@ -1,0 +1,42 @@
+/* Shared io plumbing: atomic writes through a temporary file, and small naming helpers. */
+#include "io_internal.h"
+
+#include <errno.h>
+#include <unistd.h>
+
+FILE *io_tmp_open(const char *path, char *tmp, size_t cap, sp_error *err)
+{
+    if (snprintf(tmp, cap, "%s.tmp.%ld", path, (long)getpid()) >= (int)cap) {
+        sp_error_set(err, SP_E_ARG, "%s: path too long", path);
+        return NULL;
+    }
+    FILE *f = fopen(tmp, "wb");
+    if (!f) sp_error_set(err, SP_E_IO, "%s: cannot create: %s", tmp, strerror(errno));
+    return f;
+}
+
+int io_tmp_commit(FILE *f, const char *tmp, const char *path, int ok, sp_error *err)
+{
+    int bad = ferror(f) | (fflush(f) != 0);
+    bad |= fclose(f) != 0;
+    if (!ok) {
+        remove(tmp);
+        return err ? err->code : SP_E_IO;
+    }
+    if (bad) {
+        remove(tmp);
+        return sp_error_set(err, SP_E_IO, "%s: write failed (disk full?)", path);
+    }
+    if (rename(tmp, path) != 0) {
+        int e = errno;
+        remove(tmp);
+        return sp_error_set(err, SP_E_IO, "%s: cannot rename into place: %s", path, strerror(e));
+    }
+    return SP_OK;
+}
+
+const char *io_basename(const char *path)
+{
+    const char *s = strrchr(path, '/');
+    return s ? s + 1 : path;
+}

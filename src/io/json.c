@@ -1,0 +1,62 @@
+/* JSON files through cJSON: parse errors say where (line and column), writes are atomic. Used for
+ * configs, manifests and the safetensors header. */
+#include "io_internal.h"
+
+#include <cjson/cJSON.h>
+#include <stdlib.h>
+
+/* 1-based line and column of byte offset `at` in text. */
+static void line_col(const char *text, size_t at, int *line, int *col)
+{
+    *line = 1;
+    *col = 1;
+    for (size_t i = 0; i < at && text[i]; i++) {
+        if (text[i] == '\n') {
+            (*line)++;
+            *col = 1;
+        } else {
+            (*col)++;
+        }
+    }
+}
+
+int sp_json_read_file(const char *path, struct cJSON **out, sp_error *err)
+{
+    *out = NULL;
+    char *text;
+    size_t size;
+    int rc = sp_read_file(path, &text, &size, err);
+    if (rc) return rc;
+    const char *end = NULL;
+    cJSON *json = cJSON_ParseWithLengthOpts(text, size + 1, &end, 1) /* + the NUL */;
+    if (!json) {
+        int line, col;
+        size_t at = end && end >= text && end <= text + size ? (size_t)(end - text) : 0;
+        line_col(text, at, &line, &col);
+        rc = sp_error_set(err, SP_E_FORMAT, "%s:%d:%d: invalid JSON near '%.20s'", path, line, col,
+                          at < size ? text + at : "<end of file>");
+        free(text);
+        return rc;
+    }
+    free(text);
+    *out = json;
+    return SP_OK;
+}
+
+int sp_json_write_file(const char *path, const struct cJSON *json, sp_error *err)
+{
+    char *text = cJSON_Print(json);
+    if (!text) return sp_error_set(err, SP_E_NOMEM, "%s: cannot serialise JSON", path);
+    size_t n = strlen(text);
+    /* A trailing newline, as text tools expect. */
+    char *t2 = realloc(text, n + 2);
+    if (!t2) {
+        cJSON_free(text);
+        return sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
+    }
+    t2[n] = '\n';
+    t2[n + 1] = 0;
+    int rc = sp_write_file_atomic(path, t2, n + 1, err);
+    free(t2);
+    return rc;
+}
