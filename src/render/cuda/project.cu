@@ -1,0 +1,115 @@
+/* CUDA backend, stage 1: per-Gaussian projection (forward) and its backward, one thread per
+ * Gaussian. The math is src/render/gauss_math.h, the same inline functions the CPU backend
+ * runs, so both backends cull, dilate and differentiate identically. */
+#include "common.cuh"
+#include "render/gauss_math.h"
+
+__global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg, int tiles_x, int tiles_y,
+                          const float *__restrict__ means, const float *__restrict__ quats,
+                          const float *__restrict__ log_scales,
+                          const float *__restrict__ opacity_logits, float2 *__restrict__ means2d,
+                          float4 *__restrict__ conic_op, float *__restrict__ depths,
+                          int32_t *__restrict__ radii, int4 *__restrict__ rect,
+                          uint32_t *__restrict__ ntiles)
+{
+    size_t i = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n) return;
+    float m[3] = {means[i * 3], means[i * 3 + 1], means[i * 3 + 2]};
+    float q[4] = {quats[i * 4], quats[i * 4 + 1], quats[i * 4 + 2], quats[i * 4 + 3]};
+    float s[3] = {log_scales[i * 3], log_scales[i * 3 + 1], log_scales[i * 3 + 2]};
+    float mean2d[2], conic[3], depth = 0.f, op = 0.f;
+    int radius = 0;
+    int vis = sp_gm_project(m, q, s, opacity_logits[i], &cam, &cfg, mean2d, conic, &depth, &op,
+                            &radius);
+    if (!vis) {
+        radii[i] = 0;
+        ntiles[i] = 0;
+        return;
+    }
+    /* tile rectangle covering the radius circle (the circle bounds every kept contribution) */
+    const float ts = (float)SP_TILE_SIZE;
+    int x0 = min(max(0, (int)floorf((mean2d[0] - radius) / ts)), tiles_x);
+    int y0 = min(max(0, (int)floorf((mean2d[1] - radius) / ts)), tiles_y);
+    int x1 = min(max(0, (int)floorf((mean2d[0] + radius) / ts) + 1), tiles_x);
+    int y1 = min(max(0, (int)floorf((mean2d[1] + radius) / ts) + 1), tiles_y);
+    uint32_t cnt = (x1 > x0 && y1 > y0) ? (uint32_t)((x1 - x0) * (y1 - y0)) : 0u;
+    radii[i] = cnt ? radius : 0;
+    ntiles[i] = cnt;
+    means2d[i] = make_float2(mean2d[0], mean2d[1]);
+    conic_op[i] = make_float4(conic[0], conic[1], conic[2], op);
+    depths[i] = depth;
+    rect[i] = make_int4(x0, y0, x1, y1);
+}
+
+int sp_cuda_project(sp_cuda_raster *r, sp_error *err)
+{
+    size_t n = r->in.n;
+    int rc;
+    if ((rc = sp_scratch_reserve(&r->s_means2d, n * sizeof(float2), err))) return rc;
+    if ((rc = sp_scratch_reserve(&r->s_conic_op, n * sizeof(float4), err))) return rc;
+    if ((rc = sp_scratch_reserve(&r->s_depths, n * sizeof(float), err))) return rc;
+    if ((rc = sp_scratch_reserve(&r->s_radii, n * sizeof(int32_t), err))) return rc;
+    if ((rc = sp_scratch_reserve(&r->s_rect, n * sizeof(int4), err))) return rc;
+    if ((rc = sp_scratch_reserve(&r->s_ntiles, n * sizeof(uint32_t), err))) return rc;
+    r->proj.means2d = (float2 *)r->s_means2d.ptr;
+    r->proj.conic_op = (float4 *)r->s_conic_op.ptr;
+    r->proj.depths = (float *)r->s_depths.ptr;
+    r->proj.radii = (int32_t *)r->s_radii.ptr;
+    r->proj.rect = (int4 *)r->s_rect.ptr;
+    r->proj.ntiles = (uint32_t *)r->s_ntiles.ptr;
+    if (n == 0) return 0;
+    k_project<<<sp_div_up(n, 256), 256>>>(n, r->cam, r->cfg, r->tiles_x, r->tiles_y,
+                                          r->in.means, r->in.quats, r->in.log_scales,
+                                          r->in.opacity_logits, r->proj.means2d,
+                                          r->proj.conic_op, r->proj.depths, r->proj.radii,
+                                          r->proj.rect, r->proj.ntiles);
+    SP_CUDA_LAUNCHED(err, "projection");
+    return 0;
+}
+
+/* vgeo[i] = per-Gaussian sums from the rasterizer backward:
+ * (v_mean2d x, y, v_conic a, b, c (element convention), v_opacity, v_depth, unused). */
+__global__ void k_project_bwd(size_t n, sp_camera cam, sp_raster_cfg cfg,
+                              const float *__restrict__ means, const float *__restrict__ quats,
+                              const float *__restrict__ log_scales,
+                              const float *__restrict__ opacity_logits,
+                              const int32_t *__restrict__ radii, const float *__restrict__ vgeo,
+                              float *__restrict__ v_means, float *__restrict__ v_quats,
+                              float *__restrict__ v_log_scales,
+                              float *__restrict__ v_opacity_logits,
+                              float *__restrict__ v_means2d)
+{
+    size_t i = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
+    if (i >= n || radii[i] <= 0) return;
+    const float *g = vgeo + i * 8;
+    float v2[2] = {g[0], g[1]}, vc[3] = {g[2], g[3], g[4]};
+    float m[3] = {means[i * 3], means[i * 3 + 1], means[i * 3 + 2]};
+    float q[4] = {quats[i * 4], quats[i * 4 + 1], quats[i * 4 + 2], quats[i * 4 + 3]};
+    float s[3] = {log_scales[i * 3], log_scales[i * 3 + 1], log_scales[i * 3 + 2]};
+    float vm[3] = {0.f, 0.f, 0.f}, vq[4] = {0.f, 0.f, 0.f, 0.f}, vs[3] = {0.f, 0.f, 0.f}, vo = 0.f;
+    sp_gm_project_vjp(m, q, s, opacity_logits[i], &cam, &cfg, v2, vc, g[6], g[5], vm, vq, vs, &vo);
+    if (v_means)
+        for (int k = 0; k < 3; k++) v_means[i * 3 + k] += vm[k];
+    if (v_quats)
+        for (int k = 0; k < 4; k++) v_quats[i * 4 + k] += vq[k];
+    if (v_log_scales)
+        for (int k = 0; k < 3; k++) v_log_scales[i * 3 + k] += vs[k];
+    if (v_opacity_logits) v_opacity_logits[i] += vo;
+    if (v_means2d) {
+        v_means2d[i * 2] += v2[0];
+        v_means2d[i * 2 + 1] += v2[1];
+    }
+}
+
+int sp_cuda_project_bwd(sp_cuda_raster *r, sp_raster_grads *grads, const float *vgeo,
+                        sp_error *err)
+{
+    size_t n = r->in.n;
+    if (n == 0) return 0;
+    k_project_bwd<<<sp_div_up(n, 256), 256>>>(
+        n, r->cam, r->cfg, r->in.means, r->in.quats, r->in.log_scales, r->in.opacity_logits,
+        r->proj.radii, vgeo, grads->v_means, grads->v_quats, grads->v_log_scales,
+        grads->v_opacity_logits, grads->v_means2d);
+    SP_CUDA_LAUNCHED(err, "projection backward");
+    return 0;
+}

@@ -1,0 +1,261 @@
+/* CUDA backend, stage 4: backward compositing, and sp_cuda_raster_backward.
+ *
+ * One 16x16 block per tile and channel chunk walks the tile's list back to front from the last
+ * Gaussian any of its pixels used, recovering each pixel's transmittance by division (T_final
+ * was saved by the forward). Why it stays fast for wide D:
+ *  - the colour term of dL/dalpha is carried as ONE scalar per pixel, G = sum_{j behind} w_j
+ *    (v_out . c_j) + T_final (v_out . bg), instead of a D-wide "colour behind" buffer, so a
+ *    thread holds only the chunk's v_out and its colour-gradient partials;
+ *  - channels are split into chunks of at most 32 (blockIdx.z); dL/dalpha is linear in the
+ *    channels, so each chunk adds its share of the geometry gradients independently;
+ *  - warp sums use a reduce-scatter (each shuffle round halves the values every lane carries),
+ *    about CH shuffles instead of 5 CH, and the atomics that follow are spread over lanes and hit
+ *    consecutive addresses;
+ *  - warps where no pixel kept the Gaussian skip it (ballot).
+ * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
+ * per-Gaussian scratch that project.cu turns into parameter gradients. */
+#include "common.cuh"
+
+#include <stdlib.h>
+
+#define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
+#define FULL_MASK 0xffffffffu
+
+template <int N> struct pow2_ceil { enum { value = 2 * pow2_ceil<(N + 1) / 2>::value }; };
+template <> struct pow2_ceil<1> { enum { value = 1 }; };
+
+/* Warp reduce-scatter of P values per lane (P a power of two). Afterwards the lane holds LIVE =
+ * max(1, P/32) totals in v[0..LIVE), for channels base + i; returns base. For P < 32 the lanes
+ * of a group of 32/P hold the same total (the caller lets one of them write it). */
+template <int P>
+__device__ __forceinline__ int warp_reduce_scatter(float (&v)[P], int lane)
+{
+    int base = 0;
+    int live = P;
+#pragma unroll
+    for (int o = 16; o >= 1; o >>= 1) {
+        if (live >= 2) {
+            const int half = live / 2;
+            const bool upper = (lane & o) != 0;
+#pragma unroll
+            for (int i = 0; i < P / 2; i++) {
+                if (i < half) {
+                    float send = upper ? v[i] : v[i + half];
+                    float keep = upper ? v[i + half] : v[i];
+                    v[i] = keep + __shfl_xor_sync(FULL_MASK, send, o);
+                }
+            }
+            if (upper) base += half;
+            live = half;
+        } else {
+            v[0] += __shfl_xor_sync(FULL_MASK, v[0], o);
+        }
+    }
+    return base;
+}
+
+template <int CH>
+__global__ void __launch_bounds__(BLOCK)
+k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
+             const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
+             const float4 *__restrict__ conic_op, const float *__restrict__ depths,
+             const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
+             const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
+             const float *__restrict__ v_image, const float *__restrict__ v_depth,
+             const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+             float *__restrict__ vgeo)
+{
+    constexpr int P = pow2_ceil<CH>::value;
+    extern __shared__ float4 smem_f4[];
+    float4 *s_conic = smem_f4;                        /* [BLOCK] */
+    float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
+    float *s_z = (float *)(s_xy + BLOCK);             /* [BLOCK] */
+    int *s_id = (int *)(s_z + BLOCK);                 /* [BLOCK] */
+    float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
+    __shared__ int s_block_last;
+
+    const int c0 = c_base + blockIdx.z * CH;
+    const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
+    const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
+    const int lane = tid & 31;
+    const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x;
+    const int py_i = blockIdx.y * SP_TILE_SIZE + threadIdx.y;
+    const bool inside = px_i < W && py_i < H;
+    const float px = px_i + 0.5f, py = py_i + 0.5f;
+    const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
+    const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
+
+    const float Tf = inside ? t_final[pix] : 1.f;
+    const int last = inside ? last_idx[pix] : range.x;
+    float vout[CH];
+    float G = 0.f;
+#pragma unroll
+    for (int c = 0; c < CH; c++) {
+        vout[c] = (inside && c0 + c < D) ? v_image[pix * D + c0 + c] : 0.f;
+        if (bg && c0 + c < D) G += vout[c] * bg[c0 + c];
+    }
+    G *= Tf;
+    const float vd = (do_aux && inside && v_depth) ? v_depth[pix] : 0.f;
+    const float va = (do_aux && inside && v_alpha_out) ? v_alpha_out[pix] : 0.f;
+    float Gd = 0.f, T = Tf;
+
+    if (tid == 0) s_block_last = range.x;
+    __syncthreads();
+    atomicMax(&s_block_last, last);
+    const int warp_last = __reduce_max_sync(FULL_MASK, last);
+    __syncthreads();
+    const int block_last = s_block_last;
+
+    for (int b_end = block_last; b_end > range.x; b_end -= BLOCK) {
+        const int cnt = min(BLOCK, b_end - range.x);
+        __syncthreads();
+        if (tid < cnt) {
+            int g = (int)ids[b_end - 1 - tid];
+            s_id[tid] = g;
+            s_xy[tid] = means2d[g];
+            s_conic[tid] = conic_op[g];
+            s_z[tid] = depths[g];
+        }
+        __syncthreads();
+        for (int k = tid; k < cnt * CH; k += BLOCK) {
+            int j = k / CH, c = k - j * CH;
+            s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
+        }
+        __syncthreads();
+        for (int t = max(0, b_end - warp_last); t < cnt; t++) {
+            const int idx = b_end - 1 - t;
+            const float4 co = s_conic[t];
+            const float2 xy = s_xy[t];
+            const float dx = px - xy.x, dy = py - xy.y;
+            float vis = 0.f, alpha = 0.f;
+            if (inside && idx < last) alpha = sp_cu_alpha(co, dx, dy, &vis);
+            const bool valid = alpha > 0.f;
+            if (!__any_sync(FULL_MASK, valid)) continue;
+
+            float vcol[P];
+            float geo[8];
+#pragma unroll
+            for (int c = 0; c < P; c++) vcol[c] = 0.f;
+#pragma unroll
+            for (int k = 0; k < 8; k++) geo[k] = 0.f;
+            if (valid) {
+                const float ra = 1.f / (1.f - alpha);
+                T *= ra;
+                const float fac = alpha * T;
+                const float *col = s_col + t * CH;
+                float p = 0.f;
+#pragma unroll
+                for (int c = 0; c < CH; c++) {
+                    p += col[c] * vout[c];
+                    vcol[c] = fac * vout[c];
+                }
+                float v_alpha = p * T - G * ra;
+                G += p * fac;
+                if (do_aux) {
+                    const float z = s_z[t];
+                    v_alpha += (z * T - Gd * ra) * vd + Tf * ra * va;
+                    Gd += z * fac;
+                    geo[6] = fac * vd;
+                }
+                if (co.w * vis <= SP_ALPHA_MAX) {
+                    const float v_sigma = -co.w * vis * v_alpha;
+                    geo[0] = -v_sigma * (co.x * dx + co.y * dy);
+                    geo[1] = -v_sigma * (co.y * dx + co.z * dy);
+                    geo[2] = 0.5f * v_sigma * dx * dx;
+                    geo[3] = 0.5f * v_sigma * dx * dy;
+                    geo[4] = 0.5f * v_sigma * dy * dy;
+                    geo[5] = vis * v_alpha;
+                }
+            }
+            const int g = s_id[t];
+            if (v_colors) {
+                const int cb = warp_reduce_scatter<P>(vcol, lane);
+                constexpr int LIVE = P >= 32 ? P / 32 : 1;
+                constexpr int GROUP = P >= 32 ? 1 : 32 / P;
+                if (lane % GROUP == 0) {
+#pragma unroll
+                    for (int i = 0; i < LIVE; i++) {
+                        const int c = cb + i;
+                        if (c < CH && c0 + c < D && vcol[i] != 0.f)
+                            atomicAdd(v_colors + (size_t)g * D + c0 + c, vcol[i]);
+                    }
+                }
+            }
+            const int slot = warp_reduce_scatter<8>(geo, lane);
+            if ((lane & 3) == 0 && slot < 7 && geo[0] != 0.f)
+                atomicAdd(vgeo + (size_t)g * 8 + slot, geo[0]);
+        }
+    }
+}
+
+static size_t bwd_smem(int ch)
+{
+    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + sizeof(float) + sizeof(int) +
+                            sizeof(float) * ch);
+}
+
+template <int CH>
+static int launch_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
+                      int c_base, int n_chunks, int aux, sp_error *err)
+{
+    size_t smem = bwd_smem(CH);
+    SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_bwd<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
+                                       (int)smem),
+                  err, "backward shared memory");
+    dim3 grid(r->tiles_x, r->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    k_raster_bwd<CH><<<grid, block, smem>>>(
+        r->cam.width, r->cam.height, r->tiles_x, r->tile_ranges, r->sorted_ids, r->proj.means2d,
+        r->proj.conic_op, r->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, r->t_final,
+        r->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+    SP_CUDA_LAUNCHED(err, "backward rasterization");
+    return 0;
+}
+
+static int dispatch_bwd(int ch, sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                        float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+{
+    switch (ch) {
+    case 1: return launch_bwd<1>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 2: return launch_bwd<2>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 3: return launch_bwd<3>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 4: return launch_bwd<4>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 8: return launch_bwd<8>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 16: return launch_bwd<16>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 32: return launch_bwd<32>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 64: return launch_bwd<64>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    default: return sp_error_set(err, SP_E_ARG, "no backward kernel for chunk width %d", ch);
+    }
+}
+
+int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                          float *vgeo, sp_error *err)
+{
+    if (r->n_pairs == 0) return 0;
+    int D = r->in.D, rc;
+    int max_ch = sp_cuda_env_chunk("SP_CUDA_BWD_CHUNK", 32);
+    int full = D / max_ch, rem = D % max_ch;
+    if (full > 0 && (rc = dispatch_bwd(max_ch, r, gin, v_colors, vgeo, 0, full, 1, err))) return rc;
+    if (rem > 0 && (rc = dispatch_bwd(sp_cuda_chunk_width(rem, max_ch), r, gin, v_colors, vgeo,
+                                      full * max_ch, 1, full == 0, err)))
+        return rc;
+    return 0;
+}
+
+extern "C" int sp_cuda_raster_backward(sp_cuda_raster *r, const sp_raster_grad_in *gin,
+                                       sp_raster_grads *grads, sp_error *err)
+{
+    if (!r || !gin || !grads)
+        return sp_error_set(err, SP_E_ARG, "sp_cuda_raster_backward: NULL argument");
+    if (!r->have_forward)
+        return sp_error_set(err, SP_E_ARG, "sp_cuda_raster_backward: no forward to differentiate "
+                                           "(call sp_raster_forward first)");
+    if (!gin->v_image) return sp_error_set(err, SP_E_ARG, "gin->v_image is NULL (required)");
+    size_t n = r->in.n;
+    if (n == 0) return 0;
+    int rc;
+    if ((rc = sp_scratch_reserve(&r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
+    float *vgeo = (float *)r->s_vgeo.ptr;
+    SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * 8 * sizeof(float)), err, "clearing gradients");
+    if ((rc = sp_cuda_rasterize_bwd(r, gin, grads->v_colors, vgeo, err))) return rc;
+    return sp_cuda_project_bwd(r, grads, vgeo, err);
+}
