@@ -1,0 +1,99 @@
+/* Private to src/render: the device struct, the CPU rasterizer's per-view state, and the CPU
+ * pipeline stages (one per file: project.c, tiles.c, rasterize_fwd.c, rasterize_bwd.c, sh.c).
+ * raster.c dispatches between these and the CUDA backend (cuda_api.h). */
+#ifndef SP_RENDER_INTERNAL_H
+#define SP_RENDER_INTERNAL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "semsplat/render.h"
+
+struct sp_device {
+    sp_device_kind kind; /* CPU or CUDA, never AUTO after creation */
+    sp_pool *pool;
+    char name[160];
+    size_t cur_bytes;  /* CPU: live sp_device_alloc bytes + rasterizer scratch */
+    size_t peak_bytes;
+};
+
+/* Records scratch growth (delta > 0) or release (delta < 0) for sp_device_peak_bytes. */
+void sp_device_account(sp_device *dev, long long delta);
+
+/* Grows a host scratch buffer to at least `bytes` (contents not kept), accounting the change
+ * to dev. Returns 0 or SP_E_NOMEM. */
+int sp_scratch_reserve(sp_device *dev, void **buf, size_t *cap, size_t bytes, sp_error *err);
+void sp_scratch_release(sp_device *dev, void **buf, size_t *cap);
+
+/* Per-thread scratch for one tile. */
+typedef struct cpu_tile_scratch {
+    void *buf;
+    size_t cap;
+} cpu_tile_scratch;
+
+/* The CPU rasterizer's state for one view: projections, tile lists, per-pixel results. */
+typedef struct cpu_raster {
+    sp_device *dev;
+    sp_camera cam;
+    sp_raster_cfg cfg;
+    sp_raster_in in;     /* the caller's buffers (kept for backward; background copied below) */
+    float *background;   /* [D] */
+    size_t bg_cap;
+    int W, H, D;
+    size_t n;
+    int valid; /* a forward ran and backward may use it */
+
+    /* projection, [n] each (radius 0 = culled) */
+    float *mean2d;   /* [n][2] pixels */
+    float *conic;    /* [n][3] (a, b, c) of the inverse blurred 2D covariance */
+    float *depth;    /* [n] camera z */
+    float *opacity;  /* [n] effective opacity (sigmoid, times compensation if antialiased) */
+    int32_t *radii;  /* [n] */
+    int32_t *pix_box; /* [n][4] inclusive pixel range x0, x1, y0, y1 touched (culled: empty) */
+    size_t proj_cap;
+    void *proj_buf;
+
+    /* tile binning */
+    int tiles_x, tiles_y;
+    uint32_t *tile_start; /* [tiles + 1] offsets into tile_gauss / tile_slot */
+    int32_t *tile_gauss;  /* [pairs] Gaussian index, front to back within a tile */
+    uint32_t *tile_slot;  /* [pairs] backward slot: Gaussian g's pairs are contiguous */
+    size_t *pair_off;     /* [n + 1] first slot of each Gaussian */
+    size_t pairs;
+    void *tile_buf;
+    size_t tile_cap;
+    void *sort_buf; /* depth-sort scratch */
+    size_t sort_cap;
+
+    /* per-pixel forward results kept for backward */
+    float *final_T;     /* [H][W] */
+    int32_t *n_contrib; /* [H][W] index (within the tile list) + 1 of the last contributor */
+    void *pix_buf;
+    size_t pix_cap;
+
+    /* backward: per-pair gradient slots [pairs][SLOT_FIXED + D] */
+    float *slots; /* = slot_buf */
+    void *slot_buf;
+    size_t slot_cap;
+
+    cpu_tile_scratch *scratch; /* [pool size] */
+    int n_scratch;
+} cpu_raster;
+
+/* Slot layout: v_mean2d x, y; v_conic (element convention) 00, 01, 11; v_opacity; v_depth;
+ * then D colour gradients. */
+#define SP_SLOT_FIXED 7
+
+/* project.c */
+int cpu_project(cpu_raster *r, sp_error *err);
+void cpu_project_backward(cpu_raster *r, const sp_raster_grads *grads);
+
+/* tiles.c: depth sort and per-tile lists, needs the projection. */
+int cpu_bin_tiles(cpu_raster *r, sp_error *err);
+
+/* rasterize_fwd.c / rasterize_bwd.c (thread scratch sized for both passes at r->D) */
+int cpu_reserve_thread_scratch(cpu_raster *r, sp_error *err);
+int cpu_rasterize_forward(cpu_raster *r, sp_raster_out *out, sp_error *err);
+int cpu_rasterize_backward(cpu_raster *r, const sp_raster_grad_in *gin, sp_error *err);
+
+#endif

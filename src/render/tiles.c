@@ -1,0 +1,104 @@
+/* CPU tile binning. Visible Gaussians are sorted once by depth (a stable LSD radix sort on the
+ * float bits, which order like the values for positive depths; ties keep index order), then
+ * dealt into 16x16 tiles in that order with a counting sort, so every tile list is already
+ * front to back, ordered by (depth, index): deterministic whatever the thread count.
+ * Each (Gaussian, tile) pair also gets a backward slot; a Gaussian's slots are contiguous
+ * (pair_off[g] ..), so the backward can sum them per Gaussian in a fixed order. */
+#include <string.h>
+
+#include "render/render_internal.h"
+
+static uint32_t float_key(float z)
+{
+    uint32_t u;
+    memcpy(&u, &z, sizeof u);
+    return u; /* z >= near_plane > 0 for visible Gaussians: bit order = value order */
+}
+
+/* Stable LSD radix sort of (key, value) by key, 8 bits a pass. */
+static void radix_sort(uint32_t *key, uint32_t *val, uint32_t *key_tmp, uint32_t *val_tmp, size_t m)
+{
+    for (int shift = 0; shift < 32; shift += 8) {
+        size_t count[257];
+        memset(count, 0, sizeof count);
+        for (size_t i = 0; i < m; i++) count[((key[i] >> shift) & 255u) + 1]++;
+        if (count[1 + ((key[0] >> shift) & 255u)] == m) continue; /* all in one bucket */
+        for (int b = 0; b < 256; b++) count[b + 1] += count[b];
+        for (size_t i = 0; i < m; i++) {
+            size_t pos = count[(key[i] >> shift) & 255u]++;
+            key_tmp[pos] = key[i];
+            val_tmp[pos] = val[i];
+        }
+        memcpy(key, key_tmp, m * sizeof *key);
+        memcpy(val, val_tmp, m * sizeof *val);
+    }
+}
+
+int cpu_bin_tiles(cpu_raster *r, sp_error *err)
+{
+    size_t n = r->n;
+    int tx = (r->W + SP_TILE_SIZE - 1) / SP_TILE_SIZE, ty = (r->H + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
+    size_t tiles = (size_t)tx * (size_t)ty;
+    r->tiles_x = tx;
+    r->tiles_y = ty;
+
+    /* sort scratch: 4 x m uint32 + tile cursors; pair_off lives here too ([n+1] size_t) */
+    size_t sort_bytes = 4 * n * sizeof(uint32_t) + (tiles + 1) * sizeof(uint32_t) +
+                        (n + 1) * sizeof(size_t) + 256;
+    int rc = sp_scratch_reserve(r->dev, &r->sort_buf, &r->sort_cap, sort_bytes, err);
+    if (rc) return rc;
+    size_t *pair_off = r->sort_buf;
+    uint32_t *key = (uint32_t *)(pair_off + n + 1);
+    uint32_t *val = key + n, *key_tmp = val + n, *val_tmp = key_tmp + n;
+    uint32_t *cursor = val_tmp + n;
+    r->pair_off = pair_off;
+
+    /* pairs per Gaussian (index order) and the visible list */
+    size_t m = 0, pairs = 0;
+    for (size_t i = 0; i < n; i++) {
+        pair_off[i] = pairs;
+        if (r->radii[i] <= 0) continue;
+        const int32_t *b = r->pix_box + 4 * i;
+        size_t cnt = (size_t)(b[1] / SP_TILE_SIZE - b[0] / SP_TILE_SIZE + 1) *
+                     (size_t)(b[3] / SP_TILE_SIZE - b[2] / SP_TILE_SIZE + 1);
+        pairs += cnt;
+        key[m] = float_key(r->depth[i]);
+        val[m] = (uint32_t)i;
+        m++;
+    }
+    pair_off[n] = pairs;
+    if (pairs > UINT32_MAX)
+        return sp_error_set(err, SP_E_ARG, "rasterizer: %zu Gaussian-tile pairs exceed 2^32", pairs);
+    r->pairs = pairs;
+    if (m > 0) radix_sort(key, val, key_tmp, val_tmp, m);
+
+    size_t tile_bytes = (tiles + 1) * sizeof(uint32_t) + pairs * (sizeof(int32_t) + sizeof(uint32_t)) + 64;
+    rc = sp_scratch_reserve(r->dev, &r->tile_buf, &r->tile_cap, tile_bytes, err);
+    if (rc) return rc;
+    r->tile_start = r->tile_buf;
+    r->tile_gauss = (int32_t *)(r->tile_start + tiles + 1);
+    r->tile_slot = (uint32_t *)(r->tile_gauss + pairs);
+
+    /* counting sort by tile */
+    memset(r->tile_start, 0, (tiles + 1) * sizeof(uint32_t));
+    for (size_t k = 0; k < m; k++) {
+        const int32_t *b = r->pix_box + 4 * val[k];
+        for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
+            for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++)
+                r->tile_start[(size_t)y * tx + x + 1]++;
+    }
+    for (size_t t = 0; t < tiles; t++) r->tile_start[t + 1] += r->tile_start[t];
+    memcpy(cursor, r->tile_start, tiles * sizeof(uint32_t));
+    for (size_t k = 0; k < m; k++) {
+        uint32_t g = val[k];
+        const int32_t *b = r->pix_box + 4 * g;
+        uint32_t slot = (uint32_t)pair_off[g];
+        for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
+            for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++) {
+                uint32_t pos = cursor[(size_t)y * tx + x]++;
+                r->tile_gauss[pos] = (int32_t)g;
+                r->tile_slot[pos] = slot++;
+            }
+    }
+    return 0;
+}
