@@ -1,0 +1,200 @@
+/* semsplat train: fit a Gaussian splat to posed images (3DGS, with gsplat's simple_trainer
+ * defaults), on the CPU or one GPU through the same loop.
+ *
+ * Pieces, each usable alone (tests and the semantic module call them directly):
+ *   - losses: 0.8 L1 + 0.2 (1 - SSIM) on RGB (SSIM: 11x11 Gaussian window, sigma 1.5, "valid"
+ *     positions as gsplat/torchmetrics), and lambda * MSE on feature channels;
+ *   - Adam (torch.optim.Adam semantics) on device buffers;
+ *   - adaptive density control (gsplat DefaultStrategy): accumulate screen-space mean gradients,
+ *     clone small / split large Gaussians over a threshold, prune transparent and oversized ones,
+ *     periodic opacity reset;
+ *   - the loop: pick a training view, SH -> colours, rasterize, loss, backward, Adam, densify,
+ *     held-out evaluation (every test_every-th image), checkpoints, NaN guard.
+ *
+ * Data: sp_train_data holds the views (pinhole cameras, 8-bit RGB on the host) and the COLMAP
+ * points; sp_train_data_load fills it from a COLMAP model and an images folder. Parameters,
+ * gradients and Adam moments live on the sp_device; densification moves them to the host and
+ * back (every refine_every steps, cheap next to rendering).
+ *
+ * Feature distillation hook (used by `semsplat distill`): set feature_dim > 0 and
+ * get_feature_target; each Gaussian then carries feature_dim extra values (an Adam group with
+ * its own lr, copied to children on densify) rendered beside RGB in one pass of 3+F channels,
+ * and the loss gains feature_lambda * MSE(rendered features, target). freeze_geometry trains the
+ * features only (no densification; geometry and colour untouched).
+ *
+ * Ownership: sp_train_data owns its views and points (sp_train_data_free); sp_train_run fills a
+ * caller-provided sp_splat (free with sp_splat_free). */
+#ifndef SEMSPLAT_TRAIN_H
+#define SEMSPLAT_TRAIN_H
+
+#include "semsplat/core.h"
+#include "semsplat/render.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- data -------------------------------------------------------------------------------------- */
+
+typedef struct sp_train_view {
+    char name[256];  /* image file name as in the COLMAP model */
+    sp_camera cam;   /* pinhole, already downscaled to the image size below */
+    uint8_t *rgb;    /* [H][W][3], H = cam.height, W = cam.width */
+    int is_test;     /* held out for evaluation */
+} sp_train_view;
+
+typedef struct sp_train_data {
+    size_t n_views;
+    sp_train_view *views;
+    size_t n_points;
+    float *points;         /* [n_points][3] world (COLMAP points3D), may be NULL */
+    uint8_t *point_rgb;    /* [n_points][3] */
+    sp_vec3 scene_center;  /* mean of the camera centres */
+    float scene_scale;     /* max camera distance from scene_center (gsplat parser.scene_scale) */
+} sp_train_data;
+
+/* Loads a COLMAP model (`colmap_dir`: capture root or model folder) and its images
+ * (`images_dir`, NULL = <colmap_dir>/images). Views are sorted by name; every test_every-th
+ * (index % test_every == 0, as gsplat) is held out (test_every <= 0: none). Images are
+ * downscaled by an integer `downscale` >= 1 (box filter) and cameras with them.
+ * Errors: a COLMAP image missing from the folder (names the image and the folder), an image
+ * whose size does not match its camera, a camera with distortion (SP_E_UNSUPPORTED, names the
+ * camera and model; undistort with COLMAP's image_undistorter first). */
+int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *images_dir,
+                       int downscale, int test_every, sp_error *err);
+/* Computes scene_center / scene_scale from the views' camera centres. */
+void sp_train_data_update_scene(sp_train_data *d);
+void sp_train_data_free(sp_train_data *d);
+
+/* ---- initialisation ---------------------------------------------------------------------------- */
+
+/* gsplat init from points: means = points, colour = point colour as SH DC, log_scales =
+ * log(mean distance to the 3 nearest neighbours) on all axes, opacity 0.1, random quaternions
+ * (uniform in [0,1)^4 as gsplat), higher SH bands zero. Needs d->n_points >= 1. */
+int sp_train_init_from_points(sp_splat *s, const sp_train_data *d, int sh_degree, uint64_t seed,
+                              sp_error *err);
+/* gsplat random init: n points uniform in a cube of half-size extent * scene_scale around the
+ * scene centre, random colours, scales from nearest neighbours as above. */
+int sp_train_init_random(sp_splat *s, const sp_train_data *d, size_t n, float extent,
+                         int sh_degree, uint64_t seed, sp_error *err);
+
+/* ---- options and results ----------------------------------------------------------------------- */
+
+/* Called for training view `view` (index into data->views): fill dst [H][W][F] (HOST, H/W of
+ * that view's camera, F = feature_dim) with the target feature map. Return 0 or a negative
+ * SP_E_* code with err filled. Called once per view and cached on the device when
+ * cache_feature_targets is set, else every time the view is drawn. */
+typedef int (*sp_feature_target_fn)(void *user, size_t view, int width, int height, int F,
+                                    float *dst, sp_error *err);
+
+typedef struct sp_train_options {
+    int steps;              /* total optimisation steps (default 30000) */
+    int sh_degree;          /* final SH degree (default 3) */
+    int sh_degree_interval; /* raise the active degree every this many steps (default 1000) */
+    float ssim_lambda;      /* default 0.2 */
+    int random_background;  /* composite on a random colour each step (default 0: black) */
+    float background[3];    /* fixed background when not random */
+    uint64_t seed;
+
+    /* Adam learning rates (gsplat defaults); lr_means is multiplied by the scene scale and
+     * decays exponentially to lr_means_final_factor of itself over `steps`. */
+    float lr_means, lr_means_final_factor, lr_scales, lr_quats, lr_opacities, lr_sh0, lr_shN;
+    float adam_beta1, adam_beta2, adam_eps;
+
+    /* Density control (gsplat DefaultStrategy); step fields in optimisation steps. */
+    int densify;             /* default 1 */
+    int refine_start, refine_stop, refine_every, reset_every; /* 500, 15000, 100, 3000 */
+    float grow_grad2d;       /* 0.0002 (NDC-normalised gradient norm) */
+    float grow_scale3d;      /* 0.01 (x scene scale): clone below, split above */
+    float prune_opacity;     /* 0.005 */
+    float prune_scale3d;     /* 0.1 (x scene scale), applied after the first opacity reset */
+    size_t max_gaussians;    /* cap on the count (0 = none); growth stops at the cap */
+    float scene_scale;       /* 0 = from the data (x 1.1 as gsplat) */
+
+    /* Evaluation and checkpoints. */
+    int eval_every;          /* held-out evaluation every this many steps (0 = only at the end) */
+    const char *checkpoint_dir; /* NULL = no checkpoints */
+    int checkpoint_every;    /* steps between checkpoints (default 1000) */
+    const char *resume;      /* checkpoint file to resume from (NULL = start fresh) */
+
+    /* Feature distillation (see the header comment). */
+    int feature_dim;
+    float feature_lambda;    /* default 1.0 */
+    float lr_features;       /* default 2.5e-3 */
+    sp_feature_target_fn get_feature_target;
+    void *feature_user;
+    int cache_feature_targets; /* default 1 */
+    int freeze_geometry;       /* train features only */
+} sp_train_options;
+
+/* gsplat simple_trainer defaults for `steps` steps: density-control and SH-schedule steps are
+ * scaled by steps / 30000 when steps < 30000 (as simple_trainer's steps_scaler). */
+sp_train_options sp_train_options_default(int steps);
+
+typedef struct sp_train_result {
+    int steps;             /* steps completed (including resumed ones) */
+    size_t gaussians;
+    double seconds;        /* wall time of this run */
+    double psnr, ssim, l1; /* mean over held-out views (or training views when none held out) */
+    int n_eval_views;
+    int eval_on_train;     /* 1 when metrics are on training views (no held-out views) */
+    double feature_mse;    /* mean over eval views when feature_dim > 0 */
+    double last_loss;
+    char device[128];
+} sp_train_result;
+
+/* ---- the loop ------------------------------------------------------------------------------------ */
+
+/* Trains `splat` in place: on entry it holds the initial Gaussians (from sp_train_init_* or a
+ * PLY; its sh_degree is raised to opt->sh_degree and features added when feature_dim > 0 and it
+ * has none), on success the trained ones. With opt->resume, the checkpoint replaces the splat
+ * and the optimiser state. On a NaN/Inf loss or parameter the run stops with SP_E_NUMERIC, a
+ * message naming the step, and the last good checkpoint left as it was; `splat` then holds the
+ * last finite parameters. Progress and logs go to `log` (may be NULL). */
+int sp_train_run(sp_device *dev, const sp_train_data *data, const sp_train_options *opt,
+                 sp_splat *splat, sp_train_result *res, const sp_log *log, sp_error *err);
+
+/* Held-out metrics of a host splat on the test views (all views when none are test views). */
+int sp_train_evaluate(sp_device *dev, const sp_train_data *data, const sp_splat *splat,
+                      const float background[3], sp_train_result *res, sp_error *err);
+
+/* Writes train.json: settings, the result (keys psnr, ssim, gaussians, steps, seconds, device). */
+int sp_train_write_json(const char *path, const sp_train_options *opt, const sp_train_result *res,
+                        const char *colmap_dir, const char *images_dir, int downscale,
+                        sp_error *err);
+
+/* ---- building blocks (host buffers; the loop uses device versions) ------------------------------ */
+
+/* RGB loss (see train_cuda_api.h for the exact definition): stats = loss, L1, SSIM, MSE; v_pred
+ * (may be NULL) WRITTEN into channels [0, C) of [H][W][pred_stride]. pool may be NULL. */
+int sp_train_rgb_loss(sp_pool *pool, const float *pred, int pred_stride, const float *target,
+                      int H, int W, int C, float ssim_lambda, float *v_pred, double stats[4],
+                      sp_error *err);
+/* One Adam step on host arrays (step is 1-based). */
+void sp_train_adam_host(float *param, const float *grad, float *m, float *v, size_t n, float lr,
+                        float beta1, float beta2, float eps, int step);
+
+/* Density control on a host splat (gsplat DefaultStrategy grow + prune, in that order) with
+ * per-Gaussian statistics accumulated since the last refinement (grad2d_sum, count [n]):
+ * clone where the mean NDC gradient > grow_grad2d and max scale <= grow_scale3d * scene_scale,
+ * split (2 children sampled from the Gaussian, scales / 1.6) where it is larger; then prune
+ * opacity < prune_opacity and, when step > reset_every, max scale > prune_scale3d * scene_scale.
+ * Growth stops at max_gaussians (clones first, by gradient order of indices). adam_m / adam_v
+ * (may be NULL) are Adam moments shaped like s and are reorganised alongside; children get
+ * zero moments as in gsplat. rng: xorshift state for the split samples. */
+typedef struct sp_densify_stats {
+    size_t n_cloned, n_split, n_pruned;
+} sp_densify_stats;
+
+int sp_train_densify_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v,
+                          const float *grad2d_sum, const float *count,
+                          const sp_train_options *opt, float scene_scale, int step, uint64_t *rng,
+                          sp_densify_stats *st, sp_error *err);
+
+/* Opacity reset (3DGS): logits clamped to at most logit(2 * prune_opacity); moments zeroed. */
+void sp_train_reset_opacity_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v, float prune_opacity);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
