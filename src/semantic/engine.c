@@ -1,0 +1,419 @@
+/* The query engine: opens a language-embedded model folder once (splat with f_sem_*, sidecar,
+ * PCA, cameras) and answers text queries with a world position, instances, a confidence and a
+ * heatmap. Text goes through CLIP's text tower, or the label embedding for label-feature scenes. */
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sem_internal.h"
+#include "semsplat/clip.h"
+#include "semsplat/io.h"
+
+sp_query_opts sp_query_opts_default(void)
+{
+    sp_query_opts o;
+    memset(&o, 0, sizeof o);
+    o.method = SP_QUERY_3D;
+    o.temperature = SP_SEM_DEFAULT_TEMPERATURE;
+    o.min_confidence = 0.2f;
+    o.keep_fraction = 0.6f;
+    o.min_relevancy = 0.55f;
+    o.min_opacity = 0.1f;
+    o.voxel_m = 0.12f;
+    o.min_instance_fraction = 0.1f;
+    o.n_views = 4;
+    o.render_downscale = 2;
+    o.heatmap = 1;
+    o.heatmap_view = -1;
+    return o;
+}
+
+void sp_query_result_free(sp_query_result *res)
+{
+    if (!res) return;
+    free(res->relevancy_image);
+    free(res->relevancy);
+    free(res->instances);
+    memset(res, 0, sizeof *res);
+}
+
+void sp_query_engine_free(sp_query_engine *e)
+{
+    if (!e) return;
+    sp_raster_free(e->raster);
+    sp_splat_free(&e->splat);
+    sp_sem_pca_free(&e->pca);
+    free(e->cams);
+    free(e->cam_names);
+    if (e->clip) sp_clip_free(e->clip);
+    free(e->neg_emb);
+    free(e->opacity);
+    free(e->raw);
+    free(e->rel);
+    free(e);
+}
+
+static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error *err)
+{
+    e->opts = opts ? *opts : sp_query_opts_default();
+    if (e->splat.feat_dim != e->pca.dim)
+        return sp_error_set(err, SP_E_FORMAT,
+                            "query engine: the splat has %d f_sem_* features but the PCA has dim %d",
+                            e->splat.feat_dim, e->pca.dim);
+    if (e->pca.dim < 1 || e->pca.dim > 64)
+        return sp_error_set(err, SP_E_FORMAT, "query engine: feature dim %d not in 1..64", e->pca.dim);
+    size_t n = e->splat.n ? e->splat.n : 1;
+    e->opacity = malloc(sizeof(float) * n);
+    e->raw = malloc(sizeof(float) * n);
+    e->rel = malloc(sizeof(float) * n);
+    if (!e->opacity || !e->raw || !e->rel)
+        return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
+    for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
+    return sp_raster_create(&e->raster, e->dev, err);
+}
+
+int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,
+                           const sp_camera *cams, size_t n_cams, int label_embedding,
+                           const sp_query_opts *opts, sp_device *dev, const sp_log *log,
+                           sp_error *err)
+{
+    *out = NULL;
+    if (!splat || !pca || !dev) return sp_error_set(err, SP_E_ARG, "query engine: missing argument");
+    sp_query_engine *e = calloc(1, sizeof *e);
+    if (!e) return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
+    e->dev = dev;
+    if (log) e->log = *log, e->has_log = 1;
+    e->label_embedding = label_embedding;
+    int rc = sp_splat_copy(&e->splat, splat, err);
+    if (!rc) {
+        e->pca.dim = pca->dim;
+        e->pca.full_dim = pca->full_dim;
+        e->pca.mean = malloc(sizeof(float) * pca->full_dim);
+        e->pca.basis = malloc(sizeof(float) * pca->full_dim * pca->dim);
+        e->n_cams = n_cams;
+        e->cams = malloc(sizeof(sp_camera) * (n_cams ? n_cams : 1));
+        if (!e->pca.mean || !e->pca.basis || !e->cams) {
+            rc = sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
+        } else {
+            memcpy(e->pca.mean, pca->mean, sizeof(float) * pca->full_dim);
+            memcpy(e->pca.basis, pca->basis, sizeof(float) * pca->full_dim * pca->dim);
+            if (n_cams) memcpy(e->cams, cams, sizeof(sp_camera) * n_cams);
+        }
+    }
+    if (!rc) rc = engine_finish(e, opts, err);
+    if (rc) {
+        sp_query_engine_free(e);
+        return rc;
+    }
+    *out = e;
+    return 0;
+}
+
+static const char *jstr(const cJSON *o, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    return cJSON_IsString(v) ? v->valuestring : NULL;
+}
+
+/* Resolves a sidecar path: absolute as is, else relative to the model folder. */
+static void resolve(char *out, size_t cap, const char *dir, const char *p)
+{
+    if (p[0] == '/') snprintf(out, cap, "%s", p);
+    else sp_path_join(out, cap, dir, p);
+}
+
+static int load_cameras(sp_query_engine *e, const char *colmap_dir, sp_error *err)
+{
+    sp_colmap_model m;
+    memset(&m, 0, sizeof m);
+    int rc = sp_colmap_read(colmap_dir, &m, err);
+    if (rc) return sp_error_prefix(err, "query engine: cameras: ");
+    e->cams = calloc(m.n_images ? m.n_images : 1, sizeof(sp_camera));
+    e->cam_names = calloc(m.n_images ? m.n_images : 1, sizeof *e->cam_names);
+    if (!e->cams || !e->cam_names) {
+        sp_colmap_free(&m);
+        return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for cameras");
+    }
+    for (size_t i = 0; i < m.n_images; i++) {
+        if ((rc = sp_colmap_image_camera(&m, i, &e->cams[e->n_cams], err))) break;
+        e->cams[e->n_cams].distortion = SP_DIST_NONE; /* heatmaps are pinhole renders */
+        snprintf(e->cam_names[e->n_cams], 256, "%s", m.images[i].name ? m.images[i].name : "");
+        e->n_cams++;
+    }
+    sp_colmap_free(&m);
+    return rc;
+}
+
+int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
+                         sp_device *dev, const sp_log *log, sp_error *err)
+{
+    *out = NULL;
+    if (!model_dir || !dev) return sp_error_set(err, SP_E_ARG, "query engine: missing argument");
+    char path[2048], p2[2048];
+    cJSON *js = NULL;
+    sp_query_engine *e = calloc(1, sizeof *e);
+    if (!e) return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
+    e->dev = dev;
+    if (log) e->log = *log, e->has_log = 1;
+    int rc;
+    sp_path_join(path, sizeof path, model_dir, "semantic.json");
+    if (!sp_file_exists(path)) {
+        rc = sp_error_set(err, SP_E_NOTFOUND,
+                          "%s: no semantic field in this model folder (run semsplat lift or distill)",
+                          path);
+        goto fail;
+    }
+    if ((rc = sp_json_read_file(path, &js, err))) goto fail;
+    const char *mean = jstr(js, "pca_mean"), *basis = jstr(js, "pca_basis");
+    if (!mean || !basis) {
+        rc = sp_error_set(err, SP_E_FORMAT, "%s: pca_mean / pca_basis missing", path);
+        goto fail;
+    }
+    resolve(path, sizeof path, model_dir, mean);
+    resolve(p2, sizeof p2, model_dir, basis);
+    if ((rc = sp_sem_pca_read(path, p2, &e->pca, err))) goto fail;
+    const char *le = jstr(js, "label_embedding"), *model = jstr(js, "model");
+    e->label_embedding = le && !strcmp(le, "hash");
+    if (!e->label_embedding) {
+        if (!model || !model[0]) {
+            rc = sp_error_set(err, SP_E_NOTFOUND,
+                              "%s/semantic.json: features need CLIP text embeddings but name no "
+                              "model (set \"model\" to a CLIP model.safetensors)", model_dir);
+            goto fail;
+        }
+        snprintf(e->clip_path, sizeof e->clip_path, "%s", model);
+    }
+    sp_path_join(path, sizeof path, model_dir, "splat.ply");
+    if ((rc = sp_ply_read_splat(path, &e->splat, err))) goto fail;
+    const char *colmap = jstr(js, "colmap");
+    if (colmap && colmap[0]) {
+        resolve(path, sizeof path, model_dir, colmap);
+        if ((rc = load_cameras(e, path, err))) goto fail;
+    }
+    if ((rc = engine_finish(e, opts, err))) goto fail;
+    cJSON_Delete(js);
+    *out = e;
+    return 0;
+fail:
+    cJSON_Delete(js);
+    sp_query_engine_free(e);
+    return rc;
+}
+
+sp_query_opts *sp_query_engine_opts(sp_query_engine *e) { return &e->opts; }
+int sp_query_engine_full_dim(const sp_query_engine *e) { return e->pca.full_dim; }
+size_t sp_query_engine_n_cameras(const sp_query_engine *e) { return e->n_cams; }
+const sp_splat *sp_query_engine_splat(const sp_query_engine *e) { return &e->splat; }
+const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i)
+{
+    return i < e->n_cams ? &e->cams[i] : NULL;
+}
+
+static int embed_many(sp_query_engine *e, const char *const *texts, int n, float *out, sp_error *err)
+{
+    int F = e->pca.full_dim;
+    if (e->label_embedding) {
+        for (int i = 0; i < n; i++) sp_label_embedding(texts[i], F, out + (size_t)i * F);
+        return 0;
+    }
+    if (!e->clip) {
+        int rc = sp_clip_load(&e->clip, e->clip_path, NULL, e->dev, err);
+        if (rc) return sp_error_prefix(err, "query engine: text embeddings: ");
+        if (sp_clip_embed_dim(e->clip) != F)
+            return sp_error_set(err, SP_E_FORMAT, "%s: CLIP embeds to %d dims, the features to %d",
+                                e->clip_path, sp_clip_embed_dim(e->clip), F);
+    }
+    return sp_clip_encode_text(e->clip, texts, n, out, err);
+}
+
+int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err)
+{
+    if (!text || !text[0]) return sp_error_set(err, SP_E_ARG, "query: empty text");
+    return embed_many(e, &text, 1, out, err);
+}
+
+static int ensure_negatives(sp_query_engine *e, sp_error *err)
+{
+    const char *key = e->opts.negatives[0] ? e->opts.negatives : SP_SEM_DEFAULT_NEGATIVES;
+    if (e->neg_emb && !strcmp(key, e->neg_key)) return 0;
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", key);
+    const char *words[SP_SEM_MAX_NEGATIVES];
+    int n = 0;
+    for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        while (*tok == ' ') tok++;
+        if (!*tok) continue;
+        if (n == SP_SEM_MAX_NEGATIVES)
+            return sp_error_set(err, SP_E_ARG, "query: more than %d negatives in '%s'",
+                                SP_SEM_MAX_NEGATIVES, key);
+        words[n++] = tok;
+    }
+    float *emb = malloc(sizeof(float) * (size_t)(n ? n : 1) * e->pca.full_dim);
+    if (!emb) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    int rc = n ? embed_many(e, words, n, emb, err) : 0;
+    if (rc) {
+        free(emb);
+        return rc;
+    }
+    free(e->neg_emb);
+    e->neg_emb = emb;
+    e->n_neg = n;
+    snprintf(e->neg_key, sizeof e->neg_key, "%s", key);
+    return 0;
+}
+
+/* Confidence: the 5th largest raw cosine among visible Gaussians, so that a handful of stray
+ * Gaussians cannot claim a match. */
+static float robust_max(const float *v, const float *op, float min_op, size_t n)
+{
+    float top[5] = {-2, -2, -2, -2, -2};
+    for (size_t i = 0; i < n; i++) {
+        if (op[i] < min_op || !(v[i] > top[4])) continue;
+        int j = 4;
+        while (j > 0 && top[j - 1] < v[i]) {
+            top[j] = top[j - 1];
+            j--;
+        }
+        top[j] = v[i];
+    }
+    for (int j = 4; j >= 0; j--)
+        if (top[j] > -2) return top[j];
+    return 0;
+}
+
+int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
+                                    const char *label, sp_query_result *res, sp_error *err)
+{
+    double t0 = sp_time_now();
+    memset(res, 0, sizeof *res);
+    res->view_index = -1;
+    res->position[0] = res->position[1] = res->position[2] = NAN;
+    snprintf(res->text, sizeof res->text, "%s", label ? label : "");
+    res->method = e->opts.method;
+    int rc = ensure_negatives(e, err);
+    if (rc) return rc;
+    sp_sem_scorer sc;
+    if ((rc = sp_sem_scorer_init(&sc, &e->pca, embedding, e->neg_emb, e->n_neg,
+                                 e->opts.temperature, err)))
+        return rc;
+    double t1 = sp_time_now();
+    sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
+    res->confidence = robust_max(e->raw, e->opacity, e->opts.min_opacity, e->splat.n);
+    float rmax = 0;
+    for (size_t i = 0; i < e->splat.n; i++)
+        if (e->opacity[i] >= e->opts.min_opacity && e->rel[i] > rmax) rmax = e->rel[i];
+    res->relevancy_max = rmax;
+    double t2 = sp_time_now();
+    res->ms_relevancy = (t2 - t1) * 1e3;
+    sem_thresholds th;
+    th.thr_raw = e->opts.keep_fraction * res->confidence;
+    if (th.thr_raw < 0.1f) th.thr_raw = 0.1f;
+    th.thr_rel = e->opts.min_relevancy;
+    th.min_op = e->opts.min_opacity;
+    if (e->opts.method == SP_QUERY_MULTIVIEW && e->n_cams > 0)
+        rc = sem_localize_multiview(e, &sc, &th, res, err);
+    else {
+        res->method = SP_QUERY_3D;
+        rc = sem_localize_3d(e, &sc, &th, res, err);
+    }
+    if (rc) return rc;
+    double t3 = sp_time_now();
+    res->ms_localize = (t3 - t2) * 1e3;
+    if (e->opts.heatmap && e->n_cams > 0) {
+        int v = e->opts.heatmap_view;
+        if (v < 0 && res->view_index >= 0) v = res->view_index;
+        if (v < 0 && res->n_instances > 0) {
+            /* the view that best sees the best instance: its relevant Gaussians inside its box */
+            const sp_query_instance *I = &res->instances[0];
+            uint8_t *mask = calloc(e->splat.n ? e->splat.n : 1, 1);
+            if (!mask) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+            float pad = e->opts.voxel_m;
+            for (size_t i = 0; i < e->splat.n; i++) {
+                const float *m = e->splat.means + 3 * i;
+                int in = e->raw[i] >= th.thr_raw && e->opacity[i] >= th.min_op;
+                for (int a = 0; a < 3 && in; a++)
+                    in = m[a] >= I->extent_min[a] - pad && m[a] <= I->extent_max[a] + pad;
+                mask[i] = (uint8_t)in;
+            }
+            int got = sem_pick_views(e, &sc, &th, mask, 1, &v, NULL, err);
+            free(mask);
+            if (got < 0) return got;
+            if (got == 0) v = -1;
+        }
+        if (v < 0) v = 0;
+        if ((rc = sem_heatmap(e, &sc, v, res, err))) return rc;
+        res->ms_heatmap = (sp_time_now() - t3) * 1e3;
+    }
+    res->ms_total = (sp_time_now() - t0) * 1e3;
+    return 0;
+}
+
+int sp_query_engine_query(sp_query_engine *e, const char *text, sp_query_result *res,
+                          sp_error *err)
+{
+    double t0 = sp_time_now();
+    memset(res, 0, sizeof *res);
+    float *q = malloc(sizeof(float) * e->pca.full_dim);
+    if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    int rc = sp_query_engine_embed(e, text, q, err);
+    if (!rc) rc = ensure_negatives(e, err);
+    double t1 = sp_time_now();
+    if (!rc) rc = sp_query_engine_query_embedding(e, q, text, res, err);
+    free(q);
+    if (rc) return rc;
+    res->ms_embed = (t1 - t0) * 1e3;
+    res->ms_total += res->ms_embed;
+    return 0;
+}
+
+static cJSON *vec3(const float *v)
+{
+    cJSON *a = cJSON_CreateArray();
+    for (int k = 0; k < 3; k++) cJSON_AddItemToArray(a, cJSON_CreateNumber(v[k]));
+    return a;
+}
+
+char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
+{
+    cJSON *o = cJSON_CreateObject();
+    if (!o) return NULL;
+    cJSON_AddStringToObject(o, "text", res->text);
+    cJSON_AddStringToObject(o, "method", res->method == SP_QUERY_MULTIVIEW ? "multiview" : "3d");
+    cJSON_AddBoolToObject(o, "found", res->valid);
+    if (res->valid) cJSON_AddItemToObject(o, "position", vec3(res->position));
+    else cJSON_AddNullToObject(o, "position");
+    cJSON_AddNumberToObject(o, "confidence", res->confidence);
+    cJSON_AddNumberToObject(o, "relevancy_max", res->relevancy_max);
+    if (res->view_index >= 0) {
+        cJSON *v = cJSON_AddObjectToObject(o, "view");
+        cJSON_AddNumberToObject(v, "index", res->view_index);
+        cJSON_AddStringToObject(v, "name", res->view_name);
+    } else {
+        cJSON_AddNullToObject(o, "view");
+    }
+    cJSON *arr = cJSON_AddArrayToObject(o, "instances");
+    for (int i = 0; i < res->n_instances; i++) {
+        const sp_query_instance *I = &res->instances[i];
+        cJSON *it = cJSON_CreateObject();
+        cJSON_AddItemToObject(it, "position", vec3(I->position));
+        cJSON_AddItemToObject(it, "extent_min", vec3(I->extent_min));
+        cJSON_AddItemToObject(it, "extent_max", vec3(I->extent_max));
+        cJSON_AddNumberToObject(it, "score", I->score);
+        cJSON_AddNumberToObject(it, "confidence", I->confidence);
+        cJSON_AddNumberToObject(it, "points", I->n_points);
+        cJSON_AddItemToArray(arr, it);
+    }
+    if (heatmap_path) cJSON_AddStringToObject(o, "heatmap", heatmap_path);
+    else cJSON_AddNullToObject(o, "heatmap");
+    cJSON *t = cJSON_AddObjectToObject(o, "timings_ms");
+    cJSON_AddNumberToObject(t, "embed", res->ms_embed);
+    cJSON_AddNumberToObject(t, "relevancy", res->ms_relevancy);
+    cJSON_AddNumberToObject(t, "localize", res->ms_localize);
+    cJSON_AddNumberToObject(t, "heatmap", res->ms_heatmap);
+    cJSON_AddNumberToObject(t, "total", res->ms_total);
+    char *s = cJSON_Print(o);
+    cJSON_Delete(o);
+    return s;
+}

@@ -1,0 +1,467 @@
+/* Localization of a text query: 3D-native (relevant Gaussians clustered into instances) and
+ * multi-view (relevant pixels of rendered views back-projected with rendered depth, then the same
+ * clustering). Both share a voxel clustering that separates instances (several chairs) and gives
+ * each a robust centre (middle of the 5%..95% weighted extent) rather than a mean that one stray
+ * Gaussian could drag. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sem_internal.h"
+
+/* ---- voxel clustering -------------------------------------------------------------------------- */
+
+typedef struct {
+    uint64_t key;
+    uint32_t idx;
+} keyed;
+
+static int cmp_keyed(const void *a, const void *b)
+{
+    const keyed *x = a, *y = b;
+    if (x->key != y->key) return x->key < y->key ? -1 : 1;
+    return x->idx < y->idx ? -1 : x->idx > y->idx;
+}
+
+#define KEY_BITS 21
+#define KEY_OFF (1 << (KEY_BITS - 1))
+
+static uint64_t pack(long ix, long iy, long iz)
+{
+    return ((uint64_t)(ix + KEY_OFF) << (2 * KEY_BITS)) | ((uint64_t)(iy + KEY_OFF) << KEY_BITS) |
+           (uint64_t)(iz + KEY_OFF);
+}
+
+static long find_root(long *parent, long i)
+{
+    while (parent[i] != i) {
+        parent[i] = parent[parent[i]];
+        i = parent[i];
+    }
+    return i;
+}
+
+typedef struct {
+    float v, w;
+} vw;
+
+static int cmp_vw(const void *a, const void *b)
+{
+    float x = ((const vw *)a)->v, y = ((const vw *)b)->v;
+    return (x > y) - (x < y);
+}
+
+/* Weighted quantile of sorted values. */
+static float wquantile(const vw *s, size_t m, double total, double q)
+{
+    double acc = 0, target = q * total;
+    for (size_t i = 0; i < m; i++) {
+        acc += s[i].w;
+        if (acc >= target) return s[i].v;
+    }
+    return s[m - 1].v;
+}
+
+int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, float voxel,
+                float min_fraction, sp_query_instance **out, int *n_out, sp_error *err)
+{
+    *out = NULL;
+    *n_out = 0;
+    if (m == 0) return 0;
+    if (!(voxel > 0)) return sp_error_set(err, SP_E_ARG, "cluster: voxel size %g must be > 0", (double)voxel);
+    float lo[3] = {FLT_MAX, FLT_MAX, FLT_MAX}, hi[3] = {-FLT_MAX, -FLT_MAX, -FLT_MAX};
+    for (size_t i = 0; i < m; i++)
+        for (int a = 0; a < 3; a++) {
+            if (pts[i * 3 + a] < lo[a]) lo[a] = pts[i * 3 + a];
+            if (pts[i * 3 + a] > hi[a]) hi[a] = pts[i * 3 + a];
+        }
+    for (int a = 0; a < 3; a++) /* keep the grid inside the key range for huge scenes */
+        while ((hi[a] - lo[a]) / voxel > (float)(KEY_OFF - 2)) voxel *= 2;
+    keyed *k = malloc(sizeof *k * m);
+    long *parent = NULL, *vox_of = NULL, *comp = NULL;
+    double *cw = NULL;
+    sp_query_instance *inst = NULL;
+    vw *buf = NULL;
+    int rc = 0;
+    if (!k) goto nomem;
+    for (size_t i = 0; i < m; i++) {
+        long ix = (long)floorf((pts[i * 3] - lo[0]) / voxel);
+        long iy = (long)floorf((pts[i * 3 + 1] - lo[1]) / voxel);
+        long iz = (long)floorf((pts[i * 3 + 2] - lo[2]) / voxel);
+        k[i].key = pack(ix, iy, iz);
+        k[i].idx = (uint32_t)i;
+    }
+    qsort(k, m, sizeof *k, cmp_keyed);
+    /* unique voxels: vox_of[j] = voxel id of sorted entry j; voxel v starts at first[v] */
+    vox_of = malloc(sizeof(long) * m);
+    if (!vox_of) goto nomem;
+    long nv = 0;
+    for (size_t j = 0; j < m; j++) {
+        if (j > 0 && k[j].key == k[j - 1].key) vox_of[j] = nv - 1;
+        else vox_of[j] = nv++;
+    }
+    uint64_t *vkey = malloc(sizeof(uint64_t) * (size_t)nv);
+    parent = malloc(sizeof(long) * (size_t)nv);
+    if (!vkey || !parent) {
+        free(vkey);
+        goto nomem;
+    }
+    for (size_t j = 0; j < m; j++) vkey[vox_of[j]] = k[j].key;
+    for (long v = 0; v < nv; v++) parent[v] = v;
+    const uint64_t mask = ((uint64_t)1 << KEY_BITS) - 1;
+    for (long v = 0; v < nv; v++) {
+        long ix = (long)((vkey[v] >> (2 * KEY_BITS)) & mask) - KEY_OFF;
+        long iy = (long)((vkey[v] >> KEY_BITS) & mask) - KEY_OFF;
+        long iz = (long)(vkey[v] & mask) - KEY_OFF;
+        for (int dx = -1; dx <= 1; dx++)
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dz = -1; dz <= 1; dz++) {
+                    uint64_t q = pack(ix + dx, iy + dy, iz + dz);
+                    if (q <= vkey[v]) continue; /* each pair once */
+                    long a = v + 1, b = nv - 1, hit = -1;
+                    while (a <= b) {
+                        long mid = (a + b) / 2;
+                        if (vkey[mid] == q) { hit = mid; break; }
+                        if (vkey[mid] < q) a = mid + 1; else b = mid - 1;
+                    }
+                    if (hit < 0) continue;
+                    long ra = find_root(parent, v), rb = find_root(parent, hit);
+                    if (ra != rb) parent[ra > rb ? ra : rb] = ra < rb ? ra : rb;
+                }
+    }
+    free(vkey);
+    /* components: comp id per root, weights */
+    comp = malloc(sizeof(long) * (size_t)nv);
+    cw = calloc((size_t)nv, sizeof(double));
+    if (!comp || !cw) goto nomem;
+    long nc = 0;
+    for (long v = 0; v < nv; v++) comp[v] = -1;
+    for (long v = 0; v < nv; v++) {
+        long r = find_root(parent, v);
+        if (comp[r] < 0) comp[r] = nc++;
+        comp[v] = comp[r];
+    }
+    for (size_t j = 0; j < m; j++) cw[comp[vox_of[j]]] += w[k[j].idx];
+    double best = 0;
+    for (long c = 0; c < nc; c++)
+        if (cw[c] > best) best = cw[c];
+    if (!(best > 0)) goto done;
+    int n_keep = 0;
+    for (long c = 0; c < nc; c++)
+        if (cw[c] >= min_fraction * best) n_keep++;
+    inst = calloc((size_t)n_keep, sizeof *inst);
+    buf = malloc(sizeof(vw) * m);
+    if (!inst || !buf) goto nomem;
+    int ni = 0;
+    for (long c = 0; c < nc; c++) {
+        if (cw[c] < min_fraction * best) continue;
+        sp_query_instance *I = &inst[ni++];
+        I->score = (float)cw[c];
+        I->confidence = -1;
+        for (int a = 0; a < 3; a++) {
+            size_t cnt = 0;
+            for (size_t j = 0; j < m; j++) {
+                if (comp[vox_of[j]] != c) continue;
+                uint32_t i = k[j].idx;
+                buf[cnt].v = pts[i * 3 + a];
+                buf[cnt].w = w[i];
+                cnt++;
+                if (a == 0 && conf && conf[i] > I->confidence) I->confidence = conf[i];
+            }
+            qsort(buf, cnt, sizeof *buf, cmp_vw);
+            I->extent_min[a] = wquantile(buf, cnt, cw[c], 0.05);
+            I->extent_max[a] = wquantile(buf, cnt, cw[c], 0.95);
+            I->position[a] = 0.5f * (I->extent_min[a] + I->extent_max[a]);
+            I->n_points = (int)cnt;
+        }
+    }
+    /* heaviest first (insertion sort: few instances) */
+    for (int i = 1; i < ni; i++) {
+        sp_query_instance t = inst[i];
+        int j = i - 1;
+        while (j >= 0 && inst[j].score < t.score) {
+            inst[j + 1] = inst[j];
+            j--;
+        }
+        inst[j + 1] = t;
+    }
+    *out = inst;
+    *n_out = ni;
+    inst = NULL;
+    goto done;
+nomem:
+    rc = sp_error_set(err, SP_E_NOMEM, "cluster: out of memory for %zu points", m);
+done:
+    free(k);
+    free(parent);
+    free(vox_of);
+    free(comp);
+    free(cw);
+    free(inst);
+    free(buf);
+    return rc;
+}
+
+/* ---- 3D-native ----------------------------------------------------------------------------------- */
+
+static void set_best(sp_query_result *res, float min_conf)
+{
+    if (res->n_instances > 0 && res->confidence >= min_conf) {
+        res->valid = 1;
+        memcpy(res->position, res->instances[0].position, sizeof res->position);
+    } else {
+        res->valid = 0;
+        res->position[0] = res->position[1] = res->position[2] = NAN;
+    }
+}
+
+int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                    sp_query_result *res, sp_error *err)
+{
+    (void)sc;
+    const sp_splat *s = &e->splat;
+    size_t m = 0;
+    for (size_t i = 0; i < s->n; i++)
+        if (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel && e->opacity[i] >= th->min_op) m++;
+    if (m == 0) {
+        set_best(res, e->opts.min_confidence);
+        return 0;
+    }
+    float *pts = malloc(sizeof(float) * 3 * m), *w = malloc(sizeof(float) * m),
+          *cf = malloc(sizeof(float) * m);
+    if (!pts || !w || !cf) {
+        free(pts), free(w), free(cf);
+        return sp_error_set(err, SP_E_NOMEM, "3D localization: out of memory");
+    }
+    size_t j = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        if (!(e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel && e->opacity[i] >= th->min_op))
+            continue;
+        memcpy(pts + 3 * j, s->means + 3 * i, sizeof(float) * 3);
+        /* opacity-weighted, times how far above neutral the relevancy is */
+        w[j] = e->opacity[i] * (e->rel[i] - 0.5f + 1e-3f);
+        cf[j] = e->raw[i];
+        j++;
+    }
+    int rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction,
+                         &res->instances, &res->n_instances, err);
+    free(pts), free(w), free(cf);
+    if (rc) return rc;
+    set_best(res, e->opts.min_confidence);
+    return 0;
+}
+
+/* ---- views ---------------------------------------------------------------------------------------- */
+
+void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                      const float *alpha, size_t npix, float *raw, float *rel)
+{
+    int D = sc->dim;
+    float *norm = malloc(sizeof(float) * npix * (size_t)D);
+    if (!norm) { /* degrade to un-normalised features rather than failing a heatmap */
+        sp_sem_score(sc, sp_device_pool(e->dev), npix, feat, raw, rel);
+        return;
+    }
+    for (size_t p = 0; p < npix; p++) {
+        float a = alpha[p] > 1e-6f ? alpha[p] : 1.0f;
+        for (int c = 0; c < D; c++) norm[p * D + c] = feat[p * D + c] / a;
+    }
+    sp_sem_score(sc, sp_device_pool(e->dev), npix, norm, raw, rel);
+    for (size_t p = 0; p < npix; p++)
+        if (!(alpha[p] > 0.5f)) {
+            if (raw) raw[p] = -1;
+            if (rel) rel[p] = 0.5f;
+        }
+    free(norm);
+}
+
+typedef struct {
+    int view;
+    float score;
+} view_score;
+
+static int cmp_view_score(const void *a, const void *b)
+{
+    float x = ((const view_score *)a)->score, y = ((const view_score *)b)->score;
+    return (x < y) - (x > y);
+}
+
+/* Renders view v at 1/ds resolution; returns the camera used and buffers (caller frees). */
+static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float **feat,
+                       float **depth, float **alpha, float **rgb, sp_error *err)
+{
+    *cam = e->cams[v];
+    if (ds > 1) sp_camera_downscale(cam, ds);
+    size_t np = (size_t)cam->width * cam->height;
+    int D = e->splat.feat_dim;
+    *feat = malloc(sizeof(float) * np * (size_t)D);
+    *alpha = malloc(sizeof(float) * np);
+    if (depth) *depth = malloc(sizeof(float) * np);
+    if (rgb) *rgb = malloc(sizeof(float) * np * 3);
+    if (!*feat || !*alpha || (depth && !*depth) || (rgb && !*rgb))
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering view %d", v);
+    sp_render_request req = {rgb ? *rgb : NULL, *feat, depth ? *depth : NULL, *alpha, NULL};
+    return sp_render_splat(e->raster, &e->splat, cam, &req, err);
+}
+
+int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                   const uint8_t *mask, int k, int *views, float *scores, sp_error *err)
+{
+    const sp_splat *s = &e->splat;
+    if (e->n_cams == 0 || k <= 0) return 0;
+    view_score *vs = malloc(sizeof *vs * e->n_cams);
+    if (!vs) return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
+    /* 1) cheap: projected relevant weight per camera, favouring near views and the centre */
+    size_t n_sel = 0;
+    size_t *sel = malloc(sizeof(size_t) * (s->n ? s->n : 1));
+    if (!sel) {
+        free(vs);
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
+    }
+    for (size_t i = 0; i < s->n; i++)
+        if (mask ? mask[i]
+                 : (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel &&
+                    e->opacity[i] >= th->min_op))
+            sel[n_sel++] = i;
+    for (size_t c = 0; c < e->n_cams; c++) {
+        const sp_camera *cam = &e->cams[c];
+        double acc = 0;
+        for (size_t j = 0; j < n_sel; j++) {
+            size_t i = sel[j];
+            sp_vec3 x = sp_mat3_apply(cam->R, sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]));
+            float z = x.z + cam->t[2];
+            if (z < 0.2f) continue;
+            float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
+            if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
+            float du = (u - cam->cx) / cam->width, dv = (vv - cam->cy) / cam->height;
+            acc += e->opacity[i] * (1.0 - du * du - dv * dv) / (1.0 + 0.1 * z * z);
+        }
+        vs[c].view = (int)c;
+        vs[c].score = (float)acc;
+    }
+    free(sel);
+    qsort(vs, e->n_cams, sizeof *vs, cmp_view_score);
+    /* 2) occlusion check on the best few: relevant pixels in a quarter-resolution render */
+    int n_cand = k * 3 < 12 ? 12 : k * 3;
+    if ((size_t)n_cand > e->n_cams) n_cand = (int)e->n_cams;
+    while (n_cand > 0 && vs[n_cand - 1].score <= 0) n_cand--;
+    int rc = 0;
+    for (int j = 0; j < n_cand; j++) {
+        sp_camera cam;
+        float *feat = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
+        rc = render_view(e, vs[j].view, 4, &cam, &feat, NULL, &alpha, NULL, err);
+        size_t np = (size_t)cam.width * cam.height;
+        if (!rc) {
+            raw = malloc(sizeof(float) * np);
+            rel = malloc(sizeof(float) * np);
+            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+        }
+        if (!rc) {
+            sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
+            double cnt = 0;
+            for (size_t p = 0; p < np; p++)
+                if (raw[p] >= th->thr_raw && rel[p] >= th->thr_rel) cnt += rel[p] - 0.5;
+            vs[j].score = (float)(cnt / np);
+        }
+        free(feat), free(alpha), free(raw), free(rel);
+        if (rc) goto done;
+    }
+    qsort(vs, (size_t)n_cand, sizeof *vs, cmp_view_score);
+    /* 3) greedy picks with diverse viewing directions (>= 25 degrees apart) */
+    int got = 0;
+    for (int pass = 0; pass < 2 && got < k; pass++)
+        for (int j = 0; j < n_cand && got < k; j++) {
+            if (vs[j].score <= 0) break;
+            int dup = 0;
+            for (int q = 0; q < got; q++) {
+                if (views[q] == vs[j].view) { dup = 1; break; }
+                const float *Ra = e->cams[views[q]].R, *Rb = e->cams[vs[j].view].R;
+                float cosang = Ra[6] * Rb[6] + Ra[7] * Rb[7] + Ra[8] * Rb[8]; /* optical axes */
+                if (pass == 0 && cosang > 0.906f) dup = 1;
+            }
+            if (dup) continue;
+            views[got] = vs[j].view;
+            if (scores) scores[got] = vs[j].score;
+            got++;
+        }
+    rc = got;
+done:
+    free(vs);
+    return rc;
+}
+
+/* ---- multi-view ----------------------------------------------------------------------------------- */
+
+int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                           sp_query_result *res, sp_error *err)
+{
+    int k = e->opts.n_views > 0 ? e->opts.n_views : 4;
+    int *views = malloc(sizeof(int) * (size_t)k);
+    if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    int got = sem_pick_views(e, sc, th, NULL, k, views, NULL, err);
+    if (got < 0) {
+        free(views);
+        return got;
+    }
+    res->view_index = got > 0 ? views[0] : -1;
+    float *pts = NULL, *w = NULL, *cf = NULL;
+    size_t m = 0, cap = 0;
+    int rc = 0;
+    int ds = e->opts.render_downscale > 0 ? e->opts.render_downscale : 1;
+    for (int q = 0; q < got && !rc; q++) {
+        sp_camera cam;
+        float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
+        rc = render_view(e, views[q], ds, &cam, &feat, &depth, &alpha, NULL, err);
+        size_t np = (size_t)cam.width * cam.height;
+        if (!rc) {
+            raw = malloc(sizeof(float) * np);
+            rel = malloc(sizeof(float) * np);
+            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+        }
+        if (!rc) {
+            sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
+            float Rt[9];
+            sp_mat3_transpose(cam.R, Rt);
+            for (int y = 0; y < cam.height && !rc; y++)
+                for (int x = 0; x < cam.width; x++) {
+                    size_t p = (size_t)y * cam.width + x;
+                    if (!(raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f &&
+                          depth[p] > 0))
+                        continue;
+                    if (m == cap) {
+                        cap = cap ? cap * 2 : 4096;
+                        float *np_ = realloc(pts, sizeof(float) * 3 * cap),
+                              *nw = np_ ? realloc(w, sizeof(float) * cap) : NULL,
+                              *nc = nw ? realloc(cf, sizeof(float) * cap) : NULL;
+                        if (np_) pts = np_;
+                        if (nw) w = nw;
+                        if (nc) cf = nc;
+                        if (!np_ || !nw || !nc) {
+                            rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+                            break;
+                        }
+                    }
+                    /* back-project the pixel centre with the rendered (expected) depth */
+                    float z = depth[p];
+                    sp_vec3 xc = sp_v3(((float)x + 0.5f - cam.cx) / cam.fx * z - cam.t[0],
+                                       ((float)y + 0.5f - cam.cy) / cam.fy * z - cam.t[1], z - cam.t[2]);
+                    sp_vec3 xw = sp_mat3_apply(Rt, xc);
+                    pts[3 * m] = xw.x, pts[3 * m + 1] = xw.y, pts[3 * m + 2] = xw.z;
+                    w[m] = (rel[p] - 0.5f + 1e-3f) * alpha[p];
+                    cf[m] = raw[p];
+                    m++;
+                }
+        }
+        free(feat), free(depth), free(alpha), free(raw), free(rel);
+    }
+    free(views);
+    if (!rc && m > 0)
+        rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction,
+                         &res->instances, &res->n_instances, err);
+    free(pts), free(w), free(cf);
+    if (rc) return rc;
+    set_best(res, e->opts.min_confidence);
+    return 0;
+}

@@ -1,0 +1,182 @@
+/* The semantic field inside a model folder: lifting a feature folder into DIR/splat.ply (f_sem_*)
+ * and the sidecar DIR/semantic.json with the PCA copied beside it, so the query engine needs
+ * nothing but the model folder (and the COLMAP cameras it names, for views). */
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "semsplat/clip.h"
+#include "semsplat/io.h"
+#include "semsplat/semantic.h"
+
+/* Absolute form of a path (so the sidecar stays valid when the CLI ran from elsewhere). */
+static void absolute(const char *p, char *out, size_t cap)
+{
+    char buf[PATH_MAX];
+    if (realpath(p, buf)) snprintf(out, cap, "%s", buf);
+    else snprintf(out, cap, "%s", p);
+}
+
+static const char *jstr(const cJSON *o, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    return cJSON_IsString(v) && v->valuestring[0] ? v->valuestring : NULL;
+}
+
+/* The capture a model was trained from, as train.json records it. */
+static int train_colmap_dir(const char *model_dir, char *out, size_t cap)
+{
+    char path[2048];
+    sp_path_join(path, sizeof path, model_dir, "train.json");
+    cJSON *js = NULL;
+    sp_error e;
+    if (!sp_file_exists(path) || sp_json_read_file(path, &js, &e)) return -1;
+    const char *keys[] = {"colmap", "colmap_dir", "data", "capture"};
+    const char *v = NULL;
+    for (size_t k = 0; k < sizeof keys / sizeof keys[0] && !v; k++) {
+        v = jstr(js, keys[k]);
+        if (!v) {
+            const cJSON *set = cJSON_GetObjectItemCaseSensitive(js, "settings");
+            if (set) v = jstr(set, keys[k]);
+        }
+    }
+    if (v) snprintf(out, cap, "%s", v);
+    cJSON_Delete(js);
+    return v ? 0 : -1;
+}
+
+int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
+                              const char *colmap_dir, const char *method, sp_error *err)
+{
+    sp_features f;
+    memset(&f, 0, sizeof f);
+    int rc = sp_features_open(features_dir, &f, err);
+    if (rc) return rc;
+    char path[2048], absf[2048], absc[2048];
+    size_t shape[2] = {(size_t)f.full_dim, 0};
+    sp_path_join(path, sizeof path, model_dir, "semantic_pca_mean.npy");
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, shape, f.pca_mean, err))) goto done;
+    shape[0] = (size_t)f.dim;
+    shape[1] = (size_t)f.full_dim;
+    sp_path_join(path, sizeof path, model_dir, "semantic_pca_basis.npy");
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, shape, f.pca_basis, err))) goto done;
+    absolute(features_dir, absf, sizeof absf);
+    absolute(colmap_dir, absc, sizeof absc);
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", f.source);
+    cJSON_AddNumberToObject(o, "dim", f.dim);
+    cJSON_AddNumberToObject(o, "full_dim", f.full_dim);
+    cJSON_AddStringToObject(o, "features_dir", absf);
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    /* Which text embedding the features live beside: "hash" = sp_label_embedding (no weights),
+     * "clip" = the CLIP text tower of `model`. */
+    const char *le = f.label_embedding[0] ? f.label_embedding : "clip";
+    cJSON_AddStringToObject(o, "label_embedding", le);
+    if (f.model_path[0]) cJSON_AddStringToObject(o, "model", f.model_path);
+    else cJSON_AddNullToObject(o, "model");
+    cJSON_AddStringToObject(o, "method", method);
+    cJSON_AddStringToObject(o, "colmap", absc);
+    sp_path_join(path, sizeof path, model_dir, "semantic.json");
+    rc = sp_json_write_file(path, o, err);
+    cJSON_Delete(o);
+done:
+    sp_features_free(&f);
+    return rc;
+}
+
+typedef struct {
+    sp_features *f;
+    const long *map_of_view;
+    const sp_camera *cams;
+} lift_ctx;
+
+static int lift_target(void *user, size_t view, float *target, uint8_t *mask, sp_error *err)
+{
+    (void)mask;
+    lift_ctx *c = user;
+    size_t i = (size_t)c->map_of_view[view];
+    sp_features_image *im = &c->f->images[i];
+    int rc = sp_features_load_map(c->f, i, err);
+    if (rc) return rc;
+    if (im->w != c->cams[view].width || im->h != c->cams[view].height) {
+        return sp_error_set(err, SP_E_FORMAT, "%s: map is %dx%d, the camera %dx%d", im->map_file,
+                            im->w, im->h, c->cams[view].width, c->cams[view].height);
+    }
+    memcpy(target, im->map, sizeof(float) * (size_t)im->w * im->h * c->f->dim);
+    free(im->map); /* one map at a time: the house has 150 of them */
+    im->map = NULL;
+    return 0;
+}
+
+int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
+                           const char *colmap_dir, sp_device *dev, const sp_log *log,
+                           sp_error *err)
+{
+    char colmap[2048], path[2048];
+    sp_features f;
+    sp_colmap_model m;
+    sp_splat s;
+    sp_raster *r = NULL;
+    memset(&f, 0, sizeof f);
+    memset(&m, 0, sizeof m);
+    memset(&s, 0, sizeof s);
+    sp_camera *cams = NULL;
+    long *map_of_view = NULL;
+    int rc;
+    if (colmap_dir) snprintf(colmap, sizeof colmap, "%s", colmap_dir);
+    else if (train_colmap_dir(model_dir, colmap, sizeof colmap))
+        return sp_error_set(err, SP_E_ARG,
+                            "%s/train.json names no COLMAP capture: pass --colmap DIR", model_dir);
+    if ((rc = sp_features_open(features_dir, &f, err))) return rc;
+    if ((rc = sp_colmap_read(colmap, &m, err))) goto done;
+    sp_path_join(path, sizeof path, model_dir, "splat.ply");
+    if ((rc = sp_ply_read_splat(path, &s, err))) goto done;
+    cams = calloc(m.n_images ? m.n_images : 1, sizeof *cams);
+    map_of_view = calloc(m.n_images ? m.n_images : 1, sizeof *map_of_view);
+    if (!cams || !map_of_view) {
+        rc = sp_error_set(err, SP_E_NOMEM, "lift: out of memory");
+        goto done;
+    }
+    size_t nv = 0;
+    for (size_t i = 0; i < m.n_images; i++) {
+        long k = sp_features_find(&f, m.images[i].name);
+        if (k < 0) continue; /* images without a map (none in practice) are skipped */
+        sp_camera cam;
+        if ((rc = sp_colmap_image_camera(&m, i, &cam, err))) goto done;
+        const sp_features_image *im = &f.images[k];
+        /* Render at the map's resolution: scale intrinsics by the map/image size ratio. */
+        float sx = (float)im->w / (float)cam.width, sy = (float)im->h / (float)cam.height;
+        cam.fx *= sx, cam.cx *= sx, cam.fy *= sy, cam.cy *= sy;
+        cam.width = im->w, cam.height = im->h;
+        cam.distortion = SP_DIST_NONE;
+        cams[nv] = cam;
+        map_of_view[nv] = k;
+        nv++;
+    }
+    if (nv == 0) {
+        rc = sp_error_set(err, SP_E_NOTFOUND, "lift: no image of %s has a map in %s", colmap,
+                          features_dir);
+        goto done;
+    }
+    if ((rc = sp_raster_create(&r, dev, err))) goto done;
+    lift_ctx ctx = {&f, map_of_view, cams};
+    double t0 = sp_time_now();
+    rc = sp_semantic_lift(r, &s, f.dim, cams, nv, lift_target, &ctx, NULL, NULL, log, err);
+    if (rc) goto done;
+    sp_logf(log, SP_LOG_INFO, "lifted %d-dim %s features from %zu views into %zu Gaussians in %.2f s",
+            f.dim, f.source, nv, s.n, sp_time_now() - t0);
+    sp_path_join(path, sizeof path, model_dir, "splat.ply");
+    if ((rc = sp_ply_write_splat(path, &s, err))) goto done;
+    rc = sp_semantic_write_sidecar(model_dir, features_dir, colmap, "lift", err);
+done:
+    sp_raster_free(r);
+    sp_splat_free(&s);
+    sp_colmap_free(&m);
+    sp_features_free(&f);
+    free(cams);
+    free(map_of_view);
+    return rc;
+}

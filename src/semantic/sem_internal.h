@@ -1,0 +1,58 @@
+/* Private pieces of the semantic module shared between the engine, localization and heatmaps. */
+#ifndef SP_SEM_INTERNAL_H
+#define SP_SEM_INTERNAL_H
+
+#include "semsplat/semantic.h"
+
+struct sp_clip;
+
+struct sp_query_engine {
+    sp_device *dev;
+    sp_raster *raster;
+    sp_log log;
+    int has_log;
+    sp_splat splat;
+    sp_sem_pca pca;
+    size_t n_cams;
+    sp_camera *cams;
+    char (*cam_names)[256];
+    int label_embedding;       /* 1: text -> sp_label_embedding; 0: CLIP text tower */
+    char clip_path[1024];
+    struct sp_clip *clip;      /* loaded on the first text query */
+    sp_query_opts opts;
+    char neg_key[256];         /* negatives string the cached embeddings belong to */
+    int n_neg;
+    float *neg_emb;            /* [n_neg][full_dim] */
+    float *opacity;            /* [n] sigmoid(logit) */
+    float *raw, *rel;          /* [n] scratch: per-Gaussian raw cosine and relevancy */
+};
+
+/* Points with weights clustered on a voxel grid (26-connected components) into instances,
+ * heaviest first, lighter than min_fraction of the heaviest dropped. conf [m] may be NULL. */
+int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, float voxel,
+                float min_fraction, sp_query_instance **out, int *n_out, sp_error *err);
+
+/* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op. */
+typedef struct {
+    float thr_raw, thr_rel, min_op;
+} sem_thresholds;
+
+/* Localizations: fill res->instances / position / valid / view_index. raw, rel per Gaussian
+ * already in e->raw, e->rel. */
+int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                    sp_query_result *res, sp_error *err);
+int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                           sp_query_result *res, sp_error *err);
+/* Ranks cameras by how much of the relevant set (mask [n], or Gaussians near `focus` when
+ * mask is NULL) they see, checked with a low-resolution render; writes up to k indices, best
+ * first, preferring diverse viewing directions. Returns the count. */
+int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                   const uint8_t *mask, int k, int *views, float *scores, sp_error *err);
+/* Renders view `v` at full size with the heatmap overlay into res. */
+int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
+                sp_error *err);
+/* Per-pixel raw cosine / relevancy of a rendered feature image where alpha > 0.5 (else -1 / 0.5). */
+void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                      const float *alpha, size_t npix, float *raw, float *rel);
+
+#endif

@@ -1,0 +1,136 @@
+/* semsplat distill: learns per-Gaussian features by joint training (RGB loss + lambda * feature
+ * MSE through the N-channel rasterizer, the trainer's feature pass), starting from the RGB model
+ * that `train` made, and writes the semantic field into the model folder. Prints held-out RGB
+ * PSNR before and after so the cost to appearance is visible. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "semsplat/clip.h"
+#include "semsplat/io.h"
+#include "semsplat/semantic.h"
+#include "semsplat/train.h"
+
+static void help(void)
+{
+    printf("usage: semsplat distill --model DIR --features DIR --colmap DIR [--images DIR]\n"
+           "                        [--steps N] [--lambda L] [--freeze-geometry] [--downscale F]\n"
+           "                        [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
+           "Continues training DIR/splat.ply with feature_lambda * MSE(rendered features, maps)\n"
+           "added to the RGB loss (densification copies features to children; --freeze-geometry\n"
+           "trains the features only). Writes f_sem_* into DIR/splat.ply and DIR/semantic.json.\n");
+}
+
+typedef struct {
+    sp_features *f;
+    const sp_train_data *d;
+} target_ctx;
+
+static int feature_target(void *user, size_t view, int width, int height, int F, float *dst,
+                          sp_error *err)
+{
+    target_ctx *c = user;
+    const char *name = c->d->views[view].name;
+    long k = sp_features_find(c->f, name);
+    if (k < 0) return sp_error_set(err, SP_E_NOTFOUND, "%s: no feature map for image %s", c->f->dir, name);
+    if (F != c->f->dim) return sp_error_set(err, SP_E_ARG, "distill: asked for %d channels, maps have %d", F, c->f->dim);
+    int rc = sp_features_load_map(c->f, (size_t)k, err);
+    if (rc) return rc;
+    sp_features_image *im = &c->f->images[k];
+    if (im->w == width && im->h == height)
+        memcpy(dst, im->map, sizeof(float) * (size_t)width * height * F);
+    else
+        sp_clip_upsample(im->map, im->w, im->h, F, width, height, dst);
+    free(im->map);
+    im->map = NULL;
+    return 0;
+}
+
+int cmd_distill(int argc, char **argv)
+{
+    const char *model = NULL, *features = NULL, *colmap = NULL, *images = NULL, *device = "auto", *v;
+    long steps = 3000, threads = 0, downscale = 1;
+    double lambda = 1.0;
+    int freeze = 0, quiet = 0, bad = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
+        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--features", &bad))) features = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) images = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--steps", &bad))) {
+            if (cli_parse_int("distill", "--steps", v, &steps)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
+            if (cli_parse_int("distill", "--threads", v, &threads)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--downscale", &bad))) {
+            if (cli_parse_int("distill", "--downscale", v, &downscale)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--lambda", &bad))) {
+            if (cli_parse_float("distill", "--lambda", v, &lambda)) return 2;
+        } else if (!strcmp(argv[i], "--freeze-geometry")) freeze = 1;
+        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
+        else if (!bad) return cli_usage_error("distill", "unknown argument '%s'", argv[i]);
+        if (bad) return 2;
+    }
+    if (!model || !features || !colmap)
+        return cli_usage_error("distill", "--model, --features and --colmap are required");
+    if (steps < 1 || downscale < 1) return cli_usage_error("distill", "--steps and --downscale must be >= 1");
+    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
+                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
+                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
+    if ((int)kind < 0) return cli_usage_error("distill", "--device: '%s' is not cpu, cuda or auto", device);
+    sp_error err = {0};
+    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_device *dev = NULL;
+    sp_features f;
+    sp_train_data d;
+    sp_splat s = {0};
+    memset(&f, 0, sizeof f);
+    memset(&d, 0, sizeof d);
+    char path[2048];
+    int rc = sp_device_create(&dev, kind, (int)threads, &err);
+    if (!rc) rc = sp_features_open(features, &f, &err);
+    if (!rc) rc = sp_train_data_load(&d, colmap, images, (int)downscale, 8, &err);
+    snprintf(path, sizeof path, "%s/splat.ply", model);
+    if (!rc) rc = sp_ply_read_splat(path, &s, &err);
+    sp_train_result before = {0}, after = {0};
+    float bg[3] = {0, 0, 0};
+    if (!rc) rc = sp_train_evaluate(dev, &d, &s, bg, &before, &err);
+    if (!rc) {
+        sp_splat_free(&s); /* features are re-initialised by the trainer */
+        rc = sp_ply_read_splat(path, &s, &err);
+        if (!rc && s.feat_dim) {
+            sp_free(s.features);
+            s.features = NULL;
+            s.feat_dim = 0;
+        }
+    }
+    target_ctx ctx = {&f, &d};
+    if (!rc) {
+        sp_train_options o = sp_train_options_default((int)steps);
+        o.sh_degree = s.sh_degree;
+        o.feature_dim = f.dim;
+        o.feature_lambda = (float)lambda;
+        o.get_feature_target = feature_target;
+        o.feature_user = &ctx;
+        o.freeze_geometry = freeze;
+        /* continuing from a trained model: no fresh densification schedule from step 0 */
+        o.refine_start = (int)steps + 1;
+        rc = sp_train_run(dev, &d, &o, &s, &after, &log, &err);
+    }
+    if (!rc) rc = sp_ply_write_splat(path, &s, &err);
+    if (!rc) rc = sp_semantic_write_sidecar(model, features, colmap, "distill", &err);
+    if (!rc && !quiet) {
+        printf("distill  psnr_before  %.3f  dB  (%s)\n", before.psnr, before.eval_on_train ? "train views" : "held-out");
+        printf("distill  psnr_after   %.3f  dB  (steps %ld, lambda %g%s)\n", after.psnr, steps, lambda,
+               freeze ? ", geometry frozen" : "");
+        printf("distill  feature_mse  %.5f\n", after.feature_mse);
+        printf("distill  seconds      %.1f  s  (%s)\n", after.seconds, sp_device_name(dev));
+    }
+    sp_splat_free(&s);
+    sp_train_data_free(&d);
+    sp_features_free(&f);
+    sp_device_free(dev);
+    return rc ? cli_fail("distill", &err) : 0;
+}

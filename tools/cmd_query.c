@@ -1,0 +1,140 @@
+/* semsplat query: finds text queries in a language-embedded model folder and prints the world
+ * position, instances and confidence (text or JSON), optionally with heatmap PNGs. */
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "semsplat/io.h"
+#include "semsplat/render.h"
+#include "semsplat/semantic.h"
+
+static void help(void)
+{
+    printf("usage: semsplat query --model DIR [flags] \"text\" [\"text\" ...]\n\n"
+           "  --json                print one JSON object per query (an array for several)\n"
+           "  --heatmap FILE.png    relevancy overlay of the best view (one query)\n"
+           "  --heatmap-dir DIR     one PNG per query, named after the text\n"
+           "  --method 3d|multiview localization (default 3d)\n"
+           "  --view N              heatmap from camera N instead of the best view\n"
+           "  --negatives a,b,c     canonical negatives (default %s)\n"
+           "  --min-confidence C    raw cosine below which nothing is found (default 0.2)\n"
+           "  --device cpu|cuda|auto, --threads N, --quiet\n",
+           SP_SEM_DEFAULT_NEGATIVES);
+}
+
+static void slug(const char *text, char *out, size_t cap)
+{
+    size_t j = 0;
+    for (const char *p = text; *p && j + 1 < cap; p++)
+        out[j++] = isalnum((unsigned char)*p) ? (char)tolower((unsigned char)*p) : '_';
+    out[j] = 0;
+}
+
+int cmd_query(int argc, char **argv)
+{
+    const char *model = NULL, *heatmap = NULL, *heatmap_dir = NULL, *device = "auto", *v;
+    const char *texts[256];
+    int n_texts = 0, json = 0, quiet = 0, bad = 0;
+    long threads = 0, view = -1;
+    sp_query_opts opts = sp_query_opts_default();
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
+        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--heatmap-dir", &bad))) heatmap_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--heatmap", &bad))) heatmap = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--negatives", &bad)))
+            snprintf(opts.negatives, sizeof opts.negatives, "%s", v);
+        else if ((v = cli_flag_value(argc, argv, &i, "--method", &bad))) {
+            if (!strcmp(v, "3d")) opts.method = SP_QUERY_3D;
+            else if (!strcmp(v, "multiview") || !strcmp(v, "multi-view")) opts.method = SP_QUERY_MULTIVIEW;
+            else return cli_usage_error("query", "--method: '%s' is not 3d or multiview", v);
+        } else if ((v = cli_flag_value(argc, argv, &i, "--view", &bad))) {
+            if (cli_parse_int("query", "--view", v, &view)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
+            if (cli_parse_int("query", "--threads", v, &threads)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--min-confidence", &bad))) {
+            double c;
+            if (cli_parse_float("query", "--min-confidence", v, &c)) return 2;
+            opts.min_confidence = (float)c;
+        } else if (!strcmp(argv[i], "--json")) json = 1;
+        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
+        else if (argv[i][0] == '-' && argv[i][1] == '-' && !bad)
+            return cli_usage_error("query", "unknown flag '%s'", argv[i]);
+        else if (!bad) {
+            if (n_texts == 256) return cli_usage_error("query", "at most 256 queries at once");
+            texts[n_texts++] = argv[i];
+        }
+        if (bad) return 2;
+    }
+    if (!model) return cli_usage_error("query", "--model DIR is required");
+    if (n_texts == 0) return cli_usage_error("query", "give the text to find, e.g. \"refrigerator\"");
+    if (heatmap && n_texts > 1) return cli_usage_error("query", "--heatmap takes one query; use --heatmap-dir");
+    opts.heatmap = heatmap || heatmap_dir;
+    opts.heatmap_view = (int)view;
+    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
+                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
+                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
+    if ((int)kind < 0) return cli_usage_error("query", "--device: '%s' is not cpu, cuda or auto", device);
+    sp_error err = {0};
+    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
+    sp_device *dev = NULL;
+    sp_query_engine *e = NULL;
+    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("query", &err);
+    if (sp_query_engine_open(&e, model, &opts, dev, &log, &err)) {
+        sp_device_free(dev);
+        return cli_fail("query", &err);
+    }
+    int rc = 0;
+    if (json && n_texts > 1) printf("[\n");
+    for (int q = 0; q < n_texts && !rc; q++) {
+        sp_query_result res;
+        if (sp_query_engine_query(e, texts[q], &res, &err)) {
+            rc = cli_fail("query", &err);
+            break;
+        }
+        char path[2048];
+        const char *hm = NULL;
+        if (heatmap) hm = heatmap;
+        else if (heatmap_dir) {
+            char s[200];
+            slug(texts[q], s, sizeof s);
+            if (sp_mkdirs(heatmap_dir, &err)) rc = cli_fail("query", &err);
+            snprintf(path, sizeof path, "%s/%s.png", heatmap_dir, s);
+            hm = path;
+        }
+        if (!rc && hm && res.relevancy_image) {
+            sp_image img = {res.width, res.height, 3, 8, res.relevancy_image};
+            if (sp_image_write_png(hm, &img, &err)) rc = cli_fail("query", &err);
+        } else if (hm) {
+            hm = NULL; /* no cameras: no heatmap */
+        }
+        if (json) {
+            char *s = sp_query_result_json(&res, hm);
+            printf("%s%s\n", s ? s : "null", json && n_texts > 1 && q + 1 < n_texts ? "," : "");
+            free(s);
+        } else {
+            if (res.valid)
+                printf("%-24s found  (%.3f, %.3f, %.3f)  confidence %.3f  %d instance%s  %.1f ms\n",
+                       texts[q], res.position[0], res.position[1], res.position[2], res.confidence,
+                       res.n_instances, res.n_instances == 1 ? "" : "s", res.ms_total);
+            else
+                printf("%-24s not found  confidence %.3f  %.1f ms\n", texts[q], res.confidence,
+                       res.ms_total);
+            for (int k = 0; k < res.n_instances && res.valid; k++)
+                printf("    instance %d  (%.3f, %.3f, %.3f)  score %.3g  confidence %.3f\n", k,
+                       res.instances[k].position[0], res.instances[k].position[1],
+                       res.instances[k].position[2], res.instances[k].score,
+                       res.instances[k].confidence);
+            if (hm) printf("    heatmap %s (view %s)\n", hm, res.view_name);
+        }
+        sp_query_result_free(&res);
+    }
+    if (json && n_texts > 1) printf("]\n");
+    sp_query_engine_free(e);
+    sp_device_free(dev);
+    return rc;
+}
