@@ -1,5 +1,5 @@
-/* The seam between the render module's C dispatch (src/render/*.c) and the CUDA backend
- * (src/render/cuda/*.cu). Plain C entry points taking device pointers; compiled only when
+/* The seam between the render module's C dispatch (the C files in src/render) and the CUDA backend
+ * (the .cu files in src/render/cuda). Plain C entry points taking device pointers; compiled only when
  * SP_HAVE_CUDA is defined. Semantics are exactly those of the public functions in
  * include/semsplat/render.h with the same names minus "cuda_". */
 #ifndef SP_RENDER_CUDA_API_H
