@@ -24,15 +24,15 @@
 #define SP_CUDA_LAUNCHED(err, what) SP_CUDA_CHECK(cudaGetLastError(), err, what)
 
 /* A grow-only device buffer. */
-typedef struct sp_scratch {
+typedef struct sp_cu_scratch {
     void *ptr;
     size_t cap;
-} sp_scratch;
+} sp_cu_scratch;
 
 /* Ensures s holds at least `bytes` (contents are NOT kept when it grows). Grows by 1.25x so a
  * slowly growing Gaussian count does not reallocate every step. */
-int sp_scratch_reserve(sp_scratch *s, size_t bytes, sp_error *err);
-void sp_scratch_release(sp_scratch *s);
+int sp_cu_scratch_reserve(sp_cu_scratch *s, size_t bytes, sp_error *err);
+void sp_cu_scratch_release(sp_cu_scratch *s);
 
 /* Projected Gaussians of one view, written by project.cu and read by every later stage. */
 typedef struct sp_cuda_proj {
@@ -55,11 +55,11 @@ struct sp_cuda_raster {
     size_t n_pairs;
     float *bg_dev; /* [D] background on the device (inside s_bg) */
 
-    sp_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
-    sp_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
-    sp_scratch s_tfinal, s_last, s_bg;
+    sp_cu_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
+    sp_cu_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
+    sp_cu_scratch s_tfinal, s_last, s_bg;
     /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3, v_opacity, v_depth, pad) */
-    sp_scratch s_vgeo;
+    sp_cu_scratch s_vgeo;
     sp_cuda_proj proj;
     const uint32_t *sorted_ids; /* [n_pairs] Gaussian index per sorted pair */
     const int2 *tile_ranges;    /* [tiles] [start, end) in the sorted list */

@@ -182,7 +182,7 @@ extern "C" int sp_cuda_sync(sp_error *err)
 
 /* ---- scratch ------------------------------------------------------------------------------- */
 
-int sp_scratch_reserve(sp_scratch *s, size_t bytes, sp_error *err)
+int sp_cu_scratch_reserve(sp_cu_scratch *s, size_t bytes, sp_error *err)
 {
     if (bytes <= s->cap && s->ptr) return 0;
     size_t cap = bytes + bytes / 4 + 256;
@@ -195,7 +195,7 @@ int sp_scratch_reserve(sp_scratch *s, size_t bytes, sp_error *err)
     return 0;
 }
 
-void sp_scratch_release(sp_scratch *s)
+void sp_cu_scratch_release(sp_cu_scratch *s)
 {
     sp_cuda_free(s->ptr);
     s->ptr = NULL;
@@ -218,12 +218,12 @@ extern "C" int sp_cuda_raster_create(sp_cuda_raster **out, sp_error *err)
 extern "C" void sp_cuda_raster_free(sp_cuda_raster *r)
 {
     if (!r) return;
-    sp_scratch *all[] = {&r->s_means2d, &r->s_conic_op, &r->s_depths, &r->s_radii,
+    sp_cu_scratch *all[] = {&r->s_means2d, &r->s_conic_op, &r->s_depths, &r->s_radii,
                          &r->s_rect, &r->s_ntiles, &r->s_offsets, &r->s_keys[0],
                          &r->s_keys[1], &r->s_vals[0], &r->s_vals[1], &r->s_tile_ranges,
                          &r->s_cub, &r->s_tfinal, &r->s_last, &r->s_bg,
                          &r->s_vgeo};
-    for (size_t i = 0; i < sizeof(all) / sizeof(all[0]); i++) sp_scratch_release(all[i]);
+    for (size_t i = 0; i < sizeof(all) / sizeof(all[0]); i++) sp_cu_scratch_release(all[i]);
     free(r);
 }
 

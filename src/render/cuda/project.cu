@@ -45,12 +45,12 @@ int sp_cuda_project(sp_cuda_raster *r, sp_error *err)
 {
     size_t n = r->in.n;
     int rc;
-    if ((rc = sp_scratch_reserve(&r->s_means2d, n * sizeof(float2), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_conic_op, n * sizeof(float4), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_depths, n * sizeof(float), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_radii, n * sizeof(int32_t), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_rect, n * sizeof(int4), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_ntiles, n * sizeof(uint32_t), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_means2d, n * sizeof(float2), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_conic_op, n * sizeof(float4), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_depths, n * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_radii, n * sizeof(int32_t), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_rect, n * sizeof(int4), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_ntiles, n * sizeof(uint32_t), err))) return rc;
     r->proj.means2d = (float2 *)r->s_means2d.ptr;
     r->proj.conic_op = (float4 *)r->s_conic_op.ptr;
     r->proj.depths = (float *)r->s_depths.ptr;

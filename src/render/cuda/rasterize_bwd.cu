@@ -253,7 +253,7 @@ extern "C" int sp_cuda_raster_backward(sp_cuda_raster *r, const sp_raster_grad_i
     size_t n = r->in.n;
     if (n == 0) return 0;
     int rc;
-    if ((rc = sp_scratch_reserve(&r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
     float *vgeo = (float *)r->s_vgeo.ptr;
     SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * 8 * sizeof(float)), err, "clearing gradients");
     if ((rc = sp_cuda_rasterize_bwd(r, gin, grads->v_colors, vgeo, err))) return rc;

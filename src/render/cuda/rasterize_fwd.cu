@@ -198,14 +198,14 @@ extern "C" int sp_cuda_raster_forward(sp_cuda_raster *r, const sp_camera *cam,
 
     r->bg_dev = NULL;
     if (in->background) {
-        if ((rc = sp_scratch_reserve(&r->s_bg, (size_t)in->D * sizeof(float), err))) return rc;
+        if ((rc = sp_cu_scratch_reserve(&r->s_bg, (size_t)in->D * sizeof(float), err))) return rc;
         SP_CUDA_CHECK(cudaMemcpy(r->s_bg.ptr, in->background, (size_t)in->D * sizeof(float),
                                  cudaMemcpyHostToDevice),
                       err, "uploading the background");
         r->bg_dev = (float *)r->s_bg.ptr;
     }
-    if ((rc = sp_scratch_reserve(&r->s_tfinal, npix * sizeof(float), err))) return rc;
-    if ((rc = sp_scratch_reserve(&r->s_last, npix * sizeof(int32_t), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_tfinal, npix * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_last, npix * sizeof(int32_t), err))) return rc;
     r->t_final = (float *)r->s_tfinal.ptr;
     r->last_idx = (int32_t *)r->s_last.ptr;
 

@@ -44,7 +44,7 @@ int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_error *err)
     size_t n = r->in.n;
     int n_tiles = r->tiles_x * r->tiles_y;
     int rc;
-    if ((rc = sp_scratch_reserve(&r->s_tile_ranges, (size_t)n_tiles * sizeof(int2), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_tile_ranges, (size_t)n_tiles * sizeof(int2), err))) return rc;
     SP_CUDA_CHECK(cudaMemsetAsync(r->s_tile_ranges.ptr, 0, (size_t)n_tiles * sizeof(int2)), err,
                   "clearing tile ranges");
     r->tile_ranges = (const int2 *)r->s_tile_ranges.ptr;
@@ -53,12 +53,12 @@ int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_error *err)
     if (n == 0) return 0;
 
     /* inclusive scan of per-Gaussian tile counts, in 64 bits so no count can wrap */
-    if ((rc = sp_scratch_reserve(&r->s_offsets, n * sizeof(unsigned long long), err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_offsets, n * sizeof(unsigned long long), err))) return rc;
     unsigned long long *offsets = (unsigned long long *)r->s_offsets.ptr;
     size_t tmp_scan = 0;
     SP_CUDA_CHECK(cub::DeviceScan::InclusiveSum(NULL, tmp_scan, r->proj.ntiles, offsets, (int64_t)n),
                   err, "scan size query");
-    if ((rc = sp_scratch_reserve(&r->s_cub, tmp_scan, err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_cub, tmp_scan, err))) return rc;
     SP_CUDA_CHECK(cub::DeviceScan::InclusiveSum(r->s_cub.ptr, tmp_scan, r->proj.ntiles, offsets,
                                                 (int64_t)n),
                   err, "tile-count scan");
@@ -74,8 +74,8 @@ int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_error *err)
 
     size_t m = (size_t)total;
     for (int k = 0; k < 2; k++) {
-        if ((rc = sp_scratch_reserve(&r->s_keys[k], m * sizeof(unsigned long long), err))) return rc;
-        if ((rc = sp_scratch_reserve(&r->s_vals[k], m * sizeof(uint32_t), err))) return rc;
+        if ((rc = sp_cu_scratch_reserve(&r->s_keys[k], m * sizeof(unsigned long long), err))) return rc;
+        if ((rc = sp_cu_scratch_reserve(&r->s_vals[k], m * sizeof(uint32_t), err))) return rc;
     }
     unsigned long long *k0 = (unsigned long long *)r->s_keys[0].ptr;
     unsigned long long *k1 = (unsigned long long *)r->s_keys[1].ptr;
@@ -92,7 +92,7 @@ int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_error *err)
     SP_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(NULL, tmp_sort, dk, dv, (int64_t)m, 0,
                                                   32 + tile_bits),
                   err, "sort size query");
-    if ((rc = sp_scratch_reserve(&r->s_cub, tmp_sort, err))) return rc;
+    if ((rc = sp_cu_scratch_reserve(&r->s_cub, tmp_sort, err))) return rc;
     SP_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(r->s_cub.ptr, tmp_sort, dk, dv, (int64_t)m, 0,
                                                   32 + tile_bits),
                   err, "radix sort of (tile, depth) keys");

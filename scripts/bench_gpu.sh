@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# GPU benchmark, run on the GPU machine from the project root (the `run` tool's working tree):
+# builds build-gpu, runs the CUDA tests, semsplat's GPU benchmark, then gsplat's anchors
+# (shared/bench/anchors/run_device.sh) in the SAME session so both see one machine state, and
+# prints semsplat / gsplat time ratios per scene. Results are copied to $OUT when set.
+# Usage: scripts/bench_gpu.sh [--no-build] [--no-tests] [--no-anchor]
+set -u
+cd "$(dirname "$0")/.."
+build=1 tests=1 anchor=1
+for a in "$@"; do
+  case $a in --no-build) build=0 ;; --no-tests) tests=0 ;; --no-anchor) anchor=0 ;; esac
+done
+out=${OUT:-/tmp}
+nvidia-smi --query-gpu=name,memory.total,driver_version --format=csv,noheader
+if [ $build = 1 ]; then
+  t0=$(date +%s)
+  { cmake -S . -B build-gpu -DSP_WERROR=OFF -DCMAKE_CUDA_ARCHITECTURES=90 >/dev/null &&
+    cmake --build build-gpu -j16 >"$out/build.log" 2>&1; } ||
+    { echo "build failed:"; grep -E "error|Error" "$out/build.log" | head -30; }
+  echo "build: $(( $(date +%s) - t0 )) s"
+fi
+if [ $tests = 1 ]; then
+  for t in build-gpu/render_test_cuda_*; do
+    [ -x "$t" ] || continue
+    echo "== $t"; timeout 300 "$t" 2>&1 | tail -40
+  done
+fi
+echo "== semsplat bench"
+timeout 400 build-gpu/bench/bench_render_gpu | tee "$out/semsplat-gpu.txt"
+if [ $anchor = 1 ]; then
+  anchors=shared/bench/anchors
+  [ -d "$anchors" ] || anchors=../shared/bench/anchors
+  echo "== gsplat anchors ($anchors)"
+  OUT=$out timeout 500 bash "$anchors/run_device.sh" gsplat >"$out/anchor-run.txt" 2>&1
+  tail -12 "$out/anchor-run.txt"
+  python3 - "$out/semsplat-gpu.txt" "$out/anchor-gsplat.jsonl" <<'EOF'
+import json, sys
+ours = {}
+for line in open(sys.argv[1]):
+    if line.startswith("JSON "):
+        d = json.loads(line[5:]); ours[(d["n"], d["w"], d["h"], d["d"])] = d
+print("%-26s %9s %9s %6s | %9s %9s %6s | %s" % ("scene", "fwd ms", "gsplat", "ratio", "f+b ms", "gsplat", "ratio", "peak GiB ours/gsplat"))
+for line in open(sys.argv[2]):
+    try: g = json.loads(line)
+    except ValueError: continue
+    if g.get("what") != "gsplat" or "fwd_ms" not in g: continue
+    k = (g["n"], g["w"], g["h"], g["d"]); o = ours.get(k)
+    if not o: continue
+    print("%-26s %9.3f %9.3f %6.2f | %9.3f %9.3f %6.2f | %.3f / %.3f" % (
+        "%d %dx%d D=%d" % k, o["fwd_ms"], g["fwd_ms"], o["fwd_ms"] / g["fwd_ms"],
+        o["fwd_bwd_ms"], g["fwd_bwd_ms"], o["fwd_bwd_ms"] / g["fwd_bwd_ms"], o["peak_gib"], g["peak_gib"]))
+print("(ratio < 1: semsplat faster)")
+EOF
+fi
