@@ -1,0 +1,73 @@
+/* Private to src/clip: the loaded model (weights as f32 host arrays, HF layout: Linear weights
+ * [out][in]) and the entry points shared by the CPU and GPU paths. */
+#ifndef SP_CLIP_INTERNAL_H
+#define SP_CLIP_INTERNAL_H
+
+#include "semsplat/clip.h"
+
+typedef struct clip_layer {
+    const float *ln1_w, *ln1_b, *q_w, *q_b, *k_w, *k_b, *v_w, *v_b, *o_w, *o_b;
+    const float *ln2_w, *ln2_b, *fc1_w, *fc1_b, *fc2_w, *fc2_b;
+} clip_layer;
+
+typedef struct clip_tower {
+    sp_clip_tower_config cfg;
+    clip_layer *layers;
+} clip_tower;
+
+/* What the vision forward produces. */
+typedef enum {
+    CLIP_OUT_POOLED = 0, /* [n][proj]: post-LN of CLS, projection (not normalised) */
+    CLIP_OUT_DENSE_MASKCLIP = 1, /* [n][gh*gw][proj] (not normalised) */
+    CLIP_OUT_DENSE_CLEARCLIP = 2
+} clip_out_kind;
+
+struct sp_clip_gpu;
+
+struct sp_clip {
+    sp_clip_config cfg;
+    char path[1024];
+    float *blob; /* every weight, f32 */
+    size_t blob_floats;
+    /* text */
+    const float *tok_emb, *txt_pos, *final_ln_w, *final_ln_b, *text_proj;
+    clip_tower text;
+    /* vision */
+    const float *cls, *patch_w, *vis_pos, *pre_ln_w, *pre_ln_b, *post_ln_w, *post_ln_b, *vis_proj;
+    clip_tower vision;
+    sp_pool *pool;     /* CPU threads (owned when own_pool) */
+    int own_pool;
+    sp_device *dev;
+    sp_clip_tokenizer *tok; /* loaded on first text encode */
+    struct sp_clip_gpu *gpu; /* NULL on the CPU */
+    int fp16;
+};
+
+/* Position embeddings for a gh x gw grid: [1 + gh*gw][width] into out (bicubic as torch
+ * interpolate(align_corners=False) when the grid differs from the trained one). */
+void clip_pos_embed(const sp_clip *c, int gh, int gw, float *out);
+/* EOS position of a 77-id sequence as transformers picks it. */
+int clip_eos_position(const sp_clip *c, const int32_t *ids);
+
+/* CPU forwards. */
+int clip_cpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *err);
+int clip_cpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_out_kind kind,
+                    float *out, sp_error *err);
+
+/* GPU forwards (clip_gpu.c dispatches to cuda/ when built). */
+int clip_gpu_init(sp_clip *c, sp_error *err);
+void clip_gpu_free(sp_clip *c);
+int clip_gpu_set_fp16(sp_clip *c, int on, sp_error *err);
+int clip_gpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *err);
+int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_out_kind kind,
+                    float *out, sp_error *err);
+
+static inline void clip_l2_normalize(float *v, int n)
+{
+    double s = 0;
+    for (int i = 0; i < n; i++) s += (double)v[i] * v[i];
+    float inv = s > 0 ? (float)(1.0 / sqrt(s)) : 0.f;
+    for (int i = 0; i < n; i++) v[i] *= inv;
+}
+
+#endif

@@ -1,0 +1,24 @@
+/* CLIP towers on the GPU (placeholder while the kernels land). */
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdarg.h>
+extern "C" {
+#include "../clip_internal.h"
+}
+
+extern "C" int clip_gpu_init(sp_clip *c, sp_error *err)
+{
+    return sp_error_set(err, SP_E_NODEVICE, "CLIP on the GPU is not implemented yet");
+}
+extern "C" void clip_gpu_free(sp_clip *c) { (void)c; }
+extern "C" int clip_gpu_set_fp16(sp_clip *c, int on, sp_error *err) { return clip_gpu_init(c, err); }
+extern "C" int clip_gpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *err)
+{
+    return clip_gpu_init(c, err);
+}
+extern "C" int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, int W,
+                               clip_out_kind kind, float *out, sp_error *err)
+{
+    return clip_gpu_init(c, err);
+}

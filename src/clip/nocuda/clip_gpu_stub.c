@@ -1,0 +1,18 @@
+/* Built when nvcc is absent: the GPU entry points of the clip module report that there is none. */
+#include "../clip_internal.h"
+
+int clip_gpu_init(sp_clip *c, sp_error *err)
+{
+    return sp_error_set(err, SP_E_NODEVICE, "CLIP on the GPU: semsplat was built without CUDA");
+}
+void clip_gpu_free(sp_clip *c) { (void)c; }
+int clip_gpu_set_fp16(sp_clip *c, int on, sp_error *err) { return clip_gpu_init(c, err); }
+int clip_gpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *err)
+{
+    return clip_gpu_init(c, err);
+}
+int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_out_kind kind,
+                    float *out, sp_error *err)
+{
+    return clip_gpu_init(c, err);
+}
