@@ -1,0 +1,144 @@
+/* A tiny labelled scene for the semantic tests: a floor, two chairs, a table and a lamp made of
+ * Gaussians on box surfaces, a ring of cameras around them, and label features (each class's
+ * sp_label_embedding, compressed by an exact PCA). Builds in milliseconds. */
+#ifndef SP_TEST_SEM_SCENE_H
+#define SP_TEST_SEM_SCENE_H
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "semsplat/clip.h"
+#include "semsplat/semantic.h"
+#include "test.h"
+
+#define SC_FULL 512 /* as CLIP: random label embeddings are near-orthogonal in 512-D */
+#define SC_DIM 8
+#define SC_CLASSES 4
+static const char *const sc_class_names[SC_CLASSES] = {"floor", "chair", "table", "lamp"};
+
+typedef struct {
+    int cls;
+    float lo[3], hi[3];
+} sc_box;
+
+/* two chairs, a table, a lamp (world metres, z up) */
+static const sc_box sc_objects[] = {
+    {1, {-1.25f, 0.30f, 0.0f}, {-0.80f, 0.75f, 0.9f}},
+    {1, {0.80f, 0.30f, 0.0f}, {1.25f, 0.75f, 0.9f}},
+    {2, {-0.50f, -1.30f, 0.0f}, {0.50f, -0.70f, 0.75f}},
+    {3, {1.40f, -1.60f, 0.0f}, {1.60f, -1.40f, 1.2f}},
+};
+#define SC_N_OBJECTS 4
+
+static inline void sc_center(int k, float c[3])
+{
+    for (int a = 0; a < 3; a++) c[a] = 0.5f * (sc_objects[k].lo[a] + sc_objects[k].hi[a]);
+}
+
+/* PCA of the class embeddings: mean = their average, basis = Gram-Schmidt of (e_k - mean),
+ * completed with random directions to SC_DIM rows. Class features are exact. */
+static inline void sc_make_pca(sp_sem_pca *p, float emb[SC_CLASSES][SC_FULL])
+{
+    test_rng r = {2024};
+    p->dim = SC_DIM;
+    p->full_dim = SC_FULL;
+    p->mean = calloc(SC_FULL, sizeof(float));
+    p->basis = calloc(SC_FULL * SC_DIM, sizeof(float));
+    for (int k = 0; k < SC_CLASSES; k++) {
+        sp_label_embedding(sc_class_names[k], SC_FULL, emb[k]);
+        for (int j = 0; j < SC_FULL; j++) p->mean[j] += emb[k][j] / SC_CLASSES;
+    }
+    int rows = 0;
+    for (int k = 0; rows < SC_DIM; k++) {
+        float *row = p->basis + rows * SC_FULL;
+        for (int j = 0; j < SC_FULL; j++)
+            row[j] = k < SC_CLASSES ? emb[k][j] - p->mean[j] : (float)test_range(&r, -1, 1);
+        for (int q = 0; q < rows; q++) {
+            const float *o = p->basis + q * SC_FULL;
+            double d = 0;
+            for (int j = 0; j < SC_FULL; j++) d += (double)row[j] * o[j];
+            for (int j = 0; j < SC_FULL; j++) row[j] -= (float)(d * o[j]);
+        }
+        double n = 0;
+        for (int j = 0; j < SC_FULL; j++) n += (double)row[j] * row[j];
+        if (n < 1e-8) continue; /* the k-th class difference is dependent: skip it */
+        for (int j = 0; j < SC_FULL; j++) row[j] /= (float)sqrt(n);
+        rows++;
+    }
+}
+
+static inline void sc_encode(const sp_sem_pca *p, const float *full, float *f)
+{
+    for (int k = 0; k < p->dim; k++) {
+        double d = 0;
+        for (int j = 0; j < p->full_dim; j++)
+            d += (double)p->basis[k * p->full_dim + j] * (full[j] - p->mean[j]);
+        f[k] = (float)d;
+    }
+}
+
+/* Gaussians on the faces of each box (spacing ~5 cm) plus a floor; cls_out [n] gets the class. */
+static inline void sc_make_splat(sp_splat *s, int **cls_out, const sp_sem_pca *p,
+                                 float emb[SC_CLASSES][SC_FULL])
+{
+    const float step = 0.05f;
+    size_t cap = 20000, n = 0;
+    float *pos = malloc(sizeof(float) * 3 * cap);
+    int *cls = malloc(sizeof(int) * cap);
+    for (float x = -2.5f; x <= 2.5f; x += 2 * step)
+        for (float y = -2.5f; y <= 2.5f; y += 2 * step) {
+            pos[3 * n] = x, pos[3 * n + 1] = y, pos[3 * n + 2] = 0.0f;
+            cls[n++] = 0;
+        }
+    for (int k = 0; k < SC_N_OBJECTS; k++) {
+        const sc_box *b = &sc_objects[k];
+        for (int ax = 0; ax < 3; ax++)
+            for (int side = 0; side < 2; side++) {
+                if (ax == 2 && side == 0) continue; /* the bottom face is on the floor */
+                int u = (ax + 1) % 3, v = (ax + 2) % 3;
+                for (float a = b->lo[u]; a <= b->hi[u] + 1e-4f; a += step)
+                    for (float c = b->lo[v]; c <= b->hi[v] + 1e-4f; c += step) {
+                        if (n == cap) break;
+                        pos[3 * n + ax] = side ? b->hi[ax] : b->lo[ax];
+                        pos[3 * n + u] = a;
+                        pos[3 * n + v] = c;
+                        cls[n++] = b->cls;
+                    }
+            }
+    }
+    sp_error err = {0};
+    sp_splat_alloc(s, n, 0, SC_DIM, &err);
+    float feat[SC_CLASSES][SC_DIM];
+    for (int k = 0; k < SC_CLASSES; k++) sc_encode(p, emb[k], feat[k]);
+    /* colours: a distinct tint per class so heatmaps have context */
+    const float tint[SC_CLASSES][3] = {{0.6f, 0.55f, 0.5f}, {0.2f, 0.3f, 0.8f}, {0.6f, 0.35f, 0.15f},
+                                       {0.9f, 0.9f, 0.3f}};
+    for (size_t i = 0; i < n; i++) {
+        memcpy(s->means + 3 * i, pos + 3 * i, sizeof(float) * 3);
+        float ls = logf(cls[i] == 0 ? 0.06f : 0.03f);
+        s->log_scales[3 * i] = s->log_scales[3 * i + 1] = s->log_scales[3 * i + 2] = ls;
+        s->opacity_logits[i] = 3.0f;
+        for (int c = 0; c < 3; c++) s->sh[3 * i + c] = (tint[cls[i]][c] - 0.5f) / SP_SH_C0;
+        memcpy(s->features + SC_DIM * i, feat[cls[i]], sizeof feat[0]);
+    }
+    free(pos);
+    *cls_out = cls;
+}
+
+/* n cameras on a ring of radius 3.6 m at height 1.2 m looking at (0, -0.3, 0.4). */
+static inline void sc_make_cams(sp_camera *cams, int n, int w, int h)
+{
+    for (int c = 0; c < n; c++) {
+        double a = 2 * M_PI * c / n;
+        sp_camera *cam = &cams[c];
+        memset(cam, 0, sizeof *cam);
+        cam->width = w, cam->height = h;
+        cam->fx = cam->fy = 0.8f * w;
+        cam->cx = 0.5f * w, cam->cy = 0.5f * h;
+        sp_camera_look_at(cam, sp_v3((float)(3.6 * cos(a)), (float)(3.6 * sin(a)) - 0.3f, 1.2f),
+                          sp_v3(0, -0.3f, 0.4f), sp_v3(0, 0, 1));
+    }
+}
+
+#endif
