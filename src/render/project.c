@@ -30,15 +30,15 @@ static void project_chunk(void *ctx, long chunk, int thread_id)
         int radius = 0;
         int32_t *box = r->pix_box + 4 * i;
         float *m2 = r->mean2d + 2 * i, *con = r->conic + 3 * i;
-        int vis = sp_gm_project(in->means + 3 * i, in->quats + 4 * i, in->log_scales + 3 * i,
-                                in->opacity_logits[i], &r->cam, &r->cfg, m2, con, &r->depth[i],
-                                &r->opacity[i], &radius);
+        float cov2[3];
+        int vis = sp_gm_project_ex(in->means + 3 * i, in->quats + 4 * i, in->log_scales + 3 * i,
+                                   in->opacity_logits[i], &r->cam, &r->cfg, m2, con, &r->depth[i],
+                                   &r->opacity[i], &radius, cov2);
         if (vis) {
             /* Per-axis extent of the alpha >= 1/255 ellipse (tighter than the radius circle for
-             * elongated Gaussians): extent * sqrt(cov_xx), cov = conic^-1. */
-            float det = con[0] * con[2] - con[1] * con[1];
+             * elongated Gaussians): extent * sqrt(cov_xx) of the blurred 2D covariance. */
             float ext = sqrtf(2.f * logf(r->opacity[i] * 255.f));
-            float rx = ceilf(ext * sqrtf(con[2] / det)), ry = ceilf(ext * sqrtf(con[0] / det));
+            float rx = ceilf(ext * sqrtf(cov2[0])), ry = ceilf(ext * sqrtf(cov2[2]));
             float rr = (float)radius;
             pixel_box(m2[0], m2[1], rx < rr ? rx : rr, ry < rr ? ry : rr, r->W, r->H, box);
             if (box[0] > box[1] || box[2] > box[3]) vis = 0, radius = 0;
