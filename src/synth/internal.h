@@ -1,0 +1,56 @@
+/* Private to src/synth: the world builder shared by the SDF reader (sdf.c), the primitive and
+ * mesh tessellators (build.c, mesh.c), and the small double-precision pose algebra they use. */
+#ifndef SP_SYNTH_INTERNAL_H
+#define SP_SYNTH_INTERNAL_H
+
+#include "semsplat/synth.h"
+
+/* Row-major 4x4 rigid (or scaled) transform in double: x_parent = M x_child. */
+typedef struct { double m[16]; } xform;
+
+xform xf_identity(void);
+xform xf_mul(xform a, xform b);
+/* SDF pose "x y z roll pitch yaw": R = Rz(yaw) Ry(pitch) Rx(roll). */
+xform xf_from_pose(const double p[6]);
+void xf_apply(const xform *a, const double in[3], double out[3]);
+void xf_apply_dir(const xform *a, const double in[3], double out[3]);
+
+typedef struct wbuild {
+    sp_world *w;
+    size_t cap_v, cap_t, cap_m, cap_tex, cap_o, cap_l, cap_c;
+    const sp_log *log;
+    int skip_missing;
+} wbuild;
+
+int wb_init(wbuild *b, sp_world *w, sp_error *err);
+/* Appends a vertex; returns its index or -1 when out of memory. pattern = object-local point. */
+long wb_vertex(wbuild *b, const double pos[3], const double nrm[3], const double uv[2],
+               const double pattern[3]);
+int wb_triangle(wbuild *b, long a, long c, long d, int material, int object);
+int wb_material(wbuild *b, const sp_synth_material *m);
+/* Texture by path, loaded once (cached by path). Returns index, or negative SP_E_*. */
+int wb_texture(wbuild *b, const char *path, sp_error *err);
+int wb_object(wbuild *b, const sp_synth_object *o);
+int wb_light(wbuild *b, const sp_synth_light *l);
+/* Starts / ends a chunk around the triangles added in between. */
+void wb_chunk_begin(wbuild *b, size_t *mark);
+int wb_chunk_end(wbuild *b, size_t mark);
+/* Finishes: tri_axis, object AABBs, default light. */
+int wb_finish(wbuild *b, sp_error *err);
+
+/* Geometry emitters: `to_world` maps the visual frame to world; material and object indices. */
+int geom_box(wbuild *b, const xform *to_world, const double size[3], int mat, int obj);
+int geom_cylinder(wbuild *b, const xform *to_world, double radius, double length, int mat, int obj);
+int geom_sphere(wbuild *b, const xform *to_world, double radius, int mat, int obj);
+int geom_plane(wbuild *b, const xform *to_world, const double normal[3], const double size[2],
+               int mat, int obj);
+/* Loads a mesh file through assimp; `fallback` is the SDF material (used where the mesh has no
+ * texture and sdf_material_set). Missing textures fail unless b->skip_missing. */
+int geom_mesh(wbuild *b, const xform *to_world, const char *path, const double scale[3],
+              const sp_synth_material *fallback, int sdf_material_set, int obj, sp_error *err);
+
+/* Picks a procedural pattern from a Gazebo script name or visual/model names. */
+int pattern_from_names(const char *script, const char *visual, const char *link,
+                       const char *model);
+
+#endif

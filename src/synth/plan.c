@@ -1,0 +1,421 @@
+/* Camera paths for captures, like a robot's: a 2D grid of the free floor (floor surfaces minus
+ * everything between ankle and head height, kept a robot radius away), waypoints spread over it
+ * by farthest-point sampling and visited in a nearest-neighbour tour, several looking-around
+ * views at each (towards open space), then views around each object with a clear line of sight. */
+#include "internal.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define FLOOR_MAX_Z 0.3f     /* up-facing surfaces below this are floor */
+#define OBST_MIN_Z 0.06f     /* obstacles: anything between these heights above the floor */
+#define OBST_MAX_Z 1.9f
+#define CLEARANCE_M 0.35f    /* a camera stays this far from obstacles */
+#define MAX_CELLS 700        /* grid side limit */
+
+typedef struct grid {
+    float x0, y0, res;
+    int nx, ny;
+    uint8_t *floor;   /* 1 = floor below */
+    int32_t *occ;     /* -1 free, -2 unknown/structure, else object index */
+    float *clear;     /* distance to the nearest obstacle or floor edge (m) */
+} grid;
+
+typedef struct rng { uint64_t s; } rng;
+static double rnd(rng *r)
+{
+    r->s ^= r->s >> 12;
+    r->s ^= r->s << 25;
+    r->s ^= r->s >> 27;
+    return (double)((r->s * 2685821657736338717ULL) >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void tri_normal(const sp_world *w, size_t t, float n[3])
+{
+    const float *a = &w->positions[w->tris[t * 3] * 3], *b = &w->positions[w->tris[t * 3 + 1] * 3];
+    const float *c = &w->positions[w->tris[t * 3 + 2] * 3];
+    float e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    float l = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (l > 0) for (int k = 0; k < 3; k++) n[k] /= l;
+}
+
+static int is_floor_tri(const sp_world *w, size_t t)
+{
+    float n[3];
+    tri_normal(w, t, n);
+    if (fabsf(n[2]) < 0.9f) return 0;
+    for (int i = 0; i < 3; i++) {
+        float z = w->positions[w->tris[t * 3 + i] * 3 + 2];
+        if (z > FLOOR_MAX_Z || z < -FLOOR_MAX_Z) return 0;
+    }
+    return 1;
+}
+
+static int build_grid(const sp_world *w, grid *g)
+{
+    /* Bounds: the floor surfaces, cut to everything else (a ground plane can be 100 m wide). */
+    float fmin[2] = {INFINITY, INFINITY}, fmax[2] = {-INFINITY, -INFINITY};
+    float omin[2] = {INFINITY, INFINITY}, omax[2] = {-INFINITY, -INFINITY};
+    for (size_t t = 0; t < w->n_triangles; t++) {
+        int fl = is_floor_tri(w, t);
+        for (int i = 0; i < 3; i++) {
+            const float *p = &w->positions[w->tris[t * 3 + i] * 3];
+            if (fabsf(p[0]) > 1e4f || fabsf(p[1]) > 1e4f || p[2] > 3.0f || p[2] < -1.0f) continue;
+            float *mn = fl ? fmin : omin, *mx = fl ? fmax : omax;
+            for (int k = 0; k < 2; k++) {
+                if (p[k] < mn[k]) mn[k] = p[k];
+                if (p[k] > mx[k]) mx[k] = p[k];
+            }
+        }
+    }
+    if (!(fmin[0] < fmax[0]) || !(fmin[1] < fmax[1])) return -1;
+    if (omin[0] < omax[0])
+        for (int k = 0; k < 2; k++) {
+            fmin[k] = fmaxf(fmin[k], omin[k] - 1.0f);
+            fmax[k] = fminf(fmax[k], omax[k] + 1.0f);
+        }
+    float ext = fmaxf(fmax[0] - fmin[0], fmax[1] - fmin[1]);
+    g->res = fmaxf(0.05f, ext / MAX_CELLS);
+    g->x0 = fmin[0];
+    g->y0 = fmin[1];
+    g->nx = (int)ceilf((fmax[0] - fmin[0]) / g->res) + 1;
+    g->ny = (int)ceilf((fmax[1] - fmin[1]) / g->res) + 1;
+    size_t nc = (size_t)g->nx * g->ny;
+    g->floor = calloc(nc, 1);
+    g->occ = malloc(nc * sizeof(int32_t));
+    g->clear = malloc(nc * sizeof(float));
+    if (!g->floor || !g->occ || !g->clear) return -2;
+    for (size_t i = 0; i < nc; i++) g->occ[i] = -1;
+    /* floor: cell centres inside floor triangles (xy) */
+    for (size_t t = 0; t < w->n_triangles; t++) {
+        if (!is_floor_tri(w, t)) continue;
+        const float *a = &w->positions[w->tris[t * 3] * 3], *b = &w->positions[w->tris[t * 3 + 1] * 3];
+        const float *c = &w->positions[w->tris[t * 3 + 2] * 3];
+        float xmn = fminf(a[0], fminf(b[0], c[0])), xmx = fmaxf(a[0], fmaxf(b[0], c[0]));
+        float ymn = fminf(a[1], fminf(b[1], c[1])), ymx = fmaxf(a[1], fmaxf(b[1], c[1]));
+        int i0 = (int)floorf((xmn - g->x0) / g->res), i1 = (int)ceilf((xmx - g->x0) / g->res);
+        int j0 = (int)floorf((ymn - g->y0) / g->res), j1 = (int)ceilf((ymx - g->y0) / g->res);
+        if (i0 < 0) i0 = 0;
+        if (j0 < 0) j0 = 0;
+        if (i1 >= g->nx) i1 = g->nx - 1;
+        if (j1 >= g->ny) j1 = g->ny - 1;
+        float d = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+        if (fabsf(d) < 1e-12f) continue;
+        for (int j = j0; j <= j1; j++)
+            for (int i = i0; i <= i1; i++) {
+                float x = g->x0 + (i + 0.5f) * g->res, y = g->y0 + (j + 0.5f) * g->res;
+                float l1 = ((x - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (y - a[1])) / d;
+                float l2 = ((b[0] - a[0]) * (y - a[1]) - (x - a[0]) * (b[1] - a[1])) / d;
+                if (l1 >= -1e-4f && l2 >= -1e-4f && l1 + l2 <= 1.0001f) g->floor[(size_t)j * g->nx + i] = 1;
+            }
+    }
+    /* obstacles: points sampled densely on every other triangle within the height band */
+    float step = g->res * 0.5f;
+    for (size_t t = 0; t < w->n_triangles; t++) {
+        if (is_floor_tri(w, t)) continue;
+        const float *a = &w->positions[w->tris[t * 3] * 3], *b = &w->positions[w->tris[t * 3 + 1] * 3];
+        const float *c = &w->positions[w->tris[t * 3 + 2] * 3];
+        float zmn = fminf(a[2], fminf(b[2], c[2])), zmx = fmaxf(a[2], fmaxf(b[2], c[2]));
+        if (zmx < OBST_MIN_Z || zmn > OBST_MAX_Z) continue;
+        float e = fmaxf(fmaxf(fabsf(b[0] - a[0]) + fabsf(b[1] - a[1]) + fabsf(b[2] - a[2]),
+                              fabsf(c[0] - a[0]) + fabsf(c[1] - a[1]) + fabsf(c[2] - a[2])),
+                        fabsf(c[0] - b[0]) + fabsf(c[1] - b[1]) + fabsf(c[2] - b[2]));
+        int n = (int)ceilf(e / step);
+        if (n < 1) n = 1;
+        if (n > 4000) n = 4000;
+        int obj = w->tri_object[t];
+        int32_t id = w->objects[obj].is_structure ? -2 : obj;
+        for (int i = 0; i <= n; i++)
+            for (int j = 0; i + j <= n; j++) {
+                float u = (float)i / n, v = (float)j / n, s = 1 - u - v;
+                float p[3] = {s * a[0] + u * b[0] + v * c[0], s * a[1] + u * b[1] + v * c[1],
+                              s * a[2] + u * b[2] + v * c[2]};
+                if (p[2] < OBST_MIN_Z || p[2] > OBST_MAX_Z) continue;
+                int ci = (int)floorf((p[0] - g->x0) / g->res), cj = (int)floorf((p[1] - g->y0) / g->res);
+                if (ci < 0 || cj < 0 || ci >= g->nx || cj >= g->ny) continue;
+                int32_t *o = &g->occ[(size_t)cj * g->nx + ci];
+                if (*o == -1 || id == -2) *o = id;
+            }
+    }
+    /* clearance: chamfer distance from obstacles and non-floor cells */
+    const float big = 1e9f, d1 = g->res, d2 = g->res * 1.41421356f;
+    for (size_t i = 0; i < nc; i++) g->clear[i] = (g->floor[i] && g->occ[i] == -1) ? big : 0;
+    for (int j = 0; j < g->ny; j++)
+        for (int i = 0; i < g->nx; i++) {
+            float *c = &g->clear[(size_t)j * g->nx + i];
+            if (i > 0) *c = fminf(*c, c[-1] + d1);
+            if (j > 0) {
+                *c = fminf(*c, c[-g->nx] + d1);
+                if (i > 0) *c = fminf(*c, c[-g->nx - 1] + d2);
+                if (i + 1 < g->nx) *c = fminf(*c, c[-g->nx + 1] + d2);
+            }
+        }
+    for (int j = g->ny - 1; j >= 0; j--)
+        for (int i = g->nx - 1; i >= 0; i--) {
+            float *c = &g->clear[(size_t)j * g->nx + i];
+            if (i + 1 < g->nx) *c = fminf(*c, c[1] + d1);
+            if (j + 1 < g->ny) {
+                *c = fminf(*c, c[g->nx] + d1);
+                if (i + 1 < g->nx) *c = fminf(*c, c[g->nx + 1] + d2);
+                if (i > 0) *c = fminf(*c, c[g->nx - 1] + d2);
+            }
+        }
+    return 0;
+}
+
+static void grid_free(grid *g)
+{
+    free(g->floor);
+    free(g->occ);
+    free(g->clear);
+}
+
+static int cell_of(const grid *g, float x, float y, int *i, int *j)
+{
+    *i = (int)floorf((x - g->x0) / g->res);
+    *j = (int)floorf((y - g->y0) / g->res);
+    return *i >= 0 && *j >= 0 && *i < g->nx && *j < g->ny;
+}
+
+/* Free distance from (x, y) along yaw until an obstacle (up to max_m). */
+static float free_run(const grid *g, float x, float y, float yaw, float max_m)
+{
+    float dx = cosf(yaw), dy = sinf(yaw);
+    for (float s = 0; s < max_m; s += g->res * 0.5f) {
+        int i, j;
+        if (!cell_of(g, x + dx * s, y + dy * s, &i, &j)) return s;
+        size_t k = (size_t)j * g->nx + i;
+        if (g->occ[k] != -1 || !g->floor[k]) return s;
+    }
+    return max_m;
+}
+
+/* Line of sight from (x, y) towards object o: no other object or structure in between. */
+static int clear_line(const grid *g, float x, float y, float tx, float ty, int o, const sp_synth_object *ob)
+{
+    float dx = tx - x, dy = ty - y, L = sqrtf(dx * dx + dy * dy);
+    for (float s = 0; s < L; s += g->res * 0.5f) {
+        float px = x + dx * s / L, py = y + dy * s / L;
+        if (px >= ob->aabb_min[0] && px <= ob->aabb_max[0] && py >= ob->aabb_min[1] && py <= ob->aabb_max[1])
+            return 1;
+        int i, j;
+        if (!cell_of(g, px, py, &i, &j)) return 0;
+        int32_t id = g->occ[(size_t)j * g->nx + i];
+        if (id != -1 && id != o) return 0;
+    }
+    return 1;
+}
+
+static void set_cam(sp_camera *c, const sp_synth_capture_opts *o, float fov_deg)
+{
+    memset(c, 0, sizeof *c);
+    c->width = o->width;
+    c->height = o->height;
+    c->fx = c->fy = (float)(0.5 * o->width / tan(0.5 * fov_deg * M_PI / 180.0));
+    c->cx = 0.5f * o->width;
+    c->cy = 0.5f * o->height;
+}
+
+static void look(sp_camera *c, float x, float y, float z, float yaw, float pitch)
+{
+    sp_vec3 eye = sp_v3(x, y, z);
+    sp_vec3 dir = sp_v3(cosf(yaw) * cosf(pitch), sinf(yaw) * cosf(pitch), sinf(pitch));
+    sp_camera_look_at(c, eye, sp_v3_add(eye, dir), sp_v3(0, 0, 1));
+}
+
+int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_camera **cams,
+                        size_t *n_out, sp_error *err)
+{
+    *cams = NULL;
+    *n_out = 0;
+    if (o->n_views <= 0 || o->width <= 0 || o->height <= 0)
+        return sp_error_set(err, SP_E_ARG, "capture: %d views of %dx%d: expected positive numbers",
+                            o->n_views, o->width, o->height);
+    float fov = o->fov_deg > 0 ? o->fov_deg : 70.0f;
+    if (fov >= 170) return sp_error_set(err, SP_E_ARG, "fov %g degrees: expected less than 170", fov);
+    float hmin = o->min_height_m, hmax = o->max_height_m;
+    if (hmin <= 0 && hmax <= 0) { hmin = 0.3f; hmax = 1.5f; }
+    if (hmax < hmin) return sp_error_set(err, SP_E_ARG, "camera heights %g..%g: max below min", hmin, hmax);
+    size_t n = (size_t)o->n_views;
+    sp_camera *out = calloc(n, sizeof *out);
+    if (!out) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    rng r = {0x9e3779b97f4a7c15ULL ^ ((uint64_t)o->seed * 0x100000001b3ULL + 1)};
+    grid g;
+    memset(&g, 0, sizeof g);
+    int grc = build_grid(w, &g);
+    if (grc == -2) {
+        grid_free(&g);
+        free(out);
+        return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    }
+    size_t nc = grc == 0 ? (size_t)g.nx * g.ny : 0, n_free = 0;
+    float need = CLEARANCE_M;
+    for (int pass = 0; pass < 3 && grc == 0; pass++) {
+        n_free = 0;
+        for (size_t i = 0; i < nc; i++) n_free += g.clear[i] >= need;
+        if (n_free >= 4) break;
+        need *= 0.5f; /* a tight world: accept less clearance rather than no walk */
+    }
+    size_t k = 0;
+    if (grc != 0 || n_free < 4) {
+        /* No floor to walk on: orbit the scene's box. */
+        float mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (size_t i = 0; i < w->n_objects; i++)
+            for (int a = 0; a < 3; a++) {
+                mn[a] = fminf(mn[a], w->objects[i].aabb_min[a]);
+                mx[a] = fmaxf(mx[a], w->objects[i].aabb_max[a]);
+            }
+        if (!(mn[0] <= mx[0])) for (int a = 0; a < 3; a++) { mn[a] = -1; mx[a] = 1; }
+        sp_vec3 c = sp_v3((mn[0] + mx[0]) / 2, (mn[1] + mx[1]) / 2, (mn[2] + mx[2]) / 2);
+        float rad = 0.5f * sqrtf((mx[0] - mn[0]) * (mx[0] - mn[0]) + (mx[1] - mn[1]) * (mx[1] - mn[1]) +
+                                 (mx[2] - mn[2]) * (mx[2] - mn[2]));
+        float dist = fmaxf(rad / tanf(0.5f * fov * (float)M_PI / 180.0f), rad + 0.5f) * 1.1f;
+        for (k = 0; k < n; k++) {
+            float a = (float)(2 * M_PI * k / n), el = (float)(0.15 + 0.35 * rnd(&r));
+            sp_vec3 eye = sp_v3(c.x + dist * cosf(a) * cosf(el), c.y + dist * sinf(a) * cosf(el), c.z + dist * sinf(el));
+            set_cam(&out[k], o, fov);
+            sp_camera_look_at(&out[k], eye, c, sp_v3(0, 0, 1));
+        }
+        grid_free(&g);
+        *cams = out;
+        *n_out = n;
+        return 0;
+    }
+    /* objects worth a look: not structure, with a footprint on the grid, not floating far away */
+    int *objs = malloc((w->n_objects + 1) * sizeof(int));
+    size_t n_objs = 0;
+    for (size_t i = 0; objs && i < w->n_objects; i++) {
+        const sp_synth_object *ob = &w->objects[i];
+        float cx = 0.5f * (ob->aabb_min[0] + ob->aabb_max[0]), cy = 0.5f * (ob->aabb_min[1] + ob->aabb_max[1]);
+        float cz = 0.5f * (ob->aabb_min[2] + ob->aabb_max[2]);
+        int ci, cj;
+        if (ob->is_structure || !ob->n_triangles || cz > 2.2f || cz < -0.5f || !cell_of(&g, cx, cy, &ci, &cj)) continue;
+        objs[n_objs++] = (int)i;
+    }
+    size_t n_obj_views = n_objs ? (size_t)(0.4 * n) : 0, n_walk = n - n_obj_views;
+    /* waypoints: farthest-point sampling over the free cells */
+    size_t n_wp = (n_walk + 3) / 4;
+    if (n_wp < 1) n_wp = 1;
+    size_t *wp = malloc(n_wp * sizeof(size_t));
+    float *mind = malloc(nc * sizeof(float));
+    int *order = malloc(n_wp * sizeof(int));
+    if (!wp || !mind || !order || !objs) {
+        free(wp); free(mind); free(order); free(objs);
+        grid_free(&g);
+        free(out);
+        return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    }
+    size_t first = 0;
+    float bestc = -1;
+    for (size_t i = 0; i < nc; i++)
+        if (g.clear[i] > bestc) { bestc = g.clear[i]; first = i; }
+    /* waypoints keep well away from walls where the room allows (farthest-point sampling alone
+     * would pick corners) */
+    float wp_need = fmaxf(need, fminf(0.75f, 0.6f * bestc));
+    for (size_t i = 0; i < nc; i++) mind[i] = g.clear[i] >= wp_need ? INFINITY : -1;
+    for (size_t q = 0; q < n_wp; q++) {
+        size_t pick = first;
+        if (q > 0) {
+            float bd = -1;
+            for (size_t i = 0; i < nc; i++)
+                if (mind[i] > bd) { bd = mind[i]; pick = i; }
+        }
+        wp[q] = pick;
+        float px = (float)(pick % g.nx), py = (float)(pick / g.nx);
+        for (size_t i = 0; i < nc; i++) {
+            if (mind[i] < 0) continue;
+            float dx = (float)(i % g.nx) - px, dy = (float)(i / g.nx) - py, d = dx * dx + dy * dy;
+            if (d < mind[i]) mind[i] = d;
+        }
+    }
+    /* nearest-neighbour tour */
+    {
+        uint8_t *used = calloc(n_wp, 1);
+        int cur = 0;
+        for (size_t q = 0; q < n_wp; q++) {
+            order[q] = cur;
+            if (used) used[cur] = 1;
+            float bd = INFINITY;
+            int nx = -1;
+            for (size_t t = 0; used && t < n_wp; t++) {
+                if (used[t]) continue;
+                float dx = (float)(wp[t] % g.nx) - (float)(wp[cur] % g.nx), dy = (float)(wp[t] / g.nx) - (float)(wp[cur] / g.nx);
+                if (dx * dx + dy * dy < bd) { bd = dx * dx + dy * dy; nx = (int)t; }
+            }
+            if (nx < 0) nx = (int)((q + 1) % n_wp);
+            cur = nx;
+        }
+        free(used);
+    }
+    /* looking around at each waypoint: yaws toward open space, spread apart */
+    for (size_t q = 0; q < n_wp && k < n_walk; q++) {
+        size_t cell = wp[order[q]];
+        float x = g.x0 + ((float)(cell % g.nx) + 0.5f) * g.res, y = g.y0 + ((float)(cell / g.nx) + 0.5f) * g.res;
+        float score[24], yaw0 = (float)(rnd(&r) * 2 * M_PI);
+        for (int a = 0; a < 24; a++) score[a] = free_run(&g, x, y, yaw0 + a * (float)M_PI / 12, 4.0f);
+        int taken[24] = {0};
+        for (int v = 0; v < 4 && k < n_walk; v++) {
+            int best = -1;
+            float bs = -1;
+            for (int a = 0; a < 24; a++) {
+                if (taken[a]) continue;
+                int near = 0;
+                for (int b = 0; b < 24; b++) {
+                    int d = abs(a - b);
+                    if (d > 12) d = 24 - d;
+                    if (taken[b] && d < 4) near = 1;
+                }
+                float s = score[a] - (near ? 10.0f : 0.0f);
+                if (s > bs) { bs = s; best = a; }
+            }
+            taken[best] = 1;
+            float h = hmin + (float)rnd(&r) * (hmax - hmin);
+            float pitch = (float)((-0.05 - 0.3 * (h - hmin) / fmaxf(hmax - hmin, 1e-3f)) + 0.12 * (rnd(&r) - 0.5));
+            float yaw = yaw0 + best * (float)M_PI / 12 + (float)(0.2 * (rnd(&r) - 0.5));
+            set_cam(&out[k], o, fov);
+            look(&out[k], x, y, h, yaw, pitch);
+            k++;
+        }
+    }
+    /* around objects, round robin */
+    size_t tries = 0;
+    for (size_t v = 0; k < n && n_objs && tries < 64 * n; tries++, v++) {
+        int oi = objs[v % n_objs];
+        const sp_synth_object *ob = &w->objects[oi];
+        float cx = 0.5f * (ob->aabb_min[0] + ob->aabb_max[0]), cy = 0.5f * (ob->aabb_min[1] + ob->aabb_max[1]);
+        float cz = 0.5f * (ob->aabb_min[2] + ob->aabb_max[2]);
+        float size = fmaxf(ob->aabb_max[0] - ob->aabb_min[0], fmaxf(ob->aabb_max[1] - ob->aabb_min[1], ob->aabb_max[2] - ob->aabb_min[2]));
+        float dist = fminf(fmaxf(0.9f + 1.1f * size, 1.0f), 3.2f) * (float)(0.85 + 0.3 * rnd(&r));
+        float ang = (float)(rnd(&r) * 2 * M_PI);
+        float x = cx + dist * cosf(ang), y = cy + dist * sinf(ang);
+        int ci, cj;
+        if (!cell_of(&g, x, y, &ci, &cj) || g.clear[(size_t)cj * g.nx + ci] < need * 0.7f) continue;
+        if (!clear_line(&g, x, y, cx, cy, oi, ob)) continue;
+        float h = hmin + (float)rnd(&r) * (hmax - hmin);
+        float tz = fmaxf(cz, 0.15f);
+        float yaw = atan2f(cy - y, cx - x) + (float)(0.15 * (rnd(&r) - 0.5));
+        float pitch = atan2f(tz - h, dist);
+        set_cam(&out[k], o, fov);
+        look(&out[k], x, y, h, yaw, pitch);
+        k++;
+    }
+    /* anything left (objects unreachable): more walk views at random waypoints */
+    for (; k < n; k++) {
+        size_t cell = wp[(size_t)(rnd(&r) * n_wp) % n_wp];
+        float x = g.x0 + ((float)(cell % g.nx) + 0.5f) * g.res, y = g.y0 + ((float)(cell / g.nx) + 0.5f) * g.res;
+        float h = hmin + (float)rnd(&r) * (hmax - hmin);
+        set_cam(&out[k], o, fov);
+        look(&out[k], x, y, h, (float)(rnd(&r) * 2 * M_PI), -0.15f);
+    }
+    free(wp);
+    free(mind);
+    free(order);
+    free(objs);
+    grid_free(&g);
+    *cams = out;
+    *n_out = n;
+    return 0;
+}
