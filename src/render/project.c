@@ -91,8 +91,18 @@ static void project_backward_chunk(void *ctx, long chunk, int thread_id)
         for (size_t s = s0; s < s1; s++) {
             const float *slot = r->slots + s * (size_t)stride;
             for (int k = 0; k < SP_SLOT_FIXED; k++) acc[k] += slot[k];
-            if (vcol)
-                for (int d = 0; d < D; d++) vcol[d] += slot[SP_SLOT_FIXED + d];
+        }
+        /* colour gradients summed locally first, then added once (so "added into" means exactly
+         * out + g, and two identical backward calls give exactly 2 g) */
+        for (int c0 = 0; vcol && c0 < D; c0 += 256) {
+            float part[256];
+            int c1 = c0 + 256 < D ? c0 + 256 : D;
+            for (int d = c0; d < c1; d++) part[d - c0] = 0.f;
+            for (size_t s = s0; s < s1; s++) {
+                const float *slot = r->slots + s * (size_t)stride + SP_SLOT_FIXED;
+                for (int d = c0; d < c1; d++) part[d - c0] += slot[d];
+            }
+            for (int d = c0; d < c1; d++) vcol[d] += part[d - c0];
         }
         if (g->v_means2d) {
             g->v_means2d[2 * i] += acc[0];
