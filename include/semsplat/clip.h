@@ -147,8 +147,8 @@ void sp_clip_upsample(const float *grid, int gw, int gh, int dim, int width, int
 
 /* ---- PCA ---------------------------------------------------------------------------------------- */
 
-/* Mean and the top-dim principal directions of x [n][full_dim] (covariance in double, Jacobi
- * eigen-solver). basis [dim][full_dim] has orthonormal rows in decreasing variance, each signed
+/* Mean and the top-dim principal directions of x [n][full_dim] (covariance, then Householder +
+ * implicit QL in double). basis [dim][full_dim] has orthonormal rows in decreasing variance, each signed
  * so that its largest-magnitude entry is positive. When the data has fewer than dim directions
  * of variance the remaining rows are completed to an orthonormal set. */
 int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean, float *basis,
