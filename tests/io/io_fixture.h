@@ -16,6 +16,7 @@ typedef struct {
 
 static inline void fx_put(fx_buf *f, const void *p, size_t n)
 {
+    if (n == 0) return;
     if (f->n + n > f->cap) {
         f->cap = (f->n + n) * 2 + 64;
         f->b = realloc(f->b, f->cap);
