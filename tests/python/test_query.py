@@ -1,0 +1,83 @@
+"""The Python module against the CLI: the same model folder and query must give the same answer
+(found, position, confidence, instances, view) through gs_semantic_query and `semsplat query
+--json`. Run by tests/semantic/test_python.c with a model folder it builds:
+    test_query.py MODEL_DIR SEMSPLAT_BINARY
+"""
+import json
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
+import gs_semantic_query as gq  # noqa: E402
+
+failures = 0
+
+
+def check(cond, what):
+    global failures
+    if not cond:
+        failures += 1
+        print("CHECK failed: " + what, file=sys.stderr)
+
+
+def cli(binary, model, text, method):
+    out = subprocess.run([binary, "query", "--model", model, "--json", "--device", "cpu", "--method", method,
+                          "--heatmap", os.path.join(model, "cli_heatmap.png"), text],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def close(a, b, tol=1e-5):
+    return a is not None and b is not None and np.allclose(np.asarray(a, float), np.asarray(b, float), atol=tol)
+
+
+def main():
+    model, binary = sys.argv[1], sys.argv[2]
+    q = gq.SemanticSplatQuery(model_path=model, device="cpu")
+    check(q.n_cameras > 0, "cameras loaded")
+    for method in ("3d", "multiview"):
+        for text in ("table", "chair", "lamp", "refrigerator"):
+            r = q.query(text, method=method)
+            j = cli(binary, model, text, method)
+            tag = "%s/%s" % (text, method)
+            check(r.found == j["found"], tag + ": found %s vs CLI %s" % (r.found, j["found"]))
+            check(abs(r.confidence - j["confidence"]) < 1e-6, tag + ": confidence")
+            check(len(r.instances) == len(j["instances"]), tag + ": instance count")
+            for a, b in zip(r.instances, j["instances"]):
+                check(close(a["position"], b["position"]), tag + ": instance position")
+                check(a["points"] == b["points"], tag + ": instance points")
+            if j["found"]:
+                check(isinstance(r.position, np.ndarray) and r.position.shape == (3,), tag + ": position array")
+                check(close(r.position, j["position"]), tag + ": position %s vs CLI %s" % (r.position, j["position"]))
+                check(j["view"] is not None and r.view_index == j["view"]["index"], tag + ": view")
+            else:
+                check(r.position is None and j["position"] is None, tag + ": absent has no position")
+                check(r.confidence < 0.15, tag + ": absent confidence %.3f" % r.confidence)
+            img = r.relevancy_image
+            check(isinstance(img, np.ndarray) and img.dtype == np.uint8 and img.ndim == 3 and img.shape[2] == 3,
+                  tag + ": relevancy_image H x W x 3 uint8")
+            check(isinstance(r.confidence, float), tag + ": confidence is a float")
+            check(j["heatmap"] is not None and os.path.exists(j["heatmap"]), tag + ": CLI heatmap written")
+    # chairs: two instances; the embedding path gives the same answer as text
+    r = q.query("chair")
+    check(len(r.instances) == 2, "two chairs")
+    r2 = q.query_embedding(q.embed("chair"), label="chair")
+    check(close(r.position, r2.position, 1e-6), "embedding query equals text query")
+    path = os.path.join(model, "py_heatmap.png")
+    r.save_heatmap(path)
+    check(os.path.getsize(path) > 100, "save_heatmap wrote a PNG")
+    try:
+        gq.SemanticSplatQuery(model_path=os.path.join(model, "missing"))
+        check(False, "opening a missing folder raises")
+    except gq.SemsplatError as e:
+        check("semantic.json" in str(e), "error names semantic.json: %s" % e)
+    q.close()
+    print("python: %d failures" % failures)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

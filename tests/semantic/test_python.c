@@ -1,0 +1,91 @@
+/* Runs tests/python/test_query.py (the Python module against `semsplat query --json`) on a model
+ * folder built here from the tiny labelled scene: splat.ply with f_sem_*, semantic.json, the PCA
+ * files and a COLMAP model of the cameras. Skips when /usr/bin/python3 has no numpy. */
+#include <cjson/cJSON.h>
+#include <stdlib.h>
+
+#include "scene.h"
+#include "semsplat/io.h"
+#include "test.h"
+
+static int build_model(const char *dir, sp_error *err)
+{
+    float emb[SC_CLASSES][SC_FULL];
+    sp_sem_pca pca;
+    sc_make_pca(&pca, emb);
+    sp_splat s;
+    int *cls;
+    sc_make_splat(&s, &cls, &pca, emb);
+    enum { N = 12, W = 160, H = 120 };
+    sp_camera cams[N];
+    sc_make_cams(cams, N, W, H);
+    char path[1400], colmap[1200];
+    int rc;
+    snprintf(path, sizeof path, "%s/splat.ply", dir);
+    if ((rc = sp_ply_write_splat(path, &s, err))) goto done;
+    size_t sh1[1] = {SC_FULL}, sh2[2] = {SC_DIM, SC_FULL};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, sh1, pca.mean, err))) goto done;
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, sh2, pca.basis, err))) goto done;
+    /* COLMAP model of the cameras */
+    snprintf(colmap, sizeof colmap, "%s/sparse/0", dir);
+    if ((rc = sp_mkdirs(colmap, err))) goto done;
+    sp_colmap_model m;
+    memset(&m, 0, sizeof m);
+    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, W, H, 4, {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
+    sp_colmap_image ims[N];
+    char names[N][32];
+    memset(ims, 0, sizeof ims);
+    for (int i = 0; i < N; i++) {
+        float q[4];
+        sp_mat3_to_quat(cams[i].R, q);
+        ims[i].id = (uint32_t)i + 1;
+        for (int k = 0; k < 4; k++) ims[i].qvec[k] = q[k];
+        for (int k = 0; k < 3; k++) ims[i].tvec[k] = cams[i].t[k];
+        ims[i].camera_id = 1;
+        snprintf(names[i], sizeof names[i], "view_%02d.png", i);
+        ims[i].name = names[i];
+    }
+    m.n_cameras = 1, m.cameras = &cam, m.n_images = N, m.images = ims;
+    if ((rc = sp_colmap_write_bin(colmap, &m, err))) goto done;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", "labels");
+    cJSON_AddNumberToObject(o, "dim", SC_DIM);
+    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", "hash");
+    cJSON_AddNullToObject(o, "model");
+    cJSON_AddStringToObject(o, "method", "lift");
+    cJSON_AddStringToObject(o, "colmap", "sparse/0");
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    rc = sp_json_write_file(path, o, err);
+    cJSON_Delete(o);
+done:
+    sp_splat_free(&s);
+    sp_sem_pca_free(&pca);
+    free(cls);
+    return rc;
+}
+
+static void test_python_matches_cli(void)
+{
+    const char *dir = test_tmpdir("semantic_python");
+    sp_error err = {0};
+    CHECK_OK(build_model(dir, &err), &err);
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd,
+             "SEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/test_query.py' '%s' '%s/semsplat'",
+             SP_BUILD_DIR, SP_BUILD_DIR, SP_SOURCE_DIR, dir, SP_BUILD_DIR);
+    int rc = system(cmd);
+    CHECK_MSG(rc == 0, "%s exited with %d", cmd, rc);
+}
+
+int main(void)
+{
+    if (system("/usr/bin/python3 -c 'import numpy' 2>/dev/null") != 0)
+        TEST_SKIP("/usr/bin/python3 has no numpy (apt install python3-numpy)");
+    RUN(test_python_matches_cli);
+    return TEST_EXIT();
+}
