@@ -200,9 +200,10 @@ typedef struct sp_features_opts {
     const char *labels_dir;   /* labels: NULL = <capture>/labels */
     int dim;                  /* PCA dimension, 16..64 (0: 32) */
     int map_factor;           /* labels/npy: map = image / factor (0: 4) */
-    long pca_samples;         /* pixel features sampled for the PCA (0: 100000) */
+    long pca_samples;         /* pixel features sampled for the PCA (0: 50000) */
     sp_clip_dense_opts dense;
     sp_device *dev;           /* NULL: CPU */
+    int fp16;                 /* CLIP in fp16 (GPU only) */
     const sp_log *log;
 } sp_features_opts;
 

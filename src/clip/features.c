@@ -1,0 +1,488 @@
+/* `semsplat features`: per-image feature maps from one source (CLIP dense features, external .npy
+ * maps, or synthetic label images), a scene PCA fitted on sampled pixel features, and the
+ * compressed maps written as a feature folder (features.json, pca_*.npy, maps/<stem>.npy f16).
+ * Two passes: maps are computed (CLIP maps cached as f16 under the output folder), pixels are
+ * sampled for the PCA, then every map is projected and written. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <cJSON.h>
+
+#include "clip_internal.h"
+#include "semsplat/io.h"
+
+sp_features_opts sp_features_opts_default(void)
+{
+    sp_features_opts o;
+    memset(&o, 0, sizeof o);
+    o.source = "clip";
+    o.dim = 32;
+    o.map_factor = 4;
+    o.pca_samples = 50000;
+    o.dense = sp_clip_dense_opts_default();
+    return o;
+}
+
+/* label id -> class name, from labels.json ({"labels": {"1": {"class": ..}}} as synth writes it,
+ * or {"labels": [{"id": 1, "class": ..}]}). */
+typedef struct label_table {
+    int n;                /* ids 0..n-1 */
+    char (*cls)[128];
+    int n_classes;
+    char (*class_names)[128];
+    int *class_of;        /* id -> class index */
+} label_table;
+
+static void label_table_free(label_table *t)
+{
+    free(t->cls);
+    free(t->class_names);
+    free(t->class_of);
+    memset(t, 0, sizeof *t);
+}
+
+static int label_table_read(const char *path, label_table *t, sp_error *err)
+{
+    memset(t, 0, sizeof *t);
+    cJSON *root = NULL;
+    int rc = sp_json_read_file(path, &root, err);
+    if (rc) return rc;
+    const cJSON *labs = cJSON_GetObjectItemCaseSensitive(root, "labels"), *it;
+    if (!cJSON_IsObject(labs) && !cJSON_IsArray(labs)) {
+        cJSON_Delete(root);
+        return sp_error_set(err, SP_E_FORMAT, "%s: missing \"labels\"", path);
+    }
+    int max_id = 0;
+    cJSON_ArrayForEach(it, labs) {
+        const cJSON *idv = cJSON_GetObjectItemCaseSensitive(it, "id");
+        long id = cJSON_IsNumber(idv) ? (long)idv->valuedouble : (it->string ? strtol(it->string, NULL, 10) : -1);
+        if (id < 1 || id > 65535) {
+            cJSON_Delete(root);
+            return sp_error_set(err, SP_E_FORMAT, "%s: label id %ld outside 1..65535", path, id);
+        }
+        if (id > max_id) max_id = (int)id;
+    }
+    t->n = max_id + 1;
+    t->cls = calloc((size_t)t->n, sizeof *t->cls);
+    t->class_names = calloc((size_t)t->n, sizeof *t->class_names);
+    t->class_of = calloc((size_t)t->n, sizeof *t->class_of);
+    if (!t->cls || !t->class_names || !t->class_of) {
+        cJSON_Delete(root);
+        label_table_free(t);
+        return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    }
+    /* id 0 (background, sky) is its own class */
+    snprintf(t->cls[0], sizeof t->cls[0], "background");
+    cJSON_ArrayForEach(it, labs) {
+        const cJSON *idv = cJSON_GetObjectItemCaseSensitive(it, "id");
+        long id = cJSON_IsNumber(idv) ? (long)idv->valuedouble : strtol(it->string, NULL, 10);
+        const cJSON *c = cJSON_GetObjectItemCaseSensitive(it, "class");
+        const cJSON *nm = cJSON_GetObjectItemCaseSensitive(it, "name");
+        if (!cJSON_IsString(c)) c = cJSON_GetObjectItemCaseSensitive(it, "model");
+        const char *s = cJSON_IsString(c) ? c->valuestring : cJSON_IsString(nm) ? nm->valuestring : NULL;
+        if (!s) {
+            cJSON_Delete(root);
+            label_table_free(t);
+            return sp_error_set(err, SP_E_FORMAT, "%s: label %ld has no \"class\"", path, id);
+        }
+        snprintf(t->cls[id], sizeof t->cls[id], "%s", s);
+    }
+    cJSON_Delete(root);
+    for (int i = 0; i < t->n; i++) {
+        if (!t->cls[i][0]) snprintf(t->cls[i], sizeof t->cls[i], "background");
+        int k = 0;
+        while (k < t->n_classes && strcmp(t->class_names[k], t->cls[i])) k++;
+        if (k == t->n_classes) memcpy(t->class_names[t->n_classes++], t->cls[i], sizeof t->cls[i]);
+        t->class_of[i] = k;
+    }
+    return 0;
+}
+
+typedef struct extract_ctx {
+    const sp_features_opts *o;
+    sp_colmap_model model;
+    char capture[1024], images_dir[1200], labels_dir[1200];
+    sp_clip *clip;
+    int full_dim;
+    label_table labels;
+    float *class_emb; /* [n_classes][full_dim] */
+} extract_ctx;
+
+static void stem_of(const char *name, char *out, size_t cap)
+{
+    snprintf(out, cap, "%s", name);
+    char *dot = strrchr(out, '.');
+    char *slash = strrchr(out, '/');
+    if (dot && (!slash || dot > slash)) *dot = 0;
+    for (char *p = out; *p; p++)
+        if (*p == '/') *p = '_';
+}
+
+/* The image's own size, from its COLMAP camera. */
+static void image_size(const extract_ctx *x, size_t i, int *w, int *h)
+{
+    const sp_colmap_camera *cam = sp_colmap_find_camera(&x->model, x->model.images[i].camera_id);
+    *w = cam ? (int)cam->width : 0;
+    *h = cam ? (int)cam->height : 0;
+}
+
+static int map_clip(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
+{
+    char path[1600];
+    sp_path_join(path, sizeof path, x->images_dir, x->model.images[i].name);
+    sp_image img;
+    int rc = sp_image_read(path, &img, err);
+    if (rc) return rc;
+    float *rgb = NULL;
+    rc = sp_image_to_rgbf(&img, &rgb, err);
+    int w = img.width, h = img.height;
+    sp_image_free(&img);
+    if (rc) return rc;
+    sp_clip_dense_grid(x->clip, &x->o->dense, w, h, mw, mh);
+    *map = malloc((size_t)*mw * *mh * x->full_dim * sizeof **map);
+    if (!*map) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    else rc = sp_clip_dense_features(x->clip, rgb, w, h, &x->o->dense, *map, err);
+    free(rgb);
+    if (rc) sp_error_prefix(err, "%s: ", path);
+    return rc;
+}
+
+static int map_npy(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
+{
+    char stem[512], file[600], path[1800];
+    stem_of(x->model.images[i].name, stem, sizeof stem);
+    snprintf(file, sizeof file, "%s.npy", stem);
+    sp_path_join(path, sizeof path, x->o->maps_dir, file);
+    sp_npy a;
+    int rc = sp_npy_read(path, &a, err);
+    if (rc) return rc;
+    if (a.ndim != 3) {
+        sp_npy_free(&a);
+        return sp_error_set(err, SP_E_FORMAT, "%s: %d dimensions, expected [H][W][C] or [C][H][W]", path, a.ndim);
+    }
+    float *f = NULL;
+    if ((rc = sp_npy_to_f32(&a, &f, err))) {
+        sp_npy_free(&a);
+        return rc;
+    }
+    int iw, ih;
+    image_size(x, i, &iw, &ih);
+    /* channels last or first: the reading whose map aspect is closer to the image's wins */
+    double ar = ih > 0 && iw > 0 ? (double)ih / iw : 1.0;
+    double hwc = fabs(log((double)a.shape[0] / a.shape[1] / ar)), chw = fabs(log((double)a.shape[1] / a.shape[2] / ar));
+    int is_chw = chw < hwc;
+    int C = (int)(is_chw ? a.shape[0] : a.shape[2]);
+    *mh = (int)(is_chw ? a.shape[1] : a.shape[0]);
+    *mw = (int)(is_chw ? a.shape[2] : a.shape[1]);
+    sp_npy_free(&a);
+    if (x->full_dim == 0) x->full_dim = C;
+    if (C != x->full_dim) {
+        free(f);
+        return sp_error_set(err, SP_E_FORMAT, "%s: %d channels, earlier maps had %d", path, C, x->full_dim);
+    }
+    if (is_chw) {
+        float *t = malloc((size_t)C * *mh * *mw * sizeof *t);
+        if (!t) { free(f); return sp_error_set(err, SP_E_NOMEM, "out of memory"); }
+        size_t hw = (size_t)*mh * *mw;
+        for (int c = 0; c < C; c++)
+            for (size_t p = 0; p < hw; p++) t[p * C + c] = f[c * hw + p];
+        free(f);
+        f = t;
+    }
+    *map = f;
+    return 0;
+}
+
+static int map_labels(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
+{
+    char stem[512], file[600], path[1800];
+    stem_of(x->model.images[i].name, stem, sizeof stem);
+    snprintf(file, sizeof file, "%s.png", stem);
+    sp_path_join(path, sizeof path, x->labels_dir, file);
+    sp_image img;
+    int rc = sp_image_read(path, &img, err);
+    if (rc) return rc;
+    int F = x->full_dim, fac = x->o->map_factor > 0 ? x->o->map_factor : 4;
+    int W = img.width, H = img.height;
+    *mw = (W + fac - 1) / fac;
+    *mh = (H + fac - 1) / fac;
+    float *m = calloc((size_t)*mw * *mh * F, sizeof *m);
+    if (!m) { sp_image_free(&img); return sp_error_set(err, SP_E_NOMEM, "out of memory"); }
+    /* each map cell averages the class features of the pixels it covers */
+    for (int by = 0; by < *mh; by++)
+        for (int bx = 0; bx < *mw; bx++) {
+            float *o = m + ((size_t)by * *mw + bx) * F;
+            int cnt = 0;
+            for (int y = by * fac; y < (by + 1) * fac && y < H; y++)
+                for (int xx = bx * fac; xx < (bx + 1) * fac && xx < W; xx++) {
+                    size_t at = ((size_t)y * W + xx) * img.channels;
+                    int id = img.bit_depth == 16 ? ((uint16_t *)img.data)[at] : ((uint8_t *)img.data)[at];
+                    if (id >= x->labels.n) {
+                        rc = sp_error_set(err, SP_E_FORMAT, "%s: pixel (%d, %d) has label %d, labels.json "
+                                          "knows ids up to %d", path, xx, y, id, x->labels.n - 1);
+                        goto done;
+                    }
+                    const float *e = x->class_emb + (size_t)x->labels.class_of[id] * F;
+                    for (int k = 0; k < F; k++) o[k] += e[k];
+                    cnt++;
+                }
+            for (int k = 0; k < F; k++) o[k] /= (float)cnt;
+        }
+done:
+    sp_image_free(&img);
+    if (rc) { free(m); return rc; }
+    *map = m;
+    return 0;
+}
+
+static int compute_map(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
+{
+    const char *s = x->o->source;
+    if (!strcmp(s, "clip")) return map_clip(x, i, map, mw, mh, err);
+    if (!strcmp(s, "npy")) return map_npy(x, i, map, mw, mh, err);
+    return map_labels(x, i, map, mw, mh, err);
+}
+
+static uint64_t rng_next(uint64_t *s)
+{
+    uint64_t z = (*s += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+static int setup(extract_ctx *x, sp_error *err)
+{
+    const sp_features_opts *o = x->o;
+    int rc = sp_colmap_read(o->colmap_dir, &x->model, err);
+    if (rc) return rc;
+    if (x->model.n_images == 0)
+        return sp_error_set(err, SP_E_FORMAT, "%s: the COLMAP model has no images", o->colmap_dir);
+    /* the capture root: colmap_dir itself when it holds images/, else two levels above sparse/0 */
+    char mdir[1024];
+    snprintf(x->capture, sizeof x->capture, "%s", o->colmap_dir);
+    sp_path_join(x->images_dir, sizeof x->images_dir, o->colmap_dir, "images");
+    if (!sp_file_exists(x->images_dir) && !sp_colmap_find_model_dir(o->colmap_dir, mdir, sizeof mdir, err)) {
+        for (int up = 0; up < 2; up++) {
+            char *s = strrchr(mdir, '/');
+            if (s) *s = 0;
+        }
+        snprintf(x->capture, sizeof x->capture, "%s", mdir);
+        sp_path_join(x->images_dir, sizeof x->images_dir, mdir, "images");
+    }
+    if (o->images_dir) snprintf(x->images_dir, sizeof x->images_dir, "%s", o->images_dir);
+    if (o->labels_dir) snprintf(x->labels_dir, sizeof x->labels_dir, "%s", o->labels_dir);
+    else sp_path_join(x->labels_dir, sizeof x->labels_dir, x->capture, "labels");
+    if (!strcmp(o->source, "clip")) {
+        if (!o->clip_weights)
+            return sp_error_set(err, SP_E_ARG, "source clip needs CLIP weights (--clip MODEL.safetensors)");
+        if ((rc = sp_clip_load(&x->clip, o->clip_weights, o->clip_config, o->dev, err))) return rc;
+        if (o->fp16 && (rc = sp_clip_set_fp16(x->clip, 1, err))) return rc;
+        x->full_dim = sp_clip_embed_dim(x->clip);
+    } else if (!strcmp(o->source, "npy")) {
+        if (!o->maps_dir) return sp_error_set(err, SP_E_ARG, "source npy needs a folder of maps (--maps DIR)");
+    } else if (!strcmp(o->source, "labels")) {
+        char lj[1300];
+        sp_path_join(lj, sizeof lj, x->capture, "labels.json");
+        if (!sp_file_exists(lj)) sp_path_join(lj, sizeof lj, x->labels_dir, "labels.json");
+        if ((rc = label_table_read(lj, &x->labels, err))) return rc;
+        if (o->clip_weights) {
+            if ((rc = sp_clip_load(&x->clip, o->clip_weights, o->clip_config, o->dev, err))) return rc;
+            x->full_dim = sp_clip_embed_dim(x->clip);
+        } else {
+            x->full_dim = 512;
+        }
+        x->class_emb = malloc((size_t)x->labels.n_classes * x->full_dim * sizeof(float));
+        if (!x->class_emb) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+        for (int k = 0; k < x->labels.n_classes; k++) {
+            if (x->clip) {
+                const char *t = x->labels.class_names[k];
+                if ((rc = sp_clip_encode_text(x->clip, &t, 1, x->class_emb + (size_t)k * x->full_dim, err))) return rc;
+            } else {
+                sp_label_embedding(x->labels.class_names[k], x->full_dim, x->class_emb + (size_t)k * x->full_dim);
+            }
+        }
+    } else {
+        return sp_error_set(err, SP_E_ARG, "unknown feature source '%s' (clip, npy, labels)", o->source);
+    }
+    return 0;
+}
+
+static int write_json(extract_ctx *x, const int *mw, const int *mh, const char *const *files, sp_error *err)
+{
+    const sp_features_opts *o = x->o;
+    cJSON *root = cJSON_CreateObject(), *imgs = cJSON_CreateArray();
+    cJSON_AddStringToObject(root, "format", "semsplat-features-1");
+    cJSON_AddStringToObject(root, "source", o->source);
+    cJSON_AddNumberToObject(root, "dim", o->dim);
+    cJSON_AddNumberToObject(root, "full_dim", x->full_dim);
+    if (o->clip_weights && x->clip) cJSON_AddStringToObject(root, "model", o->clip_weights);
+    else cJSON_AddNullToObject(root, "model");
+    if (!strcmp(o->source, "labels")) {
+        cJSON_AddStringToObject(root, "label_embedding", x->clip ? "clip" : "hash");
+        cJSON_AddNumberToObject(root, "map_factor", o->map_factor);
+    }
+    if (!strcmp(o->source, "npy")) cJSON_AddStringToObject(root, "maps_source", o->maps_dir);
+    if (x->clip && !strcmp(o->source, "clip")) {
+        cJSON *d = cJSON_CreateObject();
+        cJSON_AddStringToObject(d, "head", o->dense.head == SP_CLIP_HEAD_MASKCLIP ? "maskclip" : "clearclip");
+        cJSON *sc = cJSON_CreateArray();
+        for (int s = 0; s < o->dense.n_scales; s++) cJSON_AddItemToArray(sc, cJSON_CreateNumber(o->dense.scales[s]));
+        cJSON_AddItemToObject(d, "scales", sc);
+        cJSON_AddNumberToObject(d, "tile", o->dense.tile);
+        cJSON_AddNumberToObject(d, "stride", o->dense.stride);
+        cJSON_AddItemToObject(root, "dense", d);
+    }
+    cJSON_AddItemToObject(root, "images", imgs);
+    for (size_t i = 0; i < x->model.n_images; i++) {
+        cJSON *e = cJSON_CreateObject();
+        int iw, ih;
+        image_size(x, i, &iw, &ih);
+        cJSON_AddStringToObject(e, "name", x->model.images[i].name);
+        cJSON_AddStringToObject(e, "map", files[i]);
+        cJSON_AddNumberToObject(e, "height", mh[i]);
+        cJSON_AddNumberToObject(e, "width", mw[i]);
+        cJSON_AddNumberToObject(e, "image_height", ih);
+        cJSON_AddNumberToObject(e, "image_width", iw);
+        cJSON_AddItemToArray(imgs, e);
+    }
+    char path[1200];
+    sp_path_join(path, sizeof path, o->out_dir, "features.json");
+    int rc = sp_json_write_file(path, root, err);
+    cJSON_Delete(root);
+    return rc;
+}
+
+int sp_features_extract(const sp_features_opts *opts, sp_error *err)
+{
+    sp_features_opts o = *opts;
+    if (o.dim == 0) o.dim = 32;
+    if (o.map_factor <= 0) o.map_factor = 4;
+    if (o.pca_samples <= 0) o.pca_samples = 50000;
+    if (o.dense.n_scales <= 0) o.dense = sp_clip_dense_opts_default();
+    if (!o.source) o.source = "clip";
+    if (!o.colmap_dir || !o.out_dir) return sp_error_set(err, SP_E_ARG, "features: need a COLMAP folder and an output folder");
+    if (o.dim < 1 || o.dim > 512) return sp_error_set(err, SP_E_ARG, "features: --dim %d outside 1..512", o.dim);
+    extract_ctx x;
+    memset(&x, 0, sizeof x);
+    x.o = &o;
+    size_t n = 0;
+    int *mw = NULL, *mh = NULL, rc;
+    char **files = NULL, cache_dir[1200], maps_dir[1200], path[2000];
+    float *samples = NULL, *mean = NULL, *basis = NULL;
+    if ((rc = setup(&x, err))) goto done;
+    n = x.model.n_images;
+    sp_path_join(maps_dir, sizeof maps_dir, o.out_dir, "maps");
+    sp_path_join(cache_dir, sizeof cache_dir, o.out_dir, ".full");
+    if ((rc = sp_mkdirs(maps_dir, err))) goto done;
+    int cache = !strcmp(o.source, "clip");
+    if (cache && (rc = sp_mkdirs(cache_dir, err))) goto done;
+    mw = calloc(n, sizeof *mw);
+    mh = calloc(n, sizeof *mh);
+    files = calloc(n, sizeof *files);
+    size_t per_image = (size_t)((o.pca_samples + (long)n - 1) / (long)n), n_samp = 0;
+    if (!mw || !mh || !files) { rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
+    sp_progress pr;
+    sp_progress_begin(&pr, o.log, "features", (long)n, "img");
+    uint64_t rng = 0x5EED5EED;
+    for (size_t i = 0; i < n; i++) {
+        float *map = NULL;
+        if ((rc = compute_map(&x, i, &map, &mw[i], &mh[i], err))) goto done;
+        int F = x.full_dim;
+        if (!samples) {
+            samples = malloc(per_image * n * F * sizeof *samples);
+            if (!samples) { free(map); rc = sp_error_set(err, SP_E_NOMEM, "PCA samples: out of memory"); goto done; }
+        }
+        size_t cells = (size_t)mw[i] * mh[i];
+        for (size_t k = 0; k < per_image && k < cells; k++) {
+            size_t c = per_image >= cells ? k : (size_t)(rng_next(&rng) % cells);
+            memcpy(samples + n_samp++ * F, map + c * F, (size_t)F * sizeof(float));
+        }
+        char stem[512];
+        stem_of(x.model.images[i].name, stem, sizeof stem);
+        files[i] = malloc(600);
+        if (!files[i]) { free(map); rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
+        snprintf(files[i], 600, "maps/%s.npy", stem);
+        if (cache) {
+            size_t shape[3] = {(size_t)mh[i], (size_t)mw[i], (size_t)F};
+            uint16_t *h = malloc(cells * F * sizeof *h);
+            if (!h) { free(map); rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
+            for (size_t k = 0; k < cells * F; k++) h[k] = sp_float_to_half(map[k]);
+            snprintf(path, sizeof path, "%s/%s.npy", cache_dir, stem);
+            rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
+            free(h);
+            if (rc) { free(map); goto done; }
+        }
+        free(map);
+        sp_progress_update(&pr, (long)i + 1, NULL);
+    }
+    sp_progress_end(&pr, NULL);
+    int F = x.full_dim, D = o.dim;
+    if (D > F) { rc = sp_error_set(err, SP_E_ARG, "features: --dim %d exceeds the %d feature channels", D, F); goto done; }
+    mean = malloc((size_t)F * sizeof *mean);
+    basis = malloc((size_t)D * F * sizeof *basis);
+    if (!mean || !basis) { rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
+    sp_logf(o.log, SP_LOG_INFO, "PCA %d -> %d on %zu pixel features", F, D, n_samp);
+    if ((rc = sp_clip_pca_fit(samples, n_samp, F, D, mean, basis, err))) goto done;
+    sp_features proj;
+    memset(&proj, 0, sizeof proj);
+    proj.dim = D;
+    proj.full_dim = F;
+    proj.pca_mean = mean;
+    proj.pca_basis = basis;
+    for (size_t i = 0; i < n; i++) {
+        float *map = NULL;
+        int w2 = 0, h2 = 0;
+        char stem[512];
+        stem_of(x.model.images[i].name, stem, sizeof stem);
+        if (cache) {
+            snprintf(path, sizeof path, "%s/%s.npy", cache_dir, stem);
+            sp_npy a;
+            if ((rc = sp_npy_read(path, &a, err))) goto done;
+            rc = sp_npy_to_f32(&a, &map, err);
+            sp_npy_free(&a);
+            unlink(path);
+            if (rc) goto done;
+        } else if ((rc = compute_map(&x, i, &map, &w2, &h2, err))) {
+            goto done;
+        }
+        size_t cells = (size_t)mw[i] * mh[i];
+        uint16_t *h = malloc(cells * D * sizeof *h);
+        float *e = malloc((size_t)D * sizeof *e);
+        if (!h || !e) { free(h); free(e); free(map); rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
+        for (size_t c = 0; c < cells; c++) {
+            sp_features_encode(&proj, map + c * F, e);
+            for (int k = 0; k < D; k++) h[c * D + k] = sp_float_to_half(e[k]);
+        }
+        size_t shape[3] = {(size_t)mh[i], (size_t)mw[i], (size_t)D};
+        sp_path_join(path, sizeof path, o.out_dir, files[i]);
+        rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
+        free(h);
+        free(e);
+        free(map);
+        if (rc) goto done;
+    }
+    if (cache) rmdir(cache_dir);
+    size_t s1 = (size_t)F, s2[2] = {(size_t)D, (size_t)F};
+    sp_path_join(path, sizeof path, o.out_dir, "pca_mean.npy");
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, &s1, mean, err))) goto done;
+    sp_path_join(path, sizeof path, o.out_dir, "pca_basis.npy");
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, err))) goto done;
+    rc = write_json(&x, mw, mh, (const char *const *)files, err);
+done:
+    for (size_t i = 0; files && i < n; i++) free(files[i]);
+    free(files);
+    free(mw);
+    free(mh);
+    free(samples);
+    free(mean);
+    free(basis);
+    free(x.class_emb);
+    label_table_free(&x.labels);
+    sp_clip_free(x.clip);
+    sp_colmap_free(&x.model);
+    return rc;
+}

@@ -1,0 +1,109 @@
+/* semsplat features: dense per-image feature maps (CLIP, imported .npy, or synthetic labels) and
+ * the scene PCA, written as a feature folder for lift/distill/query. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "semsplat/clip.h"
+
+static void help(void)
+{
+    printf("usage: semsplat features --colmap DIR --out DIR [--source clip|npy|labels] [--dim D]\n"
+           "         clip:   --clip MODEL.safetensors [--config config.json] [--head clearclip|maskclip]\n"
+           "                 [--scales 2,1] [--tile PX] [--stride PX] [--batch N] [--fp16]\n"
+           "         npy:    --maps DIR   (DIR/<image stem>.npy, [H][W][C] or [C][H][W], any C)\n"
+           "         labels: [--labels DIR] [--clip MODEL.safetensors] [--factor F]\n"
+           "       [--images DIR] [--samples N] [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
+           "Writes DIR/features.json, pca_mean.npy [full_dim], pca_basis.npy [dim][full_dim] and\n"
+           "maps/<image stem>.npy [h][w][dim] float16. --dim is the PCA size (16..64 typical, default\n"
+           "32). clip: CLIP ViT dense features (ClearCLIP head) in the text space, one per\n"
+           "patch/scale pixels (8 px for ViT-B/16 at scale 2) from overlapping tiles. labels: each\n"
+           "class's CLIP text embedding when --clip is given, else a fixed random unit vector per\n"
+           "class (sp_label_embedding); maps at 1/F of the image (default 4). Real weights:\n"
+           "openai/clip-vit-base-patch16 model.safetensors + config.json from Hugging Face.\n");
+}
+
+static int parse_scales(const char *s, sp_clip_dense_opts *d)
+{
+    d->n_scales = 0;
+    while (*s && d->n_scales < 4) {
+        char *end;
+        double v = strtod(s, &end);
+        if (end == s) return -1;
+        d->scales[d->n_scales++] = (float)v;
+        s = *end == ',' ? end + 1 : end;
+        if (*end && *end != ',') return -1;
+    }
+    return d->n_scales > 0 && !*s ? 0 : -1;
+}
+
+int cmd_features(int argc, char **argv)
+{
+    sp_features_opts o = sp_features_opts_default();
+    const char *device = "auto", *v;
+    long threads = 0, num;
+    int quiet = 0, bad = 0;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
+        if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) o.colmap_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) o.out_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--source", &bad))) o.source = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--clip", &bad))) o.clip_weights = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--config", &bad))) o.clip_config = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--maps", &bad))) o.maps_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--labels", &bad))) o.labels_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) o.images_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--head", &bad))) {
+            if (!strcmp(v, "clearclip")) o.dense.head = SP_CLIP_HEAD_CLEARCLIP;
+            else if (!strcmp(v, "maskclip")) o.dense.head = SP_CLIP_HEAD_MASKCLIP;
+            else return cli_usage_error("features", "--head: '%s' is not clearclip or maskclip", v);
+        } else if ((v = cli_flag_value(argc, argv, &i, "--scales", &bad))) {
+            if (parse_scales(v, &o.dense)) return cli_usage_error("features", "--scales: '%s' is not like 2,1", v);
+        } else if ((v = cli_flag_value(argc, argv, &i, "--dim", &bad))) {
+            if (cli_parse_int("features", "--dim", v, &num)) return 2;
+            o.dim = (int)num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--factor", &bad))) {
+            if (cli_parse_int("features", "--factor", v, &num)) return 2;
+            o.map_factor = (int)num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--samples", &bad))) {
+            if (cli_parse_int("features", "--samples", v, &num)) return 2;
+            o.pca_samples = num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--tile", &bad))) {
+            if (cli_parse_int("features", "--tile", v, &num)) return 2;
+            o.dense.tile = (int)num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--stride", &bad))) {
+            if (cli_parse_int("features", "--stride", v, &num)) return 2;
+            o.dense.stride = (int)num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--batch", &bad))) {
+            if (cli_parse_int("features", "--batch", v, &num)) return 2;
+            o.dense.batch = (int)num;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
+            if (cli_parse_int("features", "--threads", v, &threads)) return 2;
+        } else if (!strcmp(argv[i], "--fp16")) o.fp16 = 1;
+        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
+        else if (!bad) return cli_usage_error("features", "unknown argument '%s'", argv[i]);
+        if (bad) return 2;
+    }
+    if (!o.colmap_dir || !o.out_dir) return cli_usage_error("features", "--colmap and --out are required");
+    if (o.dim < 1 || o.dim > 512) return cli_usage_error("features", "--dim %d outside 1..512", o.dim);
+    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
+                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
+                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
+    if ((int)kind < 0) return cli_usage_error("features", "--device: '%s' is not cpu, cuda or auto", device);
+    sp_error err = {0};
+    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_device *dev = NULL;
+    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("features", &err);
+    o.dev = dev;
+    o.log = &log;
+    double t0 = sp_time_now();
+    int rc = sp_features_extract(&o, &err);
+    double dt = sp_time_now() - t0;
+    if (!rc && !quiet)
+        printf("features  %.2f  s  (source %s, dim %d, %s, out %s)\n", dt, o.source, o.dim,
+               sp_device_name(dev), o.out_dir);
+    sp_device_free(dev);
+    return rc ? cli_fail("features", &err) : 0;
+}
