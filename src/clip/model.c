@@ -10,11 +10,6 @@
 #include "clip_internal.h"
 #include "semsplat/io.h"
 
-/* The safetensors reader is landing in src/io; until then the library still links. */
-#pragma weak sp_safetensors_open
-#pragma weak sp_safetensors_close
-#pragma weak sp_safetensors_find
-
 /* ---- config ------------------------------------------------------------------------------------ */
 
 static void tower_defaults(sp_clip_tower_config *t, int width, int layers, int heads, int mlp)
@@ -344,10 +339,6 @@ int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_de
                           "of openai/clip-vit-base-patch16 from Hugging Face; see docs/clip.md)", path);
         goto fail;
     }
-    if (!sp_safetensors_open) {
-        rc = sp_error_set(err, SP_E_UNSUPPORTED, "%s: safetensors reader not built", path);
-        goto fail;
-    }
     if ((rc = sp_safetensors_open(path, &st, err))) goto fail;
     if (config_json) {
         if ((rc = parse_config(config_json, &c->cfg, err))) goto fail;
@@ -394,7 +385,7 @@ int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_de
     *out = c;
     return 0;
 fail:
-    if (sp_safetensors_close) sp_safetensors_close(&st);
+    sp_safetensors_close(&st);
     sp_clip_free(c);
     return rc;
 }
