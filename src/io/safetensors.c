@@ -161,7 +161,7 @@ int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
     }
     for (const cJSON *it = json->child; it && !rc; it = it->next) {
         if (!strcmp(it->string, "__metadata__")) continue;
-        size_t offs[2];
+        size_t offs[2] = {0, 0};
         rc = parse_tensor(path, it, &st->tensors[st->n], offs, err);
         if (rc) break;
         if (offs[1] > data_size) {
