@@ -60,6 +60,7 @@ static int read_png(const char *path, FILE *f, sp_image *img, sp_error *err)
     if (type == PNG_COLOR_TYPE_GRAY && depth < 8) png_set_expand_gray_1_2_4_to_8(png);
     if (png_get_valid(png, info, PNG_INFO_tRNS)) png_set_tRNS_to_alpha(png);
     if (depth == 16) png_set_swap(png);
+    png_set_interlace_handling(png); /* Adam7 files are de-interlaced by png_read_image */
     png_read_update_info(png, info);
     int channels = png_get_channels(png, info);
     int out_depth = png_get_bit_depth(png, info);

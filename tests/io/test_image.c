@@ -116,6 +116,23 @@ static void test_handmade_png(void)
     sp_image_free(&img);
 }
 
+/* An Adam7-interlaced 13x11 RGB PNG written by libpng's own writer; byte k of the image is
+ * (y * 39 + x) mod 256 for row y, byte x. */
+static void test_interlaced_png(void)
+{
+    char p[1024];
+    snprintf(p, sizeof p, "%s/tests/fixtures/io/adam7_rgb8_13x11.png", SP_SOURCE_DIR);
+    sp_error err = {0};
+    sp_image img;
+    CHECK_OK(sp_image_read(p, &img, &err), &err);
+    CHECK(img.width == 13 && img.height == 11 && img.channels == 3 && img.bit_depth == 8);
+    int bad = 0;
+    for (int y = 0; img.data && y < 11; y++)
+        for (int x = 0; x < 39; x++) bad += ((unsigned char *)img.data)[y * 39 + x] != (unsigned char)(y * 39 + x);
+    CHECK(img.data && bad == 0);
+    sp_image_free(&img);
+}
+
 static void test_png_round_trip(void)
 {
     const char *dir = test_tmpdir("io_image_rt");
@@ -237,6 +254,7 @@ static void test_bad_images(void)
 int main(void)
 {
     RUN(test_handmade_png);
+    RUN(test_interlaced_png);
     RUN(test_png_round_trip);
     RUN(test_jpeg);
     RUN(test_bad_images);
