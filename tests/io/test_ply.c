@@ -132,16 +132,19 @@ static void test_ascii(void)
     char p[1024];
     sp_error err = {0};
     fx_write_text(fx_path(p, sizeof p, dir, "a.ply"),
-                  "ply\nformat ascii 1.0\nelement vertex 2\n"
+                  "ply\nformat ascii 1.0\nelement camera 1\nproperty float fov\nproperty uchar id\nelement vertex 2\n"
                   "property float x\nproperty float y\nproperty float z\n"
                   "property float f_dc_0\nproperty float f_dc_1\nproperty float f_dc_2\nproperty float opacity\n"
                   "property float scale_0\nproperty float scale_1\nproperty float scale_2\n"
                   "property float rot_0\nproperty float rot_1\nproperty float rot_2\nproperty float rot_3\n"
                   "property float f_sem_0\n"
+                  "element face 1\nproperty list uchar int vertex_indices\n"
                   "end_header\n"
+                  "0.9 3\n"
                   "1 2 3 0.5 0.25 0.125 -1 -2 -2 -2 1 0 0 0 7\n"
                   "\n"
-                  "-1e-3 4.5 6 0 0 0 3 0 0 0 0.7071 0.7071 0 0 -7\n");
+                  "-1e-3 4.5 6 0 0 0 3 0 0 0 0.7071 0.7071 0 0 -7\n"
+                  "3 0 1 1\n");
     sp_splat s;
     CHECK_OK(sp_ply_read_splat(p, &s, &err), &err);
     CHECK(s.n == 2 && s.feat_dim == 1 && s.sh_degree == 0);
