@@ -2,8 +2,8 @@
  * a similarity fitted to known camera positions (Umeyama 1991, solved with Horn's quaternion
  * method so the result is always a proper rotation), or by a floor plane found with RANSAC on the
  * lowest Gaussians for scenes that are not z-up. Transforming a splat rotates means, quaternions
- * and every SH band (band rotation matrices fitted on sample directions: the bands are closed
- * under rotation, so the fit is exact up to rounding). */
+ * and every SH band (band rotation matrices fitted by least squares on sample directions: each
+ * band is closed under rotation, so the fit is exact up to rounding). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -125,18 +125,27 @@ int sp_umeyama(const double *src, const double *dst, size_t n, int with_scale, d
     return 0;
 }
 
-/* Real SH basis of band l (the 3DGS ordering and signs; constants do not matter for closure). */
+/* Real SH basis of band l exactly as 3DGS evaluates it (constants and signs matter: the rotation
+ * matrix of a band depends on how each of its functions is scaled). */
 static void sh_band(int l, double x, double y, double z, double *out)
 {
+    const double C1 = 0.4886025119029199;
+    const double C2[5] = {1.0925484305920792, -1.0925484305920792, 0.31539156525252005,
+                          -1.0925484305920792, 0.5462742152960396};
+    const double C3[7] = {-0.5900435899266435, 2.890611442640554, -0.4570457994644658,
+                          0.3731763325901154, -0.4570457994644658, 1.445305721320277,
+                          -0.5900435899266435};
     if (l == 1) {
-        out[0] = -y, out[1] = z, out[2] = -x;
+        out[0] = -C1 * y, out[1] = C1 * z, out[2] = -C1 * x;
     } else if (l == 2) {
-        out[0] = x * y, out[1] = y * z, out[2] = 2 * z * z - x * x - y * y, out[3] = x * z,
-        out[4] = x * x - y * y;
+        out[0] = C2[0] * x * y, out[1] = C2[1] * y * z, out[2] = C2[2] * (2 * z * z - x * x - y * y),
+        out[3] = C2[3] * x * z, out[4] = C2[4] * (x * x - y * y);
     } else {
-        out[0] = y * (3 * x * x - y * y), out[1] = x * y * z, out[2] = y * (4 * z * z - x * x - y * y),
-        out[3] = z * (2 * z * z - 3 * x * x - 3 * y * y), out[4] = x * (4 * z * z - x * x - y * y),
-        out[5] = z * (x * x - y * y), out[6] = x * (x * x - 3 * y * y);
+        out[0] = C3[0] * y * (3 * x * x - y * y), out[1] = C3[1] * x * y * z,
+        out[2] = C3[2] * y * (4 * z * z - x * x - y * y),
+        out[3] = C3[3] * z * (2 * z * z - 3 * x * x - 3 * y * y),
+        out[4] = C3[4] * x * (4 * z * z - x * x - y * y), out[5] = C3[5] * z * (x * x - y * y),
+        out[6] = C3[6] * x * (x * x - 3 * y * y);
     }
 }
 

@@ -52,6 +52,9 @@ void sp_query_engine_free(sp_query_engine *e)
     free(e->opacity);
     free(e->raw);
     free(e->rel);
+    free(e->scores2);
+    free(e->occ);
+    sp_raster_free(e->raster_aux);
     free(e);
 }
 
@@ -68,10 +71,12 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
     e->opacity = malloc(sizeof(float) * n);
     e->raw = malloc(sizeof(float) * n);
     e->rel = malloc(sizeof(float) * n);
-    if (!e->opacity || !e->raw || !e->rel)
+    e->scores2 = malloc(sizeof(float) * 2 * n);
+    if (!e->opacity || !e->raw || !e->rel || !e->scores2)
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
     for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
-    return sp_raster_create(&e->raster, e->dev, err);
+    int rc = sp_raster_create(&e->raster, e->dev, err);
+    return rc ? rc : sp_raster_create(&e->raster_aux, e->dev, err);
 }
 
 int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,

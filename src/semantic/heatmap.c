@@ -57,20 +57,19 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
     if (v < 0 || (size_t)v >= e->n_cams)
         return sp_error_set(err, SP_E_ARG, "heatmap: view %d not in 0..%zu", v, e->n_cams);
     const sp_camera *cam = &e->cams[v];
-    int W = cam->width, H = cam->height, D = e->splat.feat_dim;
+    int W = cam->width, H = cam->height;
     size_t np = (size_t)W * H;
-    float *rgb = malloc(sizeof(float) * np * 3), *feat = malloc(sizeof(float) * np * D),
-          *alpha = malloc(sizeof(float) * np), *rel = malloc(sizeof(float) * np),
+    (void)sc;
+    float *rgb = malloc(sizeof(float) * np * 3), *rel = malloc(sizeof(float) * np),
           *raw = malloc(sizeof(float) * np);
     uint8_t *img = malloc(np * 3);
     int rc = 0;
-    if (!rgb || !feat || !alpha || !rel || !raw || !img) {
+    if (!rgb || !rel || !raw || !img) {
         rc = sp_error_set(err, SP_E_NOMEM, "heatmap: out of memory for %dx%d", W, H);
         goto done;
     }
-    sp_render_request req = {rgb, feat, NULL, alpha, NULL};
-    if ((rc = sp_render_splat(e->raster, &e->splat, cam, &req, err))) goto done;
-    sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
+    /* The per-Gaussian relevancy composited like a colour (2 channels, not D), over the RGB. */
+    if ((rc = sem_render_scores(e, cam, raw, rel, rgb, err))) goto done;
     /* Stretch the visible relevancy to the full colour range when the query was found, so a
      * weak-but-real CLIP match still reads; an absent query keeps the absolute scale (cold). */
     float rmax = 0.5f;
@@ -92,6 +91,6 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
     if (e->cam_names) snprintf(res->view_name, sizeof res->view_name, "%s", e->cam_names[v]);
     else snprintf(res->view_name, sizeof res->view_name, "view %d", v);
 done:
-    free(rgb), free(feat), free(alpha), free(rel), free(raw), free(img);
+    free(rgb), free(rel), free(raw), free(img);
     return rc;
 }

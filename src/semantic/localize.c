@@ -277,6 +277,36 @@ void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *
     free(norm);
 }
 
+int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
+                      sp_error *err)
+{
+    const sp_splat *s = &e->splat;
+    for (size_t i = 0; i < s->n; i++) e->scores2[2 * i] = e->raw[i], e->scores2[2 * i + 1] = e->rel[i];
+    size_t np = (size_t)cam->width * cam->height;
+    float *two = malloc(sizeof(float) * np * 2), *alpha = malloc(sizeof(float) * np);
+    if (!two || !alpha) {
+        free(two), free(alpha);
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering %dx%d", cam->width, cam->height);
+    }
+    /* a view of the splat whose "features" are the scores; the aux raster's cache is dropped
+     * because the scores change with every query */
+    sp_splat view = *s;
+    view.features = e->scores2;
+    view.feat_dim = 2;
+    sp_raster_forget(e->raster_aux);
+    sp_render_request req = {rgb, two, NULL, alpha, NULL};
+    int rc = sp_render_splat(e->raster_aux, &view, cam, &req, err);
+    sp_raster_forget(e->raster_aux);
+    if (!rc)
+        for (size_t p = 0; p < np; p++) {
+            int ok = alpha[p] > 0.5f;
+            raw[p] = ok ? two[2 * p] / alpha[p] : -1.0f;
+            rel[p] = ok ? two[2 * p + 1] / alpha[p] : 0.5f;
+        }
+    free(two), free(alpha);
+    return rc;
+}
+
 typedef struct {
     int view;
     float score;
@@ -306,35 +336,95 @@ static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float 
     return sp_render_splat(e->raster, &e->splat, cam, &req, err);
 }
 
+/* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels: a cheap occlusion test for
+ * choosing views (a wall between a camera and the object), instead of rendering candidates. */
+static int build_occupancy(sp_query_engine *e, sp_error *err)
+{
+    const sp_splat *s = &e->splat;
+    float lo[3] = {1e30f, 1e30f, 1e30f}, hi[3] = {-1e30f, -1e30f, -1e30f};
+    for (size_t i = 0; i < s->n; i++)
+        for (int a = 0; a < 3; a++) {
+            lo[a] = fminf(lo[a], s->means[3 * i + a]);
+            hi[a] = fmaxf(hi[a], s->means[3 * i + a]);
+        }
+    float ext = fmaxf(hi[0] - lo[0], fmaxf(hi[1] - lo[1], hi[2] - lo[2]));
+    float vox = fmaxf(0.05f, ext / 255.0f);
+    size_t tot = 1;
+    for (int a = 0; a < 3; a++) {
+        e->occ_dim[a] = (int)((hi[a] - lo[a]) / vox) + 1;
+        e->occ_lo[a] = lo[a];
+        tot *= (size_t)e->occ_dim[a];
+    }
+    e->occ_voxel = vox;
+    e->occ = calloc(tot, 1);
+    if (!e->occ) return sp_error_set(err, SP_E_NOMEM, "query: out of memory for the occupancy grid");
+    for (size_t i = 0; i < s->n; i++) {
+        if (e->opacity[i] < 0.5f) continue;
+        int c[3];
+        for (int a = 0; a < 3; a++) c[a] = (int)((s->means[3 * i + a] - lo[a]) / vox);
+        e->occ[((size_t)c[2] * e->occ_dim[1] + c[1]) * e->occ_dim[0] + c[0]] = 1;
+    }
+    return 0;
+}
+
+/* 1 when nothing opaque lies between the camera centre and p (the last ~2 voxels before p and
+ * the first 0.2 m are not tested: p's own surface and the camera's surroundings). */
+static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
+{
+    sp_vec3 d = sp_v3_sub(p, c);
+    float len = sp_v3_norm(d), step = 0.5f * e->occ_voxel;
+    if (len < 1e-6f) return 1;
+    d = sp_v3_scale(d, 1.0f / len);
+    for (float t = 0.2f; t < len - 2.5f * e->occ_voxel; t += step) {
+        sp_vec3 x = sp_v3_add(c, sp_v3_scale(d, t));
+        int q[3] = {(int)floorf((x.x - e->occ_lo[0]) / e->occ_voxel), (int)floorf((x.y - e->occ_lo[1]) / e->occ_voxel),
+                    (int)floorf((x.z - e->occ_lo[2]) / e->occ_voxel)};
+        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= e->occ_dim[0] || q[1] >= e->occ_dim[1] ||
+            q[2] >= e->occ_dim[2])
+            continue;
+        if (e->occ[((size_t)q[2] * e->occ_dim[1] + q[1]) * e->occ_dim[0] + q[0]]) return 0;
+    }
+    return 1;
+}
+
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                    const uint8_t *mask, int k, int *views, float *scores, sp_error *err)
 {
+    (void)sc;
     const sp_splat *s = &e->splat;
     if (e->n_cams == 0 || k <= 0) return 0;
+    if (!e->occ) {
+        int rc = build_occupancy(e, err);
+        if (rc) return rc;
+    }
     view_score *vs = malloc(sizeof *vs * e->n_cams);
-    if (!vs) return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
-    /* 1) cheap: projected relevant weight per camera, favouring near views and the centre */
-    size_t n_sel = 0;
     size_t *sel = malloc(sizeof(size_t) * (s->n ? s->n : 1));
-    if (!sel) {
-        free(vs);
+    if (!vs || !sel) {
+        free(vs), free(sel);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
     }
+    size_t n_sel = 0;
     for (size_t i = 0; i < s->n; i++)
         if (mask ? mask[i]
-                 : (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel &&
-                    e->opacity[i] >= th->min_op))
+                 : (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel && e->opacity[i] >= th->min_op))
             sel[n_sel++] = i;
+    /* at most 256 evenly spaced samples of the relevant set */
+    size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
+    for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
+    /* score: visible relevant samples in the image, favouring the image centre and near views */
     for (size_t c = 0; c < e->n_cams; c++) {
         const sp_camera *cam = &e->cams[c];
+        sp_vec3 o = sp_camera_center(cam);
         double acc = 0;
-        for (size_t j = 0; j < n_sel; j++) {
+        for (size_t j = 0; j < n_smp; j++) {
             size_t i = sel[j];
-            sp_vec3 x = sp_mat3_apply(cam->R, sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]));
+            sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
+            sp_vec3 x = sp_mat3_apply(cam->R, p);
             float z = x.z + cam->t[2];
             if (z < 0.2f) continue;
             float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
             if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
+            if (!visible(e, o, p)) continue;
             float du = (u - cam->cx) / cam->width, dv = (vv - cam->cy) / cam->height;
             acc += e->opacity[i] * (1.0 - du * du - dv * dv) / (1.0 + 0.1 * z * z);
         }
@@ -343,36 +433,10 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     }
     free(sel);
     qsort(vs, e->n_cams, sizeof *vs, cmp_view_score);
-    /* 2) occlusion check on the best few: relevant pixels in a quarter-resolution render */
-    int n_cand = k * 3 < 12 ? 12 : k * 3;
-    if ((size_t)n_cand > e->n_cams) n_cand = (int)e->n_cams;
-    while (n_cand > 0 && vs[n_cand - 1].score <= 0) n_cand--;
-    int rc = 0;
-    for (int j = 0; j < n_cand; j++) {
-        sp_camera cam;
-        float *feat = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
-        rc = render_view(e, vs[j].view, 4, &cam, &feat, NULL, &alpha, NULL, err);
-        size_t np = (size_t)cam.width * cam.height;
-        if (!rc) {
-            raw = malloc(sizeof(float) * np);
-            rel = malloc(sizeof(float) * np);
-            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "query: out of memory");
-        }
-        if (!rc) {
-            sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
-            double cnt = 0;
-            for (size_t p = 0; p < np; p++)
-                if (raw[p] >= th->thr_raw && rel[p] >= th->thr_rel) cnt += rel[p] - 0.5;
-            vs[j].score = (float)(cnt / np);
-        }
-        free(feat), free(alpha), free(raw), free(rel);
-        if (rc) goto done;
-    }
-    qsort(vs, (size_t)n_cand, sizeof *vs, cmp_view_score);
-    /* 3) greedy picks with diverse viewing directions (>= 25 degrees apart) */
+    /* greedy picks with diverse viewing directions (>= 25 degrees apart), then any */
     int got = 0;
     for (int pass = 0; pass < 2 && got < k; pass++)
-        for (int j = 0; j < n_cand && got < k; j++) {
+        for (size_t j = 0; j < e->n_cams && got < k; j++) {
             if (vs[j].score <= 0) break;
             int dup = 0;
             for (int q = 0; q < got; q++) {
@@ -386,10 +450,8 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
             if (scores) scores[got] = vs[j].score;
             got++;
         }
-    rc = got;
-done:
     free(vs);
-    return rc;
+    return got;
 }
 
 /* ---- multi-view ----------------------------------------------------------------------------------- */

@@ -147,43 +147,59 @@ typedef struct {
 } score_job;
 
 #define SCORE_CHUNK 4096
+#define LANES 16 /* Gaussians scored together: the inner loops run across them and vectorize */
 
 static void score_chunk(void *ctx, long chunk, int tid)
 {
     (void)tid;
     const score_job *j = ctx;
     const sp_sem_scorer *sc = j->sc;
-    int D = sc->dim;
+    const int D = sc->dim, NN = sc->n_neg;
     size_t i0 = (size_t)chunk * SCORE_CHUNK, i1 = i0 + SCORE_CHUNK;
     if (i1 > j->n) i1 = j->n;
-    for (size_t i = i0; i < i1; i++) {
-        const float *f = j->features + i * (size_t)D;
-        float dq = sc->q0, dm = 0, ff = 0;
+    float ft[64][LANES]; /* a block of features, transposed */
+    for (size_t b0 = i0; b0 < i1; b0 += LANES) {
+        int L = (int)(i1 - b0 < LANES ? i1 - b0 : LANES);
+        for (int g = 0; g < LANES; g++)
+            for (int k = 0; k < D; k++) ft[k][g] = g < L ? j->features[(b0 + g) * (size_t)D + k] : 0.0f;
+        float dq[LANES], dm[LANES], ff[LANES], dn[SP_SEM_MAX_NEGATIVES][LANES];
+        for (int g = 0; g < LANES; g++) dq[g] = sc->q0, dm[g] = 0, ff[g] = 0;
+        for (int q = 0; q < NN; q++)
+            for (int g = 0; g < LANES; g++) dn[q][g] = sc->n0[q];
         for (int k = 0; k < D; k++) {
-            dq += sc->qb[k] * f[k];
-            dm += sc->mb[k] * f[k];
+            const float a = sc->qb[k], m = sc->mb[k];
+            for (int g = 0; g < LANES; g++) {
+                dq[g] += a * ft[k][g];
+                dm[g] += m * ft[k][g];
+            }
+            for (int q = 0; q < NN; q++) {
+                const float c = sc->nb[q][k];
+                for (int g = 0; g < LANES; g++) dn[q][g] += c * ft[k][g];
+            }
         }
         if (sc->orthonormal) {
-            for (int k = 0; k < D; k++) ff += f[k] * f[k];
+            for (int k = 0; k < D; k++)
+                for (int g = 0; g < LANES; g++) ff[g] += ft[k][g] * ft[k][g];
         } else {
             for (int a = 0; a < D; a++) {
-                float g = 0;
-                for (int b = 0; b < D; b++) g += sc->G[a * D + b] * f[b];
-                ff += f[a] * g;
+                float Gf[LANES] = {0};
+                for (int b = 0; b < D; b++) {
+                    const float gab = sc->G[a * D + b];
+                    for (int g = 0; g < LANES; g++) Gf[g] += gab * ft[b][g];
+                }
+                for (int g = 0; g < LANES; g++) ff[g] += ft[a][g] * Gf[g];
             }
         }
-        float n2 = sc->m2 + 2 * dm + ff;
-        float inv = n2 > 1e-20f ? 1.0f / sqrtf(n2) : 0.0f;
-        float s = dq * inv;
-        if (j->raw) j->raw[i] = s;
-        if (j->rel) {
-            float sn[SP_SEM_MAX_NEGATIVES];
-            for (int k = 0; k < sc->n_neg; k++) {
-                float d = sc->n0[k];
-                for (int c = 0; c < D; c++) d += sc->nb[k][c] * f[c];
-                sn[k] = d * inv;
+        for (int g = 0; g < L; g++) {
+            float n2 = sc->m2 + 2 * dm[g] + ff[g];
+            float inv = n2 > 1e-20f ? 1.0f / sqrtf(n2) : 0.0f;
+            float s = dq[g] * inv;
+            if (j->raw) j->raw[b0 + g] = s;
+            if (j->rel) {
+                float sn[SP_SEM_MAX_NEGATIVES];
+                for (int q = 0; q < NN; q++) sn[q] = dn[q][g] * inv;
+                j->rel[b0 + g] = sp_sem_relevancy(s, sn, NN, sc->temperature);
             }
-            j->rel[i] = sp_sem_relevancy(s, sn, sc->n_neg, sc->temperature);
         }
     }
 }

@@ -25,6 +25,11 @@ struct sp_query_engine {
     float *neg_emb;            /* [n_neg][full_dim] */
     float *opacity;            /* [n] sigmoid(logit) */
     float *raw, *rel;          /* [n] scratch: per-Gaussian raw cosine and relevancy */
+    float *scores2;            /* [n][2] (raw, rel) rendered as two channels */
+    sp_raster *raster_aux;     /* renders of scores2 (its own upload cache) */
+    uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
+    int occ_dim[3];
+    float occ_lo[3], occ_voxel;
 };
 
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
@@ -51,6 +56,11 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
 /* Renders view `v` at full size with the heatmap overlay into res. */
 int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
                 sp_error *err);
+/* Renders the per-Gaussian (raw, rel) of the last scoring through camera cam (2 channels, cheap
+ * next to D feature channels): raw/rel [H][W] of the alpha-normalised composite where alpha >
+ * 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */
+int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
+                      sp_error *err);
 /* Per-pixel raw cosine / relevancy of a rendered feature image where alpha > 0.5 (else -1 / 0.5). */
 void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
                       const float *alpha, size_t npix, float *raw, float *rel);

@@ -1,0 +1,162 @@
+/* Query latency of the semantic engine with the text already embedded and the model loaded:
+ * 3D-native and multi-view localization on a synthetic room of N Gaussians (default 300k) with
+ * 32-dim features decoding to 512-D, 20 object classes, 24 cameras at 640x480. CPU always; the
+ * GPU too when one answers. Usage: bench_query [N] [threads] */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "semsplat/clip.h"
+#include "semsplat/render.h"
+#include "semsplat/semantic.h"
+
+enum { FULL = 512, DIM = 32, CLASSES = 20, NCAM = 24 };
+
+static uint64_t rng = 0x9E3779B97F4A7C15ull;
+static double uni(void)
+{
+    rng ^= rng >> 12, rng ^= rng << 25, rng ^= rng >> 27;
+    return (double)((rng * 2685821657736338717ull) >> 11) / 9007199254740992.0;
+}
+
+static void build(size_t n, sp_splat *s, sp_sem_pca *pca, float *emb, sp_camera *cams)
+{
+    char name[32];
+    for (int k = 0; k < CLASSES; k++) {
+        snprintf(name, sizeof name, "class %d", k);
+        sp_label_embedding(name, FULL, emb + (size_t)k * FULL);
+    }
+    pca->dim = DIM, pca->full_dim = FULL;
+    pca->mean = calloc(FULL, sizeof(float));
+    pca->basis = calloc((size_t)DIM * FULL, sizeof(float));
+    for (int k = 0; k < CLASSES; k++)
+        for (int j = 0; j < FULL; j++) pca->mean[j] += emb[(size_t)k * FULL + j] / CLASSES;
+    /* Gram-Schmidt of class differences (the last one depends on the others: skipped), then
+     * random rows: an orthonormal basis as sp_clip_pca_fit makes. */
+    for (int r = 0, src = 0; r < DIM; src++) {
+        float *row = pca->basis + (size_t)r * FULL;
+        for (int j = 0; j < FULL; j++)
+            row[j] = src < CLASSES ? emb[(size_t)src * FULL + j] - pca->mean[j] : (float)(uni() - 0.5);
+        for (int q = 0; q < r; q++) {
+            double d = 0;
+            for (int j = 0; j < FULL; j++) d += (double)row[j] * pca->basis[(size_t)q * FULL + j];
+            for (int j = 0; j < FULL; j++) row[j] -= (float)(d * pca->basis[(size_t)q * FULL + j]);
+        }
+        double nn = 0;
+        for (int j = 0; j < FULL; j++) nn += (double)row[j] * row[j];
+        if (nn < 1e-6) continue;
+        for (int j = 0; j < FULL; j++) row[j] /= (float)sqrt(nn);
+        r++;
+    }
+    float centers[CLASSES][3];
+    for (int k = 0; k < CLASSES; k++)
+        centers[k][0] = (float)(uni() * 8 - 4), centers[k][1] = (float)(uni() * 6 - 3), centers[k][2] = (float)(uni() * 1.2);
+    sp_error err = {0};
+    sp_splat_alloc(s, n, 0, DIM, &err);
+    float feat[CLASSES][DIM];
+    for (int k = 0; k < CLASSES; k++)
+        for (int r = 0; r < DIM; r++) {
+            double d = 0;
+            for (int j = 0; j < FULL; j++)
+                d += (double)pca->basis[(size_t)r * FULL + j] * (emb[(size_t)k * FULL + j] - pca->mean[j]);
+            feat[k][r] = (float)d;
+        }
+    for (size_t i = 0; i < n; i++) {
+        /* 60% room shell (class 0: walls/floor), 40% objects */
+        int k = uni() < 0.6 ? 0 : 1 + (int)(uni() * (CLASSES - 1));
+        float *m = s->means + 3 * i;
+        if (k == 0) { /* floor, or one of the four walls */
+            double u = uni(), w = uni();
+            int side = (int)(uni() * 6);
+            if (side < 2) m[0] = (float)(u * 10 - 5), m[1] = (float)(w * 8 - 4), m[2] = 0;
+            else if (side < 4) m[0] = side == 2 ? -5.f : 5.f, m[1] = (float)(u * 8 - 4), m[2] = (float)(w * 2.5);
+            else m[0] = (float)(u * 10 - 5), m[1] = side == 4 ? -4.f : 4.f, m[2] = (float)(w * 2.5);
+        } else {
+            for (int a = 0; a < 3; a++) m[a] = centers[k][a] + (float)(uni() - 0.5) * 0.6f;
+        }
+        for (int a = 0; a < 3; a++) s->log_scales[3 * i + a] = logf(0.01f + 0.03f * (float)uni());
+        s->opacity_logits[i] = (float)(uni() * 6 - 2);
+        for (int c = 0; c < 3; c++) s->sh[3 * i + c] = (float)(uni() - 0.5);
+        for (int r = 0; r < DIM; r++) s->features[i * DIM + r] = feat[k][r] + 0.05f * (float)(uni() - 0.5);
+    }
+    for (int c = 0; c < NCAM; c++) {
+        double a = 2 * M_PI * c / NCAM;
+        memset(&cams[c], 0, sizeof cams[c]);
+        cams[c].width = 640, cams[c].height = 480, cams[c].fx = cams[c].fy = 500, cams[c].cx = 320, cams[c].cy = 240;
+        sp_camera_look_at(&cams[c], sp_v3((float)(3.5 * cos(a)), (float)(2.5 * sin(a)), 1.2f), sp_v3(0, 0, 0.6f),
+                          sp_v3(0, 0, 1));
+    }
+}
+
+static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, const sp_sem_pca *pca,
+                const float *emb, const sp_camera *cams)
+{
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    if (sp_device_create(&dev, kind, threads, &err)) {
+        printf("# %s: %s\n", kind == SP_DEVICE_CUDA ? "cuda" : "cpu", err.msg);
+        return;
+    }
+    sp_query_engine *e = NULL;
+    sp_query_opts o = sp_query_opts_default();
+    o.heatmap = 0;
+    if (sp_query_engine_create(&e, s, pca, cams, NCAM, 1, &o, dev, NULL, &err)) {
+        printf("# engine: %s\n", err.msg);
+        sp_device_free(dev);
+        return;
+    }
+    const char *dn = sp_device_name(dev);
+    const int methods[2] = {SP_QUERY_3D, SP_QUERY_MULTIVIEW};
+    for (int mi = 0; mi < 2; mi++) {
+        sp_query_engine_opts(e)->method = methods[mi];
+        int reps = mi == 0 ? 10 : 3;
+        double best = 1e30, sum = 0, rel = 0;
+        int found = 0;
+        for (int r = 0; r < reps; r++) {
+            sp_query_result res;
+            int k = 1 + r % (CLASSES - 1);
+            if (sp_query_engine_query_embedding(e, emb + (size_t)k * FULL, "bench", &res, &err)) {
+                printf("# query: %s\n", err.msg);
+                break;
+            }
+            found += res.valid;
+            sum += res.ms_total;
+            rel += res.ms_relevancy;
+            if (res.ms_total < best) best = res.ms_total;
+            sp_query_result_free(&res);
+        }
+        printf("query_%s_%s  %.1f  ms  (median-free mean of %d; best %.1f ms; relevancy %.1f ms; %zu Gaussians, D=%d->%d, %s, %d/%d found)\n",
+               mi == 0 ? "3d" : "multiview", kind == SP_DEVICE_CUDA ? "gpu" : "cpu", sum / reps, reps, best,
+               rel / reps, n, DIM, FULL, dn, found, reps);
+    }
+    /* with the heatmap (a 640x480 render of RGB + features) */
+    sp_query_engine_opts(e)->method = SP_QUERY_3D;
+    sp_query_engine_opts(e)->heatmap = 1;
+    sp_query_result res;
+    if (!sp_query_engine_query_embedding(e, emb + FULL, "bench", &res, &err)) {
+        printf("query_3d_heatmap_%s  %.1f  ms  (heatmap part %.1f ms, 640x480, %s)\n",
+               kind == SP_DEVICE_CUDA ? "gpu" : "cpu", res.ms_total, res.ms_heatmap, dn);
+        sp_query_result_free(&res);
+    }
+    sp_query_engine_free(e);
+    sp_device_free(dev);
+}
+
+int main(int argc, char **argv)
+{
+    size_t n = argc > 1 ? (size_t)atol(argv[1]) : 300000;
+    int threads = argc > 2 ? atoi(argv[2]) : 0;
+    sp_splat s;
+    sp_sem_pca pca;
+    float *emb = malloc(sizeof(float) * CLASSES * FULL);
+    sp_camera cams[NCAM];
+    build(n, &s, &pca, emb, cams);
+    run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
+    if (sp_cuda_available()) run(SP_DEVICE_CUDA, threads, n, &s, &pca, emb, cams);
+    else printf("# gpu: no CUDA device, GPU figures skipped\n");
+    sp_splat_free(&s);
+    sp_sem_pca_free(&pca);
+    free(emb);
+    return 0;
+}
