@@ -397,9 +397,11 @@ int geom_plane(wbuild *b, const xform *T, const double normal[3], const double s
     double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(nn > 0)) { n[0] = 0; n[1] = 0; n[2] = 1; nn = 1; }
     for (int i = 0; i < 3; i++) n[i] /= nn;
+    /* u: the world x axis projected onto the plane (Gazebo's size[0] runs along x), v = n x u */
     double a[3] = {1, 0, 0};
     if (fabs(n[0]) > 0.9) { a[0] = 0; a[1] = 1; }
-    double u[3] = {a[1] * n[2] - a[2] * n[1], a[2] * n[0] - a[0] * n[2], a[0] * n[1] - a[1] * n[0]};
+    double an = a[0] * n[0] + a[1] * n[1] + a[2] * n[2];
+    double u[3] = {a[0] - an * n[0], a[1] - an * n[1], a[2] - an * n[2]};
     double un = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     for (int i = 0; i < 3; i++) u[i] /= un;
     double v[3] = {n[1] * u[2] - n[2] * u[1], n[2] * u[0] - n[0] * u[2], n[0] * u[1] - n[1] * u[0]};

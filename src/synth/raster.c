@@ -287,7 +287,27 @@ static void band_fn(void *ctx, long band, int tid)
             }
             size_t pix = (size_t)py * W + px;
             double cxp = px + 0.5, cyp = py + 0.5;
-            if (best < 0) {
+            /* Depth and label: the nearest sampled surface that covers the pixel centre (exact
+             * there, also at creases between faces), else the majority surface. */
+            int at_centre = -1;
+            double cz = 0;
+            for (int a = 0; a < n; a++) {
+                if (ids[a] < 0 || ids[a] == at_centre) continue;
+                const stri *s = &v->tl.t[ids[a]];
+                double l[3], iz = 0;
+                for (int i = 0; i < 3; i++) {
+                    l[i] = s->A[i] * cxp + s->B[i] * cyp + s->C[i];
+                    iz += l[i] * s->iz[i];
+                }
+                if (l[0] >= -1e-9 && l[1] >= -1e-9 && l[2] >= -1e-9 && iz > cz) {
+                    cz = iz;
+                    at_centre = ids[a];
+                }
+            }
+            if (at_centre >= 0) {
+                o->depth[pix] = (float)(1.0 / cz);
+                o->labels[pix] = (uint16_t)(v->w->tri_object[v->tl.t[at_centre].tri] + 1);
+            } else if (best < 0) {
                 o->depth[pix] = 0;
                 o->labels[pix] = 0;
             } else {

@@ -126,25 +126,42 @@ static int numbers(ctx *c, const char *file, xmlNodePtr n, int min_n, int max_n,
 
 /* ---- files, model path, URIs ----------------------------------------------------------------- */
 
+/* libxml2 reports every error; the first one is where the file went wrong. */
+typedef struct first_error {
+    int set, line;
+    char msg[512];
+} first_error;
+
+static void keep_first(void *user, const xmlError *e)
+{
+    first_error *fe = user;
+    if (fe->set || !e || e->level < XML_ERR_ERROR) return;
+    fe->set = 1;
+    fe->line = e->line;
+    snprintf(fe->msg, sizeof fe->msg, "%s", e->message ? e->message : "error");
+    size_t L = strlen(fe->msg);
+    while (L && fe->msg[L - 1] == '\n') fe->msg[--L] = 0;
+}
+
 static xmlDocPtr read_xml(ctx *c, const char *path)
 {
+    if (!is_file(path)) {
+        sp_error_set(c->err, SP_E_IO, "%s: cannot open the file", path);
+        return NULL;
+    }
     xmlParserCtxtPtr pc = xmlNewParserCtxt();
     if (!pc) {
         sp_error_set(c->err, SP_E_NOMEM, "%s: cannot create an XML parser", path);
         return NULL;
     }
+    first_error fe = {0};
+    xmlSetStructuredErrorFunc(&fe, (xmlStructuredErrorFunc)keep_first);
     xmlDocPtr doc = xmlCtxtReadFile(pc, path, NULL, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+    xmlSetStructuredErrorFunc(NULL, NULL);
     if (!doc) {
-        const xmlError *e = xmlCtxtGetLastError(pc);
-        if (!is_file(path))
-            sp_error_set(c->err, SP_E_IO, "%s: cannot open the file", path);
-        else if (e && e->message) {
-            char msg[512];
-            snprintf(msg, sizeof msg, "%s", e->message);
-            size_t L = strlen(msg);
-            while (L && msg[L - 1] == '\n') msg[--L] = 0;
-            sp_error_set(c->err, SP_E_FORMAT, "%s:%d: malformed XML: %s", path, e->line, msg);
-        } else
+        if (fe.set)
+            sp_error_set(c->err, SP_E_FORMAT, "%s:%d: malformed XML: %s", path, fe.line, fe.msg);
+        else
             sp_error_set(c->err, SP_E_FORMAT, "%s: malformed XML", path);
     }
     xmlFreeParserCtxt(pc);

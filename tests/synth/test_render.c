@@ -1,0 +1,197 @@
+/* synth rasterizer: depth against ray-box intersection in double precision, labels against the
+ * ground-truth boxes, near-plane clipping, and bytes independent of the thread count. */
+#include "semsplat/synth.h"
+#include "test.h"
+
+typedef struct { double mn[3], mx[3]; } abox;
+
+/* Ray-AABB (slab) intersection; returns the entry distance or -1. */
+static double ray_box(const double o[3], const double d[3], const abox *b)
+{
+    double t0 = -1e30, t1 = 1e30;
+    for (int k = 0; k < 3; k++) {
+        if (fabs(d[k]) < 1e-15) {
+            if (o[k] < b->mn[k] || o[k] > b->mx[k]) return -1;
+            continue;
+        }
+        double a = (b->mn[k] - o[k]) / d[k], c = (b->mx[k] - o[k]) / d[k];
+        if (a > c) { double t = a; a = c; c = t; }
+        if (a > t0) t0 = a;
+        if (c < t1) t1 = c;
+    }
+    return t0 <= t1 && t0 > 0 ? t0 : -1;
+}
+
+static const char *boxes_world =
+    "<sdf version='1.6'><world name='boxes'>\n"
+    "<model name='red_box'><pose>2 0 0.5 0 0 0</pose><link name='l'><visual name='v'><geometry><box><size>1 1 1</size></box></geometry>"
+    "<material><diffuse>0.8 0.1 0.1 1</diffuse></material></visual></link></model>\n"
+    "<model name='tall_box'><pose>3.5 1.2 1 0 0 0</pose><link name='l'><visual name='v'><geometry><box><size>0.6 0.8 2</size></box></geometry></visual></link></model>\n"
+    "<model name='flat_box'><pose>1.5 -1.5 0.1 0 0 0</pose><link name='l'><visual name='v'><geometry><box><size>1.2 0.7 0.2</size></box></geometry></visual></link></model>\n"
+    "<model name='floor'><pose>2 0 -0.05 0 0 0</pose><link name='l'><visual name='v'><geometry><box><size>8 8 0.1</size></box></geometry></visual></link></model>\n"
+    "</world></sdf>\n";
+
+static int load(sp_world *w, sp_error *err)
+{
+    const char *d = test_tmpdir("synth_render");
+    char path[1200];
+    snprintf(path, sizeof path, "%s/boxes.world", d);
+    FILE *f = fopen(path, "w");
+    fputs(boxes_world, f);
+    fclose(f);
+    sp_synth_load_opts o = {.no_env = 1};
+    return sp_synth_load_world(path, &o, w, err);
+}
+
+static void make_cam(sp_camera *c, int W, int H, float ex, float ey, float ez, float tx, float ty, float tz)
+{
+    memset(c, 0, sizeof *c);
+    c->width = W;
+    c->height = H;
+    c->fx = c->fy = 0.6f * W;
+    c->cx = 0.5f * W + 0.3f; /* off-centre principal point on purpose */
+    c->cy = 0.5f * H - 0.2f;
+    sp_camera_look_at(c, sp_v3(ex, ey, ez), sp_v3(tx, ty, tz), sp_v3(0, 0, 1));
+}
+
+static void test_depth_and_labels(void)
+{
+    sp_world w;
+    sp_error err = {0};
+    CHECK_OK(load(&w, &err), &err);
+    if (err.code) return;
+    abox boxes[4];
+    for (size_t i = 0; i < 4; i++)
+        for (int k = 0; k < 3; k++) {
+            boxes[i].mn[k] = w.objects[i].aabb_min[k];
+            boxes[i].mx[k] = w.objects[i].aabb_max[k];
+        }
+    sp_camera cams[3];
+    make_cam(&cams[0], 96, 72, -1.0f, -0.6f, 1.3f, 2.2f, 0.1f, 0.4f);
+    make_cam(&cams[1], 80, 64, 4.8f, -2.5f, 0.7f, 2.0f, 0.3f, 0.5f);
+    make_cam(&cams[2], 64, 64, 2.0f, 0.0f, 3.0f, 2.1f, 0.05f, 0.0f); /* from above */
+    long compared = 0, label_ok = 0, label_n = 0;
+    double worst = 0;
+    for (int v = 0; v < 3; v++) {
+        const sp_camera *c = &cams[v];
+        sp_synth_frame fr = {0};
+        CHECK_OK(sp_synth_render(&w, c, NULL, NULL, &fr, &err), &err);
+        if (!fr.depth) continue;
+        double R[9], t[3];
+        for (int i = 0; i < 9; i++) R[i] = c->R[i];
+        for (int i = 0; i < 3; i++) t[i] = c->t[i];
+        double o[3];
+        for (int r = 0; r < 3; r++) o[r] = -(R[r] * t[0] + R[3 + r] * t[1] + R[6 + r] * t[2]);
+        for (int py = 1; py < c->height - 1; py++)
+            for (int px = 1; px < c->width - 1; px++) {
+                double xc = (px + 0.5 - c->cx) / c->fx, yc = (py + 0.5 - c->cy) / c->fy;
+                double d[3];
+                for (int r = 0; r < 3; r++) d[r] = R[r] * xc + R[3 + r] * yc + R[6 + r];
+                /* nearest box along the ray, distance in units of camera z (d has z_cam = 1) */
+                double best = -1;
+                int bi = -1;
+                for (int b = 0; b < 4; b++) {
+                    double tt = ray_box(o, d, &boxes[b]);
+                    if (tt > 0 && (best < 0 || tt < best)) { best = tt; bi = b; }
+                }
+                size_t at = (size_t)py * c->width + px;
+                /* away from edges: the 3x3 neighbourhood has one label */
+                int same = 1;
+                for (int dy = -1; dy <= 1; dy++)
+                    for (int dx = -1; dx <= 1; dx++)
+                        same &= fr.labels[at + dy * c->width + dx] == fr.labels[at];
+                if (!same) continue;
+                label_n++;
+                label_ok += (bi < 0 && fr.labels[at] == 0) || (bi >= 0 && fr.labels[at] == bi + 1);
+                if (bi < 0 || fr.labels[at] != bi + 1) continue;
+                double e = fabs(fr.depth[at] - best);
+                if (e > worst) worst = e;
+                compared++;
+            }
+        sp_synth_frame_free(&fr);
+    }
+    CHECK(compared > 5000);
+    CHECK_MSG(worst < 1e-4, "worst depth error %.3g m over %ld pixels", worst, compared);
+    CHECK_MSG(label_ok == label_n, "%ld of %ld interior labels agree with ray casting", label_ok, label_n);
+    sp_world_free(&w);
+}
+
+/* Every labelled pixel lies inside its object's ground-truth box projected into the view. */
+static void test_labels_inside_gt_boxes(void)
+{
+    sp_world w;
+    sp_error err = {0};
+    CHECK_OK(load(&w, &err), &err);
+    if (err.code) return;
+    sp_camera c;
+    make_cam(&c, 120, 90, -0.5f, 1.8f, 1.6f, 2.5f, -0.2f, 0.3f);
+    sp_synth_frame fr = {0};
+    CHECK_OK(sp_synth_render(&w, &c, NULL, NULL, &fr, &err), &err);
+    for (size_t o = 0; o < w.n_objects && fr.labels; o++) {
+        const sp_synth_object *ob = &w.objects[o];
+        float umin = 1e9f, umax = -1e9f, vmin = 1e9f, vmax = -1e9f;
+        int behind = 0;
+        for (int i = 0; i < 8; i++) {
+            float p[3] = {(i & 1) ? ob->aabb_max[0] : ob->aabb_min[0], (i & 2) ? ob->aabb_max[1] : ob->aabb_min[1],
+                          (i & 4) ? ob->aabb_max[2] : ob->aabb_min[2]}, q[3];
+            for (int r = 0; r < 3; r++) q[r] = c.R[r * 3] * p[0] + c.R[r * 3 + 1] * p[1] + c.R[r * 3 + 2] * p[2] + c.t[r];
+            if (q[2] <= 0.01f) { behind = 1; continue; }
+            float u = c.fx * q[0] / q[2] + c.cx, v = c.fy * q[1] / q[2] + c.cy;
+            umin = fminf(umin, u); umax = fmaxf(umax, u); vmin = fminf(vmin, v); vmax = fmaxf(vmax, v);
+        }
+        if (behind) continue;
+        long n = 0, outside = 0;
+        for (int py = 0; py < c.height; py++)
+            for (int px = 0; px < c.width; px++)
+                if (fr.labels[(size_t)py * c.width + px] == o + 1) {
+                    n++;
+                    outside += px + 1 < umin || px > umax || py + 1 < vmin || py > vmax;
+                }
+        CHECK_MSG(outside == 0, "object %s: %ld of %ld pixels outside its projected box", ob->name, outside, n);
+        if (strcmp(ob->name, "floor")) CHECK_MSG(n > 20, "object %s covers %ld pixels", ob->name, n);
+    }
+    sp_synth_frame_free(&fr);
+    sp_world_free(&w);
+}
+
+static void test_threads_and_clipping(void)
+{
+    sp_world w;
+    sp_error err = {0};
+    CHECK_OK(load(&w, &err), &err);
+    if (err.code) return;
+    sp_pool *pool = NULL;
+    CHECK_OK(sp_pool_create(&pool, 3, &err), &err);
+    sp_camera c;
+    /* inside the red box's corner region: triangles cross the near plane */
+    make_cam(&c, 73, 51, 1.45f, -0.52f, 0.3f, 3.0f, 0.5f, 0.6f);
+    sp_synth_render_opts ro = {.supersample = 3};
+    sp_synth_frame a = {0}, b = {0};
+    CHECK_OK(sp_synth_render(&w, &c, &ro, NULL, &a, &err), &err);
+    CHECK_OK(sp_synth_render(&w, &c, &ro, pool, &b, &err), &err);
+    size_t np = (size_t)c.width * c.height;
+    CHECK(a.rgb && b.rgb && !memcmp(a.rgb, b.rgb, np * 3 * sizeof(float)));
+    CHECK(a.depth && b.depth && !memcmp(a.depth, b.depth, np * sizeof(float)));
+    CHECK(a.labels && b.labels && !memcmp(a.labels, b.labels, np * sizeof(uint16_t)));
+    long finite = 0;
+    for (size_t i = 0; a.depth && i < np; i++) finite += isfinite(a.depth[i]) && a.depth[i] >= 0;
+    CHECK(finite == (long)np);
+    /* a reused frame of the wrong size is refused */
+    sp_camera small = c;
+    small.width = 10;
+    CHECK_FAILS(sp_synth_render(&w, &small, &ro, pool, &a, &err), SP_E_ARG, &err, "frame is 73x51");
+    ro.supersample = 9;
+    CHECK_FAILS(sp_synth_render(&w, &c, &ro, pool, &a, &err), SP_E_ARG, &err, "supersample 9");
+    sp_synth_frame_free(&a);
+    sp_synth_frame_free(&b);
+    sp_pool_free(pool);
+    sp_world_free(&w);
+}
+
+int main(void)
+{
+    RUN(test_depth_and_labels);
+    RUN(test_labels_inside_gt_boxes);
+    RUN(test_threads_and_clipping);
+    return TEST_EXIT();
+}
