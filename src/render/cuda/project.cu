@@ -4,7 +4,7 @@
 #include "common.cuh"
 #include "render/gauss_math.h"
 
-__global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg, int tiles_x, int tiles_y,
+__global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg,
                           const float *__restrict__ means, const float *__restrict__ quats,
                           const float *__restrict__ log_scales,
                           const float *__restrict__ opacity_logits, float2 *__restrict__ means2d,
@@ -17,24 +17,36 @@ __global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg, int tiles_
     float m[3] = {means[i * 3], means[i * 3 + 1], means[i * 3 + 2]};
     float q[4] = {quats[i * 4], quats[i * 4 + 1], quats[i * 4 + 2], quats[i * 4 + 3]};
     float s[3] = {log_scales[i * 3], log_scales[i * 3 + 1], log_scales[i * 3 + 2]};
-    float mean2d[2], conic[3], depth = 0.f, op = 0.f;
+    float mean2d[2], conic[3], cov2[3], depth = 0.f, op = 0.f;
     int radius = 0;
-    int vis = sp_gm_project(m, q, s, opacity_logits[i], &cam, &cfg, mean2d, conic, &depth, &op,
-                            &radius);
-    if (!vis) {
+    int vis = sp_gm_project_ex(m, q, s, opacity_logits[i], &cam, &cfg, mean2d, conic, &depth, &op,
+                               &radius, cov2);
+    /* Pixels whose centres lie inside the alpha >= 1/255 ellipse's per-axis extent (never wider
+     * than the radius circle), exactly as the CPU backend's project.c bins them: tighter than the
+     * circle for elongated Gaussians (fewer pairs), and a Gaussian with no pixel centre in it is
+     * culled (radius 0) on both backends. */
+    int bx0 = 0, bx1 = -1, by0 = 0, by1 = -1;
+    if (vis) {
+        float ext = sqrtf(2.f * logf(op * 255.f));
+        float rr = (float)radius;
+        float rx = fminf(ceilf(ext * sqrtf(cov2[0])), rr), ry = fminf(ceilf(ext * sqrtf(cov2[2])), rr);
+        float fx0 = ceilf(mean2d[0] - rx - 0.5f), fx1 = floorf(mean2d[0] + rx - 0.5f);
+        float fy0 = ceilf(mean2d[1] - ry - 0.5f), fy1 = floorf(mean2d[1] + ry - 0.5f);
+        float W = (float)cam.width, H = (float)cam.height;
+        bx0 = fx0 < 0.f ? 0 : (fx0 > W ? cam.width : (int)fx0);
+        bx1 = fx1 > W - 1.f ? cam.width - 1 : (fx1 < -1.f ? -1 : (int)fx1);
+        by0 = fy0 < 0.f ? 0 : (fy0 > H ? cam.height : (int)fy0);
+        by1 = fy1 > H - 1.f ? cam.height - 1 : (fy1 < -1.f ? -1 : (int)fy1);
+    }
+    if (!vis || bx0 > bx1 || by0 > by1) {
         radii[i] = 0;
         ntiles[i] = 0;
         return;
     }
-    /* tile rectangle covering the radius circle (the circle bounds every kept contribution) */
-    const float ts = (float)SP_TILE_SIZE;
-    int x0 = min(max(0, (int)floorf((mean2d[0] - radius) / ts)), tiles_x);
-    int y0 = min(max(0, (int)floorf((mean2d[1] - radius) / ts)), tiles_y);
-    int x1 = min(max(0, (int)floorf((mean2d[0] + radius) / ts) + 1), tiles_x);
-    int y1 = min(max(0, (int)floorf((mean2d[1] + radius) / ts) + 1), tiles_y);
-    uint32_t cnt = (x1 > x0 && y1 > y0) ? (uint32_t)((x1 - x0) * (y1 - y0)) : 0u;
-    radii[i] = cnt ? radius : 0;
-    ntiles[i] = cnt;
+    int x0 = bx0 / SP_TILE_SIZE, x1 = bx1 / SP_TILE_SIZE + 1;
+    int y0 = by0 / SP_TILE_SIZE, y1 = by1 / SP_TILE_SIZE + 1;
+    radii[i] = radius;
+    ntiles[i] = (uint32_t)((x1 - x0) * (y1 - y0));
     means2d[i] = make_float2(mean2d[0], mean2d[1]);
     conic_op[i] = make_float4(conic[0], conic[1], conic[2], op);
     depths[i] = depth;
@@ -58,7 +70,7 @@ int sp_cuda_project(sp_cuda_raster *r, sp_error *err)
     r->proj.rect = (int4 *)r->s_rect.ptr;
     r->proj.ntiles = (uint32_t *)r->s_ntiles.ptr;
     if (n == 0) return 0;
-    k_project<<<sp_div_up(n, 256), 256>>>(n, r->cam, r->cfg, r->tiles_x, r->tiles_y,
+    k_project<<<sp_div_up(n, 256), 256>>>(n, r->cam, r->cfg,
                                           r->in.means, r->in.quats, r->in.log_scales,
                                           r->in.opacity_logits, r->proj.means2d,
                                           r->proj.conic_op, r->proj.depths, r->proj.radii,

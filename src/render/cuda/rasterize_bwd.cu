@@ -6,8 +6,10 @@
  *  - the colour term of dL/dalpha is carried as ONE scalar per pixel, G = sum_{j behind} w_j
  *    (v_out . c_j) + T_final (v_out . bg), instead of a D-wide "colour behind" buffer, so a
  *    thread holds only the chunk's v_out and its colour-gradient partials;
- *  - channels are split into chunks of at most 32 (blockIdx.z); dL/dalpha is linear in the
- *    channels, so each chunk adds its share of the geometry gradients independently;
+ *  - channels beyond 64 are split into chunks (blockIdx.z, plus one narrower launch for the
+ *    rest); dL/dalpha is linear in the channels, so each chunk adds its share of the geometry
+ *    gradients independently (measured: one 64-wide pass beats two 32-wide ones, since every
+ *    chunk repeats the per-pixel alpha work and the geometry reduction);
  *  - warp sums use a reduce-scatter (each shuffle round halves the values every lane carries),
  *    about CH shuffles instead of 5 CH, and the atomics that follow are spread over lanes and hit
  *    consecutive addresses;
@@ -21,27 +23,41 @@
 #define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
 #define FULL_MASK 0xffffffffu
 
-template <int N> struct pow2_ceil { enum { value = 2 * pow2_ceil<(N + 1) / 2>::value }; };
-template <> struct pow2_ceil<1> { enum { value = 1 }; };
+/* Warp reduce-scatter of N values per lane. Each of the five xor-shuffle rounds either halves
+ * the values a lane carries (lanes with the round's bit set keep the upper ceil-half, the others
+ * the lower; an odd count is padded with an exact zero) or, once one value is left, adds it
+ * across the round's partner. Afterwards a lane holds RS_LIVE(N) totals in v[0..), for channels
+ * base + i (returned base); lanes that differ only in the bits of the plain-add rounds hold the
+ * same totals (one of each group of RS_GROUP(N) writes). Slots that only ever held padding are
+ * exactly zero and the caller skips zeros, so they never write. About N shuffles, against 5 N
+ * for a full butterfly per value. */
+__host__ __device__ constexpr int rs_live(int n, int steps)
+{
+    return steps == 0 ? n : rs_live(n >= 2 ? (n + 1) / 2 : n, steps - 1);
+}
+__host__ __device__ constexpr int rs_halvings(int n, int steps)
+{
+    return (steps == 0 || n < 2) ? 0 : 1 + rs_halvings((n + 1) / 2, steps - 1);
+}
+#define RS_LIVE(N) rs_live((N), 5)
+#define RS_GROUP(N) (32 >> rs_halvings((N), 5))
 
-/* Warp reduce-scatter of P values per lane (P a power of two). Afterwards the lane holds LIVE =
- * max(1, P/32) totals in v[0..LIVE), for channels base + i; returns base. For P < 32 the lanes
- * of a group of 32/P hold the same total (the caller lets one of them write it). */
-template <int P>
-__device__ __forceinline__ int warp_reduce_scatter(float (&v)[P], int lane)
+template <int N>
+__device__ __forceinline__ int warp_reduce_scatter(float (&v)[N], int lane)
 {
     int base = 0;
-    int live = P;
+    int live = N;
 #pragma unroll
     for (int o = 16; o >= 1; o >>= 1) {
         if (live >= 2) {
-            const int half = live / 2;
+            const int half = (live + 1) / 2;
             const bool upper = (lane & o) != 0;
 #pragma unroll
-            for (int i = 0; i < P / 2; i++) {
+            for (int i = 0; i < N; i++) {
                 if (i < half) {
-                    float send = upper ? v[i] : v[i + half];
-                    float keep = upper ? v[i + half] : v[i];
+                    const float hi = (i + half < live) ? v[i + half] : 0.f;
+                    const float send = upper ? v[i] : hi;
+                    const float keep = upper ? hi : v[i];
                     v[i] = keep + __shfl_xor_sync(FULL_MASK, send, o);
                 }
             }
@@ -65,7 +81,6 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
              const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
              float *__restrict__ vgeo)
 {
-    constexpr int P = pow2_ceil<CH>::value;
     extern __shared__ float4 smem_f4[];
     float4 *s_conic = smem_f4;                        /* [BLOCK] */
     float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
@@ -132,12 +147,12 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             const bool valid = alpha > 0.f;
             if (!__any_sync(FULL_MASK, valid)) continue;
 
-            float vcol[P];
-            float geo[8];
+            float vcol[CH];
+            float geo[7];
 #pragma unroll
-            for (int c = 0; c < P; c++) vcol[c] = 0.f;
+            for (int c = 0; c < CH; c++) vcol[c] = 0.f;
 #pragma unroll
-            for (int k = 0; k < 8; k++) geo[k] = 0.f;
+            for (int k = 0; k < 7; k++) geo[k] = 0.f;
             if (valid) {
                 const float ra = 1.f / (1.f - alpha);
                 T *= ra;
@@ -169,9 +184,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             }
             const int g = s_id[t];
             if (v_colors) {
-                const int cb = warp_reduce_scatter<P>(vcol, lane);
-                constexpr int LIVE = P >= 32 ? P / 32 : 1;
-                constexpr int GROUP = P >= 32 ? 1 : 32 / P;
+                const int cb = warp_reduce_scatter<CH>(vcol, lane);
+                constexpr int LIVE = RS_LIVE(CH), GROUP = RS_GROUP(CH);
                 if (lane % GROUP == 0) {
 #pragma unroll
                     for (int i = 0; i < LIVE; i++) {
@@ -181,8 +195,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     }
                 }
             }
-            const int slot = warp_reduce_scatter<8>(geo, lane);
-            if ((lane & 3) == 0 && slot < 7 && geo[0] != 0.f)
+            const int slot = warp_reduce_scatter<7>(geo, lane);
+            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
                 atomicAdd(vgeo + (size_t)g * 8 + slot, geo[0]);
         }
     }
@@ -220,8 +234,12 @@ static int dispatch_bwd(int ch, sp_cuda_raster *r, const sp_raster_grad_in *gin,
     case 3: return launch_bwd<3>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case 4: return launch_bwd<4>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case 8: return launch_bwd<8>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 12: return launch_bwd<12>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case 16: return launch_bwd<16>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 24: return launch_bwd<24>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case 32: return launch_bwd<32>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 40: return launch_bwd<40>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 48: return launch_bwd<48>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case 64: return launch_bwd<64>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     default: return sp_error_set(err, SP_E_ARG, "no backward kernel for chunk width %d", ch);
     }
@@ -232,7 +250,7 @@ int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float
 {
     if (r->n_pairs == 0) return 0;
     int D = r->in.D, rc;
-    int max_ch = sp_cuda_env_chunk("SP_CUDA_BWD_CHUNK", 32);
+    int max_ch = sp_cuda_env_chunk("SP_CUDA_BWD_CHUNK", 64);
     int full = D / max_ch, rem = D % max_ch;
     if (full > 0 && (rc = dispatch_bwd(max_ch, r, gin, v_colors, vgeo, 0, full, 1, err))) return rc;
     if (rem > 0 && (rc = dispatch_bwd(sp_cuda_chunk_width(rem, max_ch), r, gin, v_colors, vgeo,

@@ -3,10 +3,11 @@
  * One 16x16 thread block per tile and channel chunk: each thread owns a pixel, the block walks
  * the tile's depth-sorted list in batches of 256 Gaussians staged in shared memory (position,
  * conic, opacity, depth, the chunk's colour values), and composites front to back with the 3DGS
- * bounds. Kernels are specialised on the chunk width CH in {1,2,3,4,8,16,32,64}; a channel
- * count that is not one of those is padded up to the next (padded channels read as zero and
- * are never written), and wider ones run as several chunks (blockIdx.z), each recomputing the
- * cheap per-pixel alpha so registers hold only CH accumulators. The first chunk also writes
+ * bounds. Kernels are specialised on the chunk width CH in {1,2,3,4,8,12,16,24,32,40,48,64}
+ * (the in-between widths keep RGB + 32 features = 35 from paying for 64); a channel count that
+ * is not one of those is padded up to the next (padded channels read as zero and are never
+ * written), and wider ones run as several chunks (blockIdx.z), each recomputing the cheap
+ * per-pixel alpha so registers hold only CH accumulators. The first chunk also writes
  * depth, alpha, the final transmittance and the per-pixel end of the list for backward. */
 #include "common.cuh"
 
@@ -131,8 +132,12 @@ static int dispatch_fwd(int ch, sp_cuda_raster *r, sp_raster_out *out, int c_bas
     case 3: return launch_fwd<3>(r, out, c_base, n_chunks, aux, err);
     case 4: return launch_fwd<4>(r, out, c_base, n_chunks, aux, err);
     case 8: return launch_fwd<8>(r, out, c_base, n_chunks, aux, err);
+    case 12: return launch_fwd<12>(r, out, c_base, n_chunks, aux, err);
     case 16: return launch_fwd<16>(r, out, c_base, n_chunks, aux, err);
+    case 24: return launch_fwd<24>(r, out, c_base, n_chunks, aux, err);
     case 32: return launch_fwd<32>(r, out, c_base, n_chunks, aux, err);
+    case 40: return launch_fwd<40>(r, out, c_base, n_chunks, aux, err);
+    case 48: return launch_fwd<48>(r, out, c_base, n_chunks, aux, err);
     case 64: return launch_fwd<64>(r, out, c_base, n_chunks, aux, err);
     default: return sp_error_set(err, SP_E_ARG, "no forward kernel for chunk width %d", ch);
     }
@@ -140,7 +145,7 @@ static int dispatch_fwd(int ch, sp_cuda_raster *r, sp_raster_out *out, int c_bas
 
 int sp_cuda_chunk_width(int d, int max_ch)
 {
-    static const int widths[] = {1, 2, 3, 4, 8, 16, 32, 64};
+    static const int widths[] = {1, 2, 3, 4, 8, 12, 16, 24, 32, 40, 48, 64};
     for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++)
         if (widths[i] >= d || widths[i] >= max_ch) return widths[i] < max_ch ? widths[i] : max_ch;
     return max_ch;
