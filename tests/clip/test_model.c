@@ -6,6 +6,7 @@
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
+#include "semsplat/render.h"
 #include "test.h"
 
 enum { TW = 32, TH = 2, TL = 2, TM = 64, VOCAB = 49408, CTX = 77,
@@ -325,6 +326,51 @@ static void test_vision(void)
     sp_clip_free(c);
 }
 
+/* The GPU path (fp32 and fp16) against the CPU path on the same model. */
+static void test_gpu(void)
+{
+    if (!sp_cuda_available()) {
+        fprintf(stderr, "no GPU: GPU comparison skipped\n");
+        return;
+    }
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_clip *cpu = NULL, *gpu = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CUDA, 0, &err), &err);
+    CHECK_OK(sp_clip_load(&cpu, wpath, NULL, NULL, &err), &err);
+    CHECK_OK(sp_clip_load(&gpu, wpath, NULL, dev, &err), &err);
+    if (!cpu || !gpu) goto done;
+    CHECK(sp_clip_on_gpu(gpu) && !sp_clip_on_gpu(cpu));
+    const char *texts[] = {"a photo of a cat", "", "a much longer text about a red refrigerator"};
+    enum { NP = 3 * (2 * IMG) * IMG };
+    static float px[2 * NP], a[64 * PROJ], b[64 * PROJ];
+    for (int i = 0; i < 2 * NP; i++) px[i] = (float)test_range(&rng, -2, 2);
+    for (int fp16 = 0; fp16 <= 1; fp16++) {
+        double tol = fp16 ? 3e-2 : 1e-5, wt = 0, wi = 0, wd = 0, ww = 0;
+        CHECK_OK(sp_clip_set_fp16(gpu, fp16, &err), &err);
+        CHECK_OK(sp_clip_encode_text(cpu, texts, 3, a, &err), &err);
+        CHECK_OK(sp_clip_encode_text(gpu, texts, 3, b, &err), &err);
+        for (int k = 0; k < 3 * PROJ; k++) wt = fmax(wt, fabs(a[k] - b[k]));
+        CHECK_OK(sp_clip_encode_pixels(cpu, px, 2, IMG, IMG, a, &err), &err);
+        CHECK_OK(sp_clip_encode_pixels(gpu, px, 2, IMG, IMG, b, &err), &err);
+        for (int k = 0; k < 2 * PROJ; k++) wi = fmax(wi, fabs(a[k] - b[k]));
+        CHECK_OK(sp_clip_encode_pixels(cpu, px, 1, IMG, 2 * IMG, a, &err), &err);
+        CHECK_OK(sp_clip_encode_pixels(gpu, px, 1, IMG, 2 * IMG, b, &err), &err);
+        for (int k = 0; k < PROJ; k++) ww = fmax(ww, fabs(a[k] - b[k]));
+        for (int head = 0; head <= 1; head++) {
+            CHECK_OK(sp_clip_dense_pixels(cpu, px, IMG, IMG, (sp_clip_head)head, a, &err), &err);
+            CHECK_OK(sp_clip_dense_pixels(gpu, px, IMG, IMG, (sp_clip_head)head, b, &err), &err);
+            for (int k = 0; k < 16 * PROJ; k++) wd = fmax(wd, fabs(a[k] - b[k]));
+        }
+        fprintf(stderr, "GPU %s vs CPU: text %.3g image %.3g wide %.3g dense %.3g\n", fp16 ? "fp16" : "fp32", wt, wi, ww, wd);
+        CHECK(wt < tol && wi < tol && ww < tol && wd < tol);
+    }
+done:
+    sp_clip_free(cpu);
+    sp_clip_free(gpu);
+    sp_device_free(dev);
+}
+
 static void test_errors(void)
 {
     sp_clip *c = NULL;
@@ -391,6 +437,7 @@ int main(void)
     write_text(cpath, config_json);
     RUN(test_text);
     RUN(test_vision);
+    RUN(test_gpu);
     RUN(test_errors);
     for (int i = 0; i < n_w; i++) free(W[i].data);
     return TEST_EXIT();
