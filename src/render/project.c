@@ -40,6 +40,8 @@ static void project_chunk(void *ctx, long chunk, int thread_id)
             float ext = sqrtf(2.f * logf(r->opacity[i] * 255.f));
             float rx = ceilf(ext * sqrtf(cov2[0])), ry = ceilf(ext * sqrtf(cov2[2]));
             float rr = (float)radius;
+            /* det(conic) = 1 / det(cov2) = conic_c / cov2_a (conic_c = cov2_a / det(cov2)) */
+            r->conic_det[i] = con[2] / cov2[0];
             pixel_box(m2[0], m2[1], rx < rr ? rx : rr, ry < rr ? ry : rr, r->W, r->H, box);
             if (box[0] > box[1] || box[2] > box[3]) vis = 0, radius = 0;
         }
@@ -55,8 +57,8 @@ static void project_chunk(void *ctx, long chunk, int thread_id)
 int cpu_project(cpu_raster *r, sp_error *err)
 {
     size_t n = r->n;
-    /* one block: mean2d 2, conic 3, depth 1, opacity 1 floats; radii 1 and box 4 int32 */
-    size_t bytes = n * (7 * sizeof(float) + 5 * sizeof(int32_t)) + 64;
+    /* one block: mean2d 2, conic 3, depth 1, opacity 1, conic_det 1 floats; radii 1, box 4 int32 */
+    size_t bytes = n * (8 * sizeof(float) + 5 * sizeof(int32_t)) + 64;
     int rc = sp_scratch_reserve(r->dev, &r->proj_buf, &r->proj_cap, bytes, err);
     if (rc) return rc;
     float *f = r->proj_buf;
@@ -64,7 +66,8 @@ int cpu_project(cpu_raster *r, sp_error *err)
     r->conic = f + 2 * n;
     r->depth = f + 5 * n;
     r->opacity = f + 6 * n;
-    r->radii = (int32_t *)(f + 7 * n);
+    r->conic_det = f + 7 * n;
+    r->radii = (int32_t *)(f + 8 * n);
     r->pix_box = r->radii + n;
     sp_pool_for(r->dev->pool, (long)((n + CHUNK - 1) / CHUNK), project_chunk, r);
     return 0;

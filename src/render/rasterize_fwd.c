@@ -43,21 +43,25 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
     const float *colors = r->in.colors;
     int ndone = 0;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
-        const int32_t g = r->tile_gauss[j];
-        const int32_t *b = r->pix_box + 4 * g;
+        const cpu_gauss *rec = r->tile_rec + j;
+        const int32_t g = rec->g;
+        const int32_t *b = rec->box;
         const int x0 = b[0] > tx0 ? b[0] : tx0, x1 = b[1] < tx1 ? b[1] : tx1;
         const int y0 = b[2] > ty0 ? b[2] : ty0, y1 = b[3] < ty1 ? b[3] : ty1;
-        const float mx = r->mean2d[2 * g], my = r->mean2d[2 * g + 1];
-        const float con[3] = {r->conic[3 * g], r->conic[3 * g + 1], r->conic[3 * g + 2]};
-        const float op = r->opacity[g], z = r->depth[g];
-        const float *col = colors + (size_t)g * D;
+        const float mx = rec->mx, my = rec->my;
+        const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
+        const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
+        const float *restrict col = colors + (size_t)g * D;
         const int32_t pos = (int32_t)(j - start) + 1;
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
-            for (int px = x0; px <= x1; px++) {
+            int rx0, rx1;
+            cpu_row_range(con, det_con, cut, mx, dy, x0, x1, &rx0, &rx1);
+            for (int px = rx0; px <= rx1; px++) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 if (done[p]) continue;
-                const float alpha = sp_gm_alpha(con, op, (float)px + 0.5f - mx, dy);
+                float gauss;
+                const float alpha = sp_gm_alpha_g(con, op, cut, (float)px + 0.5f - mx, dy, &gauss);
                 if (alpha == 0.f) continue;
                 const float next_T = T[p] * (1.f - alpha);
                 if (next_T < SP_TRANSMITTANCE_MIN) {
@@ -66,7 +70,7 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
                     continue;
                 }
                 const float w = alpha * T[p];
-                float *a = acc + (size_t)p * D;
+                float *restrict a = acc + (size_t)p * D;
                 for (int c = 0; c < D; c++) a[c] += w * col[c];
                 acc_d[p] += w * z;
                 T[p] = next_T;

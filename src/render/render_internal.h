@@ -31,6 +31,20 @@ typedef struct cpu_tile_scratch {
     size_t cap;
 } cpu_tile_scratch;
 
+/* What compositing needs of one Gaussian, one cache line, copied into every tile list it is in so
+ * the compositing loops stream through memory instead of gathering from seven arrays. */
+typedef struct cpu_gauss {
+    float mx, my;          /* 2D mean, pixels */
+    float con[3];          /* conic (a, b, c) */
+    float op;              /* effective opacity */
+    float z;               /* camera depth */
+    float det_con;         /* det(conic), accurate */
+    float cut;             /* sp_gm_sigma_cut(op) */
+    int32_t g;             /* Gaussian index */
+    int32_t box[4];        /* pixel box x0, x1, y0, y1 */
+    float pad[2];
+} cpu_gauss;
+
 /* The CPU rasterizer's state for one view: projections, tile lists, per-pixel results. */
 typedef struct cpu_raster {
     sp_device *dev;
@@ -48,6 +62,8 @@ typedef struct cpu_raster {
     float *conic;    /* [n][3] (a, b, c) of the inverse blurred 2D covariance */
     float *depth;    /* [n] camera z */
     float *opacity;  /* [n] effective opacity (sigmoid, times compensation if antialiased) */
+    float *conic_det; /* [n] det(conic) = 1 / det(blurred 2D covariance), computed without
+                       * cancellation (for the per-row pixel ranges) */
     int32_t *radii;  /* [n] */
     int32_t *pix_box; /* [n][4] inclusive pixel range x0, x1, y0, y1 touched (culled: empty) */
     size_t proj_cap;
@@ -56,7 +72,7 @@ typedef struct cpu_raster {
     /* tile binning */
     int tiles_x, tiles_y;
     uint32_t *tile_start; /* [tiles + 1] offsets into tile_gauss / tile_slot */
-    int32_t *tile_gauss;  /* [pairs] Gaussian index, front to back within a tile */
+    cpu_gauss *tile_rec;  /* [pairs] Gaussians front to back within each tile */
     uint32_t *tile_slot;  /* [pairs] backward slot: Gaussian g's pairs are contiguous */
     size_t *pair_off;     /* [n + 1] first slot of each Gaussian */
     size_t pairs;
@@ -90,6 +106,26 @@ void cpu_project_backward(cpu_raster *r, const sp_raster_grads *grads);
 
 /* tiles.c: depth sort and per-tile lists, needs the projection. */
 int cpu_bin_tiles(cpu_raster *r, sp_error *err);
+
+/* Pixel range [*lo, *hi] of row py where sigma <= cut can hold for Gaussian g (clipped to
+ * [x0, x1]; empty when *lo > *hi): the roots of the quadratic in dx, widened by one pixel so
+ * float error never drops a pixel. Only skips work: the alpha test decides every kept pixel. */
+static inline void cpu_row_range(const float con[3], float det_con, float cut, float mx, float dy,
+                                 int x0, int x1, int *lo, int *hi)
+{
+    float disc = 2.f * con[0] * cut - det_con * dy * dy;
+    if (disc < 0.f) {
+        *lo = x0, *hi = x0 - 1;
+        return;
+    }
+    float sq = sqrtf(disc), inv_a = 1.f / con[0], c = -con[1] * dy;
+    float flo = floorf(mx - 0.5f + (c - sq) * inv_a) - 1.f;
+    float fhi = ceilf(mx - 0.5f + (c + sq) * inv_a) + 1.f;
+    *lo = flo > (float)x0 ? (flo < (float)x1 + 1.f ? (int)flo : x1 + 1) : x0;
+    *hi = fhi < (float)x1 ? (fhi > (float)x0 - 1.f ? (int)fhi : x0 - 1) : x1;
+}
+
+_Static_assert(sizeof(cpu_gauss) == 64, "cpu_gauss is one cache line");
 
 /* rasterize_fwd.c / rasterize_bwd.c (thread scratch sized for both passes at r->D) */
 int cpu_reserve_thread_scratch(cpu_raster *r, sp_error *err);

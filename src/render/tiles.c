@@ -6,6 +6,7 @@
  * (pair_off[g] ..), so the backward can sum them per Gaussian in a fixed order. */
 #include <string.h>
 
+#include "render/gauss_math.h"
 #include "render/render_internal.h"
 
 static uint32_t float_key(float z)
@@ -72,12 +73,13 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     r->pairs = pairs;
     if (m > 0) radix_sort(key, val, key_tmp, val_tmp, m);
 
-    size_t tile_bytes = (tiles + 1) * sizeof(uint32_t) + pairs * (sizeof(int32_t) + sizeof(uint32_t)) + 64;
+    size_t tile_bytes = pairs * sizeof(cpu_gauss) + (tiles + 1) * sizeof(uint32_t) +
+                        pairs * sizeof(uint32_t) + 64;
     rc = sp_scratch_reserve(r->dev, &r->tile_buf, &r->tile_cap, tile_bytes, err);
     if (rc) return rc;
-    r->tile_start = r->tile_buf;
-    r->tile_gauss = (int32_t *)(r->tile_start + tiles + 1);
-    r->tile_slot = (uint32_t *)(r->tile_gauss + pairs);
+    r->tile_rec = r->tile_buf; /* first: keeps the records 64-byte aligned */
+    r->tile_start = (uint32_t *)(r->tile_rec + pairs);
+    r->tile_slot = r->tile_start + tiles + 1;
 
     /* counting sort by tile */
     memset(r->tile_start, 0, (tiles + 1) * sizeof(uint32_t));
@@ -93,10 +95,21 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
         uint32_t g = val[k];
         const int32_t *b = r->pix_box + 4 * g;
         uint32_t slot = (uint32_t)pair_off[g];
+        cpu_gauss rec;
+        rec.mx = r->mean2d[2 * g];
+        rec.my = r->mean2d[2 * g + 1];
+        for (int k = 0; k < 3; k++) rec.con[k] = r->conic[3 * g + k];
+        rec.op = r->opacity[g];
+        rec.z = r->depth[g];
+        rec.det_con = r->conic_det[g];
+        rec.cut = sp_gm_sigma_cut(rec.op);
+        rec.g = (int32_t)g;
+        for (int k = 0; k < 4; k++) rec.box[k] = b[k];
+        rec.pad[0] = rec.pad[1] = 0.f;
         for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
             for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++) {
                 uint32_t pos = cursor[(size_t)y * tx + x]++;
-                r->tile_gauss[pos] = (int32_t)g;
+                r->tile_rec[pos] = rec;
                 r->tile_slot[pos] = slot++;
             }
     }
