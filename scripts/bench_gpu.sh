@@ -36,7 +36,7 @@ min_build() {
     gcc "${cflags[@]}" -Itests "-DSP_SOURCE_DIR=\"$PWD\"" "-DSP_BUILD_DIR=\"$PWD/build-gpu\"" \
       -c "$f" -o $b/$o.o && "$nvcc" -o build-gpu/$o $b/$o.o $b/libsp.a -lm -lpthread || return 1
   done
-  for f in bench/bench_*_gpu.c; do
+  for f in bench/bench_render_gpu.c; do  # bench_train_gpu needs the train and io modules
     o=$(basename "$f" .c)
     gcc "${cflags[@]}" -c "$f" -o $b/$o.o &&
       "$nvcc" -o build-gpu/bench/$o $b/$o.o $b/libsp.a -lm -lpthread || return 1
@@ -65,11 +65,14 @@ fi
 echo "== semsplat bench"
 timeout 400 build-gpu/bench/bench_render_gpu | tee "$out/semsplat-gpu.txt"
 if [ $anchor = 1 ]; then
-  anchors=shared/bench/anchors
+  # shared/ travels to the GPU machine only when it is inside the checkout; otherwise copy it
+  # into an ignored folder, carry that, and point SP_ANCHORS at it.
+  anchors=${SP_ANCHORS:-shared/bench/anchors}
   [ -d "$anchors" ] || anchors=../shared/bench/anchors
   echo "== gsplat anchors ($anchors)"
   OUT=$out timeout 500 bash "$anchors/run_device.sh" gsplat >"$out/anchor-run.txt" 2>&1
   tail -12 "$out/anchor-run.txt"
+  [ -f "$out/anchor-gsplat.jsonl" ] || { echo "no gsplat figures (see $out/anchor-run.txt)"; exit 1; }
   python3 - "$out/semsplat-gpu.txt" "$out/anchor-gsplat.jsonl" <<'EOF'
 import json, sys
 ours = {}

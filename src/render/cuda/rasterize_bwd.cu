@@ -85,7 +85,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     float4 *s_conic = smem_f4;                        /* [BLOCK] */
     float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
     float *s_z = (float *)(s_xy + BLOCK);             /* [BLOCK] */
-    int *s_id = (int *)(s_z + BLOCK);                 /* [BLOCK] */
+    float *s_cut = s_z + BLOCK;                       /* [BLOCK] */
+    int *s_id = (int *)(s_cut + BLOCK);               /* [BLOCK] */
     float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
     __shared__ int s_block_last;
 
@@ -128,7 +129,9 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             int g = (int)ids[b_end - 1 - tid];
             s_id[tid] = g;
             s_xy[tid] = means2d[g];
-            s_conic[tid] = conic_op[g];
+            const float4 co = conic_op[g];
+            s_conic[tid] = co;
+            s_cut[tid] = sp_cu_sigma_cut(co.w);
             s_z[tid] = depths[g];
         }
         __syncthreads();
@@ -143,7 +146,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             const float2 xy = s_xy[t];
             const float dx = px - xy.x, dy = py - xy.y;
             float vis = 0.f, alpha = 0.f;
-            if (inside && idx < last) alpha = sp_cu_alpha(co, dx, dy, &vis);
+            if (inside && idx < last) alpha = sp_cu_alpha(co, s_cut[t], dx, dy, &vis);
             const bool valid = alpha > 0.f;
             if (!__any_sync(FULL_MASK, valid)) continue;
 
@@ -204,7 +207,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 
 static size_t bwd_smem(int ch)
 {
-    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + sizeof(float) + sizeof(int) +
+    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
                             sizeof(float) * ch);
 }
 

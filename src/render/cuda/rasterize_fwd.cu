@@ -30,7 +30,8 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     float4 *s_conic = smem_f4;                        /* [BLOCK] */
     float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
     float *s_z = (float *)(s_xy + BLOCK);             /* [BLOCK] */
-    int *s_id = (int *)(s_z + BLOCK);                 /* [BLOCK] */
+    float *s_cut = s_z + BLOCK;                       /* [BLOCK] */
+    int *s_id = (int *)(s_cut + BLOCK);               /* [BLOCK] */
     float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
 
     const int c0 = c_base + blockIdx.z * CH;
@@ -55,7 +56,9 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             int g = (int)ids[b0 + tid];
             s_id[tid] = g;
             s_xy[tid] = means2d[g];
-            s_conic[tid] = conic_op[g];
+            const float4 co = conic_op[g];
+            s_conic[tid] = co;
+            s_cut[tid] = sp_cu_sigma_cut(co.w);
             s_z[tid] = depths[g];
         }
         __syncthreads();
@@ -70,7 +73,7 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             const float2 xy = s_xy[j];
             const float dx = px - xy.x, dy = py - xy.y;
             float vis;
-            const float alpha = sp_cu_alpha(co, dx, dy, &vis);
+            const float alpha = sp_cu_alpha(co, s_cut[j], dx, dy, &vis);
             if (alpha == 0.f) continue;
             const float next_T = T * (1.f - alpha);
             if (next_T < SP_TRANSMITTANCE_MIN) {
@@ -101,7 +104,7 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 
 static size_t fwd_smem(int ch)
 {
-    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + sizeof(float) + sizeof(int) +
+    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
                             sizeof(float) * ch);
 }
 
