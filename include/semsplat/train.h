@@ -22,6 +22,11 @@
  * and the loss gains feature_lambda * MSE(rendered features, target). freeze_geometry trains the
  * features only (no densification; geometry and colour untouched).
  *
+ * Continuing from a trained splat (--init-ply, distillation): SH bands that are already non-zero
+ * are active from the first step, and opacity resets only happen after refine_start, so setting
+ * refine_start >= steps (or densify = 0) leaves the splat's density and opacities alone; the
+ * Adam moments start at zero (the first steps move each parameter by about its lr).
+ *
  * Ownership: sp_train_data owns its views and points (sp_train_data_free); sp_train_run fills a
  * caller-provided sp_splat (free with sp_splat_free). */
 #ifndef SEMSPLAT_TRAIN_H
@@ -128,7 +133,8 @@ typedef struct sp_train_options {
 } sp_train_options;
 
 /* gsplat simple_trainer defaults for `steps` steps: density-control and SH-schedule steps are
- * scaled by steps / 30000 when steps < 30000 (as simple_trainer's steps_scaler). */
+ * scaled by steps / 30000 when steps < 30000 (as simple_trainer's steps_scaler), except that
+ * refine_every stays >= 25. */
 sp_train_options sp_train_options_default(int steps);
 
 typedef struct sp_train_result {

@@ -346,7 +346,9 @@ sp_train_options sp_train_options_default(int steps)
     o.sh_degree_interval = (int)(1000 * f + 0.5) > 1 ? (int)(1000 * f + 0.5) : 1;
     o.refine_start = (int)(500 * f + 0.5);
     o.refine_stop = (int)(15000 * f + 0.5);
-    o.refine_every = (int)(100 * f + 0.5) > 1 ? (int)(100 * f + 0.5) : 1;
+    /* gsplat scales refine_every too; below ~25 steps the gradient means are over too few views
+     * and every refinement compounds the count, so it is floored there. */
+    o.refine_every = (int)(100 * f + 0.5) > 25 ? (int)(100 * f + 0.5) : 25;
     o.reset_every = (int)(3000 * f + 0.5) > 1 ? (int)(3000 * f + 0.5) : 1;
     o.grow_grad2d = 2e-4f;
     o.grow_scale3d = 0.01f;
@@ -587,6 +589,17 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         return rc;
     }
     float scene_scale = o->scene_scale > 0 ? o->scene_scale : d->scene_scale * 1.1f;
+    /* SH bands that already carry colour (a trained splat) are active from the first step. */
+    int init_degree = 0;
+    for (int deg = 1; deg <= o->sh_degree; deg++) {
+        size_t K3 = (size_t)s.K * 3, lo = (size_t)deg * deg * 3, hi = (size_t)(deg + 1) * (deg + 1) * 3;
+        for (size_t i = 0; i < splat->n && init_degree < deg; i++)
+            for (size_t k = lo; k < hi; k++)
+                if (splat->sh[i * K3 + k] != 0.0f) {
+                    init_degree = deg;
+                    break;
+                }
+    }
     if ((rc = state_upload(&s, splat, have_moments ? &M0 : NULL, have_moments ? &V0 : NULL, err))) goto out;
     if ((rc = sp_raster_create(&r, dev, err))) goto out;
     if ((rc = bufs_init(&s, d, o, &b, err))) goto out;
@@ -626,6 +639,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         int W = v->cam.width, H = v->cam.height;
         size_t px = (size_t)W * H;
         int active = o->sh_degree_interval > 0 ? step / o->sh_degree_interval : o->sh_degree;
+        if (active < init_degree) active = init_degree;
         if (active > o->sh_degree) active = o->sh_degree;
         if ((rc = prepare_colors(&s, o->sh_degree, active, sp_camera_center(&v->cam), err))) break;
         for (int c = 0; c < s.D; c++) bg[c] = 0;
@@ -699,7 +713,10 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         /* Density control, gsplat DefaultStrategy.step_post_backward. */
         int do_refine = refining && step > o->refine_start && o->refine_every > 0 &&
                         step % o->refine_every == 0;
-        int do_reset = refining && o->reset_every > 0 && step > 0 && step % o->reset_every == 0;
+        /* Resets only once densification has started, so continuing from a trained splat with
+         * refine_start beyond the run (distillation) never knocks its opacities down. */
+        int do_reset = refining && o->reset_every > 0 && step > o->refine_start &&
+                       step % o->reset_every == 0;
         if (do_refine || do_reset) {
             sp_splat P, M, V;
             float *g2 = NULL, *cnt = NULL;
@@ -758,6 +775,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
     sp_progress_end(&prog, rc ? "stopped" : NULL);
     if (!rc && s.rgb) {
         int active = o->sh_degree_interval > 0 ? (step - 1) / o->sh_degree_interval : o->sh_degree;
+        if (active < init_degree) active = init_degree;
         if (active > o->sh_degree) active = o->sh_degree;
         if (active < 0) active = 0;
         /* The saved splat is rendered by viewers at its full degree; evaluate it that way only
