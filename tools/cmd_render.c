@@ -161,7 +161,9 @@ int cmd_render(int argc, char **argv)
         count = 1;
     }
     sp_progress prog;
-    sp_progress_begin(&prog, &log, "render", (long)count, "img");
+    sp_log bar_log = log;
+    if (count == 1) bar_log.progress_fd = -1; /* one image: the "wrote" line says enough */
+    sp_progress_begin(&prog, &bar_log, "render", (long)count, "img");
     for (size_t k = first; k < first + count; k++) {
         sp_camera cam;
         if (sp_colmap_image_camera(&model, k, &cam, &err)) {
