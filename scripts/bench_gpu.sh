@@ -36,11 +36,27 @@ min_build() {
     gcc "${cflags[@]}" -Itests "-DSP_SOURCE_DIR=\"$PWD\"" "-DSP_BUILD_DIR=\"$PWD/build-gpu\"" \
       -c "$f" -o $b/$o.o && "$nvcc" -o build-gpu/$o $b/$o.o $b/libsp.a -lm -lpthread || return 1
   done
-  for f in bench/bench_render_gpu.c; do  # bench_train_gpu needs the train and io modules
+  for f in bench/bench_render_gpu.c; do
     o=$(basename "$f" .c)
     gcc "${cflags[@]}" -c "$f" -o $b/$o.o &&
       "$nvcc" -o build-gpu/bench/$o $b/$o.o $b/libsp.a -lm -lpthread || return 1
   done
+  # The trainer benchmark also needs io and train, hence cJSON: from the system, or from a
+  # copy of its header and library carried in $SP_CJSON (include/cjson/cJSON.h, lib/).
+  local cj=${SP_CJSON:-}
+  if [ -f /usr/include/cjson/cJSON.h ] || [ -n "$cj" ]; then
+    local tobjs=() jf=()
+    [ -n "$cj" ] && jf=(-I"$cj/include")
+    for f in src/io/*.c src/train/*.c; do
+      case $f in src/train/loss.c) continue ;; esac
+      o=$b/$(echo "$f" | tr / _).o; tobjs+=("$o"); gcc "${cflags[@]}" "${jf[@]}" -c "$f" -o "$o" &
+    done
+    wait
+    gcc "${cflags[@]}" -c bench/bench_train_gpu.c -o $b/bench_train_gpu.o &&
+      "$nvcc" -o build-gpu/bench/bench_train_gpu $b/bench_train_gpu.o "${tobjs[@]}" $b/libsp.a \
+        ${cj:+-L"$cj/lib" -Xlinker -rpath="$PWD/$cj/lib"} -lcjson -lpng -ljpeg -lz -lm -lpthread ||
+      return 1
+  fi
 }
 if [ $build = 2 ]; then
   t0=$(date +%s); min_build >"$out/build.log" 2>&1 || { echo "minimal build failed:"; grep -E "error" "$out/build.log" | head -30; }
@@ -64,6 +80,10 @@ if [ $tests = 1 ]; then
 fi
 echo "== semsplat bench"
 timeout 400 build-gpu/bench/bench_render_gpu | tee "$out/semsplat-gpu.txt"
+if [ -x build-gpu/bench/bench_train_gpu ]; then
+  echo "== semsplat training loop on the GPU"
+  timeout 300 build-gpu/bench/bench_train_gpu 3000 | tee -a "$out/semsplat-gpu.txt"
+fi
 if [ $anchor = 1 ]; then
   # shared/ travels to the GPU machine only when it is inside the checkout; otherwise copy it
   # into an ignored folder, carry that, and point SP_ANCHORS at it.
