@@ -312,16 +312,18 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
     float bestc = -1;
     for (size_t i = 0; i < nc; i++)
         if (g.clear[i] > bestc) { bestc = g.clear[i]; first = i; }
-    /* waypoints keep well away from walls where the room allows (farthest-point sampling alone
-     * would pick corners) */
-    float wp_need = fmaxf(need, fminf(0.75f, 0.6f * bestc));
-    for (size_t i = 0; i < nc; i++) mind[i] = g.clear[i] >= wp_need ? INFINITY : -1;
+    /* Farthest-point sampling weighted by clearance (capped at 0.8 m): plain FPS would pick the
+     * corners, and a hard clearance cut would skip furnished rooms whose free floor is narrow. */
+    for (size_t i = 0; i < nc; i++) mind[i] = g.clear[i] >= need ? INFINITY : -1;
     for (size_t q = 0; q < n_wp; q++) {
         size_t pick = first;
         if (q > 0) {
             float bd = -1;
-            for (size_t i = 0; i < nc; i++)
-                if (mind[i] > bd) { bd = mind[i]; pick = i; }
+            for (size_t i = 0; i < nc; i++) {
+                if (mind[i] < 0) continue;
+                float sc = mind[i] * fminf(g.clear[i] / 0.8f, 1.0f);
+                if (sc > bd) { bd = sc; pick = i; }
+            }
         }
         wp[q] = pick;
         float px = (float)(pick % g.nx), py = (float)(pick / g.nx);
@@ -354,23 +356,31 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
     for (size_t q = 0; q < n_wp && k < n_walk; q++) {
         size_t cell = wp[order[q]];
         float x = g.x0 + ((float)(cell % g.nx) + 0.5f) * g.res, y = g.y0 + ((float)(cell / g.nx) + 0.5f) * g.res;
+        /* score of a heading: the free run over the middle of the view cone, so that no view
+         * stares into a wall; headings at least 60 degrees apart when enough are open, else
+         * the most open ones */
         float score[24], yaw0 = (float)(rnd(&r) * 2 * M_PI);
-        for (int a = 0; a < 24; a++) score[a] = free_run(&g, x, y, yaw0 + a * (float)M_PI / 12, 4.0f);
+        for (int a = 0; a < 24; a++) {
+            score[a] = 4.0f;
+            for (int d = -2; d <= 2; d++)
+                score[a] = fminf(score[a], free_run(&g, x, y, yaw0 + a * (float)M_PI / 12 + d * 0.17f, 4.0f));
+        }
         int taken[24] = {0};
         for (int v = 0; v < 4 && k < n_walk; v++) {
             int best = -1;
             float bs = -1;
-            for (int a = 0; a < 24; a++) {
-                if (taken[a]) continue;
-                int near = 0;
-                for (int b = 0; b < 24; b++) {
-                    int d = abs(a - b);
-                    if (d > 12) d = 24 - d;
-                    if (taken[b] && d < 4) near = 1;
+            for (int pass = 0; pass < 2 && best < 0; pass++)
+                for (int a = 0; a < 24; a++) {
+                    if (taken[a]) continue;
+                    int near = 0;
+                    for (int b = 0; b < 24; b++) {
+                        int d = abs(a - b);
+                        if (d > 12) d = 24 - d;
+                        if (taken[b] && d < 4) near = 1;
+                    }
+                    if (pass == 0 && (near || score[a] < 1.2f)) continue;
+                    if (score[a] > bs) { bs = score[a]; best = a; }
                 }
-                float s = score[a] - (near ? 10.0f : 0.0f);
-                if (s > bs) { bs = s; best = a; }
-            }
             taken[best] = 1;
             float h = hmin + (float)rnd(&r) * (hmax - hmin);
             float pitch = (float)((-0.05 - 0.3 * (h - hmin) / fmaxf(hmax - hmin, 1e-3f)) + 0.12 * (rnd(&r) - 0.5));

@@ -99,7 +99,7 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
         break;
     }
     case SP_PATTERN_METAL:
-        f = 0.9f + 0.14f * (vnoise(p[0] * 4, p[1] * 160, p[2] * 160) - 0.5f) + 0.06f * (vnoise(p[0], p[1], p[2]) - 0.5f);
+        f = 0.93f + 0.06f * (vnoise(p[0] * 4, p[1] * 160, p[2] * 160) - 0.5f) + 0.06f * (vnoise(p[0] * 2, p[1] * 2, p[2] * 2) - 0.5f);
         break;
     case SP_PATTERN_GLASS:
         f = 0.9f + 0.12f * vnoise(p[0] * 1.5f + p[2], p[1] * 1.5f, p[2] * 0.5f);

@@ -323,7 +323,7 @@ def window():
 
 def door():
     W, H = 0.88, 2.05  # origin at the hinge side bottom; the leaf extends along +y
-    v = [box("wood_leaf", (0, W / 2, H / 2), (0.04, W, H), (0.93, 0.92, 0.88), script="Gazebo/Wood")]
+    v = [box("leaf", (0, W / 2, H / 2), (0.04, W, H), (0.93, 0.92, 0.88))]
     for z in (0.45, 1.25):
         for x in (-0.022, 0.022):
             v.append(box("panel", (x, W / 2, z + 0.3), (0.005, W - 0.24, 0.6 if z < 1 else 0.55), (0.86, 0.85, 0.8)))
@@ -492,6 +492,48 @@ inline = """
             [sph("leaves", (0, 0, 0.85), 0.18, (0.18, 0.52, 0.17)),
              cyl("stem", (0, 0, 0.45), 0.02, 0.2, (0.3, 0.22, 0.1))]),
 )
+
+def painting(name, x, y, z, yaw, w, h, palette):
+    """A framed picture hanging on a wall (origin at its centre, facing +x)."""
+    v = [box("wood_frame", (0, 0, 0), (0.03, w, h), (0.25, 0.17, 0.1))]
+    v.append(box("canvas", (0.016, 0, 0), (0.002, w - 0.08, h - 0.08), palette[0]))
+    r = random.Random(name)
+    for k in range(7):
+        cw, ch = r.uniform(0.1, 0.45) * (w - 0.1), r.uniform(0.1, 0.45) * (h - 0.1)
+        cy, cz = r.uniform(-(w - 0.1 - cw) / 2, (w - 0.1 - cw) / 2), r.uniform(-(h - 0.1 - ch) / 2, (h - 0.1 - ch) / 2)
+        v.append(box("paint", (0.018 + 0.001 * k, cy, cz), (0.002, cw, ch), palette[1 + k % (len(palette) - 1)]))
+    return ('  <model name="%s">\n    <static>true</static>\n    <pose>%s 0 0 %.4f</pose>\n    <link name="link">%s</link>\n  </model>\n'
+            % (name, f((x, y, z)), yaw, "".join(v)))
+
+
+inline += painting("painting_1", 0.08, 1.0, 1.5, 0, 0.9, 0.6, [(0.95, 0.93, 0.85), (0.85, 0.3, 0.2), (0.2, 0.35, 0.7), (0.95, 0.75, 0.2)])
+inline += painting("painting_2", 6.42, 6.3, 1.5, P, 1.0, 0.7, [(0.2, 0.3, 0.25), (0.9, 0.85, 0.7), (0.6, 0.75, 0.3), (0.8, 0.4, 0.5)])
+inline += painting("painting_3", 9.92, 1.5, 1.5, P, 0.7, 0.9, [(0.9, 0.88, 0.8), (0.15, 0.2, 0.4), (0.3, 0.6, 0.7), (0.9, 0.5, 0.15)])
+inline += painting("painting_4", 9.3, 7.92, 1.55, -P / 2, 0.8, 0.5, [(0.85, 0.9, 0.95), (0.35, 0.5, 0.8), (0.95, 0.95, 0.97), (0.3, 0.6, 0.35)])
+inline += painting("painting_5", 6.42, 3.7, 1.55, P, 0.6, 0.8, [(0.3, 0.15, 0.12), (0.95, 0.8, 0.4), (0.8, 0.2, 0.15), (0.95, 0.95, 0.9)])
+inline += """
+  <model name="shoe_cabinet">
+    <static>true</static>
+    <pose>9.75 1.6 0 0 0 3.1416</pose>
+    <link name="link">%s</link>
+  </model>
+  <model name="coat_rack">
+    <static>true</static>
+    <pose>6.9 0.35 0 0 0 0</pose>
+    <link name="link">%s</link>
+  </model>
+""" % ("".join([box("wood_body", (0, 0, 0.45), (0.35, 1.0, 0.9), (0.3, 0.32, 0.36)),
+               box("wood_top", (0.01, 0, 0.91), (0.37, 1.02, 0.03), (0.55, 0.38, 0.22), script="Gazebo/Wood")] +
+              [box("door", (0.18, y, 0.45), (0.01, 0.47, 0.8), (0.35, 0.37, 0.42)) for y in (-0.25, 0.25)] +
+              [box("metal_handle", (0.2, y, 0.7), (0.02, 0.12, 0.02), HANDLE) for y in (-0.08, 0.08)] +
+              [cyl("bowl", (0, 0.3, 0.96), 0.1, 0.06, (0.2, 0.5, 0.6)),
+               box("mail", (0.02, -0.2, 0.935), (0.2, 0.3, 0.02), (0.95, 0.95, 0.9))]),
+     "".join([cyl("metal_pole", (0, 0, 0.9), 0.02, 1.8, (0.15, 0.15, 0.15)),
+              cyl("metal_foot", (0, 0, 0.02), 0.22, 0.04, (0.15, 0.15, 0.15))] +
+             [box("metal_hook", (0.08 * math.cos(a), 0.08 * math.sin(a), 1.7), (0.16, 0.02, 0.02), (0.15, 0.15, 0.15),
+                  rpy=(0, -0.5, a)) for a in (0, 1.6, 3.2, 4.8)] +
+             [box("fabric_coat", (0.12, 0.0, 1.3), (0.12, 0.45, 0.75), (0.55, 0.12, 0.1), rpy=(0, 0.05, 0)),
+              box("fabric_scarf", (-0.1, 0.05, 1.45), (0.06, 0.2, 0.5), (0.95, 0.8, 0.2))]))
 
 lights = ""
 for name, (x, y) in (("living", (1.8, 2.2)), ("living_east", (5.0, 2.2)), ("kitchen", (1.75, 6.2)),
