@@ -43,6 +43,11 @@ struct sp_clip {
     int fp16;
 };
 
+/* A model with random weights (benchmarks, no file needed) and the ViT-B/16 configuration. */
+int clip_create_random(sp_clip **out, const sp_clip_config *cfg, uint64_t seed, sp_device *dev,
+                       sp_error *err);
+void clip_config_vit_b16(sp_clip_config *c);
+
 /* Position embeddings for a gh x gw grid: [1 + gh*gw][width] into out (bicubic as torch
  * interpolate(align_corners=False) when the grid differs from the trained one). */
 void clip_pos_embed(const sp_clip *c, int gh, int gw, float *out);

@@ -6,15 +6,67 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include <cblas.h>
-
 #include "clip_internal.h"
 
-/* Y[M][N] = X[M][K] W^T (+ beta*Y) + b: W in PyTorch Linear layout [N][K]. */
-static void linear(const float *X, int M, int K, const float *W, const float *b, int N, float *Y,
-                   float beta)
+#ifndef SP_CLIP_NO_BLAS
+#include <cblas.h>
+
+/* C = alpha op(A) op(B) + beta C, row-major (ta/tb: 1 = transposed) */
+static void gemm(sp_pool *pool, int ta, int tb, int M, int N, int K, float alpha, const float *A,
+                 int lda, const float *B, int ldb, float beta, float *C, int ldc)
 {
-    cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, M, N, K, 1.f, X, K, W, K, beta, Y, N);
+    (void)pool; /* OpenBLAS runs its own threads */
+    cblas_sgemm(CblasRowMajor, ta ? CblasTrans : CblasNoTrans, tb ? CblasTrans : CblasNoTrans, M, N,
+                K, alpha, A, lda, B, ldb, beta, C, ldc);
+}
+#else
+/* Without a BLAS (minimal builds on machines lacking the -dev package): the same product with
+ * plain loops, rows spread over the pool. Slow but exact to float rounding. */
+typedef struct gemm_job {
+    int ta, tb, M, N, K, lda, ldb, ldc;
+    float alpha, beta;
+    const float *A, *B;
+    float *C;
+} gemm_job;
+
+static void gemm_rows(void *ctx, long chunk, int tid)
+{
+    const gemm_job *g = ctx;
+    int i1 = (int)((chunk + 1) * 8 < g->M ? (chunk + 1) * 8 : g->M);
+    for (int i = (int)chunk * 8; i < i1; i++)
+        for (int j = 0; j < g->N; j++) {
+            float acc[8] = {0};
+            int k = 0;
+            if (!g->ta && g->tb) {
+                const float *a = g->A + (size_t)i * g->lda, *b = g->B + (size_t)j * g->ldb;
+                for (; k + 8 <= g->K; k += 8)
+                    for (int u = 0; u < 8; u++) acc[u] += a[k + u] * b[k + u];
+            }
+            float s = 0;
+            for (; k < g->K; k++) {
+                float a = g->ta ? g->A[(size_t)k * g->lda + i] : g->A[(size_t)i * g->lda + k];
+                float b = g->tb ? g->B[(size_t)j * g->ldb + k] : g->B[(size_t)k * g->ldb + j];
+                s += a * b;
+            }
+            for (int u = 0; u < 8; u++) s += acc[u];
+            float *c = g->C + (size_t)i * g->ldc + j;
+            *c = g->alpha * s + (g->beta != 0 ? g->beta * *c : 0.f);
+        }
+}
+
+static void gemm(sp_pool *pool, int ta, int tb, int M, int N, int K, float alpha, const float *A,
+                 int lda, const float *B, int ldb, float beta, float *C, int ldc)
+{
+    gemm_job g = {ta, tb, M, N, K, lda, ldb, ldc, alpha, beta, A, B, C};
+    sp_pool_for(pool, (M + 7) / 8, gemm_rows, &g);
+}
+#endif
+
+/* Y[M][N] = X[M][K] W^T (+ beta*Y) + b: W in PyTorch Linear layout [N][K]. */
+static void linear(sp_pool *pool, const float *X, int M, int K, const float *W, const float *b,
+                   int N, float *Y, float beta)
+{
+    gemm(pool, 0, 1, M, N, K, 1.f, X, K, W, K, beta, Y, N);
     if (b)
         for (long i = 0; i < M; i++) {
             float *y = Y + (size_t)i * N;
@@ -108,13 +160,11 @@ static void attention(sp_pool *pool, const sp_clip_tower_config *cfg, const floa
     int w = cfg->width, H = cfg->heads, d = w / H;
     float scale = 1.f / sqrtf((float)d);
     for (int h = 0; h < H; h++)
-        cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, T, T, d, scale, a + h * d, w, b + h * d,
-                    w, 0.f, s + (size_t)h * T * T, T);
+        gemm(pool, 0, 1, T, T, d, scale, a + h * d, w, b + h * d, w, 0.f, s + (size_t)h * T * T, T);
     softmax_job sj = {s, T, causal, (long)H * T};
     sp_pool_for(pool, sj.rows, softmax_rows, &sj);
     for (int h = 0; h < H; h++)
-        cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, T, d, T, 1.f, s + (size_t)h * T * T,
-                    T, v + h * d, w, 0.f, o + h * d, w);
+        gemm(pool, 0, 0, T, d, T, 1.f, s + (size_t)h * T * T, T, v + h * d, w, 0.f, o + h * d, w);
 }
 
 /* One pre-LN block over M rows made of n_seq sequences (offsets/lengths). */
@@ -123,19 +173,19 @@ static void block(sp_pool *pool, const sp_clip_tower_config *cfg, const clip_lay
 {
     int w = cfg->width;
     layer_norm(pool, x, wk->h, M, w, L->ln1_w, L->ln1_b, cfg->eps);
-    linear(wk->h, M, w, L->q_w, L->q_b, w, wk->q, 0.f);
-    linear(wk->h, M, w, L->k_w, L->k_b, w, wk->k, 0.f);
-    linear(wk->h, M, w, L->v_w, L->v_b, w, wk->v, 0.f);
+    linear(pool, wk->h, M, w, L->q_w, L->q_b, w, wk->q, 0.f);
+    linear(pool, wk->h, M, w, L->k_w, L->k_b, w, wk->k, 0.f);
+    linear(pool, wk->h, M, w, L->v_w, L->v_b, w, wk->v, 0.f);
     for (int s = 0; s < n_seq; s++) {
         size_t r = (size_t)off[s] * w;
         attention(pool, cfg, wk->q + r, wk->k + r, wk->v + r, wk->o + r, len[s], causal, wk->s);
     }
-    linear(wk->o, M, w, L->o_w, L->o_b, w, x, 1.f);
+    linear(pool, wk->o, M, w, L->o_w, L->o_b, w, x, 1.f);
     layer_norm(pool, x, wk->h, M, w, L->ln2_w, L->ln2_b, cfg->eps);
-    linear(wk->h, M, w, L->fc1_w, L->fc1_b, cfg->mlp, wk->m, 0.f);
+    linear(pool, wk->h, M, w, L->fc1_w, L->fc1_b, cfg->mlp, wk->m, 0.f);
     rows_job aj = {NULL, wk->m, cfg->mlp, cfg->quick_gelu, NULL, NULL, 0, M};
     sp_pool_for(pool, (M + ROW_CHUNK - 1) / ROW_CHUNK, act_rows, &aj);
-    linear(wk->m, M, cfg->mlp, L->fc2_w, L->fc2_b, w, x, 1.f);
+    linear(pool, wk->m, M, cfg->mlp, L->fc2_w, L->fc2_b, w, x, 1.f);
 }
 
 static int work_alloc(work *wk, size_t M, int w, int mlp, int T, int heads)
@@ -186,7 +236,7 @@ int clip_cpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *e
     for (int i = 0; i < n; i++)
         memcpy(fin + (size_t)i * w, x + (size_t)(off[i] + len[i] - 1) * w, (size_t)w * sizeof(float));
     layer_norm(c->pool, fin, fin, n, w, c->final_ln_w, c->final_ln_b, cfg->eps);
-    linear(fin, n, w, c->text_proj, NULL, P, out, 0.f);
+    linear(c->pool, fin, n, w, c->text_proj, NULL, P, out, 0.f);
 done:
     work_free(&wk);
     sp_free(x);
@@ -240,7 +290,7 @@ int clip_cpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_o
         off[i] = i * T;
         len[i] = T;
         float *xi = x + (size_t)i * T * w;
-        linear(cols + (size_t)i * np * K, np, K, c->patch_w, NULL, w, xi + w, 0.f);
+        linear(c->pool, cols + (size_t)i * np * K, np, K, c->patch_w, NULL, w, xi + w, 0.f);
         for (int j = 0; j < w; j++) xi[j] = c->cls[j];
         for (size_t j = 0; j < (size_t)T * w; j++) xi[j] += pos[j];
     }
@@ -250,28 +300,28 @@ int clip_cpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_o
         float *cls = cols;
         for (int i = 0; i < n; i++) memcpy(cls + (size_t)i * w, x + (size_t)i * T * w, (size_t)w * sizeof(float));
         layer_norm(c->pool, cls, cls, n, w, c->post_ln_w, c->post_ln_b, cfg->eps);
-        linear(cls, n, w, c->vis_proj, NULL, P, out, 0.f);
+        linear(c->pool, cls, n, w, c->vis_proj, NULL, P, out, 0.f);
         goto done;
     }
     /* dense head: the last block without residual and FFN, attention replaced by the value path
      * (MaskCLIP) or q-q attention (ClearCLIP); then post-LN and the projection on every patch */
     const clip_layer *L = &c->vision.layers[cfg->layers - 1];
     layer_norm(c->pool, x, wk.h, M, w, L->ln1_w, L->ln1_b, cfg->eps);
-    linear(wk.h, M, w, L->v_w, L->v_b, w, wk.v, 0.f);
+    linear(c->pool, wk.h, M, w, L->v_w, L->v_b, w, wk.v, 0.f);
     const float *val = wk.v;
     if (kind == CLIP_OUT_DENSE_CLEARCLIP) {
-        linear(wk.h, M, w, L->q_w, L->q_b, w, wk.q, 0.f);
+        linear(c->pool, wk.h, M, w, L->q_w, L->q_b, w, wk.q, 0.f);
         for (int i = 0; i < n; i++) {
             size_t r = (size_t)i * T * w;
             attention(c->pool, cfg, wk.q + r, wk.q + r, wk.v + r, wk.o + r, T, 0, wk.s);
         }
         val = wk.o;
     }
-    linear(val, M, w, L->o_w, L->o_b, w, x, 0.f);
+    linear(c->pool, val, M, w, L->o_w, L->o_b, w, x, 0.f);
     for (int i = 0; i < n; i++) /* patch rows only */
         memcpy(cols + (size_t)i * np * w, x + ((size_t)i * T + 1) * w, (size_t)np * w * sizeof(float));
     layer_norm(c->pool, cols, cols, (long)n * np, w, c->post_ln_w, c->post_ln_b, cfg->eps);
-    linear(cols, n * np, w, c->vis_proj, NULL, P, out, 0.f);
+    linear(c->pool, cols, n * np, w, c->vis_proj, NULL, P, out, 0.f);
 done:
     work_free(&wk);
     sp_free(x);

@@ -146,7 +146,23 @@ typedef struct loader {
     int measuring; /* first pass: only count */
     sp_error *err;
     int rc;
+    uint64_t rng;  /* st == NULL: random weights (benchmarks) */
 } loader;
+
+/* Random weights with roughly CLIP's scales: LayerNorm weights near 1, the rest small. */
+static void fill_random(loader *L, const char *name, float *dst, size_t count, size_t fan_in)
+{
+    int is_norm_w = strstr(name, "norm") && strstr(name, ".weight");
+    float scale = strstr(name, "bias") ? 0.02f : fan_in > 1 ? 1.0f / sqrtf((float)fan_in) : 0.5f;
+    for (size_t i = 0; i < count; i++) {
+        uint64_t z = (L->rng += 0x9E3779B97F4A7C15ULL);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        z ^= z >> 31;
+        float u = (float)((double)(z >> 11) / 9007199254740992.0) * 2.f - 1.f;
+        dst[i] = (is_norm_w ? 1.f : 0.f) + scale * u * (is_norm_w ? 0.1f : 1.f);
+    }
+}
 
 static void fmt_shape(char *out, size_t cap, const size_t *shape, int ndim)
 {
@@ -162,8 +178,17 @@ static const float *take(loader *L, const char *name, int ndim, size_t d0, size_
                          size_t d3)
 {
     if (L->rc) return NULL;
-    const sp_tensor_info *t = sp_safetensors_find(L->st, name);
     size_t want[4] = {d0, d1, d2, d3};
+    if (!L->st) {
+        size_t count = 1;
+        for (int i = 0; i < ndim; i++) count *= want[i];
+        size_t at = L->used;
+        L->used += (count + 15) & ~(size_t)15;
+        if (L->measuring) return NULL;
+        fill_random(L, name, L->blob + at, count, ndim >= 2 ? count / want[0] : 1);
+        return L->blob + at;
+    }
+    const sp_tensor_info *t = sp_safetensors_find(L->st, name);
     if (!t) {
         L->rc = sp_error_set(L->err, SP_E_NOTFOUND, "%s: tensor '%s' is missing", L->path, name);
         return NULL;
@@ -229,7 +254,7 @@ static void take_tower(loader *L, clip_tower *tw, const char *prefix)
 #undef T2
     /* more layers in the file than the config says is a mismatch too */
     snprintf(n, sizeof n, "%s.encoder.layers.%d.layer_norm1.weight", prefix, tw->cfg.layers);
-    if (!L->rc && sp_safetensors_find(L->st, n))
+    if (!L->rc && L->st && sp_safetensors_find(L->st, n))
         L->rc = sp_error_set(L->err, SP_E_FORMAT, "%s: has '%s' but the config says %d layers",
                              L->path, n, tw->cfg.layers);
 }
@@ -357,7 +382,7 @@ int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_de
         rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
         goto fail;
     }
-    loader L = {&st, path, NULL, 0, 0, 1, err, 0};
+    loader L = {&st, path, NULL, 0, 0, 1, err, 0, 0};
     take_all(&L, c);
     if ((rc = L.rc)) goto fail;
     c->blob_floats = L.used;
@@ -389,6 +414,52 @@ fail:
     sp_clip_free(c);
     return rc;
 }
+
+int clip_create_random(sp_clip **out, const sp_clip_config *cfg, uint64_t seed, sp_device *dev,
+                       sp_error *err)
+{
+    *out = NULL;
+    sp_clip *c = calloc(1, sizeof *c);
+    if (!c) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    snprintf(c->path, sizeof c->path, "(random weights)");
+    c->cfg = *cfg;
+    c->text.cfg = cfg->text;
+    c->vision.cfg = cfg->vision;
+    c->text.layers = calloc((size_t)cfg->text.layers, sizeof *c->text.layers);
+    c->vision.layers = calloc((size_t)cfg->vision.layers, sizeof *c->vision.layers);
+    int rc = 0;
+    loader L = {NULL, "(random)", NULL, 0, 0, 1, err, 0, seed};
+    if (!c->text.layers || !c->vision.layers) {
+        rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+        goto fail;
+    }
+    take_all(&L, c);
+    c->blob_floats = L.used;
+    c->blob = sp_alloc(L.used * sizeof(float));
+    if (!c->blob) {
+        rc = sp_error_set(err, SP_E_NOMEM, "cannot allocate %zu MB for random weights", L.used * 4 >> 20);
+        goto fail;
+    }
+    L.blob = c->blob;
+    L.used = 0;
+    L.measuring = 0;
+    take_all(&L, c);
+    c->dev = dev;
+    if (dev && sp_device_kind_of(dev) == SP_DEVICE_CUDA && (rc = clip_gpu_init(c, err))) goto fail;
+    if (dev) c->pool = sp_device_pool(dev);
+    if (!c->pool) {
+        if ((rc = sp_pool_create(&c->pool, 0, err))) goto fail;
+        c->own_pool = 1;
+    }
+    *out = c;
+    return 0;
+fail:
+    sp_clip_free(c);
+    return rc;
+}
+
+/* The ViT-B/16 shapes (openai/clip-vit-base-patch16). */
+void clip_config_vit_b16(sp_clip_config *c) { config_defaults(c); }
 
 void sp_clip_free(sp_clip *c)
 {

@@ -1,0 +1,190 @@
+/* CLIP throughput: ViT-B/16 image embeddings (224x224) and text embeddings on the CPU and on the
+ * GPU (fp32/fp16, batch 1 and 32), and dense feature maps of 640x480 images. Random weights with
+ * the exact ViT-B/16 shapes (timing does not depend on the values). With --anchor FILE (the JSON
+ * lines of shared/bench/anchors/bench_clip.py from the same run) it prints ratios against
+ * transformers. Output: `name  value  unit  (settings)`.
+ *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE] */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "clip/clip_internal.h"
+#include "semsplat/clip.h"
+#include "semsplat/render.h"
+
+static int reps = 5;
+
+static double median(double *t, int n)
+{
+    for (int i = 1; i < n; i++)
+        for (int j = i; j > 0 && t[j] < t[j - 1]; j--) {
+            double x = t[j]; t[j] = t[j - 1]; t[j - 1] = x;
+        }
+    return t[n / 2];
+}
+
+/* anchors: transformers figures from bench_clip.py's JSON lines */
+static double anchor_img[2][3], anchor_txt[2];
+
+static void read_anchor(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    char line[512];
+    if (!f) { fprintf(stderr, "bench_clip: cannot read %s\n", path); return; }
+    while (fgets(line, sizeof line, f)) {
+        int half = strstr(line, "float16") != NULL;
+        char *b = strstr(line, "\"batch\": "), *v;
+        if (strstr(line, "\"clip_image\"") && b && (v = strstr(line, "\"img_per_s\": "))) {
+            int batch = atoi(b + 9);
+            int k = batch == 1 ? 0 : batch == 32 ? 1 : batch == 128 ? 2 : -1;
+            if (k >= 0) anchor_img[half][k] = atof(v + 13);
+        } else if (strstr(line, "\"clip_text\"") && (v = strstr(line, "\"text_per_s\": "))) {
+            anchor_txt[half] = atof(v + 14);
+        }
+    }
+    fclose(f);
+}
+
+static int bench_images(sp_clip *c, const char *dev_name, const char *prec, int batch, int anchor_k)
+{
+    sp_error err = {0};
+    const int S = 224, P = sp_clip_embed_dim(c);
+    float *px = malloc(sizeof(float) * batch * 3 * S * S), *out = malloc(sizeof(float) * batch * P);
+    for (long i = 0; i < (long)batch * 3 * S * S; i++) px[i] = (float)((i * 7919) % 1000) / 500.f - 1.f;
+    double t[64];
+    int rc = sp_clip_encode_pixels(c, px, batch, S, S, out, &err); /* warm-up */
+    for (int r = 0; r < reps && !rc; r++) {
+        double t0 = sp_time_now();
+        rc = sp_clip_encode_pixels(c, px, batch, S, S, out, &err);
+        t[r] = sp_time_now() - t0;
+    }
+    if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
+    else {
+        double ips = batch / median(t, reps);
+        printf("clip_image_%s_%s_b%d  %.1f  img/s  (ViT-B/16 224x224, batch %d, %s)\n", sp_clip_on_gpu(c) ? "gpu" : "cpu",
+               prec, batch, ips, batch, dev_name);
+        double a = anchor_k >= 0 ? anchor_img[!strcmp(prec, "fp16")][anchor_k] : 0;
+        if (a > 0)
+            printf("clip_image_%s_b%d_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f img/s, same GPU)\n",
+                   prec, batch, ips / a, ips, a);
+    }
+    free(px);
+    free(out);
+    return rc;
+}
+
+static int bench_text(sp_clip *c, const char *dev_name, const char *prec, int batch)
+{
+    sp_error err = {0};
+    int32_t *ids = malloc(sizeof(int32_t) * batch * 77);
+    float *out = malloc(sizeof(float) * batch * sp_clip_embed_dim(c));
+    /* full-length sequences, as the transformers anchor (random ids, 77 tokens) */
+    for (int i = 0; i < batch * 77; i++) ids[i] = (i % 77) == 76 ? SP_CLIP_EOS : (int32_t)((i * 7919) % 49000);
+    double t[64];
+    int rc = sp_clip_encode_tokens(c, ids, batch, out, &err);
+    for (int r = 0; r < reps && !rc; r++) {
+        double t0 = sp_time_now();
+        rc = sp_clip_encode_tokens(c, ids, batch, out, &err);
+        t[r] = sp_time_now() - t0;
+    }
+    if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
+    else {
+        double tps = batch / median(t, reps);
+        printf("clip_text_%s_%s_b%d  %.1f  texts/s  (77 tokens, batch %d, %s)\n", sp_clip_on_gpu(c) ? "gpu" : "cpu", prec,
+               batch, tps, batch, dev_name);
+        double a = anchor_txt[!strcmp(prec, "fp16")];
+        if (a > 0 && batch == 256)
+            printf("clip_text_%s_b256_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f texts/s)\n", prec, tps / a,
+                   tps, a);
+    }
+    free(ids);
+    free(out);
+    return rc;
+}
+
+static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n_img)
+{
+    sp_error err = {0};
+    const int W = 640, H = 480, P = sp_clip_embed_dim(c);
+    sp_clip_dense_opts o = sp_clip_dense_opts_default();
+    o.batch = sp_clip_on_gpu(c) ? 32 : 4;
+    int gw, gh;
+    sp_clip_dense_grid(c, &o, W, H, &gw, &gh);
+    float *rgb = malloc(sizeof(float) * W * H * 3), *out = malloc(sizeof(float) * gw * gh * P);
+    for (long i = 0; i < (long)W * H * 3; i++) rgb[i] = (float)((i * 31) % 255) / 255.f;
+    int rc = 0;
+    double t0 = sp_time_now();
+    for (int r = 0; r < n_img && !rc; r++) rc = sp_clip_dense_features(c, rgb, W, H, &o, out, &err);
+    double dt = sp_time_now() - t0;
+    if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
+    else
+        printf("clip_dense_%s_%s  %.2f  img/s  (640x480 -> %dx%d x %d features, scale 2, tiles 224 stride 112, %s)\n",
+               sp_clip_on_gpu(c) ? "gpu" : "cpu", prec, n_img / dt, gw, gh, P, dev_name);
+    free(rgb);
+    free(out);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    int cpu = 1, gpu = 1, dense_cpu = 0;
+    long threads = 2;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--cpu-only")) gpu = 0;
+        else if (!strcmp(argv[i], "--gpu-only")) cpu = 0;
+        else if (!strcmp(argv[i], "--dense-cpu")) dense_cpu = 1;
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atol(argv[++i]);
+        else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--anchor") && i + 1 < argc) read_anchor(argv[++i]);
+        else {
+            fprintf(stderr, "usage: bench_clip [--cpu-only|--gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]\n");
+            return 2;
+        }
+    }
+    if (reps < 1) reps = 1;
+    if (reps > 64) reps = 64;
+    sp_clip_config cfg;
+    clip_config_vit_b16(&cfg);
+    sp_error err = {0};
+    if (cpu) {
+        sp_device *dev = NULL;
+        sp_clip *c = NULL;
+        if (sp_device_create(&dev, SP_DEVICE_CPU, (int)threads, &err) || clip_create_random(&c, &cfg, 1, dev, &err)) {
+            fprintf(stderr, "bench_clip: %s\n", err.msg);
+            return 1;
+        }
+        char name[128];
+        snprintf(name, sizeof name, "CPU, %ld threads", threads);
+        bench_images(c, name, "fp32", 1, -1);
+        bench_images(c, name, "fp32", 4, -1);
+        bench_text(c, name, "fp32", 16);
+        if (dense_cpu) bench_dense(c, name, "fp32", 1);
+        sp_clip_free(c);
+        sp_device_free(dev);
+    }
+    if (gpu) {
+        if (!sp_cuda_available()) {
+            fprintf(stderr, "bench_clip: no GPU, GPU figures skipped\n");
+            return 0;
+        }
+        sp_device *dev = NULL;
+        sp_clip *c = NULL;
+        if (sp_device_create(&dev, SP_DEVICE_CUDA, 0, &err) || clip_create_random(&c, &cfg, 1, dev, &err)) {
+            fprintf(stderr, "bench_clip: %s\n", err.msg);
+            return 1;
+        }
+        const char *name = sp_device_name(dev);
+        for (int half = 0; half <= 1; half++) {
+            const char *prec = half ? "fp16" : "fp32";
+            if (sp_clip_set_fp16(c, half, &err)) { fprintf(stderr, "bench_clip: %s\n", err.msg); break; }
+            bench_images(c, name, prec, 1, 0);
+            bench_images(c, name, prec, 32, 1);
+            bench_images(c, name, prec, 128, 2);
+            bench_text(c, name, prec, 256);
+            bench_dense(c, name, prec, 3);
+        }
+        sp_clip_free(c);
+        sp_device_free(dev);
+    }
+    return 0;
+}
