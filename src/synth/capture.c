@@ -108,6 +108,51 @@ static int write_json(const sp_world *w, const char *out, sp_error *err)
     return rc;
 }
 
+typedef struct write_job {
+    const char *out;
+    const sp_camera *cams;
+    sp_synth_frame *frames;
+    pt *pts;
+    size_t *got, per_view, first;
+    unsigned seed;
+    int rc[8];
+    sp_error err[8];
+} write_job;
+
+/* Writes view first + j and samples its points into its own slots (deterministic). */
+static void write_one(void *ctx, long j, int tid)
+{
+    write_job *jb = ctx;
+    size_t i = jb->first + (size_t)j;
+    const sp_synth_frame *f = &jb->frames[j];
+    jb->rc[j] = write_view(jb->out, i, f, &jb->err[j]);
+    if (jb->rc[j]) return;
+    /* points on the visible surfaces of this view, at pixel centres */
+    const sp_camera *c = &jb->cams[i];
+    uint64_t s = mix64((uint64_t)jb->seed * 0x9e3779b97f4a7c15ULL + i + 1);
+    size_t got = 0;
+    pt *slot = jb->pts + i * jb->per_view;
+    for (size_t tries = 0; got < jb->per_view && tries < jb->per_view * 8; tries++) {
+        s = mix64(s + 0x632be59bd9b4e019ULL);
+        int px = (int)(s % (uint64_t)c->width), py = (int)((s >> 32) % (uint64_t)c->height);
+        size_t at = (size_t)py * c->width + px;
+        float z = f->depth[at];
+        if (!(z > 0)) continue;
+        double xc = ((px + 0.5) - c->cx) / c->fx * z, yc = ((py + 0.5) - c->cy) / c->fy * z;
+        double pc[3] = {xc - c->t[0], yc - c->t[1], z - c->t[2]};
+        pt *p = &slot[got++];
+        for (int r = 0; r < 3; r++) p->xyz[r] = c->R[r] * pc[0] + c->R[3 + r] * pc[1] + c->R[6 + r] * pc[2];
+        for (int k = 0; k < 3; k++) {
+            float v = f->rgb[at * 3 + k] * 255.0f + 0.5f;
+            p->rgb[k] = (uint8_t)(v > 255 ? 255 : v);
+        }
+        p->image_id = (uint32_t)(i + 1);
+        p->xy[0] = px + 0.5;
+        p->xy[1] = py + 0.5;
+    }
+    jb->got[i] = got;
+}
+
 int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_opts *opts,
                      sp_error *err)
 {
@@ -132,42 +177,39 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
     size_t target = opts->n_points > 0 ? (size_t)opts->n_points : 30000;
     size_t per_view = (target + n - 1) / n;
     pt *pts = calloc(per_view * n + 1, sizeof *pts);
+    size_t *got = calloc(n, sizeof *got);
     size_t n_pts = 0;
-    sp_synth_frame f = {0};
+    /* Views are rendered one at a time (rows in parallel), then written in batches with one
+     * view per thread: PNG compression costs as much as rendering. */
+    enum { BATCH = 8 };
+    sp_synth_frame f[BATCH];
+    memset(f, 0, sizeof f);
+    write_job job = {.out = out, .cams = cams, .frames = f, .pts = pts, .got = got, .per_view = per_view,
+                     .seed = opts->seed};
     sp_synth_render_opts ro = {.supersample = opts->supersample};
     sp_progress prog;
     sp_progress_begin(&prog, opts->log, "synth", (long)n, "views");
-    if (!pts) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
-    for (size_t i = 0; i < n && !rc; i++) {
-        if ((rc = sp_synth_render(w, &cams[i], &ro, pool, &f, err))) break;
-        if ((rc = write_view(out, i, &f, err))) break;
-        /* points on the visible surfaces of this view, at pixel centres */
-        const sp_camera *c = &cams[i];
-        uint64_t s = mix64((uint64_t)opts->seed * 0x9e3779b97f4a7c15ULL + i + 1);
-        size_t got = 0;
-        for (size_t tries = 0; got < per_view && tries < per_view * 8; tries++) {
-            s = mix64(s + 0x632be59bd9b4e019ULL);
-            int px = (int)(s % (uint64_t)c->width), py = (int)((s >> 32) % (uint64_t)c->height);
-            size_t at = (size_t)py * c->width + px;
-            float z = f.depth[at];
-            if (!(z > 0)) continue;
-            double xc = ((px + 0.5) - c->cx) / c->fx * z, yc = ((py + 0.5) - c->cy) / c->fy * z;
-            double pc[3] = {xc - c->t[0], yc - c->t[1], z - c->t[2]};
-            pt *p = &pts[n_pts++];
-            for (int r = 0; r < 3; r++)
-                p->xyz[r] = c->R[r] * pc[0] + c->R[3 + r] * pc[1] + c->R[6 + r] * pc[2];
-            for (int k = 0; k < 3; k++) {
-                float v = f.rgb[at * 3 + k] * 255.0f + 0.5f;
-                p->rgb[k] = (uint8_t)(v > 255 ? 255 : v);
+    if (!pts || !got) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    for (size_t b0 = 0; b0 < n && !rc; b0 += BATCH) {
+        size_t nb = n - b0 < BATCH ? n - b0 : BATCH;
+        for (size_t j = 0; j < nb && !rc; j++)
+            rc = sp_synth_render(w, &cams[b0 + j], &ro, pool, &f[j], err);
+        if (rc) break;
+        job.first = b0;
+        memset(job.rc, 0, sizeof job.rc);
+        sp_pool_for(pool, (long)nb, write_one, &job);
+        for (size_t j = 0; j < nb && !rc; j++)
+            if (job.rc[j]) {
+                *err = job.err[j];
+                rc = job.rc[j];
             }
-            p->image_id = (uint32_t)(i + 1);
-            p->xy[0] = px + 0.5;
-            p->xy[1] = py + 0.5;
-            got++;
-        }
-        sp_progress_update(&prog, (long)(i + 1), NULL);
+        sp_progress_update(&prog, (long)(b0 + nb), NULL);
     }
-    sp_synth_frame_free(&f);
+    /* compact the per-view point slots in view order */
+    for (size_t i = 0; !rc && i < n; i++)
+        for (size_t k = 0; k < got[i]; k++) pts[n_pts++] = pts[i * per_view + k];
+    free(got);
+    for (int j = 0; j < BATCH; j++) sp_synth_frame_free(&f[j]);
     sp_pool_free(pool);
     if (!rc) {
         /* COLMAP model: one PINHOLE camera, every image with its exact pose and its points. */
