@@ -15,11 +15,15 @@
 static void help(void)
 {
     printf("usage: semsplat distill --model DIR --features DIR --colmap DIR [--images DIR]\n"
-           "                        [--steps N] [--lambda L] [--freeze-geometry] [--downscale F]\n"
+           "                        [--steps N] [--lambda L] [--freeze-geometry] [--densify]\n"
+           "                        [--init lift|zero] [--downscale F]\n"
            "                        [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
            "Continues training DIR/splat.ply with feature_lambda * MSE(rendered features, maps)\n"
            "added to the RGB loss (densification copies features to children; --freeze-geometry\n"
-           "trains the features only). Writes f_sem_* into DIR/splat.ply and DIR/semantic.json.\n");
+           "trains the features only). Features start from the one-pass lift (--init lift, the\n"
+           "default) or zero. --densify keeps the trainer's clone/split schedule (children copy\n"
+           "their parent's features); off by default as the model is already trained.\n"
+           "Writes f_sem_* into DIR/splat.ply and DIR/semantic.json; prints RGB PSNR before/after.\n");
 }
 
 typedef struct {
@@ -50,6 +54,8 @@ static int feature_target(void *user, size_t view, int width, int height, int F,
 int cmd_distill(int argc, char **argv)
 {
     const char *model = NULL, *features = NULL, *colmap = NULL, *images = NULL, *device = "auto", *v;
+    const char *init = "lift";
+    int densify = 0;
     long steps = 3000, threads = 0, downscale = 1;
     double lambda = 1.0;
     int freeze = 0, quiet = 0, bad = 0;
@@ -60,6 +66,8 @@ int cmd_distill(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) images = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--init", &bad))) init = v;
+        else if (!strcmp(argv[i], "--densify")) densify = 1;
         else if ((v = cli_flag_value(argc, argv, &i, "--steps", &bad))) {
             if (cli_parse_int("distill", "--steps", v, &steps)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
@@ -76,6 +84,7 @@ int cmd_distill(int argc, char **argv)
     if (!model || !features || !colmap)
         return cli_usage_error("distill", "--model, --features and --colmap are required");
     if (steps < 1 || downscale < 1) return cli_usage_error("distill", "--steps and --downscale must be >= 1");
+    if (strcmp(init, "lift") && strcmp(init, "zero")) return cli_usage_error("distill", "--init: '%s' is not lift or zero", init);
     sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
                           : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
                           : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
@@ -97,14 +106,13 @@ int cmd_distill(int argc, char **argv)
     sp_train_result before = {0}, after = {0};
     float bg[3] = {0, 0, 0};
     if (!rc) rc = sp_train_evaluate(dev, &d, &s, bg, &before, &err);
-    if (!rc) {
-        sp_splat_free(&s); /* features are re-initialised by the trainer */
-        rc = sp_ply_read_splat(path, &s, &err);
-        if (!rc && s.feat_dim) {
-            sp_free(s.features);
-            s.features = NULL;
-            s.feat_dim = 0;
-        }
+    /* Features start from the one-pass lift (the trainer then refines them jointly with RGB),
+     * or from zero with --init zero. */
+    if (!rc && !strcmp(init, "lift")) rc = sp_semantic_lift_features(&s, features, colmap, dev, &log, &err);
+    if (!rc && !strcmp(init, "zero") && s.feat_dim) {
+        sp_free(s.features);
+        s.features = NULL;
+        s.feat_dim = 0;
     }
     target_ctx ctx = {&f, &d};
     if (!rc) {
@@ -115,13 +123,15 @@ int cmd_distill(int argc, char **argv)
         o.get_feature_target = feature_target;
         o.feature_user = &ctx;
         o.freeze_geometry = freeze;
-        /* continuing from a trained model: no fresh densification schedule from step 0 */
-        o.refine_start = (int)steps + 1;
+        /* continuing from a trained model: no fresh densification or opacity resets (their
+         * schedules scale down with short runs and would wipe the trained opacities) */
+        if (!densify) o.refine_start = (int)steps + 1;
+        o.reset_every = (int)steps + 1;
         rc = sp_train_run(dev, &d, &o, &s, &after, &log, &err);
     }
     if (!rc) rc = sp_ply_write_splat(path, &s, &err);
     if (!rc) rc = sp_semantic_write_sidecar(model, features, colmap, "distill", &err);
-    if (!rc && !quiet) {
+    if (!rc) { /* results, printed even with --quiet (which silences progress) */
         printf("distill  psnr_before  %.3f  dB  (%s)\n", before.psnr, before.eval_on_train ? "train views" : "held-out");
         printf("distill  psnr_after   %.3f  dB  (steps %ld, lambda %g%s)\n", after.psnr, steps, lambda,
                freeze ? ", geometry frozen" : "");

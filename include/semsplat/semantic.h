@@ -103,6 +103,11 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
                            const char *colmap_dir, sp_device *dev, const sp_log *log,
                            sp_error *err);
 
+/* The same in memory: lifts the feature folder's maps (matched to the COLMAP images by name,
+ * rendered at the maps' resolution) into s->features. */
+int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
+                              sp_device *dev, const sp_log *log, sp_error *err);
+
 /* Writes DIR/semantic.json and the PCA copies for a splat whose features came from
  * features_dir by `method` ("lift" or "distill"). */
 int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,

@@ -111,29 +111,19 @@ static int lift_target(void *user, size_t view, float *target, uint8_t *mask, sp
     return 0;
 }
 
-int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
-                           const char *colmap_dir, sp_device *dev, const sp_log *log,
-                           sp_error *err)
+int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
+                              sp_device *dev, const sp_log *log, sp_error *err)
 {
-    char colmap[2048], path[2048];
     sp_features f;
     sp_colmap_model m;
-    sp_splat s;
     sp_raster *r = NULL;
     memset(&f, 0, sizeof f);
     memset(&m, 0, sizeof m);
-    memset(&s, 0, sizeof s);
     sp_camera *cams = NULL;
     long *map_of_view = NULL;
     int rc;
-    if (colmap_dir) snprintf(colmap, sizeof colmap, "%s", colmap_dir);
-    else if (train_colmap_dir(model_dir, colmap, sizeof colmap))
-        return sp_error_set(err, SP_E_ARG,
-                            "%s/train.json names no COLMAP capture: pass --colmap DIR", model_dir);
     if ((rc = sp_features_open(features_dir, &f, err))) return rc;
-    if ((rc = sp_colmap_read(colmap, &m, err))) goto done;
-    sp_path_join(path, sizeof path, model_dir, "splat.ply");
-    if ((rc = sp_ply_read_splat(path, &s, err))) goto done;
+    if ((rc = sp_colmap_read(colmap_dir, &m, err))) goto done;
     cams = calloc(m.n_images ? m.n_images : 1, sizeof *cams);
     map_of_view = calloc(m.n_images ? m.n_images : 1, sizeof *map_of_view);
     if (!cams || !map_of_view) {
@@ -157,26 +147,43 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
         nv++;
     }
     if (nv == 0) {
-        rc = sp_error_set(err, SP_E_NOTFOUND, "lift: no image of %s has a map in %s", colmap,
+        rc = sp_error_set(err, SP_E_NOTFOUND, "lift: no image of %s has a map in %s", colmap_dir,
                           features_dir);
         goto done;
     }
     if ((rc = sp_raster_create(&r, dev, err))) goto done;
     lift_ctx ctx = {&f, map_of_view, cams};
     double t0 = sp_time_now();
-    rc = sp_semantic_lift(r, &s, f.dim, cams, nv, lift_target, &ctx, NULL, NULL, log, err);
-    if (rc) goto done;
-    sp_logf(log, SP_LOG_INFO, "lifted %d-dim %s features from %zu views into %zu Gaussians in %.2f s",
-            f.dim, f.source, nv, s.n, sp_time_now() - t0);
-    sp_path_join(path, sizeof path, model_dir, "splat.ply");
-    if ((rc = sp_ply_write_splat(path, &s, err))) goto done;
-    rc = sp_semantic_write_sidecar(model_dir, features_dir, colmap, "lift", err);
+    rc = sp_semantic_lift(r, s, f.dim, cams, nv, lift_target, &ctx, NULL, NULL, log, err);
+    if (!rc)
+        sp_logf(log, SP_LOG_INFO, "lifted %d-dim %s features from %zu views into %zu Gaussians in %.2f s",
+                f.dim, f.source, nv, s->n, sp_time_now() - t0);
 done:
     sp_raster_free(r);
-    sp_splat_free(&s);
     sp_colmap_free(&m);
     sp_features_free(&f);
     free(cams);
     free(map_of_view);
+    return rc;
+}
+
+int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
+                           const char *colmap_dir, sp_device *dev, const sp_log *log,
+                           sp_error *err)
+{
+    char colmap[2048], path[2048];
+    sp_splat s;
+    memset(&s, 0, sizeof s);
+    int rc;
+    if (colmap_dir) snprintf(colmap, sizeof colmap, "%s", colmap_dir);
+    else if (train_colmap_dir(model_dir, colmap, sizeof colmap))
+        return sp_error_set(err, SP_E_ARG,
+                            "%s/train.json names no COLMAP capture: pass --colmap DIR", model_dir);
+    sp_path_join(path, sizeof path, model_dir, "splat.ply");
+    if ((rc = sp_ply_read_splat(path, &s, err))) return rc;
+    rc = sp_semantic_lift_features(&s, features_dir, colmap, dev, log, err);
+    if (!rc) rc = sp_ply_write_splat(path, &s, err);
+    if (!rc) rc = sp_semantic_write_sidecar(model_dir, features_dir, colmap, "lift", err);
+    sp_splat_free(&s);
     return rc;
 }
