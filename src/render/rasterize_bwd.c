@@ -19,6 +19,27 @@ typedef struct {
     const sp_raster_grad_in *gin;
 } bwd_ctx;
 
+#define TILE_STRIDE (TILE_PIX + 4) /* room for the lanes past a row's end */
+
+static inline cpu_v4f load4(const float *p)
+{
+    cpu_v4f v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void store4(float *p, cpu_v4f v) { memcpy(p, &v, sizeof v); }
+static inline cpu_v4i load4i(const int32_t *p)
+{
+    cpu_v4i v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+/* Horizontal sum in a fixed order (deterministic). */
+static inline float hsum(cpu_v4f v) { return (v[0] + v[1]) + (v[2] + v[3]); }
+
+/* Four pixels of a row per step, like the forward; per-Gaussian sums are kept per lane and
+ * added up in a fixed order at the end. Tile-local copies of the incoming gradients are
+ * channel-major so the lanes are contiguous. */
 static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
                                                                 const sp_raster_grad_in *gin,
                                                                 long tile, float *scratch, const int D)
@@ -28,22 +49,35 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
     const int tx1 = tx0 + SP_TILE_SIZE - 1 < W - 1 ? tx0 + SP_TILE_SIZE - 1 : W - 1;
     const int ty1 = ty0 + SP_TILE_SIZE - 1 < H - 1 ? ty0 + SP_TILE_SIZE - 1 : H - 1;
     const int stride = SP_SLOT_FIXED + D;
+    const size_t TS = TILE_STRIDE;
 
-    float *T = scratch;                           /* [TILE_PIX] transmittance behind */
-    float *S_d = T + TILE_PIX;                    /* [TILE_PIX] depth composited behind */
-    float *S = S_d + TILE_PIX;                    /* [TILE_PIX][D] channels behind */
-    int32_t *last = (int32_t *)(S + (size_t)TILE_PIX * D);
-    float *restrict v_col = (float *)(last + TILE_PIX); /* [D] */
+    float *T = scratch;         /* [TS] transmittance behind */
+    float *S_d = T + TS;        /* [TS] depth composited behind */
+    float *VD = S_d + TS;       /* [TS] v_depth (0 without) */
+    float *VA = VD + TS;        /* [TS] v_alpha * T_final (0 without) */
+    int32_t *last = (int32_t *)(VA + TS);
+    float *S = (float *)(last + TS); /* [D][TS] channels behind */
+    float *VI = S + (size_t)D * TS;  /* [D][TS] v_image */
+    cpu_v4f *v_col = (cpu_v4f *)(VI + (size_t)D * TS); /* [D] per-lane colour gradients */
+    for (size_t p = 0; p < TS; p++) T[p] = 1.f;
+    memset(S_d, 0, 3 * TS * sizeof(float)); /* S_d, VD, VA */
+    memset(last, 0, TS * sizeof(int32_t));
+    memset(S, 0, 2 * (size_t)D * TS * sizeof(float));
 
     const float *bg = r->background;
+    const float *v_image = gin->v_image, *v_depth = gin->v_depth, *v_alpha = gin->v_alpha;
     int32_t max_last = 0;
     for (int py = ty0; py <= ty1; py++)
         for (int px = tx0; px <= tx1; px++) {
             const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
             const size_t pix = (size_t)py * W + px;
             T[p] = r->final_T[pix];
-            S_d[p] = 0.f;
-            for (int c = 0; c < D; c++) S[(size_t)p * D + c] = T[p] * bg[c];
+            for (int c = 0; c < D; c++) {
+                S[c * TS + p] = T[p] * bg[c];
+                VI[c * TS + p] = v_image[pix * D + c];
+            }
+            if (v_depth) VD[p] = v_depth[pix];
+            if (v_alpha) VA[p] = v_alpha[pix] * T[p];
             last[p] = r->n_contrib[pix];
             if (last[p] > max_last) max_last = last[p];
         }
@@ -54,7 +88,9 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         memset(r->slots + (size_t)r->tile_slot[j] * stride, 0, (size_t)stride * sizeof(float));
 
     const float *colors = r->in.colors;
-    const float *v_image = gin->v_image, *v_depth = gin->v_depth, *v_alpha = gin->v_alpha;
+    const cpu_v4i lane = {0, 1, 2, 3};
+    const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
+    const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f);
     for (uint32_t j = start + (uint32_t)max_last; j-- > start;) {
         const cpu_gauss *rec = r->tile_rec + j;
         const int32_t g = rec->g;
@@ -64,77 +100,70 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         const float mx = rec->mx, my = rec->my;
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
+        const float half_a = 0.5f * con[0];
         const float *restrict col = colors + (size_t)g * D;
-        const int32_t pos = (int32_t)(j - start); /* contributes where pos < last[p] */
-        float v_m2[2] = {0.f, 0.f}, v_con[3] = {0.f, 0.f, 0.f}, v_op = 0.f, v_z = 0.f;
-        for (int c = 0; c < D; c++) v_col[c] = 0.f;
+        const int32_t pos1 = (int32_t)(j - start); /* contributes where pos < last[p] */
+        const cpu_v4i pos = {pos1, pos1, pos1, pos1};
+        const cpu_v4f vz = cpu_v4_splat(z), vop = cpu_v4_splat(op);
+        cpu_v4f v_mx = zero, v_my = zero, v_ca = zero, v_cb = zero, v_cc = zero, v_op = zero, v_z = zero;
+        for (int c = 0; c < D; c++) v_col[c] = zero;
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
+            const float by = con[1] * dy, hy = 0.5f * con[2] * dy * dy;
+            const cpu_v4f vdy = cpu_v4_splat(dy);
             int rx0, rx1;
             cpu_row_range(con, det_con, cut, mx, dy, x0, x1, &rx0, &rx1);
-            for (int px = rx0; px <= rx1; px++) {
+            for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
-                if (pos >= last[p]) continue;
-                const float dx = (float)px + 0.5f - mx;
-                float gauss;
-                const float alpha = sp_gm_alpha_g(con, op, cut, dx, dy, &gauss);
-                if (alpha == 0.f) continue;
-                const size_t pix = (size_t)py * W + px;
-                const float ra = 1.f / (1.f - alpha);
-                const float Ti = T[p] * ra;
-                const float w = alpha * Ti;
-                const float *restrict vi = v_image + pix * D;
-                float *restrict Sp = S + (size_t)p * D;
-                /* dC/dalpha . v = sum_c v_c (Ti c_c - S_c ra), as two dot products in four
-                 * fixed lanes (vectorisable, and the same order on every run) */
-                float dc[4] = {0.f, 0.f, 0.f, 0.f}, ds[4] = {0.f, 0.f, 0.f, 0.f};
-                int c = 0;
-                for (; c + 4 <= D; c += 4)
-                    for (int l = 0; l < 4; l++) {
-                        dc[l] += vi[c + l] * col[c + l];
-                        ds[l] += vi[c + l] * Sp[c + l];
-                    }
-                for (; c < D; c++) {
-                    dc[0] += vi[c] * col[c];
-                    ds[0] += vi[c] * Sp[c];
+                cpu_v4f gv;
+                const cpu_v4f dx = cpu_v4_splat((float)px + 0.5f - mx) + lanef;
+                const cpu_v4f a = cpu_alpha4(half_a, by, hy, op, cut, dx, &gv);
+                const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
+                const cpu_v4i valid = in_row & (pos < load4i(last + p)) & (a > zero);
+                if (!cpu_v4_any(valid)) continue;
+                const cpu_v4f Tv = load4(T + p);
+                const cpu_v4f ra = one / (one - a);
+                const cpu_v4f Ti = Tv * ra;
+                const cpu_v4f w = cpu_v4_select(valid, a * Ti, zero);
+                /* dC/dalpha . v = Ti (v . c) - ra (v . S) for the channels, same for depth */
+                cpu_v4f dc = zero, ds = zero;
+                for (int c = 0; c < D; c++) {
+                    const cpu_v4f vi = load4(VI + c * TS + p);
+                    const cpu_v4f sc = load4(S + c * TS + p);
+                    const cpu_v4f cc = cpu_v4_splat(col[c]);
+                    dc += vi * cc;
+                    ds += vi * sc;
+                    v_col[c] += w * vi;
+                    store4(S + c * TS + p, sc + w * cc);
                 }
-                float v_a = Ti * ((dc[0] + dc[1]) + (dc[2] + dc[3])) -
-                            ra * ((ds[0] + ds[1]) + (ds[2] + ds[3]));
-                for (int k = 0; k < D; k++) {
-                    v_col[k] += w * vi[k];
-                    Sp[k] += w * col[k];
-                }
-                if (v_depth) {
-                    const float vd = v_depth[pix];
-                    v_z += w * vd;
-                    v_a += vd * (Ti * z - S_d[p] * ra);
-                }
-                if (v_alpha) v_a += v_alpha[pix] * r->final_T[pix] * ra;
-                S_d[p] += w * z;
-                T[p] = Ti;
-                /* sp_gm_alpha_vjp inlined, reusing gauss = exp(-sigma); no gradient where
-                 * alpha was capped */
-                if (op * gauss <= SP_ALPHA_MAX) {
-                    v_op += gauss * v_a;
-                    const float v_sigma = -op * gauss * v_a;
-                    const float hs = 0.5f * v_sigma;
-                    v_con[0] += hs * dx * dx;
-                    v_con[1] += hs * dx * dy;
-                    v_con[2] += hs * dy * dy;
-                    v_m2[0] -= v_sigma * (con[0] * dx + con[1] * dy);
-                    v_m2[1] -= v_sigma * (con[1] * dx + con[2] * dy);
-                }
+                const cpu_v4f vd = load4(VD + p), sd = load4(S_d + p);
+                cpu_v4f v_a = Ti * dc - ra * ds + vd * (Ti * vz - sd * ra) + load4(VA + p) * ra;
+                v_z += w * vd;
+                store4(S_d + p, sd + w * vz);
+                store4(T + p, cpu_v4_select(valid, Ti, Tv));
+                /* alpha = op g: no gradient where it was capped at SP_ALPHA_MAX */
+                const cpu_v4i live = valid & (vop * gv <= cpu_v4_splat(SP_ALPHA_MAX));
+                const cpu_v4f gva = cpu_v4_select(live, gv * v_a, zero);
+                v_op += gva;
+                const cpu_v4f v_sigma = -vop * gva;
+                const cpu_v4f hs = cpu_v4_splat(0.5f) * v_sigma;
+                v_ca += hs * dx * dx;
+                v_cb += hs * dx * vdy;
+                v_cc += hs * vdy * vdy;
+                /* d = centre - mean2d: d sigma / d mean2d = -(conic d) */
+                v_mx -= v_sigma * (cpu_v4_splat(con[0]) * dx + cpu_v4_splat(con[1]) * vdy);
+                v_my -= v_sigma * (cpu_v4_splat(con[1]) * dx + cpu_v4_splat(con[2]) * vdy);
             }
         }
         float *s = r->slots + (size_t)r->tile_slot[j] * stride;
-        s[0] = v_m2[0];
-        s[1] = v_m2[1];
-        s[2] = v_con[0];
-        s[3] = v_con[1];
-        s[4] = v_con[2];
-        s[5] = v_op;
-        s[6] = v_z;
-        for (int c = 0; c < D; c++) s[SP_SLOT_FIXED + c] = v_col[c];
+        s[0] = hsum(v_mx);
+        s[1] = hsum(v_my);
+        s[2] = hsum(v_ca);
+        s[3] = hsum(v_cb);
+        s[4] = hsum(v_cc);
+        s[5] = hsum(v_op);
+        s[6] = hsum(v_z);
+        for (int c = 0; c < D; c++) s[SP_SLOT_FIXED + c] = hsum(v_col[c]);
     }
 }
 

@@ -18,7 +18,28 @@ typedef struct {
     sp_raster_out *out;
 } fwd_ctx;
 
-/* Always inlined so each call site below gets a constant D and the channel loops unroll. */
+/* Per-pixel tile state is laid out channel-major ([c][TILE_STRIDE]) so that four neighbouring
+ * pixels of a row are one vector; the stride leaves room for the lanes past a row's end. */
+#define TILE_STRIDE (TILE_PIX + 4)
+
+static inline cpu_v4f load4(const float *p)
+{
+    cpu_v4f v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void store4(float *p, cpu_v4f v) { memcpy(p, &v, sizeof v); }
+static inline cpu_v4i load4i(const int32_t *p)
+{
+    cpu_v4i v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void store4i(int32_t *p, cpu_v4i v) { memcpy(p, &v, sizeof v); }
+
+/* Always inlined so each call site below gets a constant D and the channel loops unroll.
+ * Four pixels of a row per step: lanes past the row's range or already finished are masked out
+ * and written back unchanged, so each pixel sees exactly the scalar rule's operations. */
 static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp_raster_out *out,
                                                                long tile, float *scratch, const int D)
 {
@@ -28,19 +49,22 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
     const int ty1 = ty0 + SP_TILE_SIZE - 1 < H - 1 ? ty0 + SP_TILE_SIZE - 1 : H - 1;
     const int npix = (tx1 - tx0 + 1) * (ty1 - ty0 + 1);
 
-    float *T = scratch;                 /* [TILE_PIX] */
-    float *acc_d = T + TILE_PIX;        /* [TILE_PIX] */
-    float *acc = acc_d + TILE_PIX;      /* [TILE_PIX][D] */
-    int32_t *last = (int32_t *)(acc + (size_t)TILE_PIX * D);
-    unsigned char *done = (unsigned char *)(last + TILE_PIX);
-    for (int p = 0; p < TILE_PIX; p++) T[p] = 1.f;
-    memset(acc_d, 0, TILE_PIX * sizeof(float));
-    memset(acc, 0, (size_t)TILE_PIX * D * sizeof(float));
-    memset(last, 0, TILE_PIX * sizeof(int32_t));
-    memset(done, 0, TILE_PIX);
+    float *T = scratch;                          /* [TILE_STRIDE] */
+    float *acc_d = T + TILE_STRIDE;              /* [TILE_STRIDE] */
+    int32_t *last = (int32_t *)(acc_d + TILE_STRIDE); /* [TILE_STRIDE] */
+    int32_t *done = last + TILE_STRIDE;          /* [TILE_STRIDE] 0 or -1 */
+    float *acc = (float *)(done + TILE_STRIDE);  /* [D][TILE_STRIDE] */
+    for (int p = 0; p < TILE_STRIDE; p++) T[p] = 1.f;
+    memset(acc_d, 0, TILE_STRIDE * sizeof(float));
+    memset(last, 0, TILE_STRIDE * sizeof(int32_t));
+    memset(done, 0, TILE_STRIDE * sizeof(int32_t));
+    memset(acc, 0, (size_t)TILE_STRIDE * D * sizeof(float));
 
     const uint32_t start = r->tile_start[tile], end = r->tile_start[tile + 1];
     const float *colors = r->in.colors;
+    const cpu_v4i lane = {0, 1, 2, 3};
+    const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
+    const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f);
     int ndone = 0;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
         const cpu_gauss *rec = r->tile_rec + j;
@@ -51,30 +75,39 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
         const float mx = rec->mx, my = rec->my;
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
+        const float half_a = 0.5f * con[0];
         const float *restrict col = colors + (size_t)g * D;
-        const int32_t pos = (int32_t)(j - start) + 1;
+        const cpu_v4i pos = {(int32_t)(j - start) + 1, (int32_t)(j - start) + 1,
+                             (int32_t)(j - start) + 1, (int32_t)(j - start) + 1};
+        const cpu_v4f vz = cpu_v4_splat(z);
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
+            const float by = con[1] * dy, hy = 0.5f * con[2] * dy * dy;
             int rx0, rx1;
             cpu_row_range(con, det_con, cut, mx, dy, x0, x1, &rx0, &rx1);
-            for (int px = rx0; px <= rx1; px++) {
+            for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
-                if (done[p]) continue;
-                float gauss;
-                const float alpha = sp_gm_alpha_g(con, op, cut, (float)px + 0.5f - mx, dy, &gauss);
-                if (alpha == 0.f) continue;
-                const float next_T = T[p] * (1.f - alpha);
-                if (next_T < SP_TRANSMITTANCE_MIN) {
-                    done[p] = 1;
-                    ndone++;
-                    continue;
+                cpu_v4f gv;
+                const cpu_v4f dx = cpu_v4_splat((float)px + 0.5f - mx) + lanef;
+                const cpu_v4f a = cpu_alpha4(half_a, by, hy, op, cut, dx, &gv);
+                const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
+                const cpu_v4i dn = load4i(done + p);
+                const cpu_v4i valid = in_row & ~dn & (a > zero);
+                if (!cpu_v4_any(valid)) continue;
+                const cpu_v4f Tv = load4(T + p);
+                const cpu_v4f next_T = Tv * (one - a);
+                const cpu_v4i stop = valid & (next_T < cpu_v4_splat(SP_TRANSMITTANCE_MIN));
+                const cpu_v4i use = valid & ~stop;
+                ndone -= stop[0] + stop[1] + stop[2] + stop[3]; /* lanes are 0 or -1 */
+                store4i(done + p, dn | stop);
+                const cpu_v4f w = a * Tv;
+                for (int c = 0; c < D; c++) {
+                    float *ac = acc + (size_t)c * TILE_STRIDE + p;
+                    store4(ac, load4(ac) + cpu_v4_select(use, w * cpu_v4_splat(col[c]), zero));
                 }
-                const float w = alpha * T[p];
-                float *restrict a = acc + (size_t)p * D;
-                for (int c = 0; c < D; c++) a[c] += w * col[c];
-                acc_d[p] += w * z;
-                T[p] = next_T;
-                last[p] = pos;
+                store4(acc_d + p, load4(acc_d + p) + cpu_v4_select(use, w * vz, zero));
+                store4(T + p, cpu_v4_select(use, next_T, Tv));
+                store4i(last + p, (use & pos) | (~use & load4i(last + p)));
             }
         }
     }
@@ -85,8 +118,7 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
             const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
             const size_t pix = (size_t)py * W + px;
             float *o = out->image + pix * D;
-            const float *a = acc + (size_t)p * D;
-            for (int c = 0; c < D; c++) o[c] = a[c] + T[p] * bg[c];
+            for (int c = 0; c < D; c++) o[c] = acc[(size_t)c * TILE_STRIDE + p] + T[p] * bg[c];
             if (out->depth) out->depth[pix] = acc_d[p];
             if (out->alpha) out->alpha[pix] = 1.f - T[p];
             r->final_T[pix] = T[p];
@@ -122,8 +154,9 @@ int cpu_reserve_thread_scratch(cpu_raster *r, sp_error *err)
         r->n_scratch = nt;
     }
     /* forward: T, acc_d, acc[D], last, done; backward: T, S_d, S[D], v_col[D], ... */
-    size_t bytes = (size_t)TILE_PIX * (4 + 2 * (size_t)r->D) * sizeof(float) + 4096 +
-                   (size_t)(SP_SLOT_FIXED + r->D) * sizeof(float);
+    /* backward: 5 + 2 D per-pixel arrays of TILE_PIX + 4, then D vectors of 4 floats */
+    size_t bytes = (size_t)(TILE_PIX + 16) * (8 + 2 * (size_t)r->D) * sizeof(float) + 4096 +
+                   (size_t)r->D * 4 * sizeof(float);
     for (int i = 0; i < nt; i++) {
         int rc = sp_scratch_reserve(r->dev, &r->scratch[i].buf, &r->scratch[i].cap, bytes, err);
         if (rc) return rc;
