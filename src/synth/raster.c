@@ -99,9 +99,10 @@ static int emit(view *v, uint32_t tri, float q[3][3], float bary[3][3])
         s.C[i] = ((double)s.x[j] * s.y[k] - (double)s.x[k] * s.y[j]) / area;
     }
     s.tri = tri;
-    int b0 = (int)floorf(ymin / BAND_PX), b1 = (int)floorf(ymax / BAND_PX);
-    s.band0 = b0 < 0 ? 0 : b0;
-    s.band1 = b1 >= v->n_bands ? v->n_bands - 1 : b1;
+    /* clamp in float before converting: far-away vertices project to huge coordinates */
+    float fb0 = floorf(ymin / BAND_PX), fb1 = floorf(ymax / BAND_PX);
+    s.band0 = fb0 < 0 ? 0 : (int)fb0;
+    s.band1 = fb1 >= (float)v->n_bands ? v->n_bands - 1 : (int)fb1;
     return push(&v->tl, &s);
 }
 
@@ -229,12 +230,10 @@ static void band_fn(void *ctx, long band, int tid)
         const stri *s = &v->tl.t[v->band_idx[k]];
         float xmin = fminf(s->x[0], fminf(s->x[1], s->x[2])), xmax = fmaxf(s->x[0], fmaxf(s->x[1], s->x[2]));
         float ymin = fminf(s->y[0], fminf(s->y[1], s->y[2])), ymax = fmaxf(s->y[0], fmaxf(s->y[1], s->y[2]));
-        int ax = (int)ceilf(xmin * S - 0.5f), bx = (int)floorf(xmax * S - 0.5f);
-        int ay = (int)ceilf(ymin * S - 0.5f), by = (int)floorf(ymax * S - 0.5f);
-        if (ax < 0) ax = 0;
-        if (bx > SW - 1) bx = SW - 1;
-        if (ay < sy0) ay = sy0;
-        if (by > sy1 - 1) by = sy1 - 1;
+        float fax = fmaxf(ceilf(xmin * S - 0.5f), 0.0f), fbx = fminf(floorf(xmax * S - 0.5f), (float)(SW - 1));
+        float fay = fmaxf(ceilf(ymin * S - 0.5f), (float)sy0), fby = fminf(floorf(ymax * S - 0.5f), (float)(sy1 - 1));
+        if (!(fax <= fbx) || !(fay <= fby)) continue;
+        int ax = (int)fax, bx = (int)fbx, ay = (int)fay, by = (int)fby;
         if (ax > bx || ay > by) continue;
         double stepz = (s->A[0] * s->iz[0] + s->A[1] * s->iz[1] + s->A[2] * s->iz[2]) * inv;
         for (int sy = ay; sy <= by; sy++) {
