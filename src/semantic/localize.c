@@ -484,13 +484,21 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
         }
         if (!rc) {
             sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
+            /* relevant pixels, eroded by one pixel: at object borders the expected depth blends
+             * the object with what is behind it and would back-project into the gap */
+            uint8_t *keep = calloc(np, 1);
+            if (!keep) {
+                rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+                goto next;
+            }
+            for (size_t p = 0; p < np; p++)
+                keep[p] = raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f && depth[p] > 0;
             float Rt[9];
             sp_mat3_transpose(cam.R, Rt);
-            for (int y = 0; y < cam.height && !rc; y++)
-                for (int x = 0; x < cam.width; x++) {
+            for (int y = 1; y + 1 < cam.height && !rc; y++)
+                for (int x = 1; x + 1 < cam.width; x++) {
                     size_t p = (size_t)y * cam.width + x;
-                    if (!(raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f &&
-                          depth[p] > 0))
+                    if (!keep[p] || !keep[p - 1] || !keep[p + 1] || !keep[p - cam.width] || !keep[p + cam.width])
                         continue;
                     if (m == cap) {
                         cap = cap ? cap * 2 : 4096;
@@ -515,7 +523,9 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
                     cf[m] = raw[p];
                     m++;
                 }
+            free(keep);
         }
+    next:
         free(feat), free(depth), free(alpha), free(raw), free(rel);
     }
     free(views);

@@ -1,0 +1,192 @@
+/* The model-folder path end to end on the tiny scene: a capture (COLMAP model) and a feature
+ * folder (features.json, PCA, f16 maps at half resolution, written here as `semsplat features`
+ * writes them), a trained-model folder (splat.ply without features, train.json naming the
+ * capture) -> sp_semantic_lift_model -> f_sem_* in splat.ply + semantic.json -> the engine opens
+ * the folder and finds the objects; bad folders give named errors. */
+#include <cjson/cJSON.h>
+#include <stdlib.h>
+
+#include "scene.h"
+#include "semsplat/io.h"
+#include "test.h"
+
+enum { N = 12, W = 160, H = 120, MW = 80, MH = 60 };
+
+static int write_capture(const char *dir, const sp_camera *cams, sp_error *err)
+{
+    char path[1400];
+    snprintf(path, sizeof path, "%s/sparse/0", dir);
+    int rc = sp_mkdirs(path, err);
+    if (rc) return rc;
+    sp_colmap_model m;
+    memset(&m, 0, sizeof m);
+    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, W, H, 4, {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
+    sp_colmap_image ims[N];
+    char names[N][32];
+    memset(ims, 0, sizeof ims);
+    for (int i = 0; i < N; i++) {
+        float q[4];
+        sp_mat3_to_quat(cams[i].R, q);
+        ims[i].id = (uint32_t)i + 1;
+        for (int k = 0; k < 4; k++) ims[i].qvec[k] = q[k];
+        for (int k = 0; k < 3; k++) ims[i].tvec[k] = cams[i].t[k];
+        ims[i].camera_id = 1;
+        snprintf(names[i], sizeof names[i], "%05d.png", i);
+        ims[i].name = names[i];
+    }
+    m.n_cameras = 1, m.cameras = &cam, m.n_images = N, m.images = ims;
+    return sp_colmap_write_bin(path, &m, err);
+}
+
+/* Label maps rendered from the scene's true features at half resolution, as f16 .npy. */
+static int write_features(const char *dir, const sp_splat *s, const sp_sem_pca *pca, const sp_camera *cams,
+                          sp_error *err)
+{
+    char path[1400];
+    snprintf(path, sizeof path, "%s/maps", dir);
+    int rc = sp_mkdirs(path, err);
+    if (rc) return rc;
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    float *f = malloc(sizeof(float) * MW * MH * SC_DIM), *a = malloc(sizeof(float) * MW * MH);
+    uint16_t *h = malloc(sizeof(uint16_t) * MW * MH * SC_DIM);
+    cJSON *o = cJSON_CreateObject(), *arr = cJSON_AddArrayToObject(o, "images");
+    if ((rc = sp_device_create(&dev, SP_DEVICE_CPU, 2, err)) || (rc = sp_raster_create(&r, dev, err))) goto done;
+    for (int v = 0; v < N && !rc; v++) {
+        sp_camera c = cams[v];
+        sp_camera_downscale(&c, 2);
+        sp_render_request req = {NULL, f, NULL, a, NULL};
+        if ((rc = sp_render_splat(r, s, &c, &req, err))) break;
+        for (int p = 0; p < MW * MH; p++)
+            for (int k = 0; k < SC_DIM; k++)
+                h[p * SC_DIM + k] = sp_float_to_half(a[p] > 1e-3f ? f[p * SC_DIM + k] / a[p] : 0.0f);
+        size_t shape[3] = {MH, MW, SC_DIM};
+        snprintf(path, sizeof path, "%s/maps/%05d.npy", dir, v);
+        if ((rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err))) break;
+        cJSON *it = cJSON_CreateObject();
+        snprintf(path, sizeof path, "%05d.png", v);
+        cJSON_AddStringToObject(it, "name", path);
+        snprintf(path, sizeof path, "maps/%05d.npy", v);
+        cJSON_AddStringToObject(it, "map", path);
+        cJSON_AddNumberToObject(it, "height", MH);
+        cJSON_AddNumberToObject(it, "width", MW);
+        cJSON_AddNumberToObject(it, "image_height", H);
+        cJSON_AddNumberToObject(it, "image_width", W);
+        cJSON_AddItemToArray(arr, it);
+    }
+    if (rc) goto done;
+    cJSON_AddStringToObject(o, "format", "semsplat-features-1");
+    cJSON_AddStringToObject(o, "source", "labels");
+    cJSON_AddNumberToObject(o, "dim", SC_DIM);
+    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
+    cJSON_AddNullToObject(o, "model");
+    cJSON_AddStringToObject(o, "label_embedding", "hash");
+    snprintf(path, sizeof path, "%s/features.json", dir);
+    if ((rc = sp_json_write_file(path, o, err))) goto done;
+    size_t s1[1] = {SC_FULL}, s2[2] = {SC_DIM, SC_FULL};
+    snprintf(path, sizeof path, "%s/pca_mean.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, pca->mean, err))) goto done;
+    snprintf(path, sizeof path, "%s/pca_basis.npy", dir);
+    rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, pca->basis, err);
+done:
+    cJSON_Delete(o);
+    sp_raster_free(r);
+    sp_device_free(dev);
+    free(f), free(a), free(h);
+    return rc;
+}
+
+static void test_lift_model_folder_then_query(void)
+{
+    const char *root = test_tmpdir("semantic_model");
+    char cap[1200], feat[1200], model[1200], path[1400];
+    snprintf(cap, sizeof cap, "%s/capture", root);
+    snprintf(feat, sizeof feat, "%s/features", root);
+    snprintf(model, sizeof model, "%s/model", root);
+    float emb[SC_CLASSES][SC_FULL];
+    sp_sem_pca pca;
+    sc_make_pca(&pca, emb);
+    sp_splat s;
+    int *cls;
+    sc_make_splat(&s, &cls, &pca, emb);
+    sp_camera cams[N];
+    sc_make_cams(cams, N, W, H);
+    sp_error err = {0};
+    CHECK_OK(write_capture(cap, cams, &err), &err);
+    CHECK_OK(write_features(feat, &s, &pca, cams, &err), &err);
+    /* the trained model: geometry only, and train.json naming the capture */
+    sp_splat geo;
+    CHECK_OK(sp_splat_copy(&geo, &s, &err), &err);
+    sp_free(geo.features);
+    geo.features = NULL;
+    geo.feat_dim = 0;
+    CHECK_OK(sp_mkdirs(model, &err), &err);
+    snprintf(path, sizeof path, "%s/splat.ply", model);
+    CHECK_OK(sp_ply_write_splat(path, &geo, &err), &err);
+    cJSON *tj = cJSON_CreateObject(), *set = cJSON_AddObjectToObject(tj, "settings");
+    cJSON_AddStringToObject(set, "colmap", cap);
+    snprintf(path, sizeof path, "%s/train.json", model);
+    CHECK_OK(sp_json_write_file(path, tj, &err), &err);
+    cJSON_Delete(tj);
+
+    sp_device *dev = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_semantic_lift_model(model, feat, NULL, dev, NULL, &err), &err);
+    sp_splat back;
+    snprintf(path, sizeof path, "%s/splat.ply", model);
+    CHECK_OK(sp_ply_read_splat(path, &back, &err), &err);
+    CHECK(back.feat_dim == SC_DIM && back.n == s.n);
+    sp_splat_free(&back);
+    cJSON *sj = NULL;
+    snprintf(path, sizeof path, "%s/semantic.json", model);
+    CHECK_OK(sp_json_read_file(path, &sj, &err), &err);
+    CHECK(sj && !strcmp(cJSON_GetObjectItem(sj, "method")->valuestring, "lift"));
+    CHECK(sj && !strcmp(cJSON_GetObjectItem(sj, "source")->valuestring, "labels"));
+    CHECK(sj && cJSON_GetObjectItem(sj, "dim")->valueint == SC_DIM);
+    cJSON_Delete(sj);
+
+    sp_query_engine *e = NULL;
+    CHECK_OK(sp_query_engine_open(&e, model, NULL, dev, NULL, &err), &err);
+    if (e) {
+        CHECK(sp_query_engine_n_cameras(e) == N);
+        const char *names[3] = {"table", "lamp", "chair"};
+        const int objs[3] = {2, 3, 0};
+        for (int q = 0; q < 3; q++) {
+            sp_query_result res;
+            CHECK_OK(sp_query_engine_query(e, names[q], &res, &err), &err);
+            float c[3];
+            sc_center(objs[q], c);
+            double best = 1e9;
+            for (int k = 0; k < res.n_instances; k++) {
+                double d = 0;
+                for (int a = 0; a < 3; a++) d += (res.instances[k].position[a] - c[a]) * (res.instances[k].position[a] - c[a]);
+                best = fmin(best, sqrt(d));
+            }
+            CHECK_MSG(res.valid && best < 0.1, "%s: nearest instance %.3f m away", names[q], best);
+            CHECK(!strncmp(res.view_name, "000", 3)); /* views named from the COLMAP model */
+            sp_query_result_free(&res);
+        }
+        sp_query_engine_free(e);
+    }
+    /* bad inputs name what is wrong */
+    CHECK_FAILS(sp_semantic_lift_model(model, "/nonexistent/features", cap, dev, NULL, &err), SP_E_IO, &err,
+                "features.json");
+    snprintf(path, sizeof path, "%s/train.json", model);
+    remove(path);
+    CHECK_FAILS(sp_semantic_lift_model(model, feat, NULL, dev, NULL, &err), SP_E_ARG, &err, "--colmap");
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", model);
+    remove(path);
+    CHECK(sp_query_engine_open(&e, model, NULL, dev, NULL, &err) != 0);
+    CHECK(strstr(err.msg, "semantic_pca_basis.npy") != NULL);
+    sp_device_free(dev);
+    sp_splat_free(&s);
+    sp_splat_free(&geo);
+    sp_sem_pca_free(&pca);
+    free(cls);
+}
+
+int main(void)
+{
+    RUN(test_lift_model_folder_then_query);
+    return TEST_EXIT();
+}
