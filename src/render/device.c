@@ -41,7 +41,7 @@ int sp_device_create(sp_device **out, sp_device_kind kind, int n_threads, sp_err
                                                 "but no usable device)");
 #else
         return sp_error_set(err, SP_E_NODEVICE,
-                            "device cuda: this build has no CUDA backend (nvcc was not found)");
+                            "device cuda: this build has no CUDA backend (nvcc not found or -DSP_CUDA=OFF)");
 #endif
     }
     sp_device *d = calloc(1, sizeof *d);
