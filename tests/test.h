@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int t_failures = 0, t_checks = 0, t_cases = 0, t_case_failed = 0;
+__attribute__((unused)) static int t_failures = 0, t_checks = 0, t_cases = 0, t_case_failed = 0;
 
 #define CHECK(cond)                                                                    \
     do {                                                                               \

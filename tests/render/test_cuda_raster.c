@@ -7,6 +7,11 @@
  * failure points at the backend, not at the dispatch. */
 #include "test.h"
 
+#ifndef SP_HAVE_CUDA
+/* Built without the CUDA backend: nothing to compare. */
+int main(void) { TEST_SKIP("built without CUDA"); }
+#else
+
 #include <stdint.h>
 
 #include "render/cuda_api.h"
@@ -325,3 +330,4 @@ int main(void)
     RUN(test_sh);
     return TEST_EXIT();
 }
+#endif /* SP_HAVE_CUDA */

@@ -4,6 +4,11 @@
  * without a GPU. */
 #include "test.h"
 
+#ifndef SP_HAVE_CUDA
+/* Built without the CUDA backend: nothing to compare. */
+int main(void) { TEST_SKIP("built without CUDA"); }
+#else
+
 #include <stdint.h>
 
 #include "render/cuda_api.h"
@@ -152,3 +157,4 @@ int main(void)
     RUN(test_adam_and_stats);
     return TEST_EXIT();
 }
+#endif /* SP_HAVE_CUDA */
