@@ -411,11 +411,15 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     /* at most 256 evenly spaced samples of the relevant set */
     size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
     for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
-    /* score: visible relevant samples in the image, favouring the image centre and near views */
+    /* score: how much of the relevant set a camera sees unoccluded (coverage), with the object
+     * framed rather than filling the image (projected box <= 35% of it) and near the centre */
+    double tot = 0;
+    for (size_t j = 0; j < n_smp; j++) tot += e->opacity[sel[j]];
     for (size_t c = 0; c < e->n_cams; c++) {
         const sp_camera *cam = &e->cams[c];
         sp_vec3 o = sp_camera_center(cam);
         double acc = 0;
+        float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f;
         for (size_t j = 0; j < n_smp; j++) {
             size_t i = sel[j];
             sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
@@ -425,11 +429,18 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
             float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
             if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
             if (!visible(e, o, p)) continue;
-            float du = (u - cam->cx) / cam->width, dv = (vv - cam->cy) / cam->height;
-            acc += e->opacity[i] * (1.0 - du * du - dv * dv) / (1.0 + 0.1 * z * z);
+            acc += e->opacity[i];
+            u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
+        }
+        float score = 0;
+        if (acc > 0 && tot > 0) {
+            float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
+            float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
+            score = (float)(acc / tot) * (area > 0.35f ? 0.35f / area : 1.0f) *
+                    (1.0f - sqrtf(du * du + dv * dv));
         }
         vs[c].view = (int)c;
-        vs[c].score = (float)acc;
+        vs[c].score = score;
     }
     free(sel);
     qsort(vs, e->n_cams, sizeof *vs, cmp_view_score);
