@@ -56,15 +56,19 @@ typedef struct sp_train_data {
     uint8_t *point_rgb;    /* [n_points][3] */
     sp_vec3 scene_center;  /* mean of the camera centres */
     float scene_scale;     /* max camera distance from scene_center (gsplat parser.scene_scale) */
+    size_t n_undistorted;  /* views resampled from a distorted camera at load time */
 } sp_train_data;
 
 /* Loads a COLMAP model (`colmap_dir`: capture root or model folder) and its images
  * (`images_dir`, NULL = <colmap_dir>/images). Views are sorted by name; every test_every-th
  * (index % test_every == 0, as gsplat) is held out (test_every <= 0: none). Images are
  * downscaled by an integer `downscale` >= 1 (box filter) and cameras with them.
+ * Cameras with SIMPLE_RADIAL / RADIAL / OPENCV distortion are undistorted here (bilinear
+ * resampling to a pinhole camera with the same size and principal point and a focal length
+ * scaled so no output pixel falls outside the source, as COLMAP's image_undistorter).
  * Errors: a COLMAP image missing from the folder (names the image and the folder), an image
- * whose size does not match its camera, a camera with distortion (SP_E_UNSUPPORTED, names the
- * camera and model; undistort with COLMAP's image_undistorter first). */
+ * whose size does not match its camera, a fisheye or other lens model (SP_E_UNSUPPORTED, names
+ * the camera and model; undistort with COLMAP's image_undistorter first). */
 int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *images_dir,
                        int downscale, int test_every, sp_error *err);
 /* Computes scene_center / scene_scale from the views' camera centres. */

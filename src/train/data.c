@@ -50,6 +50,80 @@ static uint8_t *downscale_rgb(const uint8_t *src, int W, int H, int f, int *ow, 
     return dst;
 }
 
+/* COLMAP's distortion on normalised image coordinates (SIMPLE_RADIAL, RADIAL, OPENCV). */
+static void distort(const sp_camera *c, double u, double v, double *du, double *dv)
+{
+    double k1 = c->dist[0], k2 = c->distortion == SP_DIST_SIMPLE_RADIAL ? 0 : c->dist[1];
+    double p1 = c->distortion == SP_DIST_OPENCV ? c->dist[2] : 0;
+    double p2 = c->distortion == SP_DIST_OPENCV ? c->dist[3] : 0;
+    double r2 = u * u + v * v, radial = k1 * r2 + k2 * r2 * r2;
+    *du = u + u * radial + 2 * p1 * u * v + p2 * (r2 + 2 * u * u);
+    *dv = v + v * radial + 2 * p2 * u * v + p1 * (r2 + 2 * v * v);
+}
+
+/* Where output pixel (x, y) of the pinhole camera with focal lengths (fx', fy') = s * (fx, fy)
+ * samples the distorted image. */
+static void undistort_source(const sp_camera *c, double s, double x, double y, double *sx, double *sy)
+{
+    double u = (x + 0.5 - c->cx) / (s * c->fx), v = (y + 0.5 - c->cy) / (s * c->fy), du, dv;
+    distort(c, u, v, &du, &dv);
+    *sx = du * c->fx + c->cx - 0.5;
+    *sy = dv * c->fy + c->cy - 0.5;
+}
+
+/* Resamples a distorted image into a pinhole one of the same size and principal point, with the
+ * focal length scaled (as COLMAP's undistorter) so that every output pixel sees image content:
+ * the largest s in [0.25, 4] for which the whole output border maps inside the source. */
+static int undistort_view(sp_train_view *v, sp_error *err)
+{
+    sp_camera *c = &v->cam;
+    int W = c->width, H = c->height;
+    double lo = 0.25, hi = 4.0;
+    for (int it = 0; it < 40; it++) {
+        double s = 0.5 * (lo + hi);
+        int inside = 1;
+        for (int k = 0; k < 2 * (W + H) && inside; k++) {
+            double x, y, sx, sy;
+            if (k < W) x = k, y = 0;
+            else if (k < 2 * W) x = k - W, y = H - 1;
+            else if (k < 2 * W + H) x = 0, y = k - 2 * W;
+            else x = W - 1, y = k - 2 * W - H;
+            undistort_source(c, s, x, y, &sx, &sy);
+            inside = sx >= 0 && sy >= 0 && sx <= W - 1 && sy <= H - 1;
+        }
+        /* a larger focal length shows less, so inside-ness grows with s */
+        if (inside) hi = s;
+        else lo = s;
+    }
+    double s = hi;
+    uint8_t *out = malloc((size_t)W * H * 3);
+    if (!out) return sp_error_set(err, SP_E_NOMEM, "undistorting %s: out of memory", v->name);
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            double sx, sy;
+            undistort_source(c, s, x, y, &sx, &sy);
+            if (sx < 0) sx = 0;
+            if (sy < 0) sy = 0;
+            if (sx > W - 1) sx = W - 1;
+            if (sy > H - 1) sy = H - 1;
+            int x0 = (int)sx, y0 = (int)sy, x1 = x0 + 1 < W ? x0 + 1 : x0, y1 = y0 + 1 < H ? y0 + 1 : y0;
+            double fx = sx - x0, fy = sy - y0;
+            for (int ch = 0; ch < 3; ch++) {
+                double a = v->rgb[((size_t)y0 * W + x0) * 3 + ch], b = v->rgb[((size_t)y0 * W + x1) * 3 + ch];
+                double cc = v->rgb[((size_t)y1 * W + x0) * 3 + ch], d = v->rgb[((size_t)y1 * W + x1) * 3 + ch];
+                double val = (1 - fy) * ((1 - fx) * a + fx * b) + fy * ((1 - fx) * cc + fx * d);
+                out[((size_t)y * W + x) * 3 + ch] = (uint8_t)(val + 0.5);
+            }
+        }
+    free(v->rgb);
+    v->rgb = out;
+    c->fx = (float)(c->fx * s);
+    c->fy = (float)(c->fy * s);
+    c->distortion = SP_DIST_NONE;
+    memset(c->dist, 0, sizeof c->dist);
+    return SP_OK;
+}
+
 /* Any sp_image (grey/RGB/RGBA, 8/16 bit) to packed 8-bit RGB. */
 static uint8_t *image_to_rgb8(const sp_image *img)
 {
@@ -108,15 +182,17 @@ int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *ima
         sp_train_view *v = &d->views[d->n_views];
         const sp_colmap_image *ci = &m.images[i];
         snprintf(v->name, sizeof v->name, "%s", ci->name);
-        if ((rc = sp_colmap_image_camera(&m, i, &v->cam, err))) goto fail;
-        if (v->cam.distortion != SP_DIST_NONE) {
+        if ((rc = sp_colmap_image_camera(&m, i, &v->cam, err))) {
+            /* fisheye and other models sp_camera cannot carry */
             const sp_colmap_camera *cc = sp_colmap_find_camera(&m, ci->camera_id);
             const char *model = cc ? sp_colmap_model_name(cc->model) : NULL;
-            rc = sp_error_set(err, SP_E_UNSUPPORTED,
-                              "%s: image '%s' uses camera %u with lens distortion (%s); semsplat "
-                              "trains on undistorted pinhole images: run `colmap "
-                              "image_undistorter` first and train on its output",
-                              colmap_dir, ci->name, ci->camera_id, model ? model : "?");
+            if (rc == SP_E_UNSUPPORTED)
+                sp_error_set(err, rc,
+                             "%s: image '%s' uses camera %u with a %s lens model, which semsplat "
+                             "cannot undistort (it handles PINHOLE, SIMPLE_PINHOLE and the radial "
+                             "/ OPENCV distortion models): run `colmap image_undistorter` first "
+                             "and train on its output",
+                             colmap_dir, ci->name, ci->camera_id, model ? model : "unknown");
             goto fail;
         }
         char p[4096];
@@ -144,6 +220,13 @@ int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *ima
         if (!rgb) {
             rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", p);
             goto fail;
+        }
+        if (v->cam.distortion != SP_DIST_NONE) {
+            v->rgb = rgb;
+            if ((rc = undistort_view(v, err))) goto fail;
+            rgb = v->rgb;
+            v->rgb = NULL;
+            d->n_undistorted++;
         }
         if (downscale > 1) {
             int w, h;
