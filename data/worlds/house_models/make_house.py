@@ -4,7 +4,7 @@
 primitives with colours; surface detail comes from semsplat's procedural patterns, chosen by
 the material script / visual names (wood, fabric, tiles, carpet, metal, glass). Re-run after
 editing: /usr/bin/python3 data/worlds/house_models/make_house.py"""
-import math, os, random
+import math, os, random, re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 WORLD = os.path.join(os.path.dirname(HERE), "house.world")
@@ -36,8 +36,17 @@ def sph(name, pos, r, rgb, script=None):
             % (name, f(pos), r, mat(rgb, script)))
 
 
+def collisions(visuals):
+    """The same shapes as <collision>s, so the house also works in Gazebo with a robot in it."""
+    out = []
+    for v in visuals:
+        c = re.sub(r"<material>.*?</material>", "", v).replace("<visual ", "<collision ").replace("</visual>", "</collision>")
+        out.append(c.replace('<collision name="', '<collision name="c_', 1))
+    return out
+
+
 def link(visuals, name="link"):
-    return '<link name="%s">%s</link>' % (name, "\n".join(visuals))
+    return '<link name="%s">%s</link>' % (name, "\n".join(visuals + collisions(visuals)))
 
 
 def model_xml(name, links, pose=None, static=True):
@@ -586,7 +595,8 @@ world = """<?xml version="1.0"?>
 %s
 </world>
 </sdf>
-""" % (lights, "\n".join(walls), "\n".join(floors), "\n".join(ceiling), "".join(objs), inline)
+""" % (lights, "\n".join(walls + collisions(walls)), "\n".join(floors + collisions(floors)),
+       "\n".join(ceiling), "".join(objs), inline)
 
 with open(WORLD, "w") as fh:
     fh.write(world)
