@@ -35,10 +35,16 @@ typedef enum {
     SP_PATTERN_COUNT
 } sp_pattern;
 
+#define SP_SYNTH_MAX_MIP 16
+
 typedef struct sp_synth_texture {
     char path[512];
     int width, height;
     uint8_t *rgb; /* [height][width][3], row 0 = top of the image */
+    /* mip pyramid for minification (level 0 is rgb; each next level halves by a 2x2 box filter) */
+    int n_levels;
+    int level_w[SP_SYNTH_MAX_MIP], level_h[SP_SYNTH_MAX_MIP];
+    uint8_t *level[SP_SYNTH_MAX_MIP];
 } sp_synth_texture;
 
 typedef struct sp_synth_material {

@@ -49,8 +49,35 @@ int wb_texture(wbuild *b, const char *path, sp_error *err)
                                                    : ((const uint8_t *)img.data)[at];
         }
     sp_image_free(&img);
+    /* mip levels: 2x2 box filter (the last row/column repeats on odd sizes) */
+    t.n_levels = 1;
+    t.level[0] = t.rgb;
+    t.level_w[0] = t.width;
+    t.level_h[0] = t.height;
+    while (t.n_levels < SP_SYNTH_MAX_MIP) {
+        int pw = t.level_w[t.n_levels - 1], ph = t.level_h[t.n_levels - 1];
+        if (pw == 1 && ph == 1) break;
+        int nw = pw > 1 ? pw / 2 : 1, nh = ph > 1 ? ph / 2 : 1;
+        uint8_t *src = t.level[t.n_levels - 1], *dst = malloc((size_t)nw * nh * 3);
+        if (!dst) break; /* fewer levels: still correct, only more aliasing */
+        for (int y = 0; y < nh; y++)
+            for (int x = 0; x < nw; x++) {
+                int x0 = 2 * x < pw ? 2 * x : pw - 1, x1 = 2 * x + 1 < pw ? 2 * x + 1 : pw - 1;
+                int y0 = 2 * y < ph ? 2 * y : ph - 1, y1 = 2 * y + 1 < ph ? 2 * y + 1 : ph - 1;
+                for (int k = 0; k < 3; k++) {
+                    int sum = src[((size_t)y0 * pw + x0) * 3 + k] + src[((size_t)y0 * pw + x1) * 3 + k] +
+                              src[((size_t)y1 * pw + x0) * 3 + k] + src[((size_t)y1 * pw + x1) * 3 + k];
+                    dst[((size_t)y * nw + x) * 3 + k] = (uint8_t)((sum + 2) / 4);
+                }
+            }
+        t.level[t.n_levels] = dst;
+        t.level_w[t.n_levels] = nw;
+        t.level_h[t.n_levels] = nh;
+        t.n_levels++;
+    }
     sp_synth_texture *nt = realloc(w->textures, (w->n_textures + 1) * sizeof *nt);
     if (!nt) {
+        for (int l = 1; l < t.n_levels; l++) free(t.level[l]);
         free(t.rgb);
         return sp_error_set(err, SP_E_NOMEM, "out of memory");
     }

@@ -143,10 +143,35 @@ static int clip_emit(view *v, uint32_t tri, float q[3][3])
     return 0;
 }
 
-/* Colour of source triangle `tri` at source barycentrics b. */
-static void shade(const view *v, uint32_t tri, const float b[3], float rgb[3])
+/* Source barycentrics at screen point (x, y) of screen triangle s (perspective-correct). */
+static void source_bary(const stri *s, double x, double y, float b[3])
+{
+    double wsum = 0, wl[3];
+    for (int i = 0; i < 3; i++) {
+        double l = s->A[i] * x + s->B[i] * y + s->C[i];
+        wl[i] = l * s->iz[i];
+        wsum += wl[i];
+    }
+    if (!(wsum > 0)) wsum = 1;
+    for (int k = 0; k < 3; k++)
+        b[k] = (float)((wl[0] * s->bary[0][k] + wl[1] * s->bary[1][k] + wl[2] * s->bary[2][k]) / wsum);
+}
+
+static void interp_uv(const sp_world *w, uint32_t tri, const float b[3], float uv[2])
+{
+    const uint32_t *vi = &w->tris[tri * 3];
+    for (int k = 0; k < 2; k++)
+        uv[k] = b[0] * w->uvs[vi[0] * 2 + k] + b[1] * w->uvs[vi[1] * 2 + k] + b[2] * w->uvs[vi[2] * 2 + k];
+}
+
+/* Colour of screen triangle s at screen point (x, y); fp is the sample spacing in pixels, the
+ * footprint that picks the texture's mip level. */
+static void shade(const view *v, const stri *s, double x, double y, double fp, float rgb[3])
 {
     const sp_world *w = v->w;
+    uint32_t tri = s->tri;
+    float b[3];
+    source_bary(s, x, y, b);
     const uint32_t *vi = &w->tris[tri * 3];
     const sp_synth_material *m = &w->materials[w->tri_material[tri]];
     float pos[3], nrm[3], pat[3], uv[2];
@@ -160,8 +185,16 @@ static void shade(const view *v, uint32_t tri, const float b[3], float rgb[3])
     float alb[3] = {m->diffuse[0], m->diffuse[1], m->diffuse[2]};
     if (!v->no_detail) {
         if (m->texture >= 0) {
-            float t[3];
-            texture_sample(&w->textures[m->texture], uv[0], uv[1], t);
+            const sp_synth_texture *tx = &w->textures[m->texture];
+            float bx[3], by[3], ux[2], uy[2], t[3];
+            source_bary(s, x + fp, y, bx);
+            source_bary(s, x, y + fp, by);
+            interp_uv(w, tri, bx, ux);
+            interp_uv(w, tri, by, uy);
+            float dxu = (ux[0] - uv[0]) * tx->width, dxv = (ux[1] - uv[1]) * tx->height;
+            float dyu = (uy[0] - uv[0]) * tx->width, dyv = (uy[1] - uv[1]) * tx->height;
+            float foot = fmaxf(dxu * dxu + dxv * dxv, dyu * dyu + dyv * dyv);
+            texture_sample(tx, uv[0], uv[1], foot > 1.0f ? 0.5f * log2f(foot) : 0.0f, t);
             for (int k = 0; k < 3; k++) alb[k] *= t[k];
         } else
             pattern_apply(m->pattern, pat, w->tri_axis[tri], alb);
@@ -196,20 +229,6 @@ static void shade(const view *v, uint32_t tri, const float b[3], float rgb[3])
         if (c > 0.8f) c = 0.8f + 0.2f * (1.0f - expf((0.8f - c) * 5.0f));
         rgb[k] = c < 0 ? 0 : c;
     }
-}
-
-/* Source barycentrics at screen point (x, y) of screen triangle s (perspective-correct). */
-static void source_bary(const stri *s, double x, double y, float b[3])
-{
-    double wsum = 0, wl[3];
-    for (int i = 0; i < 3; i++) {
-        double l = s->A[i] * x + s->B[i] * y + s->C[i];
-        wl[i] = l * s->iz[i];
-        wsum += wl[i];
-    }
-    if (!(wsum > 0)) wsum = 1;
-    for (int k = 0; k < 3; k++)
-        b[k] = (float)((wl[0] * s->bary[0][k] + wl[1] * s->bary[1][k] + wl[2] * s->bary[2][k]) / wsum);
 }
 
 static void band_fn(void *ctx, long band, int tid)
@@ -317,10 +336,9 @@ static void band_fn(void *ctx, long band, int tid)
                 o->depth[pix] = (float)(1.0 / iz);
                 o->labels[pix] = (uint16_t)(v->w->tri_object[s->tri] + 1);
             }
-            float rgb[3] = {0, 0, 0}, c[3], bar[3];
+            float rgb[3] = {0, 0, 0}, c[3];
             if (best_cnt == n && best >= 0) {
-                source_bary(&v->tl.t[best], cxp, cyp, bar);
-                shade(v, v->tl.t[best].tri, bar, rgb);
+                shade(v, &v->tl.t[best], cxp, cyp, 1.0, rgb);
             } else {
                 for (int a = 0; a < n; a++) {
                     if (ids[a] < 0) {
@@ -328,9 +346,7 @@ static void band_fn(void *ctx, long band, int tid)
                         continue;
                     }
                     int i = a % S, j = a / S;
-                    const stri *s = &v->tl.t[ids[a]];
-                    source_bary(s, px + (i + 0.5) * inv, py + (j + 0.5) * inv, bar);
-                    shade(v, s->tri, bar, c);
+                    shade(v, &v->tl.t[ids[a]], px + (i + 0.5) * inv, py + (j + 0.5) * inv, inv, c);
                     for (int k = 0; k < 3; k++) rgb[k] += c[k];
                 }
                 for (int k = 0; k < 3; k++) rgb[k] /= (float)n;

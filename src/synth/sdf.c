@@ -817,7 +817,10 @@ void sp_world_free(sp_world *w)
     free(w->tri_object);
     free(w->tri_axis);
     free(w->materials);
-    for (size_t i = 0; i < w->n_textures; i++) free(w->textures[i].rgb);
+    for (size_t i = 0; i < w->n_textures; i++) {
+        for (int l = 1; l < w->textures[i].n_levels; l++) free(w->textures[i].level[l]);
+        free(w->textures[i].rgb);
+    }
     free(w->textures);
     free(w->objects);
     free(w->lights);

@@ -111,23 +111,46 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
     for (int k = 0; k < 3; k++) c[k] *= f * tint[k];
 }
 
-/* Bilinear lookup with repeat wrapping; v = 0 is the image bottom. */
-static inline void texture_sample(const sp_synth_texture *t, float u, float v, float out[3])
+/* Bilinear lookup in mip level l with repeat wrapping; v = 0 is the image bottom. */
+static inline void texture_level(const sp_synth_texture *t, int l, float u, float v, float out[3])
 {
-    float x = u * (float)t->width - 0.5f, y = (1.0f - v) * (float)t->height - 0.5f;
+    long W = t->level_w[l], H = t->level_h[l];
+    const uint8_t *px = t->level[l];
+    float x = u * (float)W - 0.5f, y = (1.0f - v) * (float)H - 0.5f;
     float fx = floorf(x), fy = floorf(y);
     float ax = x - fx, ay = y - fy;
-    long W = t->width, H = t->height;
-    long x0 = (long)fx % W, y0 = (long)fy % H;
+    /* fmodf keeps huge coordinates (tiled UVs) in range before the integer conversion */
+    long x0 = (long)fmodf(fx, (float)W), y0 = (long)fmodf(fy, (float)H);
     if (x0 < 0) x0 += W;
     if (y0 < 0) y0 += H;
+    if (x0 >= W) x0 = 0;
+    if (y0 >= H) y0 = 0;
     long x1 = x0 + 1 == W ? 0 : x0 + 1, y1 = y0 + 1 == H ? 0 : y0 + 1;
-    const uint8_t *a = t->rgb + (y0 * W + x0) * 3, *b = t->rgb + (y0 * W + x1) * 3;
-    const uint8_t *c = t->rgb + (y1 * W + x0) * 3, *d = t->rgb + (y1 * W + x1) * 3;
+    const uint8_t *a = px + (y0 * W + x0) * 3, *b = px + (y0 * W + x1) * 3;
+    const uint8_t *c = px + (y1 * W + x0) * 3, *d = px + (y1 * W + x1) * 3;
     for (int k = 0; k < 3; k++) {
         float top = a[k] + (b[k] - a[k]) * ax, bot = c[k] + (d[k] - c[k]) * ax;
         out[k] = (top + (bot - top) * ay) * (1.0f / 255.0f);
     }
+}
+
+/* Trilinear lookup: lod = log2 of the footprint in level-0 texels (<= 0: plain bilinear). */
+static inline void texture_sample(const sp_synth_texture *t, float u, float v, float lod, float out[3])
+{
+    if (!(lod > 0) || t->n_levels <= 1) {
+        texture_level(t, 0, u, v, out);
+        return;
+    }
+    float maxl = (float)(t->n_levels - 1);
+    if (lod >= maxl) {
+        texture_level(t, t->n_levels - 1, u, v, out);
+        return;
+    }
+    int l0 = (int)lod;
+    float f = lod - (float)l0, a[3], b[3];
+    texture_level(t, l0, u, v, a);
+    texture_level(t, l0 + 1, u, v, b);
+    for (int k = 0; k < 3; k++) out[k] = a[k] + (b[k] - a[k]) * f;
 }
 
 #endif

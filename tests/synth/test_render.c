@@ -1,5 +1,6 @@
 /* synth rasterizer: depth against ray-box intersection in double precision, labels against the
  * ground-truth boxes, near-plane clipping, and bytes independent of the thread count. */
+#include "semsplat/io.h"
 #include "semsplat/synth.h"
 #include "test.h"
 
@@ -188,8 +189,73 @@ static void test_threads_and_clipping(void)
     sp_world_free(&w);
 }
 
+static void put(const char *dir, const char *name, const char *text)
+{
+    char p[1400];
+    snprintf(p, sizeof p, "%s/%s", dir, name);
+    FILE *f = fopen(p, "w");
+    fputs(text, f);
+    fclose(f);
+}
+
+/* A textured .obj quad: each quadrant of the texture lands where its UVs say (and the right way
+ * up: v = 0 at the image bottom); a missing texture is an error naming it. */
+static void test_textured_mesh(void)
+{
+    const char *d = test_tmpdir("synth_texture");
+    static const uint8_t quad_rgb[4][3] = {{230, 20, 20}, {20, 230, 20}, {20, 20, 230}, {230, 230, 230}};
+    uint8_t tex[4 * 4 * 3];
+    for (int y = 0; y < 4; y++)
+        for (int x = 0; x < 4; x++)
+            memcpy(&tex[(y * 4 + x) * 3], quad_rgb[(y / 2) * 2 + x / 2], 3); /* TL red, TR green, BL blue, BR white */
+    sp_image img = {.width = 4, .height = 4, .channels = 3, .bit_depth = 8, .data = tex};
+    sp_error err = {0};
+    char p[1400];
+    snprintf(p, sizeof p, "%s/tex.png", d);
+    CHECK_OK(sp_image_write_png(p, &img, &err), &err);
+    put(d, "quad.obj", "mtllib quad.mtl\nv 0 -1 -1\nv 0 1 -1\nv 0 1 1\nv 0 -1 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                       "usemtl m\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+    put(d, "quad.mtl", "newmtl m\nKd 1 1 1\nmap_Kd tex.png\n");
+    put(d, "t.world", "<sdf version='1.6'><world name='t'><model name='poster'><pose>0 0 1 0 0 0</pose><link name='l'>"
+                      "<visual name='v'><geometry><mesh><uri>quad.obj</uri></mesh></geometry></visual></link></model></world></sdf>");
+    snprintf(p, sizeof p, "%s/t.world", d);
+    sp_world w;
+    sp_synth_load_opts o = {.no_env = 1};
+    CHECK_OK(sp_synth_load_world(p, &o, &w, &err), &err);
+    if (err.code) return;
+    CHECK(w.n_textures == 1 && w.textures[0].n_levels == 3);
+    sp_camera c;
+    make_cam(&c, 64, 64, -2.5f, 0, 1, 0, 0, 1);
+    sp_synth_frame fr = {0};
+    CHECK_OK(sp_synth_render(&w, &c, NULL, NULL, &fr, &err), &err);
+    for (int qy = 0; qy < 2 && fr.rgb; qy++)
+        for (int qx = 0; qx < 2; qx++) {
+            /* world point at the centre of texture quadrant (qx, qy): u = (y + 1) / 2, v = (z_local + 1) / 2 */
+            float u = 0.25f + 0.5f * qx, v = 0.75f - 0.5f * qy;
+            float P[3] = {0, 2 * u - 1, 2 * v - 1 + 1}, Q[3];
+            for (int r = 0; r < 3; r++) Q[r] = c.R[r * 3] * P[0] + c.R[r * 3 + 1] * P[1] + c.R[r * 3 + 2] * P[2] + c.t[r];
+            int px = (int)(c.fx * Q[0] / Q[2] + c.cx), py = (int)(c.fy * Q[1] / Q[2] + c.cy);
+            const float *pix = &fr.rgb[((size_t)py * 64 + px) * 3];
+            const uint8_t *want = quad_rgb[qy * 2 + qx];
+            for (int k = 0; k < 3; k++)
+                for (int k2 = 0; k2 < 3; k2++)
+                    if (want[k] > 200 && want[k2] < 50)
+                        CHECK_MSG(pix[k] > 2.5f * pix[k2], "quadrant %d,%d pixel %d,%d = %.2f %.2f %.2f", qx, qy, px, py,
+                                  pix[0], pix[1], pix[2]);
+        }
+    sp_synth_frame_free(&fr);
+    sp_world_free(&w);
+    put(d, "quad.mtl", "newmtl m\nKd 1 1 1\nmap_Kd missing.png\n");
+    CHECK_FAILS(sp_synth_load_world(p, &o, &w, &err), SP_E_NOTFOUND, &err, "missing.png");
+    o.skip_missing = 1;
+    CHECK_OK(sp_synth_load_world(p, &o, &w, &err), &err);
+    CHECK(w.n_missing == 1 && w.n_textures == 0 && w.n_triangles == 2);
+    sp_world_free(&w);
+}
+
 int main(void)
 {
+    RUN(test_textured_mesh);
     RUN(test_depth_and_labels);
     RUN(test_labels_inside_gt_boxes);
     RUN(test_threads_and_clipping);
