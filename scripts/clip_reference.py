@@ -305,7 +305,8 @@ def tokenizer_pairs(vocab_dir, out, n, keep):
         if name == "CLIPTokenizer":
             json.dump(pairs, open(os.path.join(out, "tokenizer_pairs_all.json"), "w"), ensure_ascii=False)
             step = max(1, len(pairs) // keep)
-            sub = pairs[:90] + [p for p in pairs[90::step] if len(p[0]) < 400][: keep - 90]
+            ok = [p for p in pairs if "\x00" not in p[0]]  # C strings cannot carry U+0000
+            sub = ok[:90] + [p for p in ok[90::step] if len(p[0]) < 400][: keep - 90]
             json.dump(sub, open(os.path.join(out, "tokenizer_pairs.json"), "w"), ensure_ascii=False, indent=0)
     # how the variants differ from each other
     names = list(variants)
@@ -362,7 +363,7 @@ def main():
     ap.add_argument("what", choices=["model", "tiny", "tokenizer", "bench"])
     ap.add_argument("--config", default="data/clip/config-vit-base-patch16.json")
     ap.add_argument("--vocab", default="data/clip")
-    ap.add_argument("--out", required=True)
+    ap.add_argument("--out", default="")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--n", type=int, default=12000)
     ap.add_argument("--keep", type=int, default=300)
@@ -370,6 +371,8 @@ def main():
     a = ap.parse_args()
     if a.what == "bench":
         return bench_transformers()
+    if not a.out:
+        ap.error("--out is required for " + a.what)
     if a.what == "tokenizer":
         return tokenizer_pairs(a.vocab, a.out, a.n, a.keep)
     import torch

@@ -1,9 +1,12 @@
-/* The CLIP tokenizer, reproducing Hugging Face CLIPTokenizer (without ftfy, its default): BERT
- * BasicTokenizer clean-up (drop controls, whitespace -> ' ', spaces around CJK ideographs, NFC,
- * split on whitespace, str.lower per token), then the CLIP pattern
- *   <|startoftext|> | <|endoftext|> | 's|'t|'re|'ve|'m|'ll|'d | \p{L}+ | \p{N} | [^\s\p{L}\p{N}]+
- * and byte-level BPE with '</w>' on each word's last symbol. Unicode data come from
- * unicode_tables.h (generated from Python's unicodedata by gen_unicode.py). */
+/* The CLIP tokenizer, reproducing transformers' CLIPTokenizer (5.x: the Rust `tokenizers`
+ * pipeline, identical ids to CLIPTokenizerFast): the special tokens <|startoftext|> and
+ * <|endoftext|> are cut out of the raw text first (exact match), then each piece is normalised
+ * (NFC, every \s+ run -> ' ', per-character lower-case), split by the CLIP pattern without its
+ * special-token alternatives (as transformers' converter builds it)
+ *   's|'t|'re|'ve|'m|'ll|'d | \p{L}+ | \p{N} | [^\s\p{L}\p{N}]+
+ * (whitespace dropped), and each piece's UTF-8 bytes go through byte-level BPE with '</w>' on
+ * the last symbol. Unicode data come from unicode_tables.h (gen_unicode.py). The older Python
+ * tokenizer differed (it dropped control characters, spaced CJK ideographs, used final sigma). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,11 +39,11 @@ static int range_lookup(const uint32_t *starts, const uint8_t *vals, int n, uint
 }
 
 #define NELEM(a) ((int)(sizeof(a) / sizeof((a)[0])))
-enum { UC_OTHER = 0, UC_LETTER, UC_NUMBER, UC_REMOVE, UC_SPACE, UC_SEP };
+enum { UC_OTHER = 0, UC_LETTER = 1, UC_NUMBER = 2, UC_SPACE = 4 };
 
 static int uc_class(uint32_t cp)
 {
-    if (cp >= 0x110000) return UC_REMOVE;
+    if (cp >= 0x110000) return UC_OTHER;
     return range_lookup(uc_class_start, uc_class_val, NELEM(uc_class_start), cp);
 }
 
@@ -166,14 +169,8 @@ static void nfc(cpbuf *b)
     free(d.v);
 }
 
-static int case_props(uint32_t cp) /* bit 0 cased, bit 1 case-ignorable */
-{
-    if (cp >= 0x110000) return 0;
-    return range_lookup(uc_case_start, uc_case_val, NELEM(uc_case_start), cp);
-}
-
-/* Python str.lower() of v[a..b) appended to out, including U+0130 -> i + U+0307 and the
- * Final_Sigma rule for U+03A3. */
+/* Per-character full lower-case mapping (Rust's char::to_lowercase): U+0130 -> i + U+0307, no
+ * final-sigma context. */
 static void lower_into(const uint32_t *v, size_t a, size_t b, cpbuf *out)
 {
     for (size_t i = a; i < b; i++) {
@@ -183,34 +180,11 @@ static void lower_into(const uint32_t *v, size_t a, size_t b, cpbuf *out)
         } else if (c == 0x130) {
             cp_push(out, 'i');
             cp_push(out, 0x307);
-        } else if (c == 0x3A3) {
-            int before = 0, after = 0;
-            for (size_t j = i; j > a; j--) {
-                int p = case_props(v[j - 1]);
-                if (p & 2) continue;
-                before = p & 1;
-                break;
-            }
-            for (size_t j = i + 1; j < b; j++) {
-                int p = case_props(v[j]);
-                if (p & 2) continue;
-                after = p & 1;
-                break;
-            }
-            cp_push(out, before && !after ? 0x3C2 : 0x3C3);
         } else {
             int k = pair_find(uc_lower, NELEM(uc_lower), c);
             cp_push(out, k < 0 ? c : uc_lower[k][1]);
         }
     }
-}
-
-static int is_cjk(uint32_t c)
-{
-    return (c >= 0x4E00 && c <= 0x9FFF) || (c >= 0x3400 && c <= 0x4DBF) ||
-           (c >= 0x20000 && c <= 0x2A6DF) || (c >= 0x2A700 && c <= 0x2B73F) ||
-           (c >= 0x2B740 && c <= 0x2B81F) || (c >= 0x2B820 && c <= 0x2CEAF) ||
-           (c >= 0xF900 && c <= 0xFAFF) || (c >= 0x2F800 && c <= 0x2FA1F);
 }
 
 /* UTF-8 to code points as Python's decode(errors="replace") would (maximal subparts). */
@@ -341,13 +315,10 @@ static int pretokenize(const sp_clip_tokenizer *t, const uint32_t *v, size_t n, 
     static const char *const contractions[] = {"'s", "'t", "'re", "'ve", "'m", "'ll", "'d"};
     size_t i = 0;
     while (i < n) {
-        int k;
-        if ((k = match_lit(v, n, i, "<|startoftext|>"))) { id_push(out, SP_CLIP_BOS); i += k; continue; }
-        if ((k = match_lit(v, n, i, "<|endoftext|>"))) { id_push(out, SP_CLIP_EOS); i += k; continue; }
+        int k = 0;
         int cls = uc_class(v[i]);
-        if (cls == UC_SPACE || cls == UC_SEP) { i++; continue; }
+        if (cls == UC_SPACE) { i++; continue; }
         size_t j = i;
-        k = 0;
         for (int c = 0; c < 7 && !k; c++) k = match_lit(v, n, i, contractions[c]);
         if (k) j = i + (size_t)k;
         else if (cls == UC_LETTER) { while (j < n && uc_class(v[j]) == UC_LETTER) j++; }
@@ -355,7 +326,7 @@ static int pretokenize(const sp_clip_tokenizer *t, const uint32_t *v, size_t n, 
         else {
             while (j < n) {
                 int c = uc_class(v[j]);
-                if (c == UC_LETTER || c == UC_NUMBER || c == UC_SPACE || c == UC_SEP) break;
+                if (c == UC_LETTER || c == UC_NUMBER || c == UC_SPACE) break;
                 j++;
             }
         }
@@ -365,40 +336,55 @@ static int pretokenize(const sp_clip_tokenizer *t, const uint32_t *v, size_t n, 
     return 0;
 }
 
+/* Normalises v[a..b) (NFC, whitespace runs -> ' ', lower-case) and pre-tokenizes it into out. */
+static int tokenize_piece(const sp_clip_tokenizer *t, const uint32_t *v, size_t a, size_t b, idlist *out)
+{
+    cpbuf nf = {0}, low = {0};
+    int rc = 0;
+    for (size_t i = a; i < b; i++) cp_push(&nf, v[i]);
+    nfc(&nf);
+    for (size_t i = 0; i < nf.n;) {
+        if (uc_class(nf.v[i]) == UC_SPACE) {
+            while (i < nf.n && uc_class(nf.v[i]) == UC_SPACE) i++;
+            cp_push(&low, ' ');
+            continue;
+        }
+        size_t j = i;
+        while (j < nf.n && uc_class(nf.v[j]) != UC_SPACE) j++;
+        lower_into(nf.v, i, j, &low);
+        i = j;
+    }
+    if (nf.oom || low.oom || pretokenize(t, low.v, low.n, out)) rc = -1;
+    free(nf.v);
+    free(low.v);
+    return rc;
+}
+
 int sp_clip_tokenize(const sp_clip_tokenizer *t, const char *text, int32_t *ids, int cap,
                      int *n_out, sp_error *err)
 {
-    cpbuf raw = {0}, clean = {0}, low = {0};
+    cpbuf raw = {0};
     int rc = 0;
     utf8_decode((const unsigned char *)(text ? text : ""), &raw);
-    /* BasicTokenizer._clean_text and _tokenize_chinese_chars */
-    for (size_t i = 0; i < raw.n; i++) {
-        uint32_t c = raw.v[i];
-        int cls = uc_class(c);
-        if (cls == UC_REMOVE) continue;
-        if (cls == UC_SPACE) { cp_push(&clean, ' '); continue; }
-        if (is_cjk(c)) { cp_push(&clean, ' '); cp_push(&clean, c); cp_push(&clean, ' '); continue; }
-        cp_push(&clean, c);
-    }
-    nfc(&clean);
-    /* whitespace_tokenize, lower() per token, " ".join */
-    for (size_t i = 0; i < clean.n;) {
-        int cls = uc_class(clean.v[i]);
-        if (cls == UC_SPACE || cls == UC_SEP) { i++; continue; }
-        size_t j = i;
-        while (j < clean.n && uc_class(clean.v[j]) != UC_SPACE && uc_class(clean.v[j]) != UC_SEP) j++;
-        if (low.n) cp_push(&low, ' ');
-        lower_into(clean.v, i, j, &low);
-        i = j;
-    }
     idlist out = {ids, ids ? cap : 0, 0, 0};
-    if (raw.oom || clean.oom || low.oom || pretokenize(t, low.v, low.n, &out))
+    /* special tokens are matched on the raw text, before any normalisation */
+    size_t start = 0;
+    for (size_t i = 0; i <= raw.n && !rc && !raw.oom; i++) {
+        int k = 0;
+        int32_t special = 0;
+        if (i < raw.n && (k = match_lit(raw.v, raw.n, i, "<|startoftext|>"))) special = SP_CLIP_BOS;
+        else if (i < raw.n && (k = match_lit(raw.v, raw.n, i, "<|endoftext|>"))) special = SP_CLIP_EOS;
+        if (!special && i < raw.n) continue;
+        if (i > start && tokenize_piece(t, raw.v, start, i, &out)) rc = -1;
+        if (special) id_push(&out, special);
+        start = i + (size_t)k;
+        if (k) i += (size_t)k - 1;
+    }
+    if (raw.oom || rc)
         rc = sp_error_set(err, SP_E_NOMEM, "tokenizer: out of memory (text of %zu code points)",
                           raw.n);
     *n_out = out.n;
     free(raw.v);
-    free(clean.v);
-    free(low.v);
     return rc;
 }
 

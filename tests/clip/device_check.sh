@@ -18,18 +18,19 @@ min_build() {
   local nv=$(command -v nvcc || echo /usr/local/cuda/bin/nvcc) b=build-gpu/min o objs=()
   mkdir -p $b build-gpu/bench
   local cf=(-O2 -std=c11 -fPIC -D_POSIX_C_SOURCE=200809L -D_DEFAULT_SOURCE -DSP_HAVE_CUDA=1 -DSP_CLIP_NO_BLAS
-            "-DSP_DATA_DIR=\"$PWD/data\"" -Iinclude -Isrc -I.clipdev/include -I.clipdev/include/cjson)
-  for f in src/core/*.c src/io/common.c src/io/json.c src/io/npy.c src/io/safetensors.c src/render/*.c \
+            "-DSP_DATA_DIR=\"$PWD/data\"" -Iinclude -Isrc -I.clipdev/include -I.clipdev/include/cjson
+            -I"$(dirname "$(dirname "$nv")")/include")
+  for f in src/core/*.c src/io/common.c src/io/json.c src/io/npy.c src/io/safetensors.c tests/clip/device_shim.c \
            src/clip/tokenizer.c src/clip/model.c src/clip/cpu.c src/clip/dense.c src/clip/label.c; do
     o=$b/$(echo "$f" | tr / _).o; objs+=("$o"); gcc "${cf[@]}" -c "$f" -o "$o" &
   done
-  for f in src/render/cuda/*.cu src/clip/cuda/*.cu; do
+  for f in src/clip/cuda/*.cu; do
     o=$b/$(echo "$f" | tr / _).o; objs+=("$o")
     "$nv" -O3 --use_fast_math -arch=sm_90 -Xcompiler -fPIC -Iinclude -Isrc -c "$f" -o "$o" &
   done
   wait
   rm -f $b/libsp.a; ar rcs $b/libsp.a "${objs[@]}" || return 1
-  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
+  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lcudart -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
   for t in $TESTS; do
     gcc "${cf[@]}" -Itests "-DSP_SOURCE_DIR=\"$PWD\"" "-DSP_BUILD_DIR=\"$PWD/build-gpu\"" -c tests/clip/$t.c -o $b/$t.o &&
       "$nv" -arch=sm_90 -o build-gpu/clip_$t $b/$t.o "${lk[@]}" || echo "link $t failed"
