@@ -101,6 +101,7 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
         const float half_a = 0.5f * con[0];
+        const cpu_v4f v_half_a = cpu_v4_splat(half_a), v_opac = cpu_v4_splat(op), v_cut = cpu_v4_splat(cut);
         const float *restrict col = colors + (size_t)g * D;
         const int32_t pos1 = (int32_t)(j - start); /* contributes where pos < last[p] */
         const cpu_v4i pos = {pos1, pos1, pos1, pos1};
@@ -110,6 +111,7 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
             const float by = con[1] * dy, hy = 0.5f * con[2] * dy * dy;
+            const cpu_v4f v_by = cpu_v4_splat(by), v_hy = cpu_v4_splat(hy);
             const cpu_v4f vdy = cpu_v4_splat(dy);
             int rx0, rx1;
             cpu_row_range(con, det_con, cut, mx, dy, x0, x1, &rx0, &rx1);
@@ -117,7 +119,7 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 cpu_v4f gv;
                 const cpu_v4f dx = cpu_v4_splat((float)px + 0.5f - mx) + lanef;
-                const cpu_v4f a = cpu_alpha4(half_a, by, hy, op, cut, dx, &gv);
+                const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, dx, &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
                 const cpu_v4i valid = in_row & (pos < load4i(last + p)) & (a > zero);
                 if (!cpu_v4_any(valid)) continue;

@@ -76,6 +76,7 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
         const float half_a = 0.5f * con[0];
+        const cpu_v4f v_half_a = cpu_v4_splat(half_a), v_opac = cpu_v4_splat(op), v_cut = cpu_v4_splat(cut);
         const float *restrict col = colors + (size_t)g * D;
         const cpu_v4i pos = {(int32_t)(j - start) + 1, (int32_t)(j - start) + 1,
                              (int32_t)(j - start) + 1, (int32_t)(j - start) + 1};
@@ -83,13 +84,14 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
             const float by = con[1] * dy, hy = 0.5f * con[2] * dy * dy;
+            const cpu_v4f v_by = cpu_v4_splat(by), v_hy = cpu_v4_splat(hy);
             int rx0, rx1;
             cpu_row_range(con, det_con, cut, mx, dy, x0, x1, &rx0, &rx1);
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 cpu_v4f gv;
                 const cpu_v4f dx = cpu_v4_splat((float)px + 0.5f - mx) + lanef;
-                const cpu_v4f a = cpu_alpha4(half_a, by, hy, op, cut, dx, &gv);
+                const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, dx, &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
                 const cpu_v4i dn = load4i(done + p);
                 const cpu_v4i valid = in_row & ~dn & (a > zero);
@@ -98,7 +100,7 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
                 const cpu_v4f next_T = Tv * (one - a);
                 const cpu_v4i stop = valid & (next_T < cpu_v4_splat(SP_TRANSMITTANCE_MIN));
                 const cpu_v4i use = valid & ~stop;
-                ndone -= stop[0] + stop[1] + stop[2] + stop[3]; /* lanes are 0 or -1 */
+                ndone += cpu_v4_count(stop);
                 store4i(done + p, dn | stop);
                 const cpu_v4f w = a * Tv;
                 for (int c = 0; c < D; c++) {

@@ -120,10 +120,14 @@ static inline void cpu_row_range(const float con[3], float det_con, float cut, f
         return;
     }
     float sq = sqrtf(disc), inv_a = 1.f / con[0], c = -con[1] * dy;
-    float flo = floorf(mx - 0.5f + (c - sq) * inv_a) - 1.f;
-    float fhi = ceilf(mx - 0.5f + (c + sq) * inv_a) + 1.f;
-    *lo = flo > (float)x0 ? (flo < (float)x1 + 1.f ? (int)flo : x1 + 1) : x0;
-    *hi = fhi < (float)x1 ? (fhi > (float)x0 - 1.f ? (int)fhi : x0 - 1) : x1;
+    float flo = mx - 0.5f + (c - sq) * inv_a, fhi = mx - 0.5f + (c + sq) * inv_a;
+    /* clamp in float first (the roots can be huge), then truncate with a 2-pixel margin, which
+     * covers floor/ceil (truncation is within 1 of either) plus the 1-pixel safety margin */
+    flo = flo > (float)x0 ? (flo < (float)x1 + 1.f ? flo : (float)x1 + 1.f) : (float)x0;
+    fhi = fhi < (float)x1 ? (fhi > (float)x0 - 1.f ? fhi : (float)x0 - 1.f) : (float)x1;
+    int l = (int)flo - 2, h = (int)fhi + 2;
+    *lo = l > x0 ? l : x0;
+    *hi = h < x1 ? h : x1;
 }
 
 /* Four pixels of one row at once (GCC vector extensions: SSE2 on x86-64, NEON on arm64). */
@@ -158,24 +162,42 @@ static inline cpu_v4f cpu_exp_neg4(cpu_v4f x)
 
 /* The CPU backend's alpha rule for four pixels of a row (sp_gm_alpha's rule, with cpu_exp_neg and
  * the sigma cut): dx = pixel centres - mean x; per-row constants half_a = a / 2, by = b dy,
- * hy = c dy^2 / 2, so sigma = (half_a dx + by) dx + hy. Forward and backward both call this, so
+ * hy = c dy^2 / 2 (all arguments broadcast to the four lanes by the caller, out of the loops), so
+ * sigma = (half_a dx + by) dx + hy. Forward and backward both call this, so
  * they make the same decisions and get the same bits. Returns alpha (0 = skipped) and
  * *g = exp(-sigma). */
-static inline cpu_v4f cpu_alpha4(float half_a, float by, float hy, float op, float cut,
+static inline cpu_v4f cpu_alpha4(cpu_v4f half_a, cpu_v4f by, cpu_v4f hy, cpu_v4f op, cpu_v4f cut,
                                  cpu_v4f dx, cpu_v4f *g)
 {
-    cpu_v4f sigma = (cpu_v4_splat(half_a) * dx + cpu_v4_splat(by)) * dx + cpu_v4_splat(hy);
-    cpu_v4i in = (sigma >= cpu_v4_splat(0.f)) & (sigma <= cpu_v4_splat(cut));
+    cpu_v4f sigma = (half_a * dx + by) * dx + hy;
+    cpu_v4i in = (sigma >= cpu_v4_splat(0.f)) & (sigma <= cut);
     /* out-of-range lanes: evaluate at sigma = 0 (harmless), then zero */
     cpu_v4f gv = cpu_exp_neg4(-cpu_v4_select(in, sigma, cpu_v4_splat(0.f)));
-    cpu_v4f a = cpu_v4_splat(op) * gv;
+    cpu_v4f a = op * gv;
     a = cpu_v4_select(a < cpu_v4_splat(SP_ALPHA_MAX), a, cpu_v4_splat(SP_ALPHA_MAX));
     in &= a >= cpu_v4_splat(SP_ALPHA_MIN);
     *g = gv;
     return cpu_v4_select(in, a, cpu_v4_splat(0.f));
 }
 
-static inline int cpu_v4_any(cpu_v4i m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+/* Number of set lanes of a mask. */
+static inline int cpu_v4_count(cpu_v4i m)
+{
+#if defined(__SSE__)
+    return __builtin_popcount((unsigned)__builtin_ia32_movmskps((cpu_v4f)m));
+#else
+    return -(m[0] + m[1] + m[2] + m[3]);
+#endif
+}
+
+static inline int cpu_v4_any(cpu_v4i m)
+{
+#if defined(__SSE__)
+    return __builtin_ia32_movmskps((cpu_v4f)m) != 0; /* one instruction on x86 */
+#else
+    return (m[0] | m[1] | m[2] | m[3]) != 0;
+#endif
+}
 
 _Static_assert(sizeof(cpu_gauss) == 64, "cpu_gauss is one cache line");
 
