@@ -64,6 +64,7 @@ typedef struct sp_synth_light {
     float direction[3]; /* world, unit, direction the light travels (directional, spot) */
     float diffuse[3];
     float att_constant, att_linear, att_quadratic, range;
+    float spot_cos_inner, spot_cos_outer, spot_falloff; /* spot cone (cosines of the half angles) */
 } sp_synth_light;
 
 /* One labelled instance (a top-level model). Label id in label images = index + 1. */

@@ -218,6 +218,13 @@ static void shade(const view *v, const stri *s, double x, double y, double fp, f
             for (int k = 0; k < 3; k++) d[k] /= dist;
             float den = L->att_constant + L->att_linear * dist + L->att_quadratic * dist * dist;
             att = den > 1e-3f ? 1.0f / den : 1000.0f;
+            if (L->type == SP_LIGHT_SPOT) {
+                /* OGRE's spot: full inside the inner cone, none outside the outer, falloff between */
+                float cosa = -(d[0] * L->direction[0] + d[1] * L->direction[1] + d[2] * L->direction[2]);
+                if (cosa <= L->spot_cos_outer) continue;
+                if (cosa < L->spot_cos_inner)
+                    att *= powf((cosa - L->spot_cos_outer) / (L->spot_cos_inner - L->spot_cos_outer), L->spot_falloff);
+            }
         }
         float ndl = nrm[0] * d[0] + nrm[1] * d[1] + nrm[2] * d[2];
         if (ndl <= 0) continue;

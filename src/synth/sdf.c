@@ -494,6 +494,7 @@ static int read_visual(ctx *c, const scope *s, xmlNodePtr link, const xform *lin
 /* ---- models and includes --------------------------------------------------------------------- */
 
 static int read_model(ctx *c, const scope *s);
+static int read_light(ctx *c, const char *file, xmlNodePtr e, const xform *base);
 
 static int new_object(ctx *c, const char *name, const char *source, const xform *pose, long line)
 {
@@ -631,8 +632,10 @@ static int read_model(ctx *c, const scope *s)
         if (is_elem(e, "link")) {
             xform lw;
             if ((rc = element_world(c, s, e, &lw, 0))) return rc;
-            for (xmlNodePtr v = e->children; v; v = v->next)
+            for (xmlNodePtr v = e->children; v; v = v->next) {
                 if (is_elem(v, "visual") && (rc = read_visual(c, s, e, &lw, v))) return rc;
+                if (is_elem(v, "light") && (rc = read_light(c, s->file, v, &lw))) return rc;
+            }
         } else if (is_elem(e, "model")) {
             scope n = *s;
             n.node = e;
@@ -662,7 +665,8 @@ static void model_source(xmlNodePtr m, const char *name, char *out, size_t cap)
     if (sl) *sl = 0;
 }
 
-static int read_light(ctx *c, const char *file, xmlNodePtr e)
+/* <light> at world level (base = identity) or inside a link (base = the link's world pose). */
+static int read_light(ctx *c, const char *file, xmlNodePtr e, const xform *base)
 {
     sp_synth_light l;
     memset(&l, 0, sizeof l);
@@ -673,6 +677,7 @@ static int read_light(ctx *c, const char *file, xmlNodePtr e)
     xform T;
     int rc = pose_of(c, file, e, &T, rel, sizeof rel);
     if (rc) return rc;
+    T = xf_mul(*base, T);
     double d[4] = {0, 0, -1, 0}, dif[4] = {1, 1, 1, 1}, wd[3];
     if (child(e, "direction") && (rc = numbers(c, file, child(e, "direction"), 3, 3, d)) < 0) return rc;
     if (child(e, "diffuse") && (rc = numbers(c, file, child(e, "diffuse"), 3, 4, dif)) < 0) return rc;
@@ -697,6 +702,20 @@ static int read_light(ctx *c, const char *file, xmlNodePtr e)
             }
         }
     }
+    l.spot_cos_inner = -1;
+    l.spot_cos_outer = -1;
+    l.spot_falloff = 1;
+    xmlNodePtr sp = child(e, "spot");
+    if (l.type == SP_LIGHT_SPOT && sp) {
+        double inner = 0, outer = M_PI, fall = 1;
+        if (child(sp, "inner_angle") && (rc = numbers(c, file, child(sp, "inner_angle"), 1, 1, &inner)) < 0) return rc;
+        if (child(sp, "outer_angle") && (rc = numbers(c, file, child(sp, "outer_angle"), 1, 1, &outer)) < 0) return rc;
+        if (child(sp, "falloff") && (rc = numbers(c, file, child(sp, "falloff"), 1, 1, &fall)) < 0) return rc;
+        if (outer < inner) outer = inner;
+        l.spot_cos_inner = (float)cos(inner);
+        l.spot_cos_outer = (float)cos(outer);
+        l.spot_falloff = (float)(fall > 0 ? fall : 1);
+    }
     rc = wb_light(&c->b, &l);
     return rc < 0 ? sp_error_set(c->err, rc, "out of memory") : 0;
 }
@@ -720,7 +739,8 @@ static int read_world(ctx *c, const char *file, xmlNodePtr world)
         } else if (is_elem(e, "include")) {
             if ((rc = read_include(c, NULL, file, e, -1))) return rc;
         } else if (is_elem(e, "light")) {
-            if ((rc = read_light(c, file, e))) return rc;
+            xform id = xf_identity();
+            if ((rc = read_light(c, file, e, &id))) return rc;
         } else if (is_elem(e, "scene")) {
             double v[4];
             if (child(e, "ambient")) {

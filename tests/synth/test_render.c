@@ -253,8 +253,42 @@ static void test_textured_mesh(void)
     sp_world_free(&w);
 }
 
+/* A spot light inside a model's link lights its cone and nothing outside it. */
+static void test_spot_light_in_link(void)
+{
+    const char *d = test_tmpdir("synth_spot");
+    put(d, "s.world", "<sdf version='1.6'><world name='s'><scene><ambient>0.2 0.2 0.2 1</ambient></scene>"
+                      "<model name='floor'><link name='l'><visual name='v'><geometry><plane><size>10 10</size></plane></geometry>"
+                      "<material><diffuse>0.5 0.5 0.5 1</diffuse></material></visual></link></model>"
+                      "<model name='lamp'><pose>1 0 2 0 0 0</pose><link name='l'><light name='spot' type='spot'>"
+                      "<direction>0 0 -1</direction><diffuse>1 1 1 1</diffuse><spot><inner_angle>0.2</inner_angle>"
+                      "<outer_angle>0.3</outer_angle><falloff>1</falloff></spot></light></link></model></world></sdf>");
+    char p[1400];
+    snprintf(p, sizeof p, "%s/s.world", d);
+    sp_world w;
+    sp_error err = {0};
+    sp_synth_load_opts o = {.no_env = 1};
+    CHECK_OK(sp_synth_load_world(p, &o, &w, &err), &err);
+    if (err.code) return;
+    CHECK(w.n_lights == 1 && w.lights[0].type == SP_LIGHT_SPOT);
+    CHECK_NEAR(w.lights[0].position[0], 1, 1e-6);
+    CHECK_NEAR(w.lights[0].position[2], 2, 1e-6);
+    sp_camera c;
+    make_cam(&c, 64, 64, 1.001f, 0.0f, 4.0f, 1.0f, 0.0f, 0.0f); /* looking straight down at the spot */
+    sp_synth_render_opts ro = {.no_detail = 1};
+    sp_synth_frame fr = {0};
+    CHECK_OK(sp_synth_render(&w, &c, &ro, NULL, &fr, &err), &err);
+    if (fr.rgb) {
+        float centre = fr.rgb[((size_t)32 * 64 + 32) * 3], corner = fr.rgb[((size_t)2 * 64 + 2) * 3];
+        CHECK_MSG(centre > 2.5f * corner, "spot centre %.3f, outside %.3f", centre, corner);
+    }
+    sp_synth_frame_free(&fr);
+    sp_world_free(&w);
+}
+
 int main(void)
 {
+    RUN(test_spot_light_in_link);
     RUN(test_textured_mesh);
     RUN(test_depth_and_labels);
     RUN(test_labels_inside_gt_boxes);
