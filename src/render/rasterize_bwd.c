@@ -4,6 +4,7 @@
  * it (starting from T_final * background), which gives
  *   dC/dc_i = alpha_i T_i,  dC/dalpha_i = T_i c_i - S / (1 - alpha_i),
  *   d(sum w)/dalpha_i = T_final / (1 - alpha_i),  and the same for depth with z_i.
+ * Alphas come from cpu_alpha4, the forward's own function, so both make the same decisions.
  * Each (Gaussian, tile) pair writes its gradient sums to its own slot, never shared, so the
  * result does not depend on which thread ran which tile; project.c sums the slots per Gaussian
  * in slot order. */

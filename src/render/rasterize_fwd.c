@@ -1,10 +1,11 @@
 /* CPU forward compositing: one 16x16 tile per pool item. The loop runs Gaussian-outer over the
  * tile's front-to-back list and pixel-inner over the part of the Gaussian's pixel box inside the
- * tile, so each Gaussian's parameters are loaded once per tile and small Gaussians touch few
- * pixels. Per pixel it keeps the transmittance T, the accumulated channels and the position of
- * the last contributor (for the backward), and stops by the 3DGS rules (sp_gm_alpha skips
- * alpha < 1/255 and caps at 0.99; a Gaussian that would take T below 1e-4 ends the pixel and
- * does not contribute). The tile stops when all its pixels are done. */
+ * tile (narrowed per row to the ellipse where alpha can reach 1/255), four pixels of a row at a
+ * time, so each Gaussian's record (one cache line, streamed from the tile list) is read once per
+ * tile. Per pixel it keeps the transmittance T, the accumulated channels and the position of the
+ * last contributor (for the backward), and follows the 3DGS rules (cpu_alpha4 in
+ * render_internal.h skips alpha < 1/255 and caps at 0.99; a Gaussian that would take T below
+ * 1e-4 ends the pixel and does not contribute). The tile stops when all its pixels are done. */
 #include <stdlib.h>
 #include <string.h>
 
