@@ -450,3 +450,26 @@ int pattern_from_names(const char *script, const char *visual, const char *link,
     }
     return SP_PATTERN_PLASTER;
 }
+
+void sp_world_free(sp_world *w)
+{
+    if (!w) return;
+    free(w->positions);
+    free(w->normals);
+    free(w->uvs);
+    free(w->pattern);
+    free(w->tris);
+    free(w->tri_material);
+    free(w->tri_object);
+    free(w->tri_axis);
+    free(w->materials);
+    for (size_t i = 0; i < w->n_textures; i++) {
+        for (int l = 1; l < w->textures[i].n_levels; l++) free(w->textures[i].level[l]);
+        free(w->textures[i].rgb);
+    }
+    free(w->textures);
+    free(w->objects);
+    free(w->lights);
+    free(w->chunks);
+    memset(w, 0, sizeof *w);
+}

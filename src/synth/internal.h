@@ -5,6 +5,8 @@
 
 #include "semsplat/synth.h"
 
+#include <limits.h>
+
 /* Row-major 4x4 rigid (or scaled) transform in double: x_parent = M x_child. */
 typedef struct { double m[16]; } xform;
 
@@ -48,6 +50,26 @@ int geom_plane(wbuild *b, const xform *to_world, const double normal[3], const d
  * texture and sdf_material_set). Missing textures fail unless b->skip_missing. */
 int geom_mesh(wbuild *b, const xform *to_world, const char *path, const double scale[3],
               const sp_synth_material *fallback, int sdf_material_set, int obj, sp_error *err);
+
+/* The model path: folders searched for model://NAME, in order. */
+#define SYNTH_MAX_DIRS 32
+typedef struct model_path {
+    char dirs[SYNTH_MAX_DIRS][PATH_MAX];
+    int n;
+    const sp_log *log;
+} model_path;
+
+int path_is_dir(const char *p);
+int path_is_file(const char *p);
+void path_dir_of(const char *path, char *out, size_t cap); /* "." when there is no slash */
+/* Appends the folders of a ':'-separated list (duplicates dropped). */
+void mp_add(model_path *mp, const char *list);
+/* The folders as "a, b, c" for messages. */
+void mp_list(const model_path *mp, char *out, size_t cap);
+/* model://NAME[/rest] (or package://) -> NAME's folder + rest; 0 or SP_E_NOTFOUND. */
+int mp_resolve_model(const model_path *mp, const char *uri, char *out, size_t cap);
+/* A mesh or texture URI -> an existing file; 0 or SP_E_NOTFOUND (out: the main candidate). */
+int mp_resolve_file(const model_path *mp, const char *uri, const char *sdf_dir, char *out, size_t cap);
 
 /* Picks a procedural pattern from a Gazebo script name or visual/model names. */
 int pattern_from_names(const char *script, const char *visual, const char *link,

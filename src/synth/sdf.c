@@ -10,10 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <dirent.h>
-#include <sys/stat.h>
 
-#define MAX_DIRS 32
 #define MAX_INCLUDE_DEPTH 16
 
 typedef struct ctx {
@@ -21,8 +18,7 @@ typedef struct ctx {
     sp_error *err;
     const sp_log *log;
     int skip_missing;
-    char dirs[MAX_DIRS][PATH_MAX];
-    int n_dirs;
+    model_path mp;
     int depth;
 } ctx;
 
@@ -35,27 +31,6 @@ typedef struct scope {
     const char *dir;
     int obj;
 } scope;
-
-static int is_dir(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0 && S_ISDIR(st.st_mode);
-}
-
-static int is_file(const char *p)
-{
-    struct stat st;
-    return stat(p, &st) == 0 && S_ISREG(st.st_mode);
-}
-
-static void dir_of(const char *path, char *out, size_t cap)
-{
-    snprintf(out, cap, "%s", path);
-    char *s = strrchr(out, '/');
-    if (s == out) s[1] = 0;
-    else if (s) *s = 0;
-    else snprintf(out, cap, ".");
-}
 
 static int is_elem(xmlNodePtr n, const char *name)
 {
@@ -145,7 +120,7 @@ static void keep_first(void *user, const xmlError *e)
 
 static xmlDocPtr read_xml(ctx *c, const char *path)
 {
-    if (!is_file(path)) {
+    if (!path_is_file(path)) {
         sp_error_set(c->err, SP_E_IO, "%s: cannot open the file", path);
         return NULL;
     }
@@ -166,119 +141,6 @@ static xmlDocPtr read_xml(ctx *c, const char *path)
     }
     xmlFreeParserCtxt(pc);
     return doc;
-}
-
-static void add_dirs(ctx *c, const char *list)
-{
-    if (!list) return;
-    const char *s = list;
-    while (*s && c->n_dirs < MAX_DIRS) {
-        const char *e = strchr(s, ':');
-        size_t L = e ? (size_t)(e - s) : strlen(s);
-        if (L && L < PATH_MAX) {
-            char d[PATH_MAX];
-            memcpy(d, s, L);
-            d[L] = 0;
-            int dup = 0;
-            for (int i = 0; i < c->n_dirs; i++) dup |= !strcmp(c->dirs[i], d);
-            if (!dup) snprintf(c->dirs[c->n_dirs++], PATH_MAX, "%s", d);
-        }
-        if (!e) break;
-        s = e + 1;
-    }
-}
-
-static void dirs_list(const ctx *c, char *out, size_t cap)
-{
-    size_t o = 0;
-    out[0] = 0;
-    for (int i = 0; i < c->n_dirs && o + 2 < cap; i++)
-        o += (size_t)snprintf(out + o, cap - o, "%s%s", i ? ", " : "", c->dirs[i]);
-    if (!c->n_dirs) snprintf(out, cap, "(none; pass --model-path or set GAZEBO_MODEL_PATH)");
-}
-
-/* model://NAME[/rest] (or package://) -> path of NAME's folder + rest; 0 or SP_E_NOTFOUND. */
-static int resolve_model_uri(ctx *c, const char *uri, char *out, size_t cap)
-{
-    const char *p = strstr(uri, "://");
-    p = p ? p + 3 : uri;
-    char name[PATH_MAX];
-    snprintf(name, sizeof name, "%s", p);
-    char *slash = strchr(name, '/');
-    const char *rest = "";
-    if (slash) {
-        *slash = 0;
-        rest = p + (slash - name) + 1;
-    }
-    for (int i = 0; i < c->n_dirs; i++) {
-        char d[PATH_MAX * 2];
-        snprintf(d, sizeof d, "%s/%s", c->dirs[i], name);
-        if (!is_dir(d)) continue;
-        if (*rest) snprintf(out, cap, "%s/%s", d, rest);
-        else snprintf(out, cap, "%s", d);
-        return 0;
-    }
-    return SP_E_NOTFOUND;
-}
-
-/* Worlds made on case-insensitive file systems name "Spotlight.DAE" for "spotlight.DAE": when the
- * exact name is absent, a file in the same folder whose name differs only in case is used. */
-static int case_insensitive_file(char *path, size_t cap)
-{
-    char dir[PATH_MAX];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *s = strrchr(dir, '/');
-    if (!s) return 0;
-    *s = 0;
-    const char *base = s + 1;
-    DIR *d = opendir(dir);
-    if (!d) return 0;
-    int found = 0;
-    for (struct dirent *e; !found && (e = readdir(d));)
-        if (!strcasecmp(e->d_name, base)) {
-            snprintf(path, cap, "%s/%s", dir, e->d_name);
-            found = is_file(path);
-        }
-    closedir(d);
-    return found;
-}
-
-/* A mesh or texture URI: model://, file://, absolute, or relative to the SDF file's folder (and,
- * as Gazebo worlds assume, its parents, the model path's folders, or the working directory). */
-static int resolve_file_uri(ctx *c, const char *uri, const char *sdf_dir, char *out, size_t cap)
-{
-    if (!strncmp(uri, "model://", 8) || !strncmp(uri, "package://", 10)) {
-        if (resolve_model_uri(c, uri, out, cap)) return SP_E_NOTFOUND;
-        return is_file(out) ? 0 : SP_E_NOTFOUND;
-    }
-    const char *p = !strncmp(uri, "file://", 7) ? uri + 7 : uri;
-    if (p[0] == '/') {
-        snprintf(out, cap, "%s", p);
-        return is_file(out) ? 0 : SP_E_NOTFOUND;
-    }
-    char base[PATH_MAX];
-    snprintf(base, sizeof base, "%s", sdf_dir);
-    for (int up = 0; up < 4; up++) {
-        snprintf(out, cap, "%s/%s", base, p);
-        if (is_file(out)) return 0;
-        if (case_insensitive_file(out, cap)) {
-            sp_logf(c->log, SP_LOG_WARN, "%s: using %s (the name differs in case)", uri, out);
-            return 0;
-        }
-        char *s = strrchr(base, '/');
-        if (!s || s == base) break;
-        *s = 0;
-    }
-    for (int i = 0; i < c->n_dirs; i++) {
-        snprintf(out, cap, "%s/%s", c->dirs[i], p);
-        if (is_file(out)) return 0;
-        snprintf(out, cap, "%s/../%s", c->dirs[i], p);
-        if (is_file(out)) return 0;
-    }
-    snprintf(out, cap, "%s", p);
-    if (is_file(out)) return 0;
-    snprintf(out, cap, "%s/%s", sdf_dir, p);
-    return SP_E_NOTFOUND;
 }
 
 /* ---- poses ----------------------------------------------------------------------------------- */
@@ -467,7 +329,7 @@ static int read_visual(ctx *c, const scope *s, xmlNodePtr link, const xform *lin
             if (child(g, "scale") && (rc = numbers(c, s->file, child(g, "scale"), 3, 3, scale)) < 0) return rc;
             if (!uri[0])
                 return sp_error_set(c->err, SP_E_FORMAT, "%s:%ld: <mesh> without a <uri>", s->file, line);
-            if (resolve_file_uri(c, uri, s->dir, path, sizeof path)) {
+            if (mp_resolve_file(&c->mp, uri, s->dir, path, sizeof path)) {
                 if (c->skip_missing) {
                     sp_logf(c->log, SP_LOG_WARN, "%s:%ld: missing mesh %s (model '%s'), skipped", s->file,
                             line, uri, mname);
@@ -523,18 +385,18 @@ static int read_include(ctx *c, const scope *parent, const char *file, xmlNodePt
                             file, line, MAX_INCLUDE_DEPTH, uri);
     int found;
     if (!strncmp(uri, "model://", 8) || !strncmp(uri, "package://", 10))
-        found = resolve_model_uri(c, uri, dir, sizeof dir) == 0;
+        found = mp_resolve_model(&c->mp, uri, dir, sizeof dir) == 0;
     else {
         const char *p = !strncmp(uri, "file://", 7) ? uri + 7 : uri;
         char fdir[PATH_MAX];
-        dir_of(file, fdir, sizeof fdir);
+        path_dir_of(file, fdir, sizeof fdir);
         if (p[0] == '/') snprintf(dir, sizeof dir, "%s", p);
         else snprintf(dir, sizeof dir, "%s/%s", fdir, p);
-        found = is_dir(dir) || is_file(dir);
+        found = path_is_dir(dir) || path_is_file(dir);
     }
     if (!found) {
         char dl[2048];
-        dirs_list(c, dl, sizeof dl);
+        mp_list(&c->mp, dl, sizeof dl);
         if (c->skip_missing) {
             sp_logf(c->log, SP_LOG_WARN, "%s:%ld: model %s not found in the model path (%s), skipped",
                     file, line, uri, dl);
@@ -546,13 +408,13 @@ static int read_include(ctx *c, const scope *parent, const char *file, xmlNodePt
     }
     /* The model's SDF: model.sdf, else the file model.config names. */
     char sdf[PATH_MAX * 2 + 64];
-    if (is_file(dir)) snprintf(sdf, sizeof sdf, "%s", dir);
+    if (path_is_file(dir)) snprintf(sdf, sizeof sdf, "%s", dir);
     else {
         snprintf(sdf, sizeof sdf, "%s/model.sdf", dir);
-        if (!is_file(sdf)) {
+        if (!path_is_file(sdf)) {
             char cfg[PATH_MAX * 2 + 64];
             snprintf(cfg, sizeof cfg, "%s/model.config", dir);
-            xmlDocPtr cd = is_file(cfg) ? read_xml(c, cfg) : NULL;
+            xmlDocPtr cd = path_is_file(cfg) ? read_xml(c, cfg) : NULL;
             if (cd) {
                 text(child(xmlDocGetRootElement(cd), "sdf"), buf, sizeof buf);
                 if (buf[0]) snprintf(sdf, sizeof sdf, "%s/%s", dir, buf);
@@ -560,7 +422,7 @@ static int read_include(ctx *c, const scope *parent, const char *file, xmlNodePt
             }
         }
     }
-    if (!is_file(sdf)) {
+    if (!path_is_file(sdf)) {
         if (c->skip_missing) {
             sp_logf(c->log, SP_LOG_WARN, "%s:%ld: model %s has no model.sdf (%s), skipped", file, line, uri, sdf);
             c->b.w->n_missing++;
@@ -615,11 +477,13 @@ static int read_include(ctx *c, const scope *parent, const char *file, xmlNodePt
         if (obj < 0) { rc = obj; goto done; }
     }
     char sdir[PATH_MAX];
-    dir_of(sdf, sdir, sizeof sdir);
+    path_dir_of(sdf, sdir, sizeof sdir);
     scope s = {.node = model, .to_world = pose, .file = sdf, .dir = sdir, .obj = obj};
     c->depth++;
     rc = read_model(c, &s);
     c->depth--;
+    /* say which include led there: "world:331: model://x: x/model.sdf:24: missing mesh ..." */
+    if (rc) sp_error_prefix(c->err, "%s:%ld: %s: ", file, line, uri);
 done:
     xmlFreeDoc(doc);
     return rc;
@@ -724,7 +588,7 @@ static int read_world(ctx *c, const char *file, xmlNodePtr world)
 {
     int rc;
     char fdir[PATH_MAX];
-    dir_of(file, fdir, sizeof fdir);
+    path_dir_of(file, fdir, sizeof fdir);
     for (xmlNodePtr e = world->children; e; e = e->next) {
         if (is_elem(e, "model")) {
             char name[128], source[256], rel[256];
@@ -766,6 +630,7 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
     if (!c) return sp_error_set(err, SP_E_NOMEM, "out of memory");
     c->err = err;
     c->log = opts->log;
+    c->mp.log = opts->log;
     c->skip_missing = opts->skip_missing;
     wb_init(&c->b, w, err);
     c->b.log = opts->log;
@@ -774,24 +639,24 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
     if (!realpath(path, abs)) snprintf(abs, sizeof abs, "%s", path);
     snprintf(w->path, sizeof w->path, "%s", abs);
 
-    add_dirs(c, opts->model_path);
+    mp_add(&c->mp, opts->model_path);
     if (!opts->no_env) {
-        add_dirs(c, getenv("GAZEBO_MODEL_PATH"));
-        add_dirs(c, getenv("GZ_SIM_RESOURCE_PATH"));
-        add_dirs(c, getenv("IGN_GAZEBO_RESOURCE_PATH"));
+        mp_add(&c->mp, getenv("GAZEBO_MODEL_PATH"));
+        mp_add(&c->mp, getenv("GZ_SIM_RESOURCE_PATH"));
+        mp_add(&c->mp, getenv("IGN_GAZEBO_RESOURCE_PATH"));
     }
     char wdir[PATH_MAX], stem[256], d[PATH_MAX + 300];
-    dir_of(abs, wdir, sizeof wdir);
+    path_dir_of(abs, wdir, sizeof wdir);
     const char *base = strrchr(abs, '/');
     snprintf(stem, sizeof stem, "%s", base ? base + 1 : abs);
     char *dot = strrchr(stem, '.');
     if (dot) *dot = 0;
     snprintf(d, sizeof d, "%s/%s_models", wdir, stem);
-    if (is_dir(d)) add_dirs(c, d);
+    if (path_is_dir(d)) mp_add(&c->mp, d);
     snprintf(d, sizeof d, "%s/models", wdir);
-    if (is_dir(d)) add_dirs(c, d);
+    if (path_is_dir(d)) mp_add(&c->mp, d);
     snprintf(d, sizeof d, "%s/../models", wdir);
-    if (is_dir(d) && realpath(d, abs)) add_dirs(c, abs);
+    if (path_is_dir(d) && realpath(d, abs)) mp_add(&c->mp, abs);
 
     int rc = 0;
     xmlDocPtr doc = read_xml(c, w->path);
@@ -823,27 +688,4 @@ fail:
     free(c);
     if (rc) sp_world_free(w);
     return rc;
-}
-
-void sp_world_free(sp_world *w)
-{
-    if (!w) return;
-    free(w->positions);
-    free(w->normals);
-    free(w->uvs);
-    free(w->pattern);
-    free(w->tris);
-    free(w->tri_material);
-    free(w->tri_object);
-    free(w->tri_axis);
-    free(w->materials);
-    for (size_t i = 0; i < w->n_textures; i++) {
-        for (int l = 1; l < w->textures[i].n_levels; l++) free(w->textures[i].level[l]);
-        free(w->textures[i].rgb);
-    }
-    free(w->textures);
-    free(w->objects);
-    free(w->lights);
-    free(w->chunks);
-    memset(w, 0, sizeof *w);
 }
