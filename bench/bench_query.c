@@ -1,7 +1,8 @@
 /* Query latency of the semantic engine with the text already embedded and the model loaded:
  * 3D-native and multi-view localization on a synthetic room of N Gaussians (default 300k) with
  * 32-dim features decoding to 512-D, 20 object classes, 24 cameras at 640x480. CPU always; the
- * GPU too when one answers. Usage: bench_query [N] [threads] */
+ * GPU too when one answers. Then lift time for the same splat (150 views at 160x120, D = 32).
+ * Usage: bench_query [N] [threads] [--no-lift] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -143,6 +144,54 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
     sp_device_free(dev);
 }
 
+typedef struct {
+    const float *maps;
+    size_t stride;
+} lift_maps;
+
+static int lift_target(void *user, size_t view, float *target, uint8_t *mask, sp_error *err)
+{
+    (void)mask, (void)err;
+    const lift_maps *m = user;
+    memcpy(target, m->maps + (view % 8) * m->stride, sizeof(float) * m->stride);
+    return 0;
+}
+
+/* Lift: 150 views at 160x120 (the label maps' resolution for 640x480 captures), D = 32. */
+static void run_lift(sp_device_kind kind, int threads, const sp_splat *s0, const sp_camera *cams)
+{
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    if (sp_device_create(&dev, kind, threads, &err) || sp_raster_create(&r, dev, &err)) {
+        printf("# lift: %s\n", err.msg);
+        sp_device_free(dev);
+        return;
+    }
+    enum { V = 150, W = 160, H = 120 };
+    sp_camera *lc = malloc(sizeof(sp_camera) * V);
+    for (int v = 0; v < V; v++) {
+        lc[v] = cams[v % NCAM];
+        sp_camera_downscale(&lc[v], 4);
+    }
+    float *maps = malloc(sizeof(float) * 8 * W * H * DIM);
+    for (size_t k = 0; k < (size_t)8 * W * H * DIM; k++) maps[k] = (float)(uni() - 0.5);
+    lift_maps lm = {maps, (size_t)W * H * DIM};
+    sp_splat s;
+    sp_splat_copy(&s, s0, &err);
+    double t0 = sp_time_now();
+    int rc = sp_semantic_lift(r, &s, DIM, lc, V, lift_target, &lm, NULL, NULL, NULL, &err);
+    double dt = sp_time_now() - t0;
+    if (rc) printf("# lift: %s\n", err.msg);
+    else
+        printf("lift_%s  %.2f  s  (%zu Gaussians, %d views %dx%d, D=%d, %s)\n",
+               kind == SP_DEVICE_CUDA ? "gpu" : "cpu", dt, s.n, V, W, H, DIM, sp_device_name(dev));
+    sp_splat_free(&s);
+    free(maps), free(lc);
+    sp_raster_free(r);
+    sp_device_free(dev);
+}
+
 int main(int argc, char **argv)
 {
     size_t n = argc > 1 ? (size_t)atol(argv[1]) : 300000;
@@ -152,9 +201,12 @@ int main(int argc, char **argv)
     float *emb = malloc(sizeof(float) * CLASSES * FULL);
     sp_camera cams[NCAM];
     build(n, &s, &pca, emb, cams);
+    int lift = !(argc > 3 && !strcmp(argv[3], "--no-lift"));
     run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
     if (sp_cuda_available()) run(SP_DEVICE_CUDA, threads, n, &s, &pca, emb, cams);
     else printf("# gpu: no CUDA device, GPU figures skipped\n");
+    if (lift && sp_cuda_available()) run_lift(SP_DEVICE_CUDA, threads, &s, cams);
+    if (lift) run_lift(SP_DEVICE_CPU, threads, &s, cams);
     sp_splat_free(&s);
     sp_sem_pca_free(&pca);
     free(emb);

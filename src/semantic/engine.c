@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "sem_internal.h"
+#include "semantic/sem_cuda.h"
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 
@@ -42,6 +43,9 @@ void sp_query_result_free(sp_query_result *res)
 void sp_query_engine_free(sp_query_engine *e)
 {
     if (!e) return;
+    if (e->d_feat) sp_device_release(e->dev, e->d_feat);
+    if (e->d_raw) sp_device_release(e->dev, e->d_raw);
+    if (e->d_rel) sp_device_release(e->dev, e->d_rel);
     sp_raster_free(e->raster);
     sp_splat_free(&e->splat);
     sp_sem_pca_free(&e->pca);
@@ -76,7 +80,19 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
     for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
     int rc = sp_raster_create(&e->raster, e->dev, err);
-    return rc ? rc : sp_raster_create(&e->raster_aux, e->dev, err);
+    if (!rc) rc = sp_raster_create(&e->raster_aux, e->dev, err);
+#ifdef SP_HAVE_CUDA
+    /* A GPU engine keeps the features on the GPU and scores them there. */
+    if (!rc && sp_device_kind_of(e->dev) == SP_DEVICE_CUDA && e->splat.n > 0) {
+        size_t fb = sizeof(float) * e->splat.n * (size_t)e->splat.feat_dim;
+        if (!(e->d_feat = sp_device_alloc(e->dev, fb, err)) ||
+            !(e->d_raw = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)) ||
+            !(e->d_rel = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)))
+            return err && err->code ? err->code : SP_E_NOMEM;
+        rc = sp_device_upload(e->dev, e->d_feat, e->splat.features, fb, err);
+    }
+#endif
+    return rc;
 }
 
 int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,
@@ -304,7 +320,18 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
                                  e->opts.temperature, err)))
         return rc;
     double t1 = sp_time_now();
-    sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
+    int on_gpu = 0;
+#ifdef SP_HAVE_CUDA
+    if (e->d_feat && sc.orthonormal) {
+        size_t nb = sizeof(float) * e->splat.n;
+        if ((rc = sem_cuda_score(&sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
+            (rc = sp_device_download(e->dev, e->raw, e->d_raw, nb, err)) ||
+            (rc = sp_device_download(e->dev, e->rel, e->d_rel, nb, err)))
+            return rc;
+        on_gpu = 1;
+    }
+#endif
+    if (!on_gpu) sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
     res->confidence = robust_max(e->raw, e->opacity, e->opts.min_opacity, e->splat.n);
     float rmax = 0;
     for (size_t i = 0; i < e->splat.n; i++)

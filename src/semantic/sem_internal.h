@@ -27,6 +27,7 @@ struct sp_query_engine {
     float *raw, *rel;          /* [n] scratch: per-Gaussian raw cosine and relevancy */
     float *scores2;            /* [n][2] (raw, rel) rendered as two channels */
     sp_raster *raster_aux;     /* renders of scores2 (its own upload cache) */
+    float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
     uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
     int occ_dim[3];
     float occ_lo[3], occ_voxel;
