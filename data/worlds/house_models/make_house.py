@@ -544,6 +544,11 @@ inline += """
              [box("fabric_coat", (0.12, 0.0, 1.3), (0.12, 0.45, 0.75), (0.55, 0.12, 0.1), rpy=(0, 0.05, 0)),
               box("fabric_scarf", (-0.1, 0.05, 1.45), (0.06, 0.2, 0.5), (0.95, 0.8, 0.2))]))
 
+# inline models get their collision shapes too
+inline = re.sub(r'(<link name="[^"]*">)(.*?)(</link>)',
+                lambda m: m.group(1) + m.group(2) + "".join(collisions(re.findall(r"<visual .*?</visual>", m.group(2), re.S))) + m.group(3),
+                inline, flags=re.S)
+
 lights = ""
 for name, (x, y) in (("living", (1.8, 2.2)), ("living_east", (5.0, 2.2)), ("kitchen", (1.75, 6.2)),
                      ("dining", (5.0, 6.2)), ("hall", (8.25, 1.5)), ("bedroom", (8.3, 5.5))):
