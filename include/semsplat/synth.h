@@ -113,15 +113,15 @@ typedef struct sp_world {
 } sp_world;
 
 typedef struct sp_synth_load_opts {
-    const char *model_path; /* extra model dirs, ':'-separated, searched first (may be NULL) */
+    const char *model_path; /* extra model dirs, ':'-separated (may be NULL) */
     int skip_missing;       /* warn and continue on a missing model, mesh or texture */
     int no_env;             /* ignore GAZEBO_MODEL_PATH / GZ_SIM_RESOURCE_PATH (tests) */
     const sp_log *log;
 } sp_synth_load_opts;
 
-/* Loads an SDF world (or a single-model .sdf). The model path is opts->model_path, then
- * GAZEBO_MODEL_PATH, GZ_SIM_RESOURCE_PATH and IGN_GAZEBO_RESOURCE_PATH, then beside the world:
- * <dir>/<stem>_models, <dir>/models, <dir>/../models. Errors name the file and line (malformed
+/* Loads an SDF world (or a single-model .sdf). The model path is <dir>/<stem>_models (the world's
+ * own models, e.g. house_models beside house.world), opts->model_path, GAZEBO_MODEL_PATH,
+ * GZ_SIM_RESOURCE_PATH and IGN_GAZEBO_RESOURCE_PATH, then <dir>/models and <dir>/../models. Errors name the file and line (malformed
  * XML, bad numbers), the missing model:// and the dirs searched, or the missing mesh/texture. */
 int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_world *w,
                         sp_error *err);

@@ -639,12 +639,8 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
     if (!realpath(path, abs)) snprintf(abs, sizeof abs, "%s", path);
     snprintf(w->path, sizeof w->path, "%s", abs);
 
-    mp_add(&c->mp, opts->model_path);
-    if (!opts->no_env) {
-        mp_add(&c->mp, getenv("GAZEBO_MODEL_PATH"));
-        mp_add(&c->mp, getenv("GZ_SIM_RESOURCE_PATH"));
-        mp_add(&c->mp, getenv("IGN_GAZEBO_RESOURCE_PATH"));
-    }
+    /* A world's own model folder (<stem>_models, as the house ships) comes first so that
+     * generic names ("door", "tv") are not shadowed by other models on GAZEBO_MODEL_PATH. */
     char wdir[PATH_MAX], stem[256], d[PATH_MAX + 300];
     path_dir_of(abs, wdir, sizeof wdir);
     const char *base = strrchr(abs, '/');
@@ -653,6 +649,12 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
     if (dot) *dot = 0;
     snprintf(d, sizeof d, "%s/%s_models", wdir, stem);
     if (path_is_dir(d)) mp_add(&c->mp, d);
+    mp_add(&c->mp, opts->model_path);
+    if (!opts->no_env) {
+        mp_add(&c->mp, getenv("GAZEBO_MODEL_PATH"));
+        mp_add(&c->mp, getenv("GZ_SIM_RESOURCE_PATH"));
+        mp_add(&c->mp, getenv("IGN_GAZEBO_RESOURCE_PATH"));
+    }
     snprintf(d, sizeof d, "%s/models", wdir);
     if (path_is_dir(d)) mp_add(&c->mp, d);
     snprintf(d, sizeof d, "%s/../models", wdir);
