@@ -18,54 +18,95 @@ static double bicubic_filter(double x)
     return 0;
 }
 
-/* One separable pass as PIL's ImagingResample: output i samples around (i + 0.5) * in/out with
- * the filter stretched by the downscale factor (antialiasing), weights normalised. Resamples
- * `in` [lines][n_in] (stride in_stride between samples, line_stride between lines) to out. */
-static int resample_axis(const float *in, int n_in, float *out, int n_out, int lines,
-                         long in_sample, long in_line, long out_sample, long out_line)
+/* Resampling weights of one axis as PIL's ImagingResample: output i samples around
+ * (i + 0.5) * in/out with the filter stretched by the downscale factor (antialiasing), weights
+ * normalised. w [n_out][*taps], first tap x0[i], cnt[i] taps. */
+typedef struct axis_weights {
+    double *w;
+    int *x0, *cnt, taps;
+} axis_weights;
+
+static int axis_weights_make(axis_weights *a, int n_in, int n_out)
 {
     double scale = (double)n_in / n_out, fs = scale > 1 ? scale : 1, support = 2 * fs;
-    int taps = (int)ceil(support) * 2 + 1;
-    double *w = malloc((size_t)n_out * taps * sizeof *w);
-    int *x0 = malloc((size_t)n_out * 2 * sizeof *x0);
-    if (!w || !x0) { free(w); free(x0); return -1; }
-    int *cnt = x0 + n_out;
+    a->taps = (int)ceil(support) * 2 + 1;
+    a->w = malloc((size_t)n_out * a->taps * sizeof *a->w);
+    a->x0 = malloc((size_t)n_out * 2 * sizeof *a->x0);
+    if (!a->w || !a->x0) {
+        free(a->w);
+        free(a->x0);
+        return -1;
+    }
+    a->cnt = a->x0 + n_out;
     for (int i = 0; i < n_out; i++) {
         double center = (i + 0.5) * scale;
         int lo = (int)(center - support + 0.5), hi = (int)(center + support + 0.5);
         if (lo < 0) lo = 0;
         if (hi > n_in) hi = n_in;
-        if (hi - lo > taps) hi = lo + taps;
-        double sum = 0;
-        for (int k = lo; k < hi; k++) sum += (w[(size_t)i * taps + k - lo] = bicubic_filter((k - center + 0.5) / fs));
-        for (int k = lo; k < hi; k++) w[(size_t)i * taps + k - lo] /= sum != 0 ? sum : 1;
-        x0[i] = lo;
-        cnt[i] = hi - lo;
+        if (hi - lo > a->taps) hi = lo + a->taps;
+        double sum = 0, *wi = a->w + (size_t)i * a->taps;
+        for (int k = lo; k < hi; k++) sum += (wi[k - lo] = bicubic_filter((k - center + 0.5) / fs));
+        for (int k = lo; k < hi; k++) wi[k - lo] /= sum != 0 ? sum : 1;
+        a->x0[i] = lo;
+        a->cnt[i] = hi - lo;
     }
-    for (int l = 0; l < lines; l++)
-        for (int i = 0; i < n_out; i++) {
-            double s = 0;
-            const double *wi = w + (size_t)i * taps;
-            for (int k = 0; k < cnt[i]; k++) s += wi[k] * in[l * in_line + (long)(x0[i] + k) * in_sample];
-            out[l * out_line + (long)i * out_sample] = (float)s;
-        }
-    free(w);
-    free(x0);
     return 0;
 }
 
-/* Resizes an interleaved [h][w][3] image to [oh][ow][3] (horizontal pass, then vertical). */
+static void axis_weights_free(axis_weights *a)
+{
+    free(a->w);
+    free(a->x0);
+}
+
+/* Resizes an interleaved [h][w][3] image to [oh][ow][3]: horizontal pass, then a vertical pass
+ * that combines whole rows (contiguous memory). */
 static int resize_rgb(const float *in, int w, int h, float *out, int ow, int oh)
 {
+    axis_weights ax, ay;
     float *tmp = malloc((size_t)h * ow * 3 * sizeof *tmp);
-    if (!tmp) return -1;
-    int rc = 0;
-    for (int ch = 0; ch < 3 && !rc; ch++)
-        rc = resample_axis(in + ch, w, tmp + ch, ow, h, 3, (long)w * 3, 3, (long)ow * 3);
-    for (int ch = 0; ch < 3 && !rc; ch++)
-        rc = resample_axis(tmp + ch, h, out + ch, oh, ow, (long)ow * 3, 3, (long)ow * 3, 3);
+    double *acc = malloc((size_t)ow * 3 * sizeof *acc);
+    if (!tmp || !acc || axis_weights_make(&ax, w, ow)) {
+        free(tmp);
+        free(acc);
+        return -1;
+    }
+    if (axis_weights_make(&ay, h, oh)) {
+        axis_weights_free(&ax);
+        free(tmp);
+        free(acc);
+        return -1;
+    }
+    for (int y = 0; y < h; y++)
+        for (int i = 0; i < ow; i++) {
+            const double *wi = ax.w + (size_t)i * ax.taps;
+            const float *src = in + ((size_t)y * w + ax.x0[i]) * 3;
+            double s0 = 0, s1 = 0, s2 = 0;
+            for (int k = 0; k < ax.cnt[i]; k++) {
+                s0 += wi[k] * src[3 * k];
+                s1 += wi[k] * src[3 * k + 1];
+                s2 += wi[k] * src[3 * k + 2];
+            }
+            float *o = tmp + ((size_t)y * ow + i) * 3;
+            o[0] = (float)s0;
+            o[1] = (float)s1;
+            o[2] = (float)s2;
+        }
+    size_t row = (size_t)ow * 3;
+    for (int i = 0; i < oh; i++) {
+        const double *wi = ay.w + (size_t)i * ay.taps;
+        memset(acc, 0, row * sizeof *acc);
+        for (int k = 0; k < ay.cnt[i]; k++) {
+            const float *src = tmp + (size_t)(ay.x0[i] + k) * row;
+            for (size_t j = 0; j < row; j++) acc[j] += wi[k] * src[j];
+        }
+        for (size_t j = 0; j < row; j++) out[(size_t)i * row + j] = (float)acc[j];
+    }
+    axis_weights_free(&ax);
+    axis_weights_free(&ay);
     free(tmp);
-    return rc;
+    free(acc);
+    return 0;
 }
 
 int sp_clip_preprocess(const sp_clip *c, const float *rgb, int width, int height, float *pixels,
