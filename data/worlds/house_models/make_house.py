@@ -72,10 +72,10 @@ HANDLE = (0.55, 0.56, 0.58)
 
 def refrigerator():
     w, d, h = 0.8, 0.72, 1.85
-    v = [box("metal_body", (0, 0, h / 2), (d, w, h), (0.93, 0.94, 0.95), script="Gazebo/White")]
+    v = [box("enamel_body", (0, 0, h / 2), (d, w, h), (0.93, 0.94, 0.95), script="Gazebo/White")]
     # two doors (freezer on top) with a dark gap between, and long vertical handles
-    v.append(box("metal_door_fridge", (d / 2 + 0.02, 0, 0.62), (0.04, w - 0.02, 1.2), (0.9, 0.91, 0.93)))
-    v.append(box("metal_door_freezer", (d / 2 + 0.02, 0, 1.55), (0.04, w - 0.02, 0.56), (0.9, 0.91, 0.93)))
+    v.append(box("enamel_door_fridge", (d / 2 + 0.02, 0, 0.62), (0.04, w - 0.02, 1.2), (0.9, 0.91, 0.93)))
+    v.append(box("enamel_door_freezer", (d / 2 + 0.02, 0, 1.55), (0.04, w - 0.02, 0.56), (0.9, 0.91, 0.93)))
     v.append(box("gap", (d / 2 + 0.005, 0, 1.245), (0.03, w, 0.03), (0.15, 0.15, 0.16)))
     v.append(box("metal_handle_low", (d / 2 + 0.07, -w / 2 + 0.08, 0.85), (0.03, 0.03, 0.7), HANDLE))
     v.append(box("metal_handle_high", (d / 2 + 0.07, -w / 2 + 0.08, 1.5), (0.03, 0.03, 0.35), HANDLE))
@@ -112,7 +112,7 @@ GRANITE = (0.22, 0.22, 0.24)
 
 def kitchen_counter():
     v = []
-    cabinet(v, 1.2, 0.6, 0.92, SAGE, GRANITE, doors=2)
+    cabinet(v, 1.2, 0.6, 0.92, SAGE, GRANITE, doors=2, prefix="painted")
     # things on the counter: a chopping board and a red kettle
     v.append(box("wood_board", (0.02, -0.25, 0.935), (0.3, 0.42, 0.025), (0.75, 0.55, 0.32)))
     v.append(cyl("metal_kettle", (-0.05, 0.3, 1.02), 0.09, 0.18, (0.8, 0.12, 0.1)))
@@ -123,7 +123,7 @@ def kitchen_counter():
 
 def sink():
     v = []
-    cabinet(v, 1.0, 0.6, 0.92, SAGE, GRANITE, doors=2, drawers=False)
+    cabinet(v, 1.0, 0.6, 0.92, SAGE, GRANITE, doors=2, drawers=False, prefix="painted")
     # steel basin set into the top: rim + dark inside
     v.append(box("metal_basin_rim", (0.03, 0, 0.925), (0.46, 0.7, 0.012), (0.78, 0.79, 0.8)))
     v.append(box("metal_basin", (0.03, 0, 0.932), (0.38, 0.6, 0.004), (0.42, 0.43, 0.45)))
