@@ -102,30 +102,33 @@ __global__ void k_layernorm(const T *x, T *y, int n, const T *g, const T *b, flo
         st(yr + i, (ld(xr + i) - mean) * inv * ld(g + i) + ld(b + i));
 }
 
-/* y[r][j] += b[j], then the activation (0 none, 1 quick_gelu, 2 erf GELU). 32-bit indices: every
- * buffer here has fewer than 2^31 elements (checked by the callers). */
+/* y[r][j] += b[j], then the activation (0 none, 1 quick_gelu, 2 erf GELU). */
 template <typename T>
-__global__ void k_bias_act(T *y, int total, int n, const T *b, int act)
+__global__ void k_bias_act(T *y, long total, int n, const T *b, int act)
 {
-    for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < total; i += gridDim.x * blockDim.x) {
+    for (long i = blockIdx.x * (long)blockDim.x + threadIdx.x; i < total; i += (long)gridDim.x * blockDim.x) {
         float v = ld(y + i) + ld(b + i % n);
-        if (act == 1) v = v / (1.f + __expf(-1.702f * v));
+        if (act == 1) v = v / (1.f + expf(-1.702f * v));
         else if (act == 2) v = 0.5f * v * (1.f + erff(v * 0.70710678f));
         st(y + i, v);
     }
 }
 
-/* qkv [B*T][3w] (q | k | v) + bias -> out [3][B][H][T][d]; one thread per input element, so the
- * reads are coalesced and the writes are runs of d. */
+/* qkv [B*T][3w] (q | k | v) -> out [3][B][H][T][d] */
 template <typename T>
-__global__ void k_split_heads(const T *qkv, const T *bias, T *out, int B, int Tn, int H, int d)
+__global__ void k_split_heads(const T *qkv, T *out, int B, int Tn, int H, int d)
 {
-    int w = H * d, w3 = 3 * w, total = B * Tn * w3;
-    for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < total; i += gridDim.x * blockDim.x) {
-        int col = i % w3, row = i / w3;
-        int which = col / w, hc = col - which * w, h = hc / d, c = hc - h * d;
-        int b = row / Tn, t = row - b * Tn;
-        st(out + (((which * B + b) * H + h) * Tn + t) * d + c, ld(qkv + i) + ld(bias + col));
+    long w = (long)H * d, total = 3L * B * Tn * w;
+    for (long i = blockIdx.x * (long)blockDim.x + threadIdx.x; i < total; i += (long)gridDim.x * blockDim.x) {
+        int c = (int)(i % d);
+        long r = i / d;
+        int t = (int)(r % Tn);
+        r /= Tn;
+        int h = (int)(r % H);
+        r /= H;
+        int b = (int)(r % B);
+        int which = (int)(r / B);
+        out[i] = qkv[((long)b * Tn + t) * 3 * w + which * w + (long)h * d + c];
     }
 }
 
@@ -133,31 +136,30 @@ __global__ void k_split_heads(const T *qkv, const T *bias, T *out, int B, int Tn
 template <typename T>
 __global__ void k_merge_heads(const T *o, T *y, int B, int Tn, int H, int d)
 {
-    int w = H * d, total = B * Tn * w;
-    for (int i = blockIdx.x * blockDim.x + threadIdx.x; i < total; i += gridDim.x * blockDim.x) {
-        int col = i % w, row = i / w;
-        int t = row % Tn, b = row / Tn, h = col / d, c = col - h * d;
-        y[i] = o[((b * H + h) * Tn + t) * d + c];
+    long w = (long)H * d, total = (long)B * Tn * w;
+    for (long i = blockIdx.x * (long)blockDim.x + threadIdx.x; i < total; i += (long)gridDim.x * blockDim.x) {
+        int col = (int)(i % w);
+        long row = i / w;
+        int t = (int)(row % Tn), b = (int)(row / Tn), h = col / d, c = col % d;
+        y[i] = o[(((long)b * H + h) * Tn + t) * d + c];
     }
 }
 
-/* Softmax of each row of s [rows][T] after scaling, one warp per row; causal rows mask keys after
- * the query (row r is query r % T). */
+/* Softmax of each row of s [rows][T] after scaling; causal rows mask keys after the query. */
 template <typename T>
-__global__ void k_softmax(T *s, int rows, int Tn, float scale, int causal)
+__global__ void k_softmax(T *s, int Tn, float scale, int causal)
 {
-    int row = blockIdx.x * (blockDim.x >> 5) + (threadIdx.x >> 5), lane = threadIdx.x & 31;
-    if (row >= rows) return;
-    T *r = s + (size_t)row * Tn;
-    int q = row % Tn, n = causal ? q + 1 : Tn;
+    __shared__ float sh[32];
+    T *r = s + (size_t)blockIdx.x * Tn;
+    int q = blockIdx.x % Tn, n = causal ? q + 1 : Tn;
     float m = -INFINITY;
-    for (int i = lane; i < n; i += 32) m = fmaxf(m, ld(r + i) * scale);
-    for (int o = 16; o > 0; o >>= 1) m = fmaxf(m, __shfl_xor_sync(0xffffffffu, m, o));
+    for (int i = threadIdx.x; i < n; i += blockDim.x) m = fmaxf(m, ld(r + i) * scale);
+    m = block_max(m, sh);
     float sum = 0;
-    for (int i = lane; i < n; i += 32) sum += __expf(ld(r + i) * scale - m);
-    for (int o = 16; o > 0; o >>= 1) sum += __shfl_xor_sync(0xffffffffu, sum, o);
-    float inv = 1.f / sum;
-    for (int i = lane; i < Tn; i += 32) st(r + i, i < n ? __expf(ld(r + i) * scale - m) * inv : 0.f);
+    for (int i = threadIdx.x; i < n; i += blockDim.x) sum += expf(ld(r + i) * scale - m);
+    float inv = 1.f / block_sum(sum, sh);
+    for (int i = threadIdx.x; i < Tn; i += blockDim.x)
+        st(r + i, i < n ? expf(ld(r + i) * scale - m) * inv : 0.f);
 }
 
 template <typename T>
@@ -231,7 +233,7 @@ __global__ void k_f32_to_f16(const float *x, __half *y, long n)
 static int grid_for(long n)
 {
     long g = (n + 255) / 256;
-    return (int)(g > 1048576 ? 1048576 : g < 1 ? 1 : g);
+    return (int)(g > 65535 ? 65535 : g < 1 ? 1 : g);
 }
 
 /* ---- host side -------------------------------------------------------------------------------- */
@@ -375,8 +377,7 @@ static int attention(ctx<T> &x, const sp_clip_tower_config *cfg, const T *a, con
     CB(cublasGemmStridedBatchedEx(x.g->blas, CUBLAS_OP_T, CUBLAS_OP_N, Tn, Tn, d, &one, b, dtype_of<T>::v, d, sd,
                                   a, dtype_of<T>::v, d, sd, &zero, s, dtype_of<T>::v, Tn, ss, batch,
                                   CUBLAS_COMPUTE_32F, CUBLAS_GEMM_DEFAULT), "scores");
-    int rows = batch * Tn;
-    k_softmax<T><<<(rows + 7) / 8, 256, 0, x.g->stream>>>(s, rows, Tn, 1.f / sqrtf((float)d), causal);
+    k_softmax<T><<<batch * Tn, 128, 0, x.g->stream>>>(s, Tn, 1.f / sqrtf((float)d), causal);
     CB(cublasGemmStridedBatchedEx(x.g->blas, CUBLAS_OP_N, CUBLAS_OP_N, d, Tn, Tn, &one, v, dtype_of<T>::v, d, sd,
                                   s, dtype_of<T>::v, Tn, ss, &zero, oh, dtype_of<T>::v, d, sd, batch,
                                   CUBLAS_COMPUTE_32F, CUBLAS_GEMM_DEFAULT), "attention values");
@@ -407,17 +408,18 @@ static int block(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_layer *L,
     T *h = (T *)bf->h, *qkv = (T *)bf->qkv, *heads = (T *)bf->heads, *oh = (T *)bf->oh, *m = (T *)bf->m;
     k_layernorm<T><<<M, 256, 0, st>>>(xb, h, w, x.W + L->ln1_w, x.W + L->ln1_b, cfg->eps);
     if ((rc = gemm(x, h, M, w, x.W + L->qkv_w, 3 * w, qkv, 0.f))) return rc;
-    k_split_heads<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, x.W + L->qkv_b, heads, B, Tn, H, d);
+    k_bias_act<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, 3 * Mw, 3 * w, x.W + L->qkv_b, 0);
+    k_split_heads<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, heads, B, Tn, H, d);
     if ((rc = attention(x, cfg, heads, heads + Mw, heads + 2 * Mw, (T *)bf->s, oh, B, Tn, causal))) return rc;
     k_merge_heads<T><<<grid_for(Mw), 256, 0, st>>>(oh, h, B, Tn, H, d);
     if ((rc = gemm(x, h, M, w, x.W + L->o_w, w, xb, 1.f))) return rc;
-    k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, (int)Mw, w, x.W + L->o_b, 0);
+    k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, Mw, w, x.W + L->o_b, 0);
     k_layernorm<T><<<M, 256, 0, st>>>(xb, h, w, x.W + L->ln2_w, x.W + L->ln2_b, cfg->eps);
     if ((rc = gemm(x, h, M, w, x.W + L->fc1_w, cfg->mlp, m, 0.f))) return rc;
-    k_bias_act<T><<<grid_for((long)M * cfg->mlp), 256, 0, st>>>(m, M * cfg->mlp, cfg->mlp, x.W + L->fc1_b,
+    k_bias_act<T><<<grid_for((long)M * cfg->mlp), 256, 0, st>>>(m, (long)M * cfg->mlp, cfg->mlp, x.W + L->fc1_b,
                                                                  cfg->quick_gelu ? 1 : 2);
     if ((rc = gemm(x, m, M, cfg->mlp, x.W + L->fc2_w, w, xb, 1.f))) return rc;
-    k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, (int)Mw, w, x.W + L->fc2_b, 0);
+    k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, Mw, w, x.W + L->fc2_b, 0);
     return 0;
 }
 
@@ -442,12 +444,6 @@ static int text_forward(sp_clip *c, const int32_t *ids, int n, float *out, sp_er
         rows[i] += i * L;
     }
     size_t M = (size_t)n * L;
-    if (M * (size_t)(cfg->mlp > 3 * w ? cfg->mlp : 3 * w) >= (size_t)INT32_MAX ||
-        (size_t)n * cfg->heads * L * L >= (size_t)INT32_MAX) {
-        free(rows);
-        free(hids);
-        return sp_error_set(err, SP_E_ARG, "CLIP GPU: %d texts at once is too many for one pass", n);
-    }
     for (int attempt = 0; attempt < 2; attempt++) {
         arena ar = {g, 0, 1};
         int32_t *d_ids = take<int32_t>(&ar, M), *d_rows = take<int32_t>(&ar, (size_t)n);
@@ -500,12 +496,6 @@ static int vision_forward(sp_clip *c, const float *pixels, int n, int H, int W, 
     if (!pos || !rows) { free(pos); free(rows); return sp_error_set(err, SP_E_NOMEM, "out of memory"); }
     clip_pos_embed(c, gh, gw, pos);
     for (int i = 0; i < n; i++) rows[i] = i * Tn;
-    if (M * (size_t)(cfg->mlp > 3 * w ? cfg->mlp : 3 * w) >= (size_t)INT32_MAX ||
-        (size_t)n * cfg->heads * Tn * Tn >= (size_t)INT32_MAX || (size_t)n * np * K >= (size_t)INT32_MAX) {
-        free(pos);
-        free(rows);
-        return sp_error_set(err, SP_E_ARG, "CLIP GPU: %d images of %dx%d are too many for one pass", n, W, H);
-    }
     for (int attempt = 0; attempt < 2; attempt++) {
         arena ar = {g, 0, 1};
         float *d_px = take<float>(&ar, (size_t)n * 3 * H * W), *d_pos = take<float>(&ar, (size_t)Tn * w);
@@ -544,7 +534,8 @@ static int vision_forward(sp_clip *c, const float *pixels, int n, int H, int W, 
             T *h = (T *)bf.h, *qkv = (T *)bf.qkv, *heads = (T *)bf.heads;
             k_layernorm<T><<<(int)M, 256, 0, st>>>(xb, h, w, x.W + L->ln1_w, x.W + L->ln1_b, cfg->eps);
             if ((rc = gemm(x, h, (int)M, w, x.W + L->qkv_w, 3 * w, qkv, 0.f))) break;
-            k_split_heads<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, x.W + L->qkv_b, heads, n, Tn, Hh, d);
+            k_bias_act<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, 3 * Mw, 3 * w, x.W + L->qkv_b, 0);
+            k_split_heads<T><<<grid_for(3 * Mw), 256, 0, st>>>(qkv, heads, n, Tn, Hh, d);
             const T *vals = heads + 2 * Mw;
             if (kind == CLIP_OUT_DENSE_CLEARCLIP) {
                 if ((rc = attention(x, cfg, heads, heads, heads + 2 * Mw, (T *)bf.s, (T *)bf.oh, n, Tn, 0))) break;
@@ -552,7 +543,7 @@ static int vision_forward(sp_clip *c, const float *pixels, int n, int H, int W, 
             }
             k_merge_heads<T><<<grid_for(Mw), 256, 0, st>>>(vals, h, n, Tn, Hh, d);
             if ((rc = gemm(x, h, (int)M, w, x.W + L->o_w, w, xb, 0.f))) break;
-            k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, (int)Mw, w, x.W + L->o_b, 0);
+            k_bias_act<T><<<grid_for(Mw), 256, 0, st>>>(xb, Mw, w, x.W + L->o_b, 0);
             k_drop_cls<T><<<grid_for((long)n_out * w), 256, 0, st>>>(xb, fin, Tn, w, (long)n_out * w);
         }
         k_layernorm<T><<<(int)n_out, 256, 0, st>>>(fin, fin, w, x.W + off_of(c, c->post_ln_w), x.W + off_of(c, c->post_ln_b), cfg->eps);
