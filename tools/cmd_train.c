@@ -19,7 +19,7 @@ static void help(void)
         "OUT/checkpoints/checkpoint.bin. Every 8th image (sorted by name) is held out.\n\n"
         "  --images DIR          image folder (default COLMAP/images)\n"
         "  --steps N             optimisation steps (default 30000); density-control and SH\n"
-        "                        schedules scale with N below 30000 as gsplat's steps_scaler\n"
+        "                        below 30000 steps, densification stops at N/2 (gsplat: 15000)\n"
         "  --downscale N         integer image downscale factor (default 1)\n"
         "  --device D            cpu, cuda or auto (default auto)\n"
         "  --threads N           CPU threads (default: all cores)\n"

@@ -341,15 +341,17 @@ sp_train_options sp_train_options_default(int steps)
     o.adam_beta2 = 0.999f;
     o.adam_eps = 1e-15f;
     o.densify = 1;
-    /* simple_trainer's steps_scaler: schedules shrink with shorter runs. */
+    /* Short runs keep gsplat's absolute density schedule (refine every 100 steps, opacity reset
+     * every 3000), as `simple_trainer --max_steps N` does, and stop densifying at half the run
+     * (at most 15000) so the last reset has time to recover. Compressing the whole schedule
+     * (refine every 25, reset every 700 at 7000 steps) measured 25.3 dB held-out on the house
+     * with 958k Gaussians, the last reset only 700 steps before the end. */
     double f = o.steps < 30000 ? o.steps / 30000.0 : 1.0;
     o.sh_degree_interval = (int)(1000 * f + 0.5) > 1 ? (int)(1000 * f + 0.5) : 1;
     o.refine_start = (int)(500 * f + 0.5);
-    o.refine_stop = (int)(15000 * f + 0.5);
-    /* gsplat scales refine_every too; below ~25 steps the gradient means are over too few views
-     * and every refinement compounds the count, so it is floored there. */
-    o.refine_every = (int)(100 * f + 0.5) > 25 ? (int)(100 * f + 0.5) : 25;
-    o.reset_every = (int)(3000 * f + 0.5) > 1 ? (int)(3000 * f + 0.5) : 1;
+    o.refine_stop = o.steps < 30000 ? o.steps / 2 : 15000;
+    o.refine_every = 100;
+    o.reset_every = 3000;
     o.grow_grad2d = 2e-4f;
     o.grow_scale3d = 0.01f;
     o.prune_opacity = 0.005f;
