@@ -75,23 +75,48 @@ static void make_model(void)
     add("visual_projection.weight", 2, PROJ, VW, 0, 0, 0.2, 0);
 }
 
+static uint16_t to_bf16(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, 4);
+    return (uint16_t)((u + 0x7FFF + ((u >> 16) & 1)) >> 16); /* round to nearest even */
+}
+
+/* dtype: SP_DTYPE_F32, F16 or BF16 */
+static int save_as(const char *path, int skip, int truncate_bytes, sp_dtype dtype);
+
 static int save(const char *path, int skip, int truncate_bytes)
+{
+    return save_as(path, skip, truncate_bytes, SP_DTYPE_F32);
+}
+
+static int save_as(const char *path, int skip, int truncate_bytes, sp_dtype dtype)
 {
     sp_tensor_info *t = calloc((size_t)n_w, sizeof *t);
     size_t k = 0;
     for (int i = 0; i < n_w; i++) {
         if (i == skip) continue;
         snprintf(t[k].name, sizeof t[k].name, "%s", W[i].name);
-        t[k].dtype = SP_DTYPE_F32;
+        t[k].dtype = dtype;
         t[k].ndim = W[i].ndim;
         size_t n = 1;
         for (int d = 0; d < W[i].ndim; d++) n *= (t[k].shape[d] = W[i].shape[d]);
-        t[k].data = W[i].data;
-        t[k].nbytes = n * 4;
+        if (dtype == SP_DTYPE_F32) {
+            t[k].data = W[i].data;
+            t[k].nbytes = n * 4;
+        } else {
+            uint16_t *h = malloc(n * 2);
+            for (size_t j = 0; j < n; j++)
+                h[j] = dtype == SP_DTYPE_F16 ? sp_float_to_half(W[i].data[j]) : to_bf16(W[i].data[j]);
+            t[k].data = h;
+            t[k].nbytes = n * 2;
+        }
         k++;
     }
     sp_error err = {0};
     int rc = sp_safetensors_write(path, t, k, &err);
+    if (dtype != SP_DTYPE_F32)
+        for (size_t i = 0; i < k; i++) free((void *)t[i].data);
     free(t);
     if (rc) fprintf(stderr, "%s\n", err.msg);
     if (!rc && truncate_bytes) {
@@ -326,6 +351,35 @@ static void test_vision(void)
     sp_clip_free(c);
 }
 
+/* The same model stored as F16 and BF16 loads and gives nearly the same embeddings. */
+static void test_half_files(void)
+{
+    sp_error err = {0};
+    sp_clip *ref = NULL;
+    CHECK_OK(sp_clip_load(&ref, wpath, NULL, NULL, &err), &err);
+    const char *texts[] = {"a photo of a cat"};
+    float a[PROJ], b[PROJ];
+    if (ref) CHECK_OK(sp_clip_encode_text(ref, texts, 1, a, &err), &err);
+    for (int k = 0; k < 2 && ref; k++) {
+        char p[1400], cfg[1400];
+        snprintf(p, sizeof p, "%s/half%d", dir, k);
+        sp_mkdirs(p, &err);
+        snprintf(cfg, sizeof cfg, "%s/config.json", p);
+        write_text(cfg, config_json);
+        snprintf(p, sizeof p, "%s/half%d/model.safetensors", dir, k);
+        CHECK(save_as(p, -1, 0, k ? SP_DTYPE_BF16 : SP_DTYPE_F16) == 0);
+        sp_clip *c = NULL;
+        CHECK_OK(sp_clip_load(&c, p, NULL, NULL, &err), &err);
+        if (!c) continue;
+        CHECK_OK(sp_clip_encode_text(c, texts, 1, b, &err), &err);
+        double d = 0;
+        for (int i = 0; i < PROJ; i++) d = fmax(d, fabs(a[i] - b[i]));
+        CHECK_MSG(d < (k ? 0.05 : 0.01), "%s weights: max diff %g", k ? "bf16" : "f16", d);
+        sp_clip_free(c);
+    }
+    sp_clip_free(ref);
+}
+
 /* The GPU path (fp32 and fp16) against the CPU path on the same model. */
 static void test_gpu(void)
 {
@@ -437,6 +491,7 @@ int main(void)
     write_text(cpath, config_json);
     RUN(test_text);
     RUN(test_vision);
+    RUN(test_half_files);
     RUN(test_gpu);
     RUN(test_errors);
     for (int i = 0; i < n_w; i++) free(W[i].data);
