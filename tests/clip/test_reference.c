@@ -25,8 +25,11 @@ static float *load(const char *name, sp_npy *shape)
         fprintf(stderr, "%s\n", err.msg);
         return NULL;
     }
-    if (shape) *shape = a;
-    else sp_npy_free(&a);
+    if (shape) {
+        *shape = a;
+        shape->data = NULL; /* only the shape is wanted */
+    }
+    sp_npy_free(&a);
     return f;
 }
 
