@@ -46,7 +46,7 @@ int cmd_lift(int argc, char **argv)
     double t0 = sp_time_now();
     int rc = sp_semantic_lift_model(model, features, colmap, dev, &log, &err);
     double dt = sp_time_now() - t0;
-    if (!rc && !quiet)
+    if (!rc) /* the result line is printed even with --quiet (which silences progress) */
         printf("lift  %.2f  s  (%s, model %s)\n", dt, sp_device_name(dev), model);
     sp_device_free(dev);
     return rc ? cli_fail("lift", &err) : 0;
