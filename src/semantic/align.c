@@ -323,34 +323,46 @@ int sp_detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, dou
         free(idx);
         return sp_error_set(err, SP_E_NOTFOUND, "floor: no level plane found among the low Gaussians");
     }
-    /* Least-squares refit on the inliers: normal = smallest-variance direction. */
-    double mu[3] = {0}, C[9] = {0};
+    /* Least-squares refits on the inliers (normal = smallest-variance direction), three rounds
+     * with a shrinking band so clutter just above the floor (rugs, feet) stops tilting it. */
+    double n[3] = {bestn[0], bestn[1], bestn[2]}, mu[3] = {0}, d = bestd;
     size_t ni = 0;
-    for (size_t j = 0; j < k; j++) {
-        const float *q = s->means + 3 * idx[j];
-        if (fabs(bestn[0] * q[0] + bestn[1] * q[1] + bestn[2] * q[2] + bestd) >= thr) continue;
-        for (int a = 0; a < 3; a++) mu[a] += q[a];
-        ni++;
-    }
-    for (int a = 0; a < 3; a++) mu[a] /= ni;
-    for (size_t j = 0; j < k; j++) {
-        const float *q = s->means + 3 * idx[j];
-        if (fabs(bestn[0] * q[0] + bestn[1] * q[1] + bestn[2] * q[2] + bestd) >= thr) continue;
-        for (int a = 0; a < 3; a++)
-            for (int b = 0; b < 3; b++) C[a * 3 + b] += (q[a] - mu[a]) * (q[b] - mu[b]);
+    for (int round = 0; round < 3; round++) {
+        double band = thr / (double)(1 << round), C[9] = {0};
+        size_t cnt = 0;
+        double m[3] = {0};
+        for (size_t j = 0; j < k; j++) {
+            const float *q = s->means + 3 * idx[j];
+            if (fabs(n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + d) >= band) continue;
+            for (int a = 0; a < 3; a++) m[a] += q[a];
+            cnt++;
+        }
+        if (cnt < 3) break;
+        for (int a = 0; a < 3; a++) m[a] /= cnt;
+        for (size_t j = 0; j < k; j++) {
+            const float *q = s->means + 3 * idx[j];
+            if (fabs(n[0] * q[0] + n[1] * q[1] + n[2] * q[2] + d) >= band) continue;
+            for (int a = 0; a < 3; a++)
+                for (int b = 0; b < 3; b++) C[a * 3 + b] += (q[a] - m[a]) * (q[b] - m[b]);
+        }
+        double w[3], V[9];
+        jacobi(C, 3, w, V);
+        int sm = 0;
+        for (int j = 1; j < 3; j++)
+            if (w[j] < w[sm]) sm = j;
+        double nn[3] = {V[0 * 3 + sm], V[1 * 3 + sm], V[2 * 3 + sm]};
+        if (nn[0] * n[0] + nn[1] * n[1] + nn[2] * n[2] < 0) nn[0] = -nn[0], nn[1] = -nn[1], nn[2] = -nn[2];
+        memcpy(n, nn, sizeof n);
+        memcpy(mu, m, sizeof mu);
+        d = -(n[0] * mu[0] + n[1] * mu[1] + n[2] * mu[2]);
+        if (round == 0) ni = cnt;
     }
     free(idx);
-    double w[3], V[9];
-    jacobi(C, 3, w, V);
-    int sm = 0;
-    for (int j = 1; j < 3; j++)
-        if (w[j] < w[sm]) sm = j;
-    double n[3] = {V[0 * 3 + sm], V[1 * 3 + sm], V[2 * 3 + sm]};
     /* orient toward the cameras (or the rough up) */
     double toward = n_cams ? (cc[0] - mu[0]) * n[0] + (cc[1] - mu[1]) * n[1] + (cc[2] - mu[2]) * n[2]
                            : n[0] * up[0] + n[1] * up[1] + n[2] * up[2];
     if (toward < 0) n[0] = -n[0], n[1] = -n[1], n[2] = -n[2];
-    double d = -(n[0] * mu[0] + n[1] * mu[1] + n[2] * mu[2]);
+    d = -(n[0] * mu[0] + n[1] * mu[1] + n[2] * mu[2]);
     /* Rotation taking n to +z (Rodrigues about n x z). */
     double ax[3] = {n[1], -n[0], 0}, sa = sqrt(ax[0] * ax[0] + ax[1] * ax[1]), ca = n[2];
     double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
