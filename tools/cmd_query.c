@@ -19,6 +19,7 @@ static void help(void)
            "  --heatmap-dir DIR     one PNG per query, named after the text\n"
            "  --method 3d|multiview localization (default 3d)\n"
            "  --view N              heatmap from camera N instead of the best view\n"
+           "  --views N             multi-view: views rendered and back-projected (default 4)\n"
            "  --negatives a,b,c     canonical negatives (default %s)\n"
            "  --min-confidence C    raw cosine below which nothing is found (default 0.2)\n"
            "  --device cpu|cuda|auto, --threads N, --quiet\n",
@@ -52,6 +53,11 @@ int cmd_query(int argc, char **argv)
             if (!strcmp(v, "3d")) opts.method = SP_QUERY_3D;
             else if (!strcmp(v, "multiview") || !strcmp(v, "multi-view")) opts.method = SP_QUERY_MULTIVIEW;
             else return cli_usage_error("query", "--method: '%s' is not 3d or multiview", v);
+        } else if ((v = cli_flag_value(argc, argv, &i, "--views", &bad))) {
+            long nv;
+            if (cli_parse_int("query", "--views", v, &nv)) return 2;
+            if (nv < 1 || nv > 64) return cli_usage_error("query", "--views: %ld not in 1..64", nv);
+            opts.n_views = (int)nv;
         } else if ((v = cli_flag_value(argc, argv, &i, "--view", &bad))) {
             if (cli_parse_int("query", "--view", v, &view)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {

@@ -127,7 +127,8 @@ typedef struct sp_query_opts {
     float min_opacity;     /* Gaussians fainter than this are ignored (0.1) */
     float voxel_m;         /* clustering voxel edge in world units (0.12) */
     float min_instance_fraction; /* instances lighter than this share of the best are dropped (0.1) */
-    int n_views;           /* multi-view: views rendered and back-projected (4) */
+    int n_views;           /* multi-view: views rendered and back-projected, at least (4; up to
+                            * twice as many while under 90% of the relevant set is seen) */
     int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
     int heatmap;           /* render relevancy_image (1) */
     int heatmap_view;      /* -1 = best view, else an index into the cameras */

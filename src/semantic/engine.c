@@ -369,7 +369,7 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
                     in = m[a] >= I->extent_min[a] - pad && m[a] <= I->extent_max[a] + pad;
                 mask[i] = (uint8_t)in;
             }
-            int got = sem_pick_views(e, &sc, &th, mask, 1, &v, NULL, err);
+            int got = sem_pick_views(e, &sc, &th, mask, 1, 1, &v, NULL, err);
             free(mask);
             if (got < 0) return got;
             if (got == 0) v = -1;

@@ -65,7 +65,8 @@ static float wquantile(const vw *s, size_t m, double total, double q)
 }
 
 int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, float voxel,
-                float min_fraction, sp_query_instance **out, int *n_out, sp_error *err)
+                float min_fraction, float min_voxel_weight, sp_query_instance **out, int *n_out,
+                sp_error *err)
 {
     *out = NULL;
     *n_out = 0;
@@ -110,8 +111,16 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
     }
     for (size_t j = 0; j < m; j++) vkey[vox_of[j]] = k[j].key;
     for (long v = 0; v < nv; v++) parent[v] = v;
+    /* sparse voxels (stray points that would bridge two instances) take no part */
+    double *vweight = calloc((size_t)nv, sizeof(double));
+    if (!vweight) {
+        free(vkey);
+        goto nomem;
+    }
+    for (size_t j = 0; j < m; j++) vweight[vox_of[j]] += w[k[j].idx];
     const uint64_t mask = ((uint64_t)1 << KEY_BITS) - 1;
     for (long v = 0; v < nv; v++) {
+        if (vweight[v] < min_voxel_weight) continue;
         long ix = (long)((vkey[v] >> (2 * KEY_BITS)) & mask) - KEY_OFF;
         long iy = (long)((vkey[v] >> KEY_BITS) & mask) - KEY_OFF;
         long iz = (long)(vkey[v] & mask) - KEY_OFF;
@@ -126,24 +135,27 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
                         if (vkey[mid] == q) { hit = mid; break; }
                         if (vkey[mid] < q) a = mid + 1; else b = mid - 1;
                     }
-                    if (hit < 0) continue;
+                    if (hit < 0 || vweight[hit] < min_voxel_weight) continue;
                     long ra = find_root(parent, v), rb = find_root(parent, hit);
                     if (ra != rb) parent[ra > rb ? ra : rb] = ra < rb ? ra : rb;
                 }
     }
     free(vkey);
-    /* components: comp id per root, weights */
+    /* components: comp id per root (-1 for sparse voxels), weights */
     comp = malloc(sizeof(long) * (size_t)nv);
     cw = calloc((size_t)nv, sizeof(double));
     if (!comp || !cw) goto nomem;
     long nc = 0;
     for (long v = 0; v < nv; v++) comp[v] = -1;
     for (long v = 0; v < nv; v++) {
+        if (vweight[v] < min_voxel_weight) continue;
         long r = find_root(parent, v);
         if (comp[r] < 0) comp[r] = nc++;
         comp[v] = comp[r];
     }
-    for (size_t j = 0; j < m; j++) cw[comp[vox_of[j]]] += w[k[j].idx];
+    free(vweight);
+    for (size_t j = 0; j < m; j++)
+        if (comp[vox_of[j]] >= 0) cw[comp[vox_of[j]]] += w[k[j].idx];
     double best = 0;
     for (long c = 0; c < nc; c++)
         if (cw[c] > best) best = cw[c];
@@ -245,7 +257,7 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
         cf[j] = e->raw[i];
         j++;
     }
-    int rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction,
+    int rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction, 0.0f,
                          &res->instances, &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
@@ -307,16 +319,6 @@ int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, floa
     return rc;
 }
 
-typedef struct {
-    int view;
-    float score;
-} view_score;
-
-static int cmp_view_score(const void *a, const void *b)
-{
-    float x = ((const view_score *)a)->score, y = ((const view_score *)b)->score;
-    return (x < y) - (x > y);
-}
 
 /* Renders view v at 1/ds resolution; returns the camera used and buffers (caller frees). */
 static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float **feat,
@@ -388,7 +390,7 @@ static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
 }
 
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
-                   const uint8_t *mask, int k, int *views, float *scores, sp_error *err)
+                   const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err)
 {
     (void)sc;
     const sp_splat *s = &e->splat;
@@ -397,12 +399,8 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
         int rc = build_occupancy(e, err);
         if (rc) return rc;
     }
-    view_score *vs = malloc(sizeof *vs * e->n_cams);
     size_t *sel = malloc(sizeof(size_t) * (s->n ? s->n : 1));
-    if (!vs || !sel) {
-        free(vs), free(sel);
-        return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
-    }
+    if (!sel) return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
     size_t n_sel = 0;
     for (size_t i = 0; i < s->n; i++)
         if (mask ? mask[i]
@@ -411,15 +409,21 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     /* at most 256 evenly spaced samples of the relevant set */
     size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
     for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
-    /* score: how much of the relevant set a camera sees unoccluded (coverage), with the object
-     * framed rather than filling the image (projected box <= 35% of it) and near the centre */
+    /* Per camera: which samples it sees unoccluded in the image, and a framing factor (the
+     * object framed rather than filling the image: projected box <= 35% of it, near the centre). */
     double tot = 0;
-    for (size_t j = 0; j < n_smp; j++) tot += e->opacity[sel[j]];
+    uint8_t *vis = calloc(e->n_cams * (n_smp ? n_smp : 1), 1);
+    float *frame = calloc(e->n_cams, sizeof(float)), *wsmp = malloc(sizeof(float) * (n_smp ? n_smp : 1));
+    uint8_t *covered = calloc(n_smp ? n_smp : 1, 1);
+    if (!vis || !frame || !covered || !wsmp) {
+        free(vis), free(frame), free(covered), free(wsmp), free(sel);
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
+    }
     for (size_t c = 0; c < e->n_cams; c++) {
         const sp_camera *cam = &e->cams[c];
         sp_vec3 o = sp_camera_center(cam);
-        double acc = 0;
         float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f;
+        int any = 0;
         for (size_t j = 0; j < n_smp; j++) {
             size_t i = sel[j];
             sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
@@ -429,51 +433,73 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
             float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
             if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
             if (!visible(e, o, p)) continue;
-            acc += e->opacity[i];
+            vis[c * n_smp + j] = 1;
+            any = 1;
             u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
         }
-        float score = 0;
-        if (acc > 0 && tot > 0) {
+        if (any) {
             float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
             float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
-            score = (float)(acc / tot) * (area > 0.35f ? 0.35f / area : 1.0f) *
-                    (1.0f - sqrtf(du * du + dv * dv));
+            frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv));
         }
-        vs[c].view = (int)c;
-        vs[c].score = score;
     }
+    for (size_t j = 0; j < n_smp; j++) wsmp[j] = e->opacity[sel[j]], tot += wsmp[j];
     free(sel);
-    qsort(vs, e->n_cams, sizeof *vs, cmp_view_score);
-    /* greedy picks with diverse viewing directions (>= 25 degrees apart), then any */
+    /* Greedy set cover: each pick scores what it adds (samples no chosen view saw count fully,
+     * seen ones a quarter: another side of them still helps), so several instances (chairs
+     * around a table) all get views; near-duplicate directions (< 25 degrees) count half. */
     int got = 0;
-    for (int pass = 0; pass < 2 && got < k; pass++)
-        for (size_t j = 0; j < e->n_cams && got < k; j++) {
-            if (vs[j].score <= 0) break;
-            int dup = 0;
-            for (int q = 0; q < got; q++) {
-                if (views[q] == vs[j].view) { dup = 1; break; }
-                const float *Ra = e->cams[views[q]].R, *Rb = e->cams[vs[j].view].R;
-                float cosang = Ra[6] * Rb[6] + Ra[7] * Rb[7] + Ra[8] * Rb[8]; /* optical axes */
-                if (pass == 0 && cosang > 0.906f) dup = 1;
-            }
-            if (dup) continue;
-            views[got] = vs[j].view;
-            if (scores) scores[got] = vs[j].score;
-            got++;
+    while (got < k) {
+        if (got >= k_min) { /* past the minimum, stop once 90% of the relevant set is seen */
+            double seen = 0;
+            for (size_t j = 0; j < n_smp; j++) seen += covered[j] ? wsmp[j] : 0;
+            if (seen >= 0.9 * tot) break;
         }
-    free(vs);
+        int best = -1;
+        float best_score = 0;
+        for (size_t c = 0; c < e->n_cams; c++) {
+            if (frame[c] <= 0) continue;
+            int taken = 0;
+            float dup = 1.0f;
+            for (int q = 0; q < got; q++) {
+                if (views[q] == (int)c) taken = 1;
+                const float *Ra = e->cams[views[q]].R, *Rb = e->cams[c].R;
+                if (Ra[6] * Rb[6] + Ra[7] * Rb[7] + Ra[8] * Rb[8] > 0.906f) dup = 0.5f;
+            }
+            if (taken) continue;
+            double acc = 0;
+            for (size_t j = 0; j < n_smp; j++)
+                if (vis[c * n_smp + j]) acc += wsmp[j] * (covered[j] ? 0.25 : 1.0);
+            float sc_ = (float)(acc / (tot > 0 ? tot : 1)) * frame[c] * dup;
+            if (sc_ > best_score) best_score = sc_, best = (int)c;
+        }
+        if (best < 0) break;
+        views[got] = best;
+        if (scores) scores[got] = best_score;
+        got++;
+        for (size_t j = 0; j < n_smp; j++)
+            if (vis[(size_t)best * n_smp + j]) covered[j] = 1;
+    }
+    free(vis), free(frame), free(covered), free(wsmp);
     return got;
 }
+
+/* Back-projected pixels weigh the surface area they cover (z^2 / (fx fy)), so near views do not
+ * outweigh far ones by pixel count; a real surface fills a good part of a voxel's face, while
+ * depth noise between objects covers little of it. */
+#define MV_MIN_VOXEL_COVER 0.1f
 
 /* ---- multi-view ----------------------------------------------------------------------------------- */
 
 int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                            sp_query_result *res, sp_error *err)
 {
+    /* n_views views at least; up to twice that while the relevant set is not 90% covered
+     * (instances spread over the house: windows, chairs on both sides of a table) */
     int k = e->opts.n_views > 0 ? e->opts.n_views : 4;
-    int *views = malloc(sizeof(int) * (size_t)k);
+    int *views = malloc(sizeof(int) * (size_t)(2 * k));
     if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-    int got = sem_pick_views(e, sc, th, NULL, k, views, NULL, err);
+    int got = sem_pick_views(e, sc, th, NULL, k, 2 * k, views, NULL, err);
     if (got < 0) {
         free(views);
         return got;
@@ -530,7 +556,7 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
                                        ((float)y + 0.5f - cam.cy) / cam.fy * z - cam.t[1], z - cam.t[2]);
                     sp_vec3 xw = sp_mat3_apply(Rt, xc);
                     pts[3 * m] = xw.x, pts[3 * m + 1] = xw.y, pts[3 * m + 2] = xw.z;
-                    w[m] = (rel[p] - 0.5f + 1e-3f) * alpha[p];
+                    w[m] = (rel[p] - 0.5f + 1e-3f) * 2.0f * alpha[p] * (z / cam.fx) * (z / cam.fy);
                     cf[m] = raw[p];
                     m++;
                 }
@@ -542,7 +568,8 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     free(views);
     if (!rc && m > 0)
         rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction,
-                         &res->instances, &res->n_instances, err);
+                         MV_MIN_VOXEL_COVER * e->opts.voxel_m * e->opts.voxel_m, &res->instances,
+                         &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
     set_best(res, e->opts.min_confidence);

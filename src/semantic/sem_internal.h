@@ -34,9 +34,11 @@ struct sp_query_engine {
 };
 
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
- * heaviest first, lighter than min_fraction of the heaviest dropped. conf [m] may be NULL. */
+ * heaviest first, lighter than min_fraction of the heaviest dropped; voxels whose points weigh
+ * less than min_voxel_weight in total are ignored. conf [m] may be NULL. */
 int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, float voxel,
-                float min_fraction, sp_query_instance **out, int *n_out, sp_error *err);
+                float min_fraction, float min_voxel_weight, sp_query_instance **out, int *n_out,
+                sp_error *err);
 
 /* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op. */
 typedef struct {
@@ -49,11 +51,12 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
                     sp_query_result *res, sp_error *err);
 int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                            sp_query_result *res, sp_error *err);
-/* Ranks cameras by how much of the relevant set (mask [n], or Gaussians near `focus` when
- * mask is NULL) they see, checked with a low-resolution render; writes up to k indices, best
- * first, preferring diverse viewing directions. Returns the count. */
+/* Chooses cameras that see the relevant set (mask [n], or the thresholds when mask is NULL)
+ * unoccluded (occupancy-grid test) and well framed, greedily covering what earlier picks did not
+ * see: at least k_min views (when they add anything), then more up to k until 90% is covered.
+ * Writes indices best first; returns the count or a negative error. */
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
-                   const uint8_t *mask, int k, int *views, float *scores, sp_error *err);
+                   const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err);
 /* Renders view `v` at full size with the heatmap overlay into res. */
 int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
                 sp_error *err);

@@ -134,7 +134,7 @@ static void test_cluster_instances(void)
     sp_query_instance *inst = NULL;
     int n = 0;
     sp_error err = {0};
-    CHECK_OK(sem_cluster(pts, w, cf, M, 0.12f, 0.2f, &inst, &n, &err), &err);
+    CHECK_OK(sem_cluster(pts, w, cf, M, 0.12f, 0.2f, 0.0f, &inst, &n, &err), &err);
     CHECK(n == 2);
     if (n == 2) {
         /* heaviest first: blob 1 */
@@ -146,9 +146,9 @@ static void test_cluster_instances(void)
         CHECK(inst[0].extent_min[0] > 1.7f && inst[0].extent_max[0] < 2.3f);
     }
     free(inst);
-    CHECK_OK(sem_cluster(pts, w, cf, 0, 0.12f, 0.2f, &inst, &n, &err), &err);
+    CHECK_OK(sem_cluster(pts, w, cf, 0, 0.12f, 0.2f, 0.0f, &inst, &n, &err), &err);
     CHECK(n == 0 && inst == NULL);
-    CHECK_FAILS(sem_cluster(pts, w, cf, M, 0.0f, 0.2f, &inst, &n, &err), SP_E_ARG, &err, "voxel");
+    CHECK_FAILS(sem_cluster(pts, w, cf, M, 0.0f, 0.2f, 0.0f, &inst, &n, &err), SP_E_ARG, &err, "voxel");
 }
 
 static void test_turbo_and_overlay(void)
