@@ -210,8 +210,15 @@ int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_
     if ((rc = sp_ply_read_splat(path, &e->splat, err))) goto fail;
     const char *colmap = jstr(js, "colmap");
     if (colmap && colmap[0]) {
+        /* Without the capture the engine still localizes in 3D; views and heatmaps need it. */
         resolve(path, sizeof path, model_dir, colmap);
-        if ((rc = load_cameras(e, path, err))) goto fail;
+        sp_error cerr = {0};
+        if (load_cameras(e, path, &cerr)) {
+            sp_logf(log, SP_LOG_WARN, "%s (queries work without views: no multi-view, no heatmaps)",
+                    cerr.msg);
+            free(e->cams), free(e->cam_names);
+            e->cams = NULL, e->cam_names = NULL, e->n_cams = 0;
+        }
     }
     if ((rc = engine_finish(e, opts, err))) goto fail;
     cJSON_Delete(js);
