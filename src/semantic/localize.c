@@ -410,7 +410,8 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
     for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
     /* Per camera: which samples it sees unoccluded in the image, and a framing factor (the
-     * object framed rather than filling the image: projected box <= 35% of it, near the centre). */
+     * object framed rather than filling the image: projected box <= 35% of it, near the centre,
+     * seen from within a few metres). */
     double tot = 0;
     uint8_t *vis = calloc(e->n_cams * (n_smp ? n_smp : 1), 1);
     float *frame = calloc(e->n_cams, sizeof(float)), *wsmp = malloc(sizeof(float) * (n_smp ? n_smp : 1));
@@ -422,7 +423,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     for (size_t c = 0; c < e->n_cams; c++) {
         const sp_camera *cam = &e->cams[c];
         sp_vec3 o = sp_camera_center(cam);
-        float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f;
+        float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f, zsum = 0;
         int any = 0;
         for (size_t j = 0; j < n_smp; j++) {
             size_t i = sel[j];
@@ -434,13 +435,16 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
             if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
             if (!visible(e, o, p)) continue;
             vis[c * n_smp + j] = 1;
-            any = 1;
+            any++;
+            zsum += z;
             u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
         }
         if (any) {
             float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
             float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
-            frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv));
+            /* and near: rendered depth (and so back-projection) gets noisier with distance */
+            float zm = zsum / (float)any / 3.5f;
+            frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv)) / (1.0f + zm * zm);
         }
     }
     for (size_t j = 0; j < n_smp; j++) wsmp[j] = e->opacity[sel[j]], tot += wsmp[j];
