@@ -203,7 +203,7 @@ char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
 /* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
 void sp_turbo(float t, float rgb[3]);
 /* Overlays relevancy [H][W] (0.5 = neutral .. 1) in turbo colours on rgb [H][W][3] floats,
- * writing out [H][W][3] uint8. Pixels at or below 0.5 keep a dimmed RGB. */
+ * writing out [H][W][3] uint8: a dimmed scene with the colour map fading in above 0.5. */
 void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int height,
                         uint8_t *out);
 

@@ -37,17 +37,16 @@ void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int
     size_t np = (size_t)width * height;
     for (size_t p = 0; p < np; p++) {
         const float *c = rgb + 3 * p;
-        float t = (relevancy[p] - 0.5f) * 2.0f;
         uint8_t *o = out + 3 * p;
-        if (!(t > 0.02f)) { /* neutral: a dimmed grey of the scene keeps the context readable */
-            float g = 0.55f * (0.3f * c[0] + 0.59f * c[1] + 0.11f * c[2]);
-            for (int k = 0; k < 3; k++) o[k] = to_u8(0.5f * g + 0.25f * c[k]);
-            continue;
-        }
+        /* a dimmed, desaturated scene keeps the context readable; the colour map fades in with
+         * relevancy above neutral (0.5), so weak relevancy stays close to the base */
+        float g = 0.55f * (0.3f * c[0] + 0.59f * c[1] + 0.11f * c[2]);
+        float t = (relevancy[p] - 0.5f) * 2.0f;
+        t = t > 0 ? (t < 1 ? t : 1) : 0;
         float h[3];
         sp_turbo(t, h);
-        float a = 0.35f + 0.55f * (t > 1 ? 1 : t);
-        for (int k = 0; k < 3; k++) o[k] = to_u8((1 - a) * c[k] + a * h[k]);
+        float a = 0.85f * (t * 1.5f < 1 ? t * 1.5f : 1);
+        for (int k = 0; k < 3; k++) o[k] = to_u8((1 - a) * (0.5f * g + 0.25f * c[k]) + a * h[k]);
     }
 }
 
@@ -71,11 +70,16 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
     /* The per-Gaussian relevancy composited like a colour (2 channels, not D), over the RGB. */
     if ((rc = sem_render_scores(e, cam, raw, rel, rgb, err))) goto done;
     /* Stretch the visible relevancy to the full colour range when the query was found, so a
-     * weak-but-real CLIP match still reads; an absent query keeps the absolute scale (cold). */
+     * weak-but-real CLIP match still reads; a query that was not found is faded (cold). */
     float rmax = 0.5f;
     for (size_t p = 0; p < np; p++)
         if (rel[p] > rmax) rmax = rel[p];
     float scale = res->valid && rmax > 0.55f ? 0.5f / (rmax - 0.5f) : 1.0f;
+    if (!res->valid) { /* not found: fade by how far the confidence is below the bar */
+        float f = e->opts.min_confidence > 0 ? res->confidence / e->opts.min_confidence : 0.0f;
+        f = f < 0 ? 0 : f > 1 ? 1 : f;
+        scale = f * f;
+    }
     float *shown = raw; /* reuse */
     for (size_t p = 0; p < np; p++) shown[p] = 0.5f + (rel[p] - 0.5f) * scale;
     sp_heatmap_overlay(rgb, shown, W, H, img);
