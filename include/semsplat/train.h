@@ -136,9 +136,10 @@ typedef struct sp_train_options {
     int freeze_geometry;       /* train features only */
 } sp_train_options;
 
-/* gsplat simple_trainer defaults for `steps` steps: density-control and SH-schedule steps are
- * scaled by steps / 30000 when steps < 30000 (as simple_trainer's steps_scaler), except that
- * refine_every stays >= 25. */
+/* gsplat simple_trainer defaults for `steps` steps. Below 30000 steps the SH schedule and
+ * refine_start scale by steps / 30000, densification stops at half the run, and refinement
+ * keeps gsplat's absolute cadence (every 100 steps, opacity reset every 3000), as
+ * `simple_trainer --max_steps N` does. */
 sp_train_options sp_train_options_default(int steps);
 
 typedef struct sp_train_result {

@@ -720,6 +720,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         int do_reset = refining && o->reset_every > 0 && step > o->refine_start &&
                        step % o->reset_every == 0;
         if (do_refine || do_reset) {
+            double t_ref = sp_time_now();
             sp_splat P, M, V;
             float *g2 = NULL, *cnt = NULL;
             if ((rc = state_download(&s, o->sh_degree, &P, &M, &V, err))) break;
@@ -741,8 +742,10 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
             sp_splat_free(&V);
             if (rc) break;
             if (do_refine)
-                sp_logf(log, SP_LOG_DEBUG, "step %d: %zu cloned, %zu split, %zu pruned -> %zu Gaussians",
-                        step, ds.n_cloned, ds.n_split, ds.n_pruned, s.n);
+                sp_logf(log, SP_LOG_DEBUG,
+                        "step %d: %zu cloned, %zu split, %zu pruned -> %zu Gaussians (%.0f ms)",
+                        step, ds.n_cloned, ds.n_split, ds.n_pruned, s.n,
+                        1000.0 * (sp_time_now() - t_ref));
         }
 
         loss_ema = step == start_step ? loss : 0.9 * loss_ema + 0.1 * loss;
