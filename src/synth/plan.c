@@ -1,7 +1,7 @@
 /* Camera paths for captures, like a robot's: a 2D grid of the free floor (floor surfaces minus
  * everything between ankle and head height, kept a robot radius away), waypoints spread over it
- * by farthest-point sampling and visited in a nearest-neighbour tour, several looking-around
- * views at each (towards open space), then views around each object with a clear line of sight. */
+ * by farthest-point sampling and visited in a nearest-neighbour tour, a full spin of overlapping
+ * views at each, then short arcs of views around each object with a clear line of sight. */
 #include "internal.h"
 
 #include <stdlib.h>
@@ -12,6 +12,9 @@
 #define OBST_MAX_Z 1.9f
 #define CLEARANCE_M 0.35f    /* a camera stays this far from obstacles */
 #define MAX_CELLS 700        /* grid side limit */
+#define SPIN_VIEWS 12        /* headings per waypoint: 30 degrees apart */
+#define ARC_VIEWS 3          /* views per arc around an object */
+#define ARC_STEP_RAD 0.26f   /* 15 degrees between arc views */
 
 typedef struct grid {
     float x0, y0, res;
@@ -180,19 +183,6 @@ static int cell_of(const grid *g, float x, float y, int *i, int *j)
     return *i >= 0 && *j >= 0 && *i < g->nx && *j < g->ny;
 }
 
-/* Free distance from (x, y) along yaw until an obstacle (up to max_m). */
-static float free_run(const grid *g, float x, float y, float yaw, float max_m)
-{
-    float dx = cosf(yaw), dy = sinf(yaw);
-    for (float s = 0; s < max_m; s += g->res * 0.5f) {
-        int i, j;
-        if (!cell_of(g, x + dx * s, y + dy * s, &i, &j)) return s;
-        size_t k = (size_t)j * g->nx + i;
-        if (g->occ[k] != -1 || !g->floor[k]) return s;
-    }
-    return max_m;
-}
-
 /* Line of sight from (x, y) towards object o: no other object or structure in between. */
 static int clear_line(const grid *g, float x, float y, float tx, float ty, int o, const sp_synth_object *ob)
 {
@@ -295,9 +285,13 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
         if (ob->is_structure || !ob->n_triangles || cz > 2.2f || cz < -0.5f || !cell_of(&g, cx, cy, &ci, &cj)) continue;
         objs[n_objs++] = (int)i;
     }
-    size_t n_obj_views = n_objs ? (size_t)(0.4 * n) : 0, n_walk = n - n_obj_views;
+    /* A robot records video: consecutive frames overlap. The walk is a full spin of SPIN_VIEWS
+     * headings at each waypoint (30 degrees apart, so with a 70-degree lens every frame is also
+     * seen by its neighbours and held-out frames are true novel views of seen content), and object
+     * views come as short arcs. Scattered single views made held-out PSNR 7 dB below training. */
+    size_t n_obj_views = n_objs ? (size_t)(0.3 * n) : 0, n_walk = n - n_obj_views;
     /* waypoints: farthest-point sampling over the free cells */
-    size_t n_wp = (n_walk + 3) / 4;
+    size_t n_wp = (n_walk + SPIN_VIEWS - 1) / SPIN_VIEWS;
     if (n_wp < 1) n_wp = 1;
     size_t *wp = malloc(n_wp * sizeof(size_t));
     float *mind = malloc(nc * sizeof(float));
@@ -352,45 +346,22 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
         }
         free(used);
     }
-    /* looking around at each waypoint: yaws toward open space, spread apart */
+    /* looking around at each waypoint: a full spin at one camera height, as a robot turning on
+     * the spot; the pitch tilts down more the higher the camera */
     for (size_t q = 0; q < n_wp && k < n_walk; q++) {
         size_t cell = wp[order[q]];
         float x = g.x0 + ((float)(cell % g.nx) + 0.5f) * g.res, y = g.y0 + ((float)(cell / g.nx) + 0.5f) * g.res;
-        /* score of a heading: the free run over the middle of the view cone, so that no view
-         * stares into a wall; headings at least 60 degrees apart when enough are open, else
-         * the most open ones */
-        float score[24], yaw0 = (float)(rnd(&r) * 2 * M_PI);
-        for (int a = 0; a < 24; a++) {
-            score[a] = 4.0f;
-            for (int d = -2; d <= 2; d++)
-                score[a] = fminf(score[a], free_run(&g, x, y, yaw0 + a * (float)M_PI / 12 + d * 0.17f, 4.0f));
-        }
-        int taken[24] = {0};
-        for (int v = 0; v < 4 && k < n_walk; v++) {
-            int best = -1;
-            float bs = -1;
-            for (int pass = 0; pass < 2 && best < 0; pass++)
-                for (int a = 0; a < 24; a++) {
-                    if (taken[a]) continue;
-                    int near = 0;
-                    for (int b = 0; b < 24; b++) {
-                        int d = abs(a - b);
-                        if (d > 12) d = 24 - d;
-                        if (taken[b] && d < 4) near = 1;
-                    }
-                    if (pass == 0 && (near || score[a] < 1.2f)) continue;
-                    if (score[a] > bs) { bs = score[a]; best = a; }
-                }
-            taken[best] = 1;
-            float h = hmin + (float)rnd(&r) * (hmax - hmin);
-            float pitch = (float)((-0.05 - 0.3 * (h - hmin) / fmaxf(hmax - hmin, 1e-3f)) + 0.12 * (rnd(&r) - 0.5));
-            float yaw = yaw0 + best * (float)M_PI / 12 + (float)(0.2 * (rnd(&r) - 0.5));
+        float yaw0 = (float)(rnd(&r) * 2 * M_PI);
+        float h = hmin + (float)rnd(&r) * (hmax - hmin);
+        float pitch = (float)(-0.05 - 0.3 * (h - hmin) / fmaxf(hmax - hmin, 1e-3f));
+        for (int v = 0; v < SPIN_VIEWS && k < n_walk; v++) {
+            float yaw = yaw0 + v * (float)(2 * M_PI / SPIN_VIEWS);
             set_cam(&out[k], o, fov);
             look(&out[k], x, y, h, yaw, pitch);
             k++;
         }
     }
-    /* around objects, round robin */
+    /* around objects, round robin: arcs of ARC_VIEWS views ARC_STEP_RAD apart at one height */
     size_t tries = 0;
     for (size_t v = 0; k < n && n_objs && tries < 64 * n; tries++, v++) {
         int oi = objs[v % n_objs];
@@ -399,18 +370,26 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
         float cz = 0.5f * (ob->aabb_min[2] + ob->aabb_max[2]);
         float size = fmaxf(ob->aabb_max[0] - ob->aabb_min[0], fmaxf(ob->aabb_max[1] - ob->aabb_min[1], ob->aabb_max[2] - ob->aabb_min[2]));
         float dist = fminf(fmaxf(0.9f + 1.1f * size, 1.0f), 3.2f) * (float)(0.85 + 0.3 * rnd(&r));
-        float ang = (float)(rnd(&r) * 2 * M_PI);
-        float x = cx + dist * cosf(ang), y = cy + dist * sinf(ang);
-        int ci, cj;
-        if (!cell_of(&g, x, y, &ci, &cj) || g.clear[(size_t)cj * g.nx + ci] < need * 0.7f) continue;
-        if (!clear_line(&g, x, y, cx, cy, oi, ob)) continue;
+        float ang0 = (float)(rnd(&r) * 2 * M_PI);
         float h = hmin + (float)rnd(&r) * (hmax - hmin);
         float tz = fmaxf(cz, 0.15f);
-        float yaw = atan2f(cy - y, cx - x) + (float)(0.15 * (rnd(&r) - 0.5));
-        float pitch = atan2f(tz - h, dist);
-        set_cam(&out[k], o, fov);
-        look(&out[k], x, y, h, yaw, pitch);
-        k++;
+        int ok = 1;
+        for (int a = 0; a < ARC_VIEWS && ok; a++) {
+            float ang = ang0 + (a - (ARC_VIEWS - 1) * 0.5f) * ARC_STEP_RAD;
+            float x = cx + dist * cosf(ang), y = cy + dist * sinf(ang);
+            int ci, cj;
+            ok = cell_of(&g, x, y, &ci, &cj) && g.clear[(size_t)cj * g.nx + ci] >= need * 0.7f &&
+                 clear_line(&g, x, y, cx, cy, oi, ob);
+        }
+        if (!ok) continue;
+        for (int a = 0; a < ARC_VIEWS && k < n; a++) {
+            float ang = ang0 + (a - (ARC_VIEWS - 1) * 0.5f) * ARC_STEP_RAD;
+            float x = cx + dist * cosf(ang), y = cy + dist * sinf(ang);
+            float yaw = atan2f(cy - y, cx - x), pitch = atan2f(tz - h, dist);
+            set_cam(&out[k], o, fov);
+            look(&out[k], x, y, h, yaw, pitch);
+            k++;
+        }
     }
     /* anything left (objects unreachable): more walk views at random waypoints */
     for (; k < n; k++) {
