@@ -7,6 +7,7 @@
 #include <stdlib.h>
 
 #include "scene.h"
+#include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "test.h"
 
@@ -185,8 +186,92 @@ static void test_lift_model_folder_then_query(void)
     free(cls);
 }
 
+/* Features in a CLIP space: the engine embeds text with the CLIP text tower named in the sidecar
+ * (here the tiny random CLIP fixture, 32-dim); a sidecar whose features do not match the model's
+ * embedding size is refused with a message naming both. */
+static void test_clip_text_tower_sidecar(void)
+{
+    const char *dir = test_tmpdir("semantic_clip_sidecar");
+    char path[1400], model[1200];
+    snprintf(model, sizeof model, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
+    if (!sp_file_exists(model)) {
+        fprintf(stderr, "no tiny CLIP fixture: case skipped\n");
+        return;
+    }
+    enum { F = 32, D = 8, NG = 200 };
+    test_rng r = {11};
+    float mean[F], basis[D * F];
+    memset(basis, 0, sizeof basis);
+    for (int j = 0; j < F; j++) mean[j] = (float)test_range(&r, -0.1, 0.1);
+    for (int k = 0; k < D; k++) basis[k * F + k] = 1.0f;
+    sp_splat s;
+    sp_error err = {0};
+    CHECK_OK(sp_splat_alloc(&s, NG, 0, D, &err), &err);
+    for (size_t i = 0; i < NG * 3; i++) s.means[i] = (float)test_range(&r, -1, 1);
+    for (size_t i = 0; i < NG * 3; i++) s.log_scales[i] = -3.0f;
+    for (size_t i = 0; i < NG; i++) s.opacity_logits[i] = 2.0f;
+    for (size_t i = 0; i < NG * D; i++) s.features[i] = (float)test_range(&r, -1, 1);
+    snprintf(path, sizeof path, "%s/splat.ply", dir);
+    CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
+    size_t s1[1] = {F}, s2[2] = {D, F};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, &err), &err);
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, &err), &err);
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", "clip");
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", "clip");
+    cJSON_AddStringToObject(o, "model", model);
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    CHECK_OK(sp_json_write_file(path, o, &err), &err);
+    cJSON_Delete(o);
+    sp_device *dev = NULL;
+    sp_query_engine *e = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), &err);
+    if (e) {
+        float a[F], b[F];
+        CHECK_OK(sp_query_engine_embed(e, "a red mug", a, &err), &err);
+        sp_clip *c = NULL;
+        const char *t = "a red mug";
+        CHECK_OK(sp_clip_load(&c, model, NULL, NULL, &err), &err);
+        if (c) {
+            CHECK_OK(sp_clip_encode_text(c, &t, 1, b, &err), &err);
+            double worst = 0;
+            for (int j = 0; j < F; j++) worst = fmax(worst, fabs(a[j] - b[j]));
+            CHECK_NEAR(worst, 0, 1e-6);
+            sp_clip_free(c);
+        }
+        sp_query_result res;
+        CHECK_OK(sp_query_engine_query(e, "a red mug", &res, &err), &err);
+        CHECK(res.confidence > -1.0f && res.confidence <= 1.0f);
+        sp_query_result_free(&res);
+        sp_query_engine_free(e);
+    }
+    /* a 64-dim feature space with a 32-dim CLIP: refused, naming both sizes */
+    sp_splat_free(&s);
+    float mean2[64] = {0}, basis2[D * 64];
+    memset(basis2, 0, sizeof basis2);
+    for (int k = 0; k < D; k++) basis2[k * 64 + k] = 1.0f;
+    size_t t1[1] = {64}, t2[2] = {D, 64};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, t1, mean2, &err), &err);
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, t2, basis2, &err), &err);
+    CHECK_OK(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), &err);
+    if (e) {
+        sp_query_result res;
+        CHECK_FAILS(sp_query_engine_query(e, "mug", &res, &err), SP_E_FORMAT, &err, "64");
+        sp_query_engine_free(e);
+    }
+    sp_device_free(dev);
+}
+
 int main(void)
 {
     RUN(test_lift_model_folder_then_query);
+    RUN(test_clip_text_tower_sidecar);
     return TEST_EXIT();
 }
