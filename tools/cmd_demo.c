@@ -23,14 +23,15 @@ static const char *const absent_classes[] = {"fire extinguisher", "piano", "bicy
 static const char *usage_text =
     "usage: semsplat demo [--out DIR] [--world W.world] [--model-path DIR] [--capture DIR]\n"
     "                     [--views N] [--size WxH] [--steps N] [--dim D] [--device cpu|cuda|auto]\n"
-    "                     [--clip MODEL.safetensors] [--skip-missing] [--quiet]\n\n"
+    "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n\n"
     "Runs synth -> train -> features -> lift -> queries and writes DIR (default demo/):\n"
     "  capture/ (COLMAP model, images, depth, labels, ground_truth.json), model/ (splat.ply with\n"
     "  f_sem_* features, train.json, semantic.json), features/, heatmaps/<class>.png,\n"
     "  demo.json and report.md (per-object localization errors for both methods).\n"
     "Defaults: the bundled house (data/worlds/house.world); on a GPU 150 views at 640x480 and\n"
     "7000 steps, on the CPU 48 views at 320x240 and 2000 steps. --capture DIR skips synth and\n"
-    "uses an existing capture (features then need --clip unless it has labels/).\n";
+    "uses an existing capture (features then need --clip unless it has labels/). --reuse skips\n"
+    "the stages whose outputs already exist in DIR (to re-run only the queries, say).\n";
 
 typedef struct {
     char name[128], cls[128];
@@ -115,8 +116,16 @@ static int run_step(const char *what, int (*fn)(int, char **), int argc, char **
 typedef struct {
     const char *out, *world, *model_path, *capture, *clip, *device;
     long views, steps, dim;
-    int width, height, quiet, skip_missing;
+    int width, height, quiet, skip_missing, reuse;
 } demo_opts;
+
+/* With --reuse, a stage whose output already exists is skipped (re-run queries after a change). */
+static int done_before(const demo_opts *o, const char *dir, const char *file)
+{
+    char p[1400];
+    snprintf(p, sizeof p, "%s/%s", dir, file);
+    return o->reuse && sp_file_exists(p);
+}
 
 static int parse(int argc, char **argv, demo_opts *o)
 {
@@ -142,6 +151,7 @@ static int parse(int argc, char **argv, demo_opts *o)
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;
         } else if (!strcmp(argv[i], "--quiet")) o->quiet = 1;
         else if (!strcmp(argv[i], "--skip-missing")) o->skip_missing = 1;
+        else if (!strcmp(argv[i], "--reuse")) o->reuse = 1;
         else if (!bad) return cli_usage_error("demo", "unknown flag '%s'", argv[i]);
     }
     return bad ? 2 : 0;
@@ -151,7 +161,7 @@ int cmd_demo(int argc, char **argv)
 {
     static char world_default[1200];
     snprintf(world_default, sizeof world_default, "%s/worlds/house.world", sp_data_dir());
-    demo_opts o = {"demo", world_default, NULL, NULL, NULL, "auto", 0, 0, 32, 0, 0, 0, 0};
+    demo_opts o = {"demo", world_default, NULL, NULL, NULL, "auto", 0, 0, 32, 0, 0, 0, 0, 0};
     int prc = parse(argc, argv, &o);
     if (prc) return prc < 0 ? 0 : prc;
 
@@ -181,7 +191,7 @@ int cmd_demo(int argc, char **argv)
     snprintf(dim_s, sizeof dim_s, "%ld", o.dim);
     double t0 = sp_time_now(), t_synth = 0, t_train = 0, t_feat = 0, t_lift = 0;
 
-    if (!o.capture) {
+    if (!o.capture && !done_before(&o, capture, "ground_truth.json")) {
         char *a[16] = {"synth", "--world", (char *)o.world, "--out", capture, "--views", views_s,
                        "--size", size_s};
         int n = 9;
@@ -192,7 +202,7 @@ int cmd_demo(int argc, char **argv)
         if (run_step("synth", cmd_synth, n, a)) return 1;
         t_synth = sp_time_now() - t;
     }
-    {
+    if (!done_before(&o, model, "train.json")) {
         char *a[16] = {"train", "--colmap", capture, "--out", model, "--steps", steps_s,
                        "--device", (char *)o.device};
         int n = 9;
@@ -201,7 +211,7 @@ int cmd_demo(int argc, char **argv)
         if (run_step("train", cmd_train, n, a)) return 1;
         t_train = sp_time_now() - t;
     }
-    {
+    if (!done_before(&o, feats, "features.json")) {
         snprintf(path, sizeof path, "%s/labels", capture);
         int labels = sp_file_exists(path);
         if (!labels && !o.clip) {
@@ -219,7 +229,7 @@ int cmd_demo(int argc, char **argv)
         if (run_step("features", cmd_features, n, a)) return 1;
         t_feat = sp_time_now() - t;
     }
-    {
+    if (!done_before(&o, model, "semantic.json")) {
         char *a[12] = {"lift", "--model", model, "--features", feats, "--colmap", capture,
                        "--device", (char *)o.device};
         int n = 9;
