@@ -450,8 +450,9 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     for (size_t j = 0; j < n_smp; j++) wsmp[j] = e->opacity[sel[j]], tot += wsmp[j];
     free(sel);
     /* Greedy set cover: each pick scores what it adds (samples no chosen view saw count fully,
-     * seen ones a quarter: another side of them still helps), so several instances (chairs
-     * around a table) all get views; near-duplicate directions (< 25 degrees) count half. */
+     * seen ones a twentieth: another side still helps, but an unseen small instance wins over
+     * a third look at a large one), so several instances (chairs around a table, windows
+     * around the house) all get views; near-duplicate directions (< 25 degrees) count half. */
     int got = 0;
     while (got < k) {
         if (got >= k_min) { /* past the minimum, stop once 90% of the relevant set is seen */
@@ -473,7 +474,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
             if (taken) continue;
             double acc = 0;
             for (size_t j = 0; j < n_smp; j++)
-                if (vis[c * n_smp + j]) acc += wsmp[j] * (covered[j] ? 0.25 : 1.0);
+                if (vis[c * n_smp + j]) acc += wsmp[j] * (covered[j] ? 0.05 : 1.0);
             float sc_ = (float)(acc / (tot > 0 ? tot : 1)) * frame[c] * dup;
             if (sc_ > best_score) best_score = sc_, best = (int)c;
         }
