@@ -244,6 +244,12 @@ int cmd_demo(int argc, char **argv)
     gt_object *gt = NULL;
     int n_gt = 0;
     snprintf(path, sizeof path, "%s/ground_truth.json", capture);
+    if (!sp_file_exists(path)) {
+        /* A real capture has no ground truth: the model is ready, there is nothing to score. */
+        printf("%s has no ground_truth.json, so there is nothing to score; the model is ready:\n"
+               "  semsplat query --model %s \"refrigerator\" --heatmap fridge.png\n", capture, model);
+        return 0;
+    }
     if (load_ground_truth(path, &gt, &n_gt, &err)) return cli_fail("demo", &err);
     if (sp_mkdirs(heat, &err)) return cli_fail("demo", &err);
     sp_device *dev = NULL;
