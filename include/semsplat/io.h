@@ -85,6 +85,8 @@ const sp_colmap_camera *sp_colmap_find_camera(const sp_colmap_model *m, uint32_t
 /* Fills a pinhole sp_camera (intrinsics and world-to-camera pose) for image index i. Radial /
  * OpenCV distortion is carried in cam->distortion; other models fail with SP_E_UNSUPPORTED. */
 int sp_colmap_image_camera(const sp_colmap_model *m, size_t i, sp_camera *cam, sp_error *err);
+/* The inverse for the pose: sets im->qvec / im->tvec from cam's world-to-camera R, t. */
+void sp_colmap_image_set_pose(sp_colmap_image *im, const sp_camera *cam);
 
 /* ---- splat PLY -------------------------------------------------------------------------------- */
 

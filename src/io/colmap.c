@@ -245,3 +245,11 @@ int sp_colmap_image_camera(const sp_colmap_model *m, size_t i, sp_camera *cam, s
     *cam = out;
     return SP_OK;
 }
+
+void sp_colmap_image_set_pose(sp_colmap_image *im, const sp_camera *cam)
+{
+    float q[4];
+    sp_mat3_to_quat(cam->R, q);
+    for (int k = 0; k < 4; k++) im->qvec[k] = q[k];
+    for (int k = 0; k < 3; k++) im->tvec[k] = cam->t[k];
+}

@@ -235,11 +235,8 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
         for (size_t i = 0; !rc && i < n; i++) first[i + 1] += first[i];
         for (size_t i = 0; !rc && i < n; i++) {
             sp_colmap_image *im = &m.images[i];
-            float q[4];
-            sp_mat3_to_quat(cams[i].R, q);
             im->id = (uint32_t)(i + 1);
-            for (int k = 0; k < 4; k++) im->qvec[k] = q[k];
-            for (int k = 0; k < 3; k++) im->tvec[k] = cams[i].t[k];
+            sp_colmap_image_set_pose(im, &cams[i]);
             im->camera_id = 1;
             snprintf(names[i], 32, "%05zu.png", i);
             im->name = names[i];

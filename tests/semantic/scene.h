@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "semsplat/clip.h"
+#include "semsplat/io.h"
 #include "semsplat/semantic.h"
 #include "test.h"
 
@@ -139,6 +140,32 @@ static inline void sc_make_cams(sp_camera *cams, int n, int w, int h)
         sp_camera_look_at(cam, sp_v3((float)(3.6 * cos(a)), (float)(3.6 * sin(a)) - 0.3f, 1.2f),
                           sp_v3(0, -0.3f, 0.4f), sp_v3(0, 0, 1));
     }
+}
+
+/* Writes the cameras as a binary COLMAP model into model_dir (one PINHOLE camera, the intrinsics
+ * of cams[0]; image i named by name_fmt, e.g. "%05d.png"). At most 64 cameras. */
+static inline int sc_write_colmap(const char *model_dir, const sp_camera *cams, int n, int w, int h,
+                                  const char *name_fmt, sp_error *err)
+{
+    if (n > 64) return sp_error_set(err, SP_E_ARG, "sc_write_colmap: %d cameras, at most 64", n);
+    int rc = sp_mkdirs(model_dir, err);
+    if (rc) return rc;
+    sp_colmap_model m;
+    memset(&m, 0, sizeof m);
+    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, (uint64_t)w, (uint64_t)h, 4,
+                            {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
+    sp_colmap_image ims[64];
+    char names[64][32];
+    memset(ims, 0, sizeof ims);
+    for (int i = 0; i < n; i++) {
+        ims[i].id = (uint32_t)i + 1;
+        ims[i].camera_id = 1;
+        sp_colmap_image_set_pose(&ims[i], &cams[i]);
+        snprintf(names[i], sizeof names[i], name_fmt, i);
+        ims[i].name = names[i];
+    }
+    m.n_cameras = 1, m.cameras = &cam, m.n_images = (size_t)n, m.images = ims;
+    return sp_colmap_write_bin(model_dir, &m, err);
 }
 
 #endif

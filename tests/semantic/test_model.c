@@ -17,26 +17,7 @@ static int write_capture(const char *dir, const sp_camera *cams, sp_error *err)
 {
     char path[1400];
     snprintf(path, sizeof path, "%s/sparse/0", dir);
-    int rc = sp_mkdirs(path, err);
-    if (rc) return rc;
-    sp_colmap_model m;
-    memset(&m, 0, sizeof m);
-    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, W, H, 4, {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
-    sp_colmap_image ims[N];
-    char names[N][32];
-    memset(ims, 0, sizeof ims);
-    for (int i = 0; i < N; i++) {
-        float q[4];
-        sp_mat3_to_quat(cams[i].R, q);
-        ims[i].id = (uint32_t)i + 1;
-        for (int k = 0; k < 4; k++) ims[i].qvec[k] = q[k];
-        for (int k = 0; k < 3; k++) ims[i].tvec[k] = cams[i].t[k];
-        ims[i].camera_id = 1;
-        snprintf(names[i], sizeof names[i], "%05d.png", i);
-        ims[i].name = names[i];
-    }
-    m.n_cameras = 1, m.cameras = &cam, m.n_images = N, m.images = ims;
-    return sp_colmap_write_bin(path, &m, err);
+    return sc_write_colmap(path, cams, N, W, H, "%05d.png", err);
 }
 
 /* Label maps rendered from the scene's true features at half resolution, as f16 .npy. */

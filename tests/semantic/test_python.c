@@ -30,25 +30,7 @@ static int build_model(const char *dir, sp_error *err)
     if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, sh2, pca.basis, err))) goto done;
     /* COLMAP model of the cameras */
     snprintf(colmap, sizeof colmap, "%s/sparse/0", dir);
-    if ((rc = sp_mkdirs(colmap, err))) goto done;
-    sp_colmap_model m;
-    memset(&m, 0, sizeof m);
-    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, W, H, 4, {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
-    sp_colmap_image ims[N];
-    char names[N][32];
-    memset(ims, 0, sizeof ims);
-    for (int i = 0; i < N; i++) {
-        float q[4];
-        sp_mat3_to_quat(cams[i].R, q);
-        ims[i].id = (uint32_t)i + 1;
-        for (int k = 0; k < 4; k++) ims[i].qvec[k] = q[k];
-        for (int k = 0; k < 3; k++) ims[i].tvec[k] = cams[i].t[k];
-        ims[i].camera_id = 1;
-        snprintf(names[i], sizeof names[i], "view_%02d.png", i);
-        ims[i].name = names[i];
-    }
-    m.n_cameras = 1, m.cameras = &cam, m.n_images = N, m.images = ims;
-    if ((rc = sp_colmap_write_bin(colmap, &m, err))) goto done;
+    if ((rc = sc_write_colmap(colmap, cams, N, W, H, "view_%02d.png", err))) goto done;
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "source", "labels");
     cJSON_AddNumberToObject(o, "dim", SC_DIM);

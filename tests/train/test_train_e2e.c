@@ -84,10 +84,7 @@ static void write_capture(const char *dir, int model, const sp_splat *gt)
         im->id = (uint32_t)k + 1;
         im->camera_id = 1;
         im->name = strdup(name);
-        float q[4];
-        sp_mat3_to_quat(c.R, q);
-        for (int a = 0; a < 4; a++) im->qvec[a] = q[a];
-        for (int a = 0; a < 3; a++) im->tvec[a] = c.t[a];
+        sp_colmap_image_set_pose(im, &c);
     }
     free(rgb);
     /* points3D: the true centres, jittered, in grey (the trainer must find the colours) */
