@@ -3,6 +3,7 @@
  * localization methods, scored against ground_truth.json, with heatmaps and a report. */
 #include <cjson/cJSON.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -99,6 +100,19 @@ static void slug(const char *text, char *out, size_t cap)
         out[j++] = ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) ? c : '_';
     }
     out[j] = 0;
+}
+
+/* Appends to a fixed report buffer, clamping so a long report is cut rather than overrun. */
+static void md_append(char *md, size_t cap, size_t *n, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+static void md_append(char *md, size_t cap, size_t *n, const char *fmt, ...)
+{
+    if (*n + 1 >= cap) return;
+    va_list ap;
+    va_start(ap, fmt);
+    int w = vsnprintf(md + *n, cap - *n, fmt, ap);
+    va_end(ap);
+    if (w > 0) *n = *n + (size_t)w < cap - 1 ? *n + (size_t)w : cap - 1;
 }
 
 static int run_step(const char *what, int (*fn)(int, char **), int argc, char **argv)
@@ -278,8 +292,7 @@ int cmd_demo(int argc, char **argv)
     cJSON *report = cJSON_CreateObject(), *jq = cJSON_AddArrayToObject(report, "queries");
     char md[65536];
     size_t mdn = 0;
-    mdn += (size_t)snprintf(md + mdn, sizeof md - mdn,
-                            "# semsplat demo report\n\n| query | object | confidence | error 3D (m) | "
+    md_append(md, sizeof md, &mdn, "# semsplat demo report\n\n| query | object | confidence | error 3D (m) | "
                             "error multi-view (m) | instances | heatmap |\n|---|---|---|---|---|---|---|\n");
     double sum_err[2] = {0, 0}, sum_q[2] = {0, 0};
     int n_q[2] = {0, 0};
@@ -321,7 +334,7 @@ int cmd_demo(int argc, char **argv)
             printf("%-22s %-22s %6.3f %9s %9s %5d  (absent: %s)\n", classes[c], "-",
                    res[0].confidence, "-", "-", res[0].n_instances,
                    quiet_ok ? "not found, as it should" : "FOUND, wrongly");
-            mdn += (size_t)snprintf(md + mdn, sizeof md - mdn, "| %s | (absent) | %.3f | %s | %s | %d | |\n",
+            md_append(md, sizeof md, &mdn, "| %s | (absent) | %.3f | %s | %s | %d | |\n",
                                     classes[c], res[0].confidence, res[0].valid ? "found" : "-",
                                     res[1].valid ? "found" : "-", res[0].n_instances);
         } else {
@@ -346,7 +359,7 @@ int cmd_demo(int argc, char **argv)
                 cJSON_AddItemToArray(jo, jx);
                 printf("%-22s %-22s %6.3f %9.3f %9.3f %5d\n", classes[c], gt[i].name,
                        res[0].confidence, e[0], e[1], res[0].n_instances);
-                mdn += (size_t)snprintf(md + mdn, sizeof md - mdn, "| %s | %s | %.3f | %.3f | %.3f | %d | %s |\n",
+                md_append(md, sizeof md, &mdn, "| %s | %s | %.3f | %.3f | %.3f | %d | %s |\n",
                                         classes[c], gt[i].name, res[0].confidence, e[0], e[1],
                                         res[0].n_instances, hp);
             }
@@ -354,7 +367,6 @@ int cmd_demo(int argc, char **argv)
         cJSON_AddItemToArray(jq, q);
         sp_query_result_free(&res[0]);
         sp_query_result_free(&res[1]);
-        if (mdn >= sizeof md - 512) mdn = sizeof md - 512;
     }
     double mean3d = n_err[0] ? sum_err[0] / n_err[0] : NAN, meanmv = n_err[1] ? sum_err[1] / n_err[1] : NAN;
     double q3d = n_q[0] ? sum_q[0] / n_q[0] : NAN, qmv = n_q[1] ? sum_q[1] / n_q[1] : NAN;
@@ -367,8 +379,7 @@ int cmd_demo(int argc, char **argv)
            n_abs, q3d, qmv, mean3d, meanmv);
     printf("times: synth %.1f s, train %.1f s, features %.1f s, lift %.1f s, total %.1f s\n",
            t_synth, t_train, t_feat, t_lift, sp_time_now() - t0);
-    mdn += (size_t)snprintf(md + mdn, sizeof md - mdn,
-                            "\nClasses found: 3D %d/%d, multi-view %d/%d. Absent queries rejected: %d/%d.\n"
+    md_append(md, sizeof md, &mdn, "\nClasses found: 3D %d/%d, multi-view %d/%d. Absent queries rejected: %d/%d.\n"
                             "Mean query error (returned position to the nearest object of the class): "
                             "3D %.3f m, multi-view %.3f m.\nMean instance error (each object to the "
                             "nearest returned instance): 3D %.3f m, multi-view %.3f m.\n",
