@@ -41,6 +41,49 @@
 #define SP_SH_C3_5 1.445305721320277f
 #define SP_SH_C3_6 (-0.5900435899266435f)
 
+/* ---- arithmetic both backends round the same way ------------------------------------------------ */
+
+/* A multiply and an add that are never fused: nvcc contracts a * b + c into one FMA (a single
+ * rounding) unless told not to, GCC in ISO C mode does not (-ffp-contract=off). The keep/skip
+ * tests of the rasterizer (alpha >= 1/255, T >= 1e-4) must come out identically on the CPU and
+ * the GPU, so the arithmetic that feeds them goes through these. */
+#if defined(__CUDA_ARCH__)
+#define SP_FMUL(a, b) __fmul_rn((a), (b))
+#define SP_FADD(a, b) __fadd_rn((a), (b))
+#define SP_FSUB(a, b) __fsub_rn((a), (b))
+#else
+#define SP_FMUL(a, b) ((a) * (b))
+#define SP_FADD(a, b) ((a) + (b))
+#define SP_FSUB(a, b) ((a) - (b))
+#endif
+
+/* e^x, within 2 ulp for x in [-87, 88] (clamped to that range; NaN stays NaN): Cephes expf,
+ * round x / ln 2 to n, a degree-5 polynomial on the remainder, times 2^n. Only basic IEEE
+ * operations in a fixed order, so the CPU and the GPU get the same bits (libm's expf and CUDA's
+ * expf/__expf differ from each other in the last place). cpu_exp_neg4 (render_internal.h) is the
+ * same sequence four lanes wide. */
+SP_HD static inline float sp_gm_expf(float x)
+{
+    if (x != x) return x;
+    x = x < -87.f ? -87.f : (x > 88.f ? 88.f : x);
+    const float magic = 12582912.f; /* 1.5 * 2^23: adding and subtracting it rounds to an integer */
+    float n = SP_FSUB(SP_FADD(SP_FMUL(x, 1.44269504088896341f), magic), magic);
+    float r = SP_FSUB(x, SP_FMUL(n, 0.693359375f));
+    r = SP_FSUB(r, SP_FMUL(n, -2.12194440e-4f));
+    float p = 1.9875691500e-4f;
+    p = SP_FADD(SP_FMUL(p, r), 1.3981999507e-3f);
+    p = SP_FADD(SP_FMUL(p, r), 8.3334519073e-3f);
+    p = SP_FADD(SP_FMUL(p, r), 4.1665795894e-2f);
+    p = SP_FADD(SP_FMUL(p, r), 1.6666665459e-1f);
+    p = SP_FADD(SP_FMUL(p, r), 5.0000001201e-1f);
+    p = SP_FADD(SP_FADD(SP_FMUL(p, SP_FMUL(r, r)), r), 1.f);
+    union {
+        int i;
+        float f;
+    } two_n = {.i = ((int)n + 127) << 23};
+    return SP_FMUL(p, two_n.f);
+}
+
 /* gsplat's frustum slack for the Jacobian: x/z and y/z are clamped to the image's tan-fov limits
  * plus 0.3 tan(fov/2) on each side, so Gaussians far outside the view do not blow the 2D
  * covariance up. */
@@ -88,7 +131,7 @@ SP_HD static inline void sp_gm_quat_scale_to_cov(const float q[4], const float l
 {
     float R[9], M[9];
     sp_gm_quat_to_rot(q, R);
-    float s0 = expf(log_scale[0]), s1 = expf(log_scale[1]), s2 = expf(log_scale[2]);
+    float s0 = sp_gm_expf(log_scale[0]), s1 = sp_gm_expf(log_scale[1]), s2 = sp_gm_expf(log_scale[2]);
     for (int i = 0; i < 3; i++) {
         M[i * 3 + 0] = R[i * 3 + 0] * s0;
         M[i * 3 + 1] = R[i * 3 + 1] * s1;
@@ -108,7 +151,7 @@ SP_HD static inline void sp_gm_quat_scale_to_cov_vjp(const float q[4], const flo
                                                      float v_log_scale[3])
 {
     float R[9], M[9], vM[9], vR[9];
-    float s[3] = {expf(log_scale[0]), expf(log_scale[1]), expf(log_scale[2])};
+    float s[3] = {sp_gm_expf(log_scale[0]), sp_gm_expf(log_scale[1]), sp_gm_expf(log_scale[2])};
     sp_gm_quat_to_rot(q, R);
     for (int i = 0; i < 9; i++) M[i] = R[i] * s[i % 3];
     /* cov = M M^T  ->  v_M = (G + G^T) M */
@@ -345,7 +388,7 @@ SP_HD static inline void sp_gm_cov2d(const float quat[4], const float log_scale[
     /* A = (J Rc) R S */
     float A0[3], A1[3];
     for (int j = 0; j < 3; j++) {
-        float s = expf(log_scale[j]);
+        float s = sp_gm_expf(log_scale[j]);
         A0[j] = (B0[0] * R[j] + B0[1] * R[3 + j] + B0[2] * R[6 + j]) * s;
         A1[j] = (B1[0] * R[j] + B1[1] * R[3 + j] + B1[2] * R[6 + j]) * s;
     }
@@ -399,7 +442,7 @@ SP_HD static inline int sp_gm_project_ex(const float mean[3], const float quat[4
     if (!sp_gm_blur_conic(cfg->eps2d, cov2, det, conic, &comp)) return 0;
     mean2d[0] = (float)((double)cam->fx * pd[0] / pd[2] + (double)cam->cx);
     mean2d[1] = (float)((double)cam->fy * pd[1] / pd[2] + (double)cam->cy);
-    float op = 1.f / (1.f + expf(-opacity_logit));
+    float op = 1.f / (1.f + sp_gm_expf(-opacity_logit));
     if (cfg->antialiased) op *= comp;
     int r = sp_gm_radius(cov2, op);
     if (r <= 0) return 0;
@@ -444,7 +487,7 @@ SP_HD static inline void sp_gm_project_vjp(const float mean[3], const float quat
     /* conic and compensation exactly as the forward computed them */
     sp_gm_cov2d(quat, log_scale, pc, cam, cov2, &det);
     if (!sp_gm_blur_conic(cfg->eps2d, cov2, det, conic, &comp)) return;
-    float sig = 1.f / (1.f + expf(-opacity_logit));
+    float sig = 1.f / (1.f + sp_gm_expf(-opacity_logit));
 
     float v_cov2[3] = {0.f, 0.f, 0.f};
     sp_gm_inverse2_vjp(conic, v_conic, v_cov2);
@@ -464,37 +507,51 @@ SP_HD static inline void sp_gm_project_vjp(const float mean[3], const float quat
 
 /* ---- per-pixel alpha -------------------------------------------------------------------------------- */
 
-/* alpha of a Gaussian at offset (dx, dy) = pixel centre - mean2d:
- * min(SP_ALPHA_MAX, opacity exp(-sigma)), sigma = 0.5 (a dx^2 + c dy^2) + b dx dy; returns 0 when
- * the contribution is skipped (sigma < 0 from rounding, or alpha < SP_ALPHA_MIN). Both backends
- * and forward/backward call exactly this, so they make the same skip decisions. */
-SP_HD static inline float sp_gm_alpha(const float conic[3], float opacity, float dx, float dy)
+/* sigma = 0.5 (a dx^2 + c dy^2) + b dx dy for conic (a, b, c), evaluated as
+ * (half_a dx + by) dx + hy with the per-row terms of sp_gm_row_terms, in exactly this order on
+ * both backends (the CPU keeps by and hy for a whole row, four pixels at a time). */
+SP_HD static inline void sp_gm_row_terms(const float conic[3], float dy, float *by, float *hy)
 {
-    float sigma = 0.5f * (conic[0] * dx * dx + conic[2] * dy * dy) + conic[1] * dx * dy;
-    if (sigma < 0.f) return 0.f;
-    float a = opacity * expf(-sigma);
-    a = a < SP_ALPHA_MAX ? a : SP_ALPHA_MAX;
-    return a < SP_ALPHA_MIN ? 0.f : a;
+    *by = SP_FMUL(conic[1], dy);
+    *hy = SP_FMUL(SP_FMUL(0.5f * conic[2], dy), dy);
+}
+SP_HD static inline float sp_gm_sigma(float half_a, float by, float hy, float dx)
+{
+    return SP_FADD(SP_FMUL(SP_FADD(SP_FMUL(half_a, dx), by), dx), hy);
 }
 
 /* A sigma beyond which alpha is surely below SP_ALPHA_MIN: ln(255 opacity) plus a margin far
- * larger than float rounding, so skipping there before calling expf never changes a decision. */
+ * larger than float rounding, so skipping there before the exp never changes a decision (and
+ * the log need not round the same on both backends). */
 SP_HD static inline float sp_gm_sigma_cut(float opacity)
 {
     return logf(opacity * 255.f) + 1e-3f;
 }
 
-/* sp_gm_alpha with the early cut (same result, bit for bit) that also returns g = exp(-sigma)
- * for the backward. */
+/* alpha of a Gaussian at offset (dx, dy) = pixel centre - mean2d (dx = (px + 0.5) - mean x, one
+ * rounding): min(SP_ALPHA_MAX, opacity exp(-sigma)); returns 0 when the contribution is skipped
+ * (sigma < 0 from rounding, sigma beyond sigma_cut, or alpha < SP_ALPHA_MIN) and sets
+ * *g = exp(-sigma) otherwise. This is THE rule: the CUDA kernels call it, the CPU's cpu_alpha4
+ * is the same operations four lanes wide, so both backends keep and skip the same contributions
+ * bit for bit. */
 SP_HD static inline float sp_gm_alpha_g(const float conic[3], float opacity, float sigma_cut,
                                         float dx, float dy, float *g)
 {
-    float sigma = 0.5f * (conic[0] * dx * dx + conic[2] * dy * dy) + conic[1] * dx * dy;
+    float by, hy;
+    sp_gm_row_terms(conic, dy, &by, &hy);
+    float sigma = sp_gm_sigma(0.5f * conic[0], by, hy, dx);
     if (sigma < 0.f || sigma > sigma_cut) return 0.f;
-    *g = expf(-sigma);
-    float a = opacity * *g;
+    *g = sp_gm_expf(-sigma);
+    float a = SP_FMUL(opacity, *g);
     a = a < SP_ALPHA_MAX ? a : SP_ALPHA_MAX;
     return a < SP_ALPHA_MIN ? 0.f : a;
+}
+
+/* sp_gm_alpha_g without the cut (the cut never changes the result) and without g. */
+SP_HD static inline float sp_gm_alpha(const float conic[3], float opacity, float dx, float dy)
+{
+    float g;
+    return sp_gm_alpha_g(conic, opacity, 1e30f, dx, dy, &g);
 }
 
 /* Backward of sp_gm_alpha at a kept contribution: dL/dalpha -> v_conic (element convention),
@@ -504,7 +561,7 @@ SP_HD static inline void sp_gm_alpha_vjp(const float conic[3], float opacity, fl
                                          float *v_opacity)
 {
     float sigma = 0.5f * (conic[0] * dx * dx + conic[2] * dy * dy) + conic[1] * dx * dy;
-    float g = expf(-sigma);
+    float g = sp_gm_expf(-sigma);
     if (opacity * g > SP_ALPHA_MAX) return;
     *v_opacity += g * v_alpha;
     float v_sigma = -opacity * g * v_alpha;

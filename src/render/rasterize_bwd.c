@@ -111,7 +111,8 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         for (int c = 0; c < D; c++) v_col[c] = zero;
         for (int py = y0; py <= y1; py++) {
             const float dy = (float)py + 0.5f - my;
-            const float by = con[1] * dy, hy = 0.5f * con[2] * dy * dy;
+            float by, hy;
+            sp_gm_row_terms(con, dy, &by, &hy);
             const cpu_v4f v_by = cpu_v4_splat(by), v_hy = cpu_v4_splat(hy);
             const cpu_v4f vdy = cpu_v4_splat(dy);
             int rx0, rx1;
@@ -119,7 +120,8 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 cpu_v4f gv;
-                const cpu_v4f dx = cpu_v4_splat((float)px + 0.5f - mx) + lanef;
+                /* pixel centres first (exact), then one rounding, as sp_gm_alpha_g */
+                const cpu_v4f dx = (cpu_v4_splat((float)px + 0.5f) + lanef) - cpu_v4_splat(mx);
                 const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, dx, &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
                 const cpu_v4i valid = in_row & (pos < load4i(last + p)) & (a > zero);

@@ -141,8 +141,8 @@ static inline cpu_v4f cpu_v4_select(cpu_v4i mask, cpu_v4f a, cpu_v4f b)
     return (cpu_v4f)(((cpu_v4i)a & mask) | ((cpu_v4i)b & ~mask));
 }
 
-/* e^x for x in [-80, 0] per lane (Cephes expf: round x / ln 2 to n, a degree-5 polynomial on
- * the remainder, times 2^n), within 1e-7 relative; branch-free, unlike libm's expf. */
+/* e^x for x in [-80, 0] per lane: sp_gm_expf (gauss_math.h) four lanes wide, the same operations
+ * in the same order, so the same bits (tests/render/test_exact_alpha checks); branch-free. */
 static inline cpu_v4f cpu_exp_neg4(cpu_v4f x)
 {
     const cpu_v4f magic = cpu_v4_splat(12582912.f);
@@ -160,8 +160,8 @@ static inline cpu_v4f cpu_exp_neg4(cpu_v4f x)
     return p * (cpu_v4f)e;
 }
 
-/* The CPU backend's alpha rule for four pixels of a row (sp_gm_alpha's rule, with cpu_exp_neg and
- * the sigma cut): dx = pixel centres - mean x; per-row constants half_a = a / 2, by = b dy,
+/* The CPU backend's alpha rule for four pixels of a row (sp_gm_alpha_g's operations, bit for
+ * bit): dx = pixel centres - mean x; per-row constants half_a = a / 2, by = b dy,
  * hy = c dy^2 / 2 (all arguments broadcast to the four lanes by the caller, out of the loops), so
  * sigma = (half_a dx + by) dx + hy. Forward and backward both call this, so
  * they make the same decisions and get the same bits. Returns alpha (0 = skipped) and

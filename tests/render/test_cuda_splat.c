@@ -102,21 +102,31 @@ static void test_trained_splat(void)
         double e_img = 0, e_dep = 0;
         for (size_t i = 0; i < npix * D; i++) e_img = fmax(e_img, fabs(ic[i] - ig[i]));
         for (size_t i = 0; i < npix; i++) e_dep = fmax(e_dep, fabs(dc[i] - dg[i]) / fmax(1.0, fabs(dc[i])));
-        /* Gradients: relative to the group's scale; a handful of entries may flip a 1/255
-         * threshold between exp implementations (see test_cuda_raster.c), so count outliers. */
+        /* Gradients, per group: |cpu - gpu| / max(|cpu|, 1e-3 max|group|), so entries that
+         * are sums of many random-signed pixel terms cancelling to almost nothing are judged
+         * against the group's scale, not their own. The forward is identical on both backends
+         * (same keep/skip decisions, gauss_math.h), so what is left is summation order. */
         size_t total = n * 15 + n * D, bad = 0, worse = 0;
-        double gmax = 0;
-        for (size_t i = 0; i < total; i++) gmax = fmax(gmax, fabs(gc[i]));
+        const struct { const char *name; size_t off, cnt; } grp[] = {
+            {"v_means", 0, 3 * n}, {"v_quats", 3 * n, 4 * n}, {"v_log_scales", 7 * n, 3 * n},
+            {"v_opacity", 10 * n, n}, {"v_means2d", 11 * n, 2 * n}, {"v_colors", 15 * n, n * D}};
         double worst = 0;
-        for (size_t i = 0; i < total; i++) {
-            double rel = fabs(gc[i] - gg[i]) / fmax(fabs(gc[i]), 1e-3 * gmax + 1e-12);
-            worst = fmax(worst, rel);
-            bad += rel > 1e-3;
-            worse += rel > 2e-2;
+        for (size_t k = 0; k < sizeof grp / sizeof grp[0]; k++) {
+            const float *a = gc + grp[k].off, *b = gg + grp[k].off;
+            double gmax = 0, gworst = 0;
+            size_t gbad = 0, at = 0;
+            for (size_t i = 0; i < grp[k].cnt; i++) gmax = fmax(gmax, fabs(a[i]));
+            for (size_t i = 0; i < grp[k].cnt; i++) {
+                double rel = fabs(a[i] - b[i]) / fmax(fabs(a[i]), 1e-3 * gmax + 1e-30);
+                if (rel > gworst) gworst = rel, at = i;
+                gbad += rel > 1e-3;
+                worse += rel > 2e-2;
+            }
+            fprintf(stderr, "    %-13s %zu of %zu beyond 1e-3 (worst %.2e: cpu %.6g gpu %.6g, "
+                    "group max %.3g)\n", grp[k].name, gbad, grp[k].cnt, gworst, a[at], b[at], gmax);
+            bad += gbad;
+            worst = fmax(worst, gworst);
         }
-        fprintf(stderr, "  view %zu (%dx%d, %zu Gaussians, D=%zu): max |image| diff %.2e, depth %.2e, "
-                "gradients beyond 1e-3 rel: %zu of %zu (worst %.2e)\n", views[vi], cam.width,
-                cam.height, n, D, e_img, e_dep, bad, total, worst);
         CHECK_MSG(e_img <= 1e-4, "image differs by %g", e_img);
         CHECK_MSG(e_dep <= 1e-4, "depth differs by %g", e_dep);
         CHECK_MSG(bad * 5000 <= total && worse == 0, "%zu gradients beyond 1e-3, %zu beyond 2e-2", bad, worse);

@@ -11,6 +11,7 @@
 #include <stdint.h>
 
 #include "render/cuda_api.h"
+#include "render/gauss_math.h"
 
 #define SP_CUDA_CHECK(call, err, what)                                                        \
     do {                                                                                      \
@@ -81,23 +82,21 @@ int sp_cuda_chunk_width(int d, int max_ch);
 /* Widest chunk from environment variable `name` (8, 16, 32 or 64; for tuning), else dflt. */
 int sp_cuda_env_chunk(const char *name, int dflt);
 
-/* alpha of a Gaussian at offset (dx, dy) from a pixel centre, with the skip rules of
- * sp_gm_alpha (gauss_math.h); forward and backward kernels both call this so they keep and skip
- * the same contributions. Returns 0 when skipped; *vis gets exp(-sigma). `cut` is
- * sp_cu_sigma_cut(opacity): beyond it alpha is surely below 1/255, so the exp (a special-function
- * unit op, 1/8 of the FMA rate) is skipped for the many pixels outside the ellipse without
- * changing any decision (the 1e-3 margin is far above rounding). */
+/* alpha of a Gaussian at offset (dx, dy) from a pixel centre: sp_gm_alpha_g (gauss_math.h), the
+ * rule the CPU backend runs bit for bit (unfused multiplies and adds, the shared polynomial exp),
+ * so both backends keep and skip the same contributions; forward and backward kernels both call
+ * this. co = (conic a, b, c, opacity). Returns 0 when skipped; *vis gets exp(-sigma). `cut` is
+ * sp_cu_sigma_cut(opacity): beyond it alpha is surely below 1/255, so the exp is skipped for the
+ * many pixels outside the ellipse without changing any decision (the 1e-3 margin is far above
+ * the fast log's error). */
 __device__ __forceinline__ float sp_cu_sigma_cut(float opacity)
 {
     return __logf(opacity * 255.f) + 1e-3f;
 }
 __device__ __forceinline__ float sp_cu_alpha(float4 co, float cut, float dx, float dy, float *vis)
 {
-    const float sigma = 0.5f * (co.x * dx * dx + co.z * dy * dy) + co.y * dx * dy;
-    if (sigma < 0.f || sigma > cut) return 0.f;
-    *vis = __expf(-sigma);
-    const float a = fminf(SP_ALPHA_MAX, co.w * *vis);
-    return a < SP_ALPHA_MIN ? 0.f : a;
+    const float conic[3] = {co.x, co.y, co.z};
+    return sp_gm_alpha_g(conic, co.w, cut, dx, dy, vis);
 }
 
 static inline unsigned sp_div_up(size_t a, size_t b) { return (unsigned)((a + b - 1) / b); }

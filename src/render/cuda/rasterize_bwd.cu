@@ -157,7 +157,9 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 #pragma unroll
             for (int k = 0; k < 7; k++) geo[k] = 0.f;
             if (valid) {
-                const float ra = 1.f / (1.f - alpha);
+                /* IEEE 1/x (fast math would approximate it), as the CPU's division: the T recovered
+                 * front to back then matches the CPU's bit for bit */
+                const float ra = __frcp_rn(1.f - alpha);
                 T *= ra;
                 const float fac = alpha * T;
                 const float *col = s_col + t * CH;
