@@ -27,6 +27,7 @@ static void help(void)
         "  --init-points N       number of random points (default 100000)\n"
         "  --init-ply FILE       train further from an existing splat (3DGS/gsplat PLY)\n"
         "  --sh-degree N         final SH degree 0..3 (default 3)\n"
+        "  --sh-interval N       raise the SH degree every N steps (default 1000 x steps/30000)\n"
         "  --max-gaussians N     cap on the Gaussian count (default 0 = none)\n"
         "  --no-densify          keep the initial Gaussians (no clone/split/prune)\n"
         "  --refine-start N --refine-stop N --refine-every N --reset-every N\n"
@@ -50,7 +51,7 @@ int cmd_train(int argc, char **argv)
 {
     const char *colmap = NULL, *images = NULL, *out = NULL, *device = "auto", *init = "points";
     const char *init_ply = NULL, *resume = NULL, *v;
-    long tmp, threads = 0, steps = 30000, downscale = 1, init_points = 100000, sh_degree = 3;
+    long tmp, threads = 0, steps = 30000, downscale = 1, init_points = 100000, sh_degree = 3, sh_interval = 0;
     long max_g = 0, test_every = 8, eval_every = 0, ck_every = 1000, seed = 42;
     long refine_start = -1, refine_stop = -1, refine_every = -1, reset_every = -1;
     double grow = -1;
@@ -69,6 +70,7 @@ int cmd_train(int argc, char **argv)
         INT_FLAG("--steps", steps)
         INT_FLAG("--downscale", downscale)
         INT_FLAG("--sh-degree", sh_degree)
+        INT_FLAG("--sh-interval", sh_interval)
         INT_FLAG("--max-gaussians", max_g)
         INT_FLAG("--test-every", test_every)
         INT_FLAG("--eval-every", eval_every)
@@ -141,6 +143,7 @@ int cmd_train(int argc, char **argv)
     }
     sp_train_options o = sp_train_options_default((int)steps);
     o.sh_degree = (int)sh_degree;
+    if (sh_interval > 0) o.sh_degree_interval = (int)sh_interval;
     o.max_gaussians = (size_t)max_g;
     o.densify = !no_densify;
     o.random_background = random_bg;

@@ -254,13 +254,14 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
         rc = sp_error_set(err, SP_E_NOMEM, "evaluation: out of memory");
         goto done;
     }
-    if ((rc = prepare_colors(s, sh_degree, active, d->scene_center, err))) goto done;
     double psnr = 0, ssim = 0, l1 = 0;
     int nv = 0;
     for (size_t i = 0; i < d->n_views; i++) {
         const sp_train_view *v = &d->views[i];
         if (any_test && !v->is_test) continue;
         int W = v->cam.width, H = v->cam.height;
+        /* SH colours depend on the direction from this view's camera, as in training */
+        if ((rc = prepare_colors(s, sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
         sp_raster_in in = raster_in(s, bg);
         sp_raster_out out = {image_d, NULL, NULL};
         sp_raster_cfg cfg = sp_raster_cfg_default();
