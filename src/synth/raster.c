@@ -196,8 +196,24 @@ static void shade(const view *v, const stri *s, double x, double y, double fp, f
             float foot = fmaxf(dxu * dxu + dxv * dxv, dyu * dyu + dyv * dyv);
             texture_sample(tx, uv[0], uv[1], foot > 1.0f ? 0.5f * log2f(foot) : 0.0f, t);
             for (int k = 0; k < 3; k++) alb[k] *= t[k];
-        } else
-            pattern_apply(m->pattern, pat, w->tri_axis[tri], alb);
+        } else {
+            /* pattern-space size of a pixel (fp is a sample, 1/ss of a pixel): the larger of the
+             * steps one sample right and one down, so oblique surfaces band-limit along their
+             * stretched direction */
+            float bx[3], by[3], d2x = 0, d2y = 0;
+            source_bary(s, x + fp, y, bx);
+            source_bary(s, x, y + fp, by);
+            for (int k = 0; k < 3; k++) {
+                float px = bx[0] * w->pattern[vi[0] * 3 + k] + bx[1] * w->pattern[vi[1] * 3 + k] +
+                           bx[2] * w->pattern[vi[2] * 3 + k];
+                float py = by[0] * w->pattern[vi[0] * 3 + k] + by[1] * w->pattern[vi[1] * 3 + k] +
+                           by[2] * w->pattern[vi[2] * 3 + k];
+                d2x += (px - pat[k]) * (px - pat[k]);
+                d2y += (py - pat[k]) * (py - pat[k]);
+            }
+            float fw = sqrtf(fmaxf(d2x, d2y)) / (float)fp; /* per pixel */
+            pattern_apply(m->pattern, pat, w->tri_axis[tri], fw, alb);
+        }
     }
     /* Two-sided: the normal faces the camera. */
     float nl = sqrtf(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);

@@ -40,8 +40,23 @@ static inline float fbm3(float x, float y, float z)
            0.2f * vnoise(4.1f * x, 4.1f * y + 31.7f, 4.1f * z);
 }
 
-/* Multiplies albedo by the pattern at pattern-space point p; axis = dominant normal axis. */
-static inline void pattern_apply(int pattern, const float p[3], int axis, float c[3])
+/* Band limit for a pattern term of spatial frequency k (cycles per metre) seen with footprint fw
+ * (metres per pixel): 1 while a cycle spans 4+ pixels, fading to 0 at 2 pixels (Nyquist). Real
+ * cameras integrate detail finer than a pixel into its mean; point-sampling it instead gives
+ * aliasing noise that differs from view to view, which no 3D model can (or should) reproduce.
+ * The procedural counterpart of the image textures' mipmaps ("frequency clamping"). */
+static inline float band_weight(float k, float fw)
+{
+    float c = k * fw;
+    return c <= 0.25f ? 1.0f : (c >= 0.5f ? 0.0f : 1.0f - smooth01((c - 0.25f) / 0.25f));
+}
+
+/* Noise value n in [0, 1) of frequency k, faded toward its mean 0.5 as it gets too fine. */
+static inline float band(float n, float k, float fw) { return 0.5f + (n - 0.5f) * band_weight(k, fw); }
+
+/* Multiplies albedo by the pattern at pattern-space point p; axis = dominant normal axis; fw is
+ * the pattern-space size of a pixel there (0 = no band limit). */
+static inline void pattern_apply(int pattern, const float p[3], int axis, float fw, float c[3])
 {
     float u = axis == 0 ? p[1] : p[0], v = axis == 2 ? p[1] : p[2];
     float f = 1.0f, tint[3] = {1, 1, 1};
@@ -50,7 +65,7 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
         /* growth rings around the board's long axis (p[0]), wobbled by noise, plus fine grain */
         float r = sqrtf(p[1] * p[1] + p[2] * p[2]) * 18.0f + 2.2f * vnoise(p[0] * 0.7f, p[1] * 5, p[2] * 5);
         float ring = r - floorf(r);
-        f = 0.8f + 0.22f * smooth01(ring) + 0.1f * (vnoise(p[0] * 3, p[1] * 140, p[2] * 140) - 0.5f);
+        f = 0.8f + 0.22f * smooth01(ring) + 0.1f * (band(vnoise(p[0] * 3, p[1] * 140, p[2] * 140), 140, fw) - 0.5f);
         tint[2] = 0.92f + 0.08f * ring;
         break;
     }
@@ -61,7 +76,8 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
         float along = u + off, idx = floorf(along / len);
         float fv = v / w - row, fu = along / len - idx;
         f = 0.82f + 0.3f * hash3f((int)row, (int)idx, 11);
-        f *= 0.9f + 0.12f * vnoise(along * 2.5f, v * 60, row) + 0.06f * (vnoise(along * 30, v * 300, 1) - 0.5f);
+        f *= 0.9f + 0.12f * band(vnoise(along * 2.5f, v * 60, row), 60, fw) +
+             0.06f * (band(vnoise(along * 30, v * 300, 1), 300, fw) - 0.5f);
         if (fv < 0.035f || fu < 0.006f) f *= 0.55f;
         break;
     }
@@ -77,13 +93,13 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
         break;
     }
     case SP_PATTERN_FABRIC: {
-        float weave = 0.5f + 0.5f * sinf(u * 700.0f) * sinf(v * 700.0f);
+        float weave = band(0.5f + 0.5f * sinf(u * 700.0f) * sinf(v * 700.0f), 111, fw);
         f = 0.86f + 0.1f * weave * 0.5f + 0.16f * (fbm3(p[0] * 9, p[1] * 9, p[2] * 9) - 0.5f) +
-            0.08f * (vnoise(p[0] * 60, p[1] * 60, p[2] * 60) - 0.5f);
+            0.08f * (band(vnoise(p[0] * 60, p[1] * 60, p[2] * 60), 60, fw) - 0.5f);
         break;
     }
     case SP_PATTERN_CARPET:
-        f = 0.85f + 0.22f * (vnoise(p[0] * 90, p[1] * 90, p[2] * 90) - 0.5f) + 0.14f * (fbm3(p[0] * 3, p[1] * 3, p[2] * 3) - 0.5f);
+        f = 0.85f + 0.22f * (band(vnoise(p[0] * 90, p[1] * 90, p[2] * 90), 90, fw) - 0.5f) + 0.14f * (fbm3(p[0] * 3, p[1] * 3, p[2] * 3) - 0.5f);
         break;
     case SP_PATTERN_BRICKS: {
         const float bw = 0.22f, bh = 0.075f, g = 0.011f;
@@ -95,17 +111,17 @@ static inline void pattern_apply(int pattern, const float p[3], int axis, float 
             for (int k = 0; k < 3; k++) tint[k] = 1.35f;
             f = 0.62f;
         } else
-            f = 0.85f + 0.25f * hash3f((int)col, (int)row, 9) + 0.1f * (vnoise(u * 40, v * 40, 2) - 0.5f);
+            f = 0.85f + 0.25f * hash3f((int)col, (int)row, 9) + 0.1f * (band(vnoise(u * 40, v * 40, 2), 40, fw) - 0.5f);
         break;
     }
     case SP_PATTERN_METAL:
-        f = 0.93f + 0.06f * (vnoise(p[0] * 4, p[1] * 160, p[2] * 160) - 0.5f) + 0.06f * (vnoise(p[0] * 2, p[1] * 2, p[2] * 2) - 0.5f);
+        f = 0.93f + 0.06f * (band(vnoise(p[0] * 4, p[1] * 160, p[2] * 160), 160, fw) - 0.5f) + 0.06f * (vnoise(p[0] * 2, p[1] * 2, p[2] * 2) - 0.5f);
         break;
     case SP_PATTERN_GLASS:
         f = 0.9f + 0.12f * vnoise(p[0] * 1.5f + p[2], p[1] * 1.5f, p[2] * 0.5f);
         break;
     default: /* plaster / paint: gentle mottling so flat walls still have something to match */
-        f = 0.93f + 0.1f * (fbm3(p[0] * 5, p[1] * 5, p[2] * 5) - 0.5f) + 0.05f * (vnoise(p[0] * 45, p[1] * 45, p[2] * 45) - 0.5f);
+        f = 0.93f + 0.1f * (fbm3(p[0] * 5, p[1] * 5, p[2] * 5) - 0.5f) + 0.05f * (band(vnoise(p[0] * 45, p[1] * 45, p[2] * 45), 45, fw) - 0.5f);
         break;
     }
     for (int k = 0; k < 3; k++) c[k] *= f * tint[k];
