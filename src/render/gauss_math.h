@@ -547,14 +547,7 @@ SP_HD static inline float sp_gm_alpha_g(const float conic[3], float opacity, flo
     return a < SP_ALPHA_MIN ? 0.f : a;
 }
 
-/* sp_gm_alpha_g without the cut (the cut never changes the result) and without g. */
-SP_HD static inline float sp_gm_alpha(const float conic[3], float opacity, float dx, float dy)
-{
-    float g;
-    return sp_gm_alpha_g(conic, opacity, 1e30f, dx, dy, &g);
-}
-
-/* Backward of sp_gm_alpha at a kept contribution: dL/dalpha -> v_conic (element convention),
+/* Backward of sp_gm_alpha_g at a kept contribution: dL/dalpha -> v_conic (element convention),
  * v_mean2d, v_opacity (added). Zero where alpha was clamped at SP_ALPHA_MAX. */
 SP_HD static inline void sp_gm_alpha_vjp(const float conic[3], float opacity, float dx, float dy,
                                          float v_alpha, float v_conic[3], float v_mean2d[2],

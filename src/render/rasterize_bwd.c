@@ -90,7 +90,6 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
 
     const float *colors = r->in.colors;
     const cpu_v4i lane = {0, 1, 2, 3};
-    const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
     const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f);
     for (uint32_t j = start + (uint32_t)max_last; j-- > start;) {
         const cpu_gauss *rec = r->tile_rec + j;
@@ -120,8 +119,7 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 cpu_v4f gv;
-                /* pixel centres first (exact), then one rounding, as sp_gm_alpha_g */
-                const cpu_v4f dx = (cpu_v4_splat((float)px + 0.5f) + lanef) - cpu_v4_splat(mx);
+                const cpu_v4f dx = cpu_dx4(px, mx);
                 const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, dx, &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
                 const cpu_v4i valid = in_row & (pos < load4i(last + p)) & (a > zero);

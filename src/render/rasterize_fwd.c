@@ -64,7 +64,6 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
     const uint32_t start = r->tile_start[tile], end = r->tile_start[tile + 1];
     const float *colors = r->in.colors;
     const cpu_v4i lane = {0, 1, 2, 3};
-    const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
     const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f);
     int ndone = 0;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
@@ -92,8 +91,7 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
                 cpu_v4f gv;
-                /* pixel centres first (exact), then one rounding, as sp_gm_alpha_g */
-                const cpu_v4f dx = (cpu_v4_splat((float)px + 0.5f) + lanef) - cpu_v4_splat(mx);
+                const cpu_v4f dx = cpu_dx4(px, mx);
                 const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, dx, &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
                 const cpu_v4i dn = load4i(done + p);

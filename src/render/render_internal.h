@@ -160,6 +160,14 @@ static inline cpu_v4f cpu_exp_neg4(cpu_v4f x)
     return p * (cpu_v4f)e;
 }
 
+/* dx of the four pixel centres px .. px + 3 of a row from mean x: centres first (exact), then one
+ * rounding, as sp_gm_alpha_g computes it on the GPU. */
+static inline cpu_v4f cpu_dx4(int px, float mx)
+{
+    const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
+    return (cpu_v4_splat((float)px + 0.5f) + lanef) - cpu_v4_splat(mx);
+}
+
 /* The CPU backend's alpha rule for four pixels of a row (sp_gm_alpha_g's operations, bit for
  * bit): dx = pixel centres - mean x; per-row constants half_a = a / 2, by = b dy,
  * hy = c dy^2 / 2 (all arguments broadcast to the four lanes by the caller, out of the loops), so

@@ -157,6 +157,14 @@ static void source_bary(const stri *s, double x, double y, float b[3])
         b[k] = (float)((wl[0] * s->bary[0][k] + wl[1] * s->bary[1][k] + wl[2] * s->bary[2][k]) / wsum);
 }
 
+/* Per-vertex attribute attr[vertex][3] of triangle tri at barycentrics b. */
+static void interp3(const sp_world *w, const float *attr, uint32_t tri, const float b[3], float out[3])
+{
+    const uint32_t *vi = &w->tris[tri * 3];
+    for (int k = 0; k < 3; k++)
+        out[k] = b[0] * attr[vi[0] * 3 + k] + b[1] * attr[vi[1] * 3 + k] + b[2] * attr[vi[2] * 3 + k];
+}
+
 static void interp_uv(const sp_world *w, uint32_t tri, const float b[3], float uv[2])
 {
     const uint32_t *vi = &w->tris[tri * 3];
@@ -172,16 +180,12 @@ static void shade(const view *v, const stri *s, double x, double y, double fp, f
     uint32_t tri = s->tri;
     float b[3];
     source_bary(s, x, y, b);
-    const uint32_t *vi = &w->tris[tri * 3];
     const sp_synth_material *m = &w->materials[w->tri_material[tri]];
     float pos[3], nrm[3], pat[3], uv[2];
-    for (int k = 0; k < 3; k++) {
-        pos[k] = b[0] * w->positions[vi[0] * 3 + k] + b[1] * w->positions[vi[1] * 3 + k] + b[2] * w->positions[vi[2] * 3 + k];
-        nrm[k] = b[0] * w->normals[vi[0] * 3 + k] + b[1] * w->normals[vi[1] * 3 + k] + b[2] * w->normals[vi[2] * 3 + k];
-        pat[k] = b[0] * w->pattern[vi[0] * 3 + k] + b[1] * w->pattern[vi[1] * 3 + k] + b[2] * w->pattern[vi[2] * 3 + k];
-    }
-    for (int k = 0; k < 2; k++)
-        uv[k] = b[0] * w->uvs[vi[0] * 2 + k] + b[1] * w->uvs[vi[1] * 2 + k] + b[2] * w->uvs[vi[2] * 2 + k];
+    interp3(w, w->positions, tri, b, pos);
+    interp3(w, w->normals, tri, b, nrm);
+    interp3(w, w->pattern, tri, b, pat);
+    interp_uv(w, tri, b, uv);
     float alb[3] = {m->diffuse[0], m->diffuse[1], m->diffuse[2]};
     if (!v->no_detail) {
         if (m->texture >= 0) {
@@ -200,16 +204,14 @@ static void shade(const view *v, const stri *s, double x, double y, double fp, f
             /* pattern-space size of a pixel (fp is a sample, 1/ss of a pixel): the larger of the
              * steps one sample right and one down, so oblique surfaces band-limit along their
              * stretched direction */
-            float bx[3], by[3], d2x = 0, d2y = 0;
+            float bx[3], by[3], px[3], py[3], d2x = 0, d2y = 0;
             source_bary(s, x + fp, y, bx);
             source_bary(s, x, y + fp, by);
+            interp3(w, w->pattern, tri, bx, px);
+            interp3(w, w->pattern, tri, by, py);
             for (int k = 0; k < 3; k++) {
-                float px = bx[0] * w->pattern[vi[0] * 3 + k] + bx[1] * w->pattern[vi[1] * 3 + k] +
-                           bx[2] * w->pattern[vi[2] * 3 + k];
-                float py = by[0] * w->pattern[vi[0] * 3 + k] + by[1] * w->pattern[vi[1] * 3 + k] +
-                           by[2] * w->pattern[vi[2] * 3 + k];
-                d2x += (px - pat[k]) * (px - pat[k]);
-                d2y += (py - pat[k]) * (py - pat[k]);
+                d2x += (px[k] - pat[k]) * (px[k] - pat[k]);
+                d2y += (py[k] - pat[k]) * (py[k] - pat[k]);
             }
             float fw = sqrtf(fmaxf(d2x, d2y)) / (float)fp; /* per pixel */
             pattern_apply(m->pattern, pat, w->tri_axis[tri], fw, alb);

@@ -75,8 +75,7 @@ static void test_alpha4_matches_scalar(void)
         float by, hy;
         sp_gm_row_terms(con, dy, &by, &hy);
         cpu_v4f g4;
-        const cpu_v4f lanef = {0.f, 1.f, 2.f, 3.f};
-        cpu_v4f dx = (cpu_v4_splat((float)px + 0.5f) + lanef) - cpu_v4_splat(mx);
+        cpu_v4f dx = cpu_dx4(px, mx);
         cpu_v4f a4 = cpu_alpha4(cpu_v4_splat(0.5f * con[0]), cpu_v4_splat(by), cpu_v4_splat(hy),
                                 cpu_v4_splat(op), cpu_v4_splat(cut), dx, &g4);
         for (int k = 0; k < 4; k++) {
