@@ -104,6 +104,9 @@ def main():
     torch.manual_seed(a.seed)
     dev = "cuda"
     sp = os.path.join(a.capture, "sparse", "0")
+    for f in ("cameras.bin", "images.bin", "points3D.bin"):
+        if not os.path.isfile(os.path.join(sp, f)):
+            sys.exit("error: %s is missing (need a binary COLMAP model in CAPTURE/sparse/0)" % os.path.join(sp, f))
     cams, views = read_cameras(os.path.join(sp, "cameras.bin")), read_images(os.path.join(sp, "images.bin"))
     xyz, rgb = read_points(os.path.join(sp, "points3D.bin"))
     data = []
@@ -112,7 +115,12 @@ def main():
         V = np.eye(4)
         V[:3, :3], V[:3, 3] = quat_to_rot(q), t
         K = np.array([[fx, 0, cx], [0, fy, cy], [0, 0, 1]])
-        img = torch.from_numpy(load_image(os.path.join(a.capture, "images", name)).copy()).float() / 255
+        path = os.path.join(a.capture, "images", name)
+        if not os.path.isfile(path):
+            sys.exit("error: image %s (listed in images.bin) is missing" % path)
+        img = torch.from_numpy(load_image(path).copy()).float() / 255
+        if img.shape[:2] != (h, w):
+            sys.exit("error: %s is %dx%d, its camera says %dx%d" % (path, img.shape[1], img.shape[0], w, h))
         data.append((torch.tensor(V, dtype=torch.float32, device=dev), torch.tensor(K, dtype=torch.float32, device=dev),
                      img.to(dev), w, h))
     test = [d for i, d in enumerate(data) if i % 8 == 0]

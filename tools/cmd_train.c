@@ -96,6 +96,7 @@ int cmd_train(int argc, char **argv)
     if (steps < 1) return cli_usage_error("train", "--steps must be >= 1 (got %ld)", steps);
     if (downscale < 1) return cli_usage_error("train", "--downscale must be >= 1 (got %ld)", downscale);
     if (sh_degree < 0 || sh_degree > 3) return cli_usage_error("train", "--sh-degree must be 0..3");
+    if (sh_interval < 0) return cli_usage_error("train", "--sh-interval must be positive");
     if (max_g < 0) return cli_usage_error("train", "--max-gaussians must be >= 0");
     if (strcmp(init, "points") && strcmp(init, "random"))
         return cli_usage_error("train", "--init: '%s' is not points or random", init);

@@ -36,6 +36,10 @@ static void test_bad_flags(void)
     CHECK_MSG(strstr(out, "--views") != NULL, "output: %s", out);
     CHECK(run_cli("demo --frobnicate", out, sizeof out) == 2);
     CHECK_MSG(strstr(out, "--frobnicate") != NULL, "output: %s", out);
+    CHECK(run_cli("train --colmap x --out y --sh-interval abc", out, sizeof out) == 2);
+    CHECK_MSG(strstr(out, "--sh-interval") != NULL, "output: %s", out);
+    CHECK(run_cli("train --colmap x --out y --sh-interval -5", out, sizeof out) == 2);
+    CHECK_MSG(strstr(out, "--sh-interval must be positive") != NULL, "output: %s", out);
 }
 
 static void test_missing_capture(void)
