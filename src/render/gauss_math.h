@@ -51,10 +51,14 @@
 #define SP_FMUL(a, b) __fmul_rn((a), (b))
 #define SP_FADD(a, b) __fadd_rn((a), (b))
 #define SP_FSUB(a, b) __fsub_rn((a), (b))
+#define SP_FDIV(a, b) __fdiv_rn((a), (b))
+#define SP_FSQRT(a) __fsqrt_rn(a)
 #else
 #define SP_FMUL(a, b) ((a) * (b))
 #define SP_FADD(a, b) ((a) + (b))
 #define SP_FSUB(a, b) ((a) - (b))
+#define SP_FDIV(a, b) ((a) / (b))
+#define SP_FSQRT(a) sqrtf(a)
 #endif
 
 /* e^x, within 2 ulp for x in [-87, 88] (clamped to that range; NaN stays NaN): Cephes expf,
@@ -102,104 +106,15 @@ SP_HD static inline void sp_gm_quat_to_rot(const float q[4], float R[9])
     R[6] = 2.f * (x * z - w * y); R[7] = 2.f * (y * z + w * x); R[8] = 1.f - 2.f * (x * x + y * y);
 }
 
-/* v_R (dL/dR, 9) -> v_q, through the normalisation. */
-SP_HD static inline void sp_gm_quat_to_rot_vjp(const float q[4], const float V[9], float v_q[4])
-{
-    float n2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
-    if (!(n2 > 0.f)) return;
-    float inv = 1.f / sqrtf(n2);
-    float w = q[0] * inv, x = q[1] * inv, y = q[2] * inv, z = q[3] * inv;
-    /* dL/d(unit quaternion), from differentiating each entry of R above. */
-    float gw = 2.f * (-z * V[1] + y * V[2] + z * V[3] - x * V[5] - y * V[6] + x * V[7]);
-    float gx = 2.f * (y * V[1] + z * V[2] + y * V[3] - w * V[5] + z * V[6] + w * V[7]) -
-               4.f * x * (V[4] + V[8]);
-    float gy = 2.f * (x * V[1] + w * V[2] + x * V[3] + z * V[5] - w * V[6] + z * V[7]) -
-               4.f * y * (V[0] + V[8]);
-    float gz = 2.f * (-w * V[1] + x * V[2] + w * V[3] + y * V[5] + x * V[6] + y * V[7]) -
-               4.f * z * (V[0] + V[4]);
-    /* normalisation: d(q/|q|) projects out the radial component and divides by |q|. */
-    float dot = w * gw + x * gx + y * gy + z * gz;
-    v_q[0] += (gw - w * dot) * inv;
-    v_q[1] += (gx - x * dot) * inv;
-    v_q[2] += (gy - y * dot) * inv;
-    v_q[3] += (gz - z * dot) * inv;
-}
-
-/* cov = M M^T with M = R diag(exp(log_scale)). */
-SP_HD static inline void sp_gm_quat_scale_to_cov(const float q[4], const float log_scale[3],
-                                                 float cov[9])
-{
-    float R[9], M[9];
-    sp_gm_quat_to_rot(q, R);
-    float s0 = sp_gm_expf(log_scale[0]), s1 = sp_gm_expf(log_scale[1]), s2 = sp_gm_expf(log_scale[2]);
-    for (int i = 0; i < 3; i++) {
-        M[i * 3 + 0] = R[i * 3 + 0] * s0;
-        M[i * 3 + 1] = R[i * 3 + 1] * s1;
-        M[i * 3 + 2] = R[i * 3 + 2] * s2;
-    }
-    for (int i = 0; i < 3; i++)
-        for (int j = i; j < 3; j++) {
-            float v = M[i * 3] * M[j * 3] + M[i * 3 + 1] * M[j * 3 + 1] + M[i * 3 + 2] * M[j * 3 + 2];
-            cov[i * 3 + j] = v;
-            cov[j * 3 + i] = v;
-        }
-}
-
-/* v_cov (element convention, 9) -> v_q (4), v_log_scale (3). */
-SP_HD static inline void sp_gm_quat_scale_to_cov_vjp(const float q[4], const float log_scale[3],
-                                                     const float v_cov[9], float v_q[4],
-                                                     float v_log_scale[3])
-{
-    float R[9], M[9], vM[9], vR[9];
-    float s[3] = {sp_gm_expf(log_scale[0]), sp_gm_expf(log_scale[1]), sp_gm_expf(log_scale[2])};
-    sp_gm_quat_to_rot(q, R);
-    for (int i = 0; i < 9; i++) M[i] = R[i] * s[i % 3];
-    /* cov = M M^T  ->  v_M = (G + G^T) M */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) {
-            float acc = 0.f;
-            for (int k = 0; k < 3; k++) acc += (v_cov[i * 3 + k] + v_cov[k * 3 + i]) * M[k * 3 + j];
-            vM[i * 3 + j] = acc;
-        }
-    float vs[3] = {0.f, 0.f, 0.f};
-    for (int i = 0; i < 9; i++) {
-        vR[i] = vM[i] * s[i % 3];
-        vs[i % 3] += vM[i] * R[i];
-    }
-    for (int j = 0; j < 3; j++) v_log_scale[j] += vs[j] * s[j];
-    sp_gm_quat_to_rot_vjp(q, vR, v_q);
-}
-
 /* ---- world -> camera ------------------------------------------------------------------------------ */
 
-SP_HD static inline void sp_gm_world_to_cam(const float R[9], const float t[3], const float p[3],
-                                            const float cov[9], float pc[3], float covc[9])
+/* Camera-frame position in double: for Gaussians close to the camera, float R x + t loses digits
+ * that x / z then magnifies (1e-4 px at z = 2 cm). The forward and the backward both use it. */
+SP_HD static inline void sp_gm_cam_point(const sp_camera *cam, const float p[3], double pd[3])
 {
-    for (int i = 0; i < 3; i++)
-        pc[i] = R[i * 3] * p[0] + R[i * 3 + 1] * p[1] + R[i * 3 + 2] * p[2] + t[i];
-    if (!cov || !covc) return;
-    float T[9]; /* R cov */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            T[i * 3 + j] = R[i * 3] * cov[j] + R[i * 3 + 1] * cov[3 + j] + R[i * 3 + 2] * cov[6 + j];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            covc[i * 3 + j] = T[i * 3] * R[j * 3] + T[i * 3 + 1] * R[j * 3 + 1] + T[i * 3 + 2] * R[j * 3 + 2];
-}
-
-/* v_pc -> v_p (= R^T v_pc); v_covc -> v_cov (= R^T G R). */
-SP_HD static inline void sp_gm_world_to_cam_vjp(const float R[9], const float v_pc[3],
-                                                const float v_covc[9], float v_p[3], float v_cov[9])
-{
-    for (int j = 0; j < 3; j++)
-        v_p[j] += R[j] * v_pc[0] + R[3 + j] * v_pc[1] + R[6 + j] * v_pc[2];
-    float T[9]; /* R^T G */
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            T[i * 3 + j] = R[i] * v_covc[j] + R[3 + i] * v_covc[3 + j] + R[6 + i] * v_covc[6 + j];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            v_cov[i * 3 + j] += T[i * 3] * R[j] + T[i * 3 + 1] * R[3 + j] + T[i * 3 + 2] * R[6 + j];
+    for (int k = 0; k < 3; k++)
+        pd[k] = (double)cam->R[k * 3] * p[0] + (double)cam->R[k * 3 + 1] * p[1] +
+                (double)cam->R[k * 3 + 2] * p[2] + (double)cam->t[k];
 }
 
 /* ---- perspective projection ------------------------------------------------------------------------ */
@@ -215,74 +130,177 @@ SP_HD static inline void sp_gm_fov_limits(const sp_camera *cam, float lim[4])
     lim[3] = cam->cy / cam->fy + SP_FOV_SLACK * tan_fovy;                        /* y neg */
 }
 
-/* pc (camera frame, z > 0), covc -> mean2d (pixels), cov2 = J covc J^T with
- * J = [[fx/z, 0, -fx tx/z^2], [0, fy/z, -fy ty/z^2]], (tx, ty) = z * clamp((x, y)/z). */
-SP_HD static inline void sp_gm_persp_proj(const float pc[3], const float covc[9],
-                                          const sp_camera *cam, float mean2d[2], float cov2[3])
+/* The projection's Jacobian at pc (camera frame, z > 0), row-major 2x3:
+ * J = [[fx/z, 0, -fx tx/z^2], [0, fy/z, -fy ty/z^2]], (tx, ty) = z * clamp((x, y)/z).
+ * Also returns (tx, ty) in t and, in clamp, whether x/z, y/z hit their limits (then tx, ty no
+ * longer follow x, y). */
+SP_HD static inline void sp_gm_jacobian(const float pc[3], const sp_camera *cam, float J[6],
+                                        float t[2], int clamp[2])
 {
     float lim[4];
     sp_gm_fov_limits(cam, lim);
-    float x = pc[0], y = pc[1], z = pc[2];
-    float rz = 1.f / z, rz2 = rz * rz;
-    float tx = z * fminf(lim[0], fmaxf(-lim[1], x * rz));
-    float ty = z * fminf(lim[2], fmaxf(-lim[3], y * rz));
-    float J0[3] = {cam->fx * rz, 0.f, -cam->fx * tx * rz2};
-    float J1[3] = {0.f, cam->fy * rz, -cam->fy * ty * rz2};
-    float A0[3], A1[3]; /* J covc */
-    for (int j = 0; j < 3; j++) {
-        A0[j] = J0[0] * covc[j] + J0[1] * covc[3 + j] + J0[2] * covc[6 + j];
-        A1[j] = J1[0] * covc[j] + J1[1] * covc[3 + j] + J1[2] * covc[6 + j];
-    }
-    cov2[0] = A0[0] * J0[0] + A0[1] * J0[1] + A0[2] * J0[2];
-    cov2[1] = A0[0] * J1[0] + A0[1] * J1[1] + A0[2] * J1[2];
-    cov2[2] = A1[0] * J1[0] + A1[1] * J1[1] + A1[2] * J1[2];
-    mean2d[0] = cam->fx * x * rz + cam->cx;
-    mean2d[1] = cam->fy * y * rz + cam->cy;
+    float rz = 1.f / pc[2], rz2 = rz * rz;
+    float ux = pc[0] * rz, uy = pc[1] * rz;
+    clamp[0] = !(ux <= lim[0] && ux >= -lim[1]);
+    clamp[1] = !(uy <= lim[2] && uy >= -lim[3]);
+    float tx = pc[2] * fminf(lim[0], fmaxf(-lim[1], ux));
+    float ty = pc[2] * fminf(lim[2], fmaxf(-lim[3], uy));
+    J[0] = cam->fx * rz; J[1] = 0.f; J[2] = -cam->fx * tx * rz2;
+    J[3] = 0.f; J[4] = cam->fy * rz; J[5] = -cam->fy * ty * rz2;
+    t[0] = tx;
+    t[1] = ty;
 }
 
-/* v_mean2d, v_cov2 (element convention) -> v_pc, v_covc (added). */
-SP_HD static inline void sp_gm_persp_proj_vjp(const float pc[3], const float covc[9],
-                                              const sp_camera *cam, const float v_mean2d[2],
-                                              const float v_cov2[3], float v_pc[3], float v_covc[9])
+/* U = J Rc R (2x3): the Gaussian's three axes on screen per unit scale, so that the 2D
+ * covariance is U S^2 U^T. */
+SP_HD static inline void sp_gm_screen_axes(const float J[6], const float camR[9], const float R[9],
+                                           float U[6])
 {
-    float lim[4];
-    sp_gm_fov_limits(cam, lim);
-    float fx = cam->fx, fy = cam->fy;
-    float x = pc[0], y = pc[1], z = pc[2];
-    float rz = 1.f / z, rz2 = rz * rz, rz3 = rz2 * rz;
-    float ux = x * rz, uy = y * rz;
-    int clamp_x = !(ux <= lim[0] && ux >= -lim[1]);
-    int clamp_y = !(uy <= lim[2] && uy >= -lim[3]);
-    float tx = z * fminf(lim[0], fmaxf(-lim[1], ux));
-    float ty = z * fminf(lim[2], fmaxf(-lim[3], uy));
-    float J[6] = {fx * rz, 0.f, -fx * tx * rz2, 0.f, fy * rz, -fy * ty * rz2};
-    float G[4] = {v_cov2[0], v_cov2[1], v_cov2[1], v_cov2[2]};
-    /* v_covc = J^T G J */
-    float GJ[6]; /* G J (2x3) */
-    for (int r = 0; r < 2; r++)
-        for (int j = 0; j < 3; j++) GJ[r * 3 + j] = G[r * 2] * J[j] + G[r * 2 + 1] * J[3 + j];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) v_covc[i * 3 + j] += J[i] * GJ[j] + J[3 + i] * GJ[3 + j];
-    /* v_J = G J covc^T + G^T J covc = 2 G J covc (G and covc symmetric) */
-    float vJ[6];
+    float B[6]; /* J Rc */
     for (int r = 0; r < 2; r++)
         for (int j = 0; j < 3; j++)
-            vJ[r * 3 + j] = 2.f * (GJ[r * 3] * covc[j * 3] + GJ[r * 3 + 1] * covc[j * 3 + 1] +
-                                   GJ[r * 3 + 2] * covc[j * 3 + 2]);
-    /* mean2d = (fx x/z + cx, fy y/z + cy) */
-    v_pc[0] += fx * rz * v_mean2d[0];
-    v_pc[1] += fy * rz * v_mean2d[1];
-    v_pc[2] += -(fx * x * v_mean2d[0] + fy * y * v_mean2d[1]) * rz2;
-    /* J entries: J00 = fx/z, J11 = fy/z, J02 = -fx tx/z^2, J12 = -fy ty/z^2; tx = x unless
-     * clamped, where tx = z * limit. */
+            B[r * 3 + j] = J[r * 3] * camR[j] + J[r * 3 + 1] * camR[3 + j] + J[r * 3 + 2] * camR[6 + j];
+    for (int r = 0; r < 2; r++)
+        for (int j = 0; j < 3; j++)
+            U[r * 3 + j] = B[r * 3] * R[j] + B[r * 3 + 1] * R[3 + j] + B[r * 3 + 2] * R[6 + j];
+}
+
+/* sinh(d) to a few ulp, also for small d (where (e^d - e^-d) / 2 cancels). */
+SP_HD static inline float sp_gm_sinhf(float d)
+{
+    float ad = fabsf(d);
+    if (ad < 0.35f) {
+        float d2 = d * d;
+        return d * (1.f + d2 * (1.f / 6.f + d2 * (1.f / 120.f + d2 * (1.f / 5040.f + d2 * (1.f / 362880.f)))));
+    }
+    float e = sp_gm_expf(ad);
+    float r = 0.5f * (e - 1.f / e);
+    return d < 0.f ? -r : r;
+}
+
+/* The conic's principal frame: e0 = (*cs, *sn) is the eigenvector of its larger eigenvalue (the
+ * Gaussian's minor axis on screen), e1 = (-*sn, *cs). The rasterizer backward sums the conic
+ * gradient in this frame (d' = (e0 . d, e1 . d)) rather than in pixel axes: for a needle on
+ * screen (axis ratio 100) the gradient along its long axis is 1e-4 of the rest, and summed in
+ * pixel axes it drowned in the other components' rounding (CPU and CUDA, summing in different
+ * orders, disagreed by percents on such Gaussians' quaternions and scales). Basic IEEE
+ * operations only, so both backends get the same frame from the same conic bits, also in
+ * fast-math kernels. */
+SP_HD static inline void sp_gm_conic_frame(const float conic[3], float *cs, float *sn)
+{
+    float h = SP_FMUL(0.5f, SP_FSUB(conic[0], conic[2]));
+    float r = SP_FSQRT(SP_FADD(SP_FMUL(h, h), SP_FMUL(conic[1], conic[1])));
+    if (!(r > 0.f)) { /* round (or NaN): any frame */
+        *cs = 1.f;
+        *sn = 0.f;
+        return;
+    }
+    float c2 = SP_FDIV(h, r); /* cos 2 theta */
+    if (h >= 0.f) {
+        float c = SP_FSQRT(SP_FMUL(0.5f, SP_FADD(1.f, c2)));
+        *cs = c;
+        *sn = SP_FDIV(conic[1], SP_FMUL(SP_FMUL(2.f, r), c));
+    } else {
+        float sv = SP_FSQRT(SP_FMUL(0.5f, SP_FSUB(1.f, c2)));
+        *sn = sv;
+        *cs = SP_FDIV(conic[1], SP_FMUL(SP_FMUL(2.f, r), sv));
+    }
+}
+
+/* Symmetric 2x2 m (element convention) expressed in the frame (cs, sn): Q m Q^T with rows
+ * e0 = (cs, sn), e1 = (-sn, cs). */
+SP_HD static inline void sp_gm_to_frame(const float m[3], float cs, float sn, float out[3])
+{
+    float e0m[2] = {cs * m[0] + sn * m[1], cs * m[1] + sn * m[2]};  /* e0^T m */
+    float e1m[2] = {-sn * m[0] + cs * m[1], -sn * m[1] + cs * m[2]}; /* e1^T m */
+    out[0] = e0m[0] * cs + e0m[1] * sn;
+    out[1] = -e0m[0] * sn + e0m[1] * cs;
+    out[2] = -e1m[0] * sn + e1m[1] * cs;
+}
+
+/* dL/d cov2 (element convention, in the frame (cs, sn) of sp_gm_to_frame) -> dL/d pc (through
+ * the Jacobian), dL/d quat and dL/d log_scale, ADDED. With U = Q J Rc R (Q: the frame),
+ * S = diag(s) and N = U^T V U (V = dL/d cov2 in the frame):
+ *   dL/d log s_j = 2 s_j^2 N_jj,
+ *   the rotation's body-frame gradient g_k = 2 N_ij (s_i^2 - s_j^2), (k, i, j) cyclic,
+ *   dL/dq = 2 q (x) (0, g) / |q|   (quaternion product; tangent to q, so the normalisation
+ *   passes it through unchanged).
+ * Going through dL/d Sigma (3x3) instead gives the rotation gradient as a difference of terms of
+ * size s^2 |V| that cancel for nearly round Gaussians: float noise of 1e-7 in V became tens of
+ * percent there (CPU and CUDA disagreed by up to 78 %). Here the scale differences come from the
+ * log-scales themselves, s_i^2 - s_j^2 = 2 e^(l_i + l_j) sinh(l_i - l_j), so every output is as
+ * accurate as V. Likewise J Sigma_c for the Jacobian path is formed as U S^2 (Rc R)^T, never from
+ * an explicit camera-frame covariance. */
+SP_HD static inline void sp_gm_cov2d_vjp(const float quat[4], const float log_scale[3],
+                                         const float pc[3], const sp_camera *cam,
+                                         const float v_cov2[3], float cs, float sn,
+                                         float v_pc[3], float v_quat[4], float v_log_scale[3])
+{
+    float J[6], t[2], R[9], U[6], s2[3];
+    int clamp[2];
+    sp_gm_jacobian(pc, cam, J, t, clamp);
+    sp_gm_quat_to_rot(quat, R);
+    sp_gm_screen_axes(J, cam->R, R, U);
+    for (int j = 0; j < 3; j++) { /* into the frame */
+        float u0 = U[j], u1 = U[3 + j];
+        U[j] = cs * u0 + sn * u1;
+        U[3 + j] = -sn * u0 + cs * u1;
+    }
+    for (int j = 0; j < 3; j++) s2[j] = sp_gm_expf(2.f * log_scale[j]);
+    float V[4] = {v_cov2[0], v_cov2[1], v_cov2[1], v_cov2[2]};
+    float VU[6]; /* V U */
+    for (int r = 0; r < 2; r++)
+        for (int j = 0; j < 3; j++) VU[r * 3 + j] = V[r * 2] * U[j] + V[r * 2 + 1] * U[3 + j];
+#define SP_GM_N(i, j) (U[i] * VU[j] + U[3 + (i)] * VU[3 + (j)])
+    for (int j = 0; j < 3; j++) v_log_scale[j] += 2.f * s2[j] * SP_GM_N(j, j);
+    float g[3];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        float ds2 = 2.f * sp_gm_expf(log_scale[i] + log_scale[j]) *
+                    sp_gm_sinhf(log_scale[i] - log_scale[j]);
+        g[k] = 2.f * SP_GM_N(i, j) * ds2;
+    }
+#undef SP_GM_N
+    float n2 = quat[0] * quat[0] + quat[1] * quat[1] + quat[2] * quat[2] + quat[3] * quat[3];
+    if (n2 > 0.f) {
+        float inv = 1.f / sqrtf(n2);
+        float w = quat[0] * inv, x = quat[1] * inv, y = quat[2] * inv, z = quat[3] * inv;
+        float k2 = 2.f * inv;
+        v_quat[0] += k2 * -(x * g[0] + y * g[1] + z * g[2]);
+        v_quat[1] += k2 * (w * g[0] + y * g[2] - z * g[1]);
+        v_quat[2] += k2 * (w * g[1] + z * g[0] - x * g[2]);
+        v_quat[3] += k2 * (w * g[2] + x * g[1] - y * g[0]);
+    }
+    /* Jacobian path: dL/dJ = 2 V (J Sigma_c), J Sigma_c = U S^2 W^T with W = Rc R (in the
+     * frame, like V and U). */
+    float W[9];
+    for (int i = 0; i < 3; i++)
+        for (int k = 0; k < 3; k++)
+            W[i * 3 + k] = cam->R[i * 3] * R[k] + cam->R[i * 3 + 1] * R[3 + k] + cam->R[i * 3 + 2] * R[6 + k];
+    float JC[6], vJ[6];
+    for (int r = 0; r < 2; r++)
+        for (int j = 0; j < 3; j++)
+            JC[r * 3 + j] = U[r * 3] * s2[0] * W[j * 3] + U[r * 3 + 1] * s2[1] * W[j * 3 + 1] +
+                            U[r * 3 + 2] * s2[2] * W[j * 3 + 2];
+    float vJf[6]; /* in the frame (U is), then back to pixel axes: vJ = Q^T vJf */
+    for (int r = 0; r < 2; r++)
+        for (int j = 0; j < 3; j++) vJf[r * 3 + j] = 2.f * (V[r * 2] * JC[j] + V[r * 2 + 1] * JC[3 + j]);
+    for (int j = 0; j < 3; j++) {
+        vJ[j] = cs * vJf[j] - sn * vJf[3 + j];
+        vJ[3 + j] = sn * vJf[j] + cs * vJf[3 + j];
+    }
+    /* J00 = fx/z, J11 = fy/z, J02 = -fx tx/z^2, J12 = -fy ty/z^2; tx = x unless clamped, where
+     * tx = z * limit. */
+    float fx = cam->fx, fy = cam->fy, rz = 1.f / pc[2], rz2 = rz * rz, rz3 = rz2 * rz;
+    float tx = t[0], ty = t[1];
     v_pc[2] += -fx * rz2 * vJ[0] - fy * rz2 * vJ[4];
-    if (!clamp_x) {
+    if (!clamp[0]) {
         v_pc[0] += -fx * rz2 * vJ[2];
         v_pc[2] += 2.f * fx * tx * rz3 * vJ[2];
     } else {
         v_pc[2] += fx * tx * rz3 * vJ[2];
     }
-    if (!clamp_y) {
+    if (!clamp[1]) {
         v_pc[1] += -fy * rz2 * vJ[5];
         v_pc[2] += 2.f * fy * ty * rz3 * vJ[5];
     } else {
@@ -291,18 +309,6 @@ SP_HD static inline void sp_gm_persp_proj_vjp(const float pc[3], const float cov
 }
 
 /* ---- screen-space dilation, antialiased compensation, conic -------------------------------------- */
-
-/* cov2 += eps2d I (in place); *comp = sqrt(det(before) / det(after)) (the antialiased opacity
- * factor). Returns det(after). */
-SP_HD static inline float sp_gm_add_blur(float eps2d, float cov2[3], float *comp)
-{
-    float det0 = cov2[0] * cov2[2] - cov2[1] * cov2[1];
-    cov2[0] += eps2d;
-    cov2[2] += eps2d;
-    float det1 = cov2[0] * cov2[2] - cov2[1] * cov2[1];
-    *comp = det1 > 0.f ? sqrtf(fmaxf(0.f, det0 / det1)) : 0.f;
-    return det1;
-}
 
 /* v_comp -> v_cov2 (of the covariance BEFORE blur; the blur itself has identity Jacobian, so the
  * caller adds the conic path's gradient separately). conic = inverse of the blurred cov2.
@@ -317,18 +323,6 @@ SP_HD static inline void sp_gm_add_blur_vjp(float eps2d, const float conic[3], f
     v_cov2[0] += v_ratio * (k * conic[0] - eps2d * det_conic);
     v_cov2[1] += v_ratio * (k * conic[1]);
     v_cov2[2] += v_ratio * (k * conic[2] - eps2d * det_conic);
-}
-
-/* conic = cov2^-1; returns 0 when cov2 is not positive definite. */
-SP_HD static inline int sp_gm_inverse2(const float cov2[3], float conic[3])
-{
-    float det = cov2[0] * cov2[2] - cov2[1] * cov2[1];
-    if (!(det > 0.f)) return 0;
-    float inv = 1.f / det;
-    conic[0] = cov2[2] * inv;
-    conic[1] = -cov2[1] * inv;
-    conic[2] = cov2[0] * inv;
-    return 1;
 }
 
 /* P = M^-1: v_M = -P G P (symmetric, element convention both sides). */
@@ -371,26 +365,16 @@ SP_HD static inline void sp_gm_cov2d(const float quat[4], const float log_scale[
                                      const float pc[3], const sp_camera *cam, float cov2[3],
                                      float *det)
 {
-    float R[9], lim[4];
+    float R[9], J[6], t[2], U[6];
+    int clamp[2];
     sp_gm_quat_to_rot(quat, R);
-    sp_gm_fov_limits(cam, lim);
-    float rz = 1.f / pc[2], rz2 = rz * rz;
-    float tx = pc[2] * fminf(lim[0], fmaxf(-lim[1], pc[0] * rz));
-    float ty = pc[2] * fminf(lim[2], fmaxf(-lim[3], pc[1] * rz));
-    float J0[3] = {cam->fx * rz, 0.f, -cam->fx * tx * rz2};
-    float J1[3] = {0.f, cam->fy * rz, -cam->fy * ty * rz2};
-    /* rows of J Rc */
-    float B0[3], B1[3];
-    for (int j = 0; j < 3; j++) {
-        B0[j] = J0[0] * cam->R[j] + J0[1] * cam->R[3 + j] + J0[2] * cam->R[6 + j];
-        B1[j] = J1[0] * cam->R[j] + J1[1] * cam->R[3 + j] + J1[2] * cam->R[6 + j];
-    }
-    /* A = (J Rc) R S */
-    float A0[3], A1[3];
+    sp_gm_jacobian(pc, cam, J, t, clamp);
+    sp_gm_screen_axes(J, cam->R, R, U);
+    float A0[3], A1[3]; /* A = U S */
     for (int j = 0; j < 3; j++) {
         float s = sp_gm_expf(log_scale[j]);
-        A0[j] = (B0[0] * R[j] + B0[1] * R[3 + j] + B0[2] * R[6 + j]) * s;
-        A1[j] = (B1[0] * R[j] + B1[1] * R[3 + j] + B1[2] * R[6 + j]) * s;
+        A0[j] = U[j] * s;
+        A1[j] = U[3 + j] * s;
     }
     cov2[0] = A0[0] * A0[0] + A0[1] * A0[1] + A0[2] * A0[2];
     cov2[1] = A0[0] * A1[0] + A0[1] * A1[1] + A0[2] * A1[2];
@@ -428,15 +412,9 @@ SP_HD static inline int sp_gm_project_ex(const float mean[3], const float quat[4
 {
     float pc[3], det, comp;
     *radius = 0;
-    /* The camera-frame position and the 2D mean in double: for Gaussians close to the camera,
-     * float R x + t loses digits that x / z then magnifies (1e-4 px at z = 2 cm). 12 double
-     * operations per Gaussian, nothing per pixel. */
-    double pd[3];
-    for (int k = 0; k < 3; k++) {
-        pd[k] = (double)cam->R[k * 3] * mean[0] + (double)cam->R[k * 3 + 1] * mean[1] +
-                (double)cam->R[k * 3 + 2] * mean[2] + (double)cam->t[k];
-        pc[k] = (float)pd[k];
-    }
+    double pd[3]; /* the 2D mean from the double camera point too (sp_gm_cam_point) */
+    sp_gm_cam_point(cam, mean, pd);
+    for (int k = 0; k < 3; k++) pc[k] = (float)pd[k];
     if (!(pc[2] >= cfg->near_plane && pc[2] <= cfg->far_plane)) return 0;
     sp_gm_cov2d(quat, log_scale, pc, cam, cov2, &det);
     if (!sp_gm_blur_conic(cfg->eps2d, cov2, det, conic, &comp)) return 0;
@@ -471,7 +449,7 @@ SP_HD static inline int sp_gm_project(const float mean[3], const float quat[4],
 }
 
 /* Backward of sp_gm_project for a visible Gaussian. Inputs: dL/d mean2d, dL/d conic (element
- * convention), dL/d depth, dL/d opacity (the effective one). ADDS into v_mean[3], v_quat[4],
+ * convention, in the conic's principal frame: sp_gm_conic_frame), dL/d depth, dL/d opacity (the effective one). ADDS into v_mean[3], v_quat[4],
  * v_log_scale[3], *v_opacity_logit. */
 SP_HD static inline void sp_gm_project_vjp(const float mean[3], const float quat[4],
                                            const float log_scale[3], float opacity_logit,
@@ -481,28 +459,36 @@ SP_HD static inline void sp_gm_project_vjp(const float mean[3], const float quat
                                            float v_quat[4], float v_log_scale[3],
                                            float *v_opacity_logit)
 {
-    float pc[3], cov[9], covc[9], cov2[3], det, conic[3], comp;
-    sp_gm_quat_scale_to_cov(quat, log_scale, cov);
-    sp_gm_world_to_cam(cam->R, cam->t, mean, cov, pc, covc);
+    float pc[3], cov2[3], det, conic[3], comp;
+    double pd[3];
+    sp_gm_cam_point(cam, mean, pd);
+    for (int k = 0; k < 3; k++) pc[k] = (float)pd[k];
     /* conic and compensation exactly as the forward computed them */
     sp_gm_cov2d(quat, log_scale, pc, cam, cov2, &det);
     if (!sp_gm_blur_conic(cfg->eps2d, cov2, det, conic, &comp)) return;
     float sig = 1.f / (1.f + sp_gm_expf(-opacity_logit));
 
+    /* v_conic is in the conic's principal frame (sp_gm_conic_frame); so is everything up to
+     * N in sp_gm_cov2d_vjp, where the long axis's share is a separate number throughout. */
+    float cs, sn, conf[3];
+    sp_gm_conic_frame(conic, &cs, &sn);
+    sp_gm_to_frame(conic, cs, sn, conf);
     float v_cov2[3] = {0.f, 0.f, 0.f};
-    sp_gm_inverse2_vjp(conic, v_conic, v_cov2);
+    sp_gm_inverse2_vjp(conf, v_conic, v_cov2);
     if (cfg->antialiased) {
         *v_opacity_logit += v_opacity * comp * sig * (1.f - sig);
-        sp_gm_add_blur_vjp(cfg->eps2d, conic, comp, v_opacity * sig, v_cov2);
+        sp_gm_add_blur_vjp(cfg->eps2d, conf, comp, v_opacity * sig, v_cov2);
     } else {
         *v_opacity_logit += v_opacity * sig * (1.f - sig);
     }
-    float v_pc[3] = {0.f, 0.f, v_depth};
-    float v_covc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    sp_gm_persp_proj_vjp(pc, covc, cam, v_mean2d, v_cov2, v_pc, v_covc);
-    float v_cov[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    sp_gm_world_to_cam_vjp(cam->R, v_pc, v_covc, v_mean, v_cov);
-    sp_gm_quat_scale_to_cov_vjp(quat, log_scale, v_cov, v_quat, v_log_scale);
+    /* mean2d = (fx x/z + cx, fy y/z + cy), depth = z */
+    float rz = 1.f / pc[2], rz2 = rz * rz;
+    float v_pc[3] = {cam->fx * rz * v_mean2d[0], cam->fy * rz * v_mean2d[1],
+                     v_depth - (cam->fx * pc[0] * v_mean2d[0] + cam->fy * pc[1] * v_mean2d[1]) * rz2};
+    sp_gm_cov2d_vjp(quat, log_scale, pc, cam, v_cov2, cs, sn, v_pc, v_quat, v_log_scale);
+    /* pc = Rc mean + t */
+    for (int j = 0; j < 3; j++)
+        v_mean[j] += cam->R[j] * v_pc[0] + cam->R[3 + j] * v_pc[1] + cam->R[6 + j] * v_pc[2];
 }
 
 /* ---- per-pixel alpha -------------------------------------------------------------------------------- */
@@ -545,25 +531,6 @@ SP_HD static inline float sp_gm_alpha_g(const float conic[3], float opacity, flo
     float a = SP_FMUL(opacity, *g);
     a = a < SP_ALPHA_MAX ? a : SP_ALPHA_MAX;
     return a < SP_ALPHA_MIN ? 0.f : a;
-}
-
-/* Backward of sp_gm_alpha_g at a kept contribution: dL/dalpha -> v_conic (element convention),
- * v_mean2d, v_opacity (added). Zero where alpha was clamped at SP_ALPHA_MAX. */
-SP_HD static inline void sp_gm_alpha_vjp(const float conic[3], float opacity, float dx, float dy,
-                                         float v_alpha, float v_conic[3], float v_mean2d[2],
-                                         float *v_opacity)
-{
-    float sigma = 0.5f * (conic[0] * dx * dx + conic[2] * dy * dy) + conic[1] * dx * dy;
-    float g = sp_gm_expf(-sigma);
-    if (opacity * g > SP_ALPHA_MAX) return;
-    *v_opacity += g * v_alpha;
-    float v_sigma = -opacity * g * v_alpha;
-    v_conic[0] += 0.5f * v_sigma * dx * dx;
-    v_conic[1] += 0.5f * v_sigma * dx * dy;
-    v_conic[2] += 0.5f * v_sigma * dy * dy;
-    /* d = centre - mean2d, so d sigma / d mean2d = -(conic d) */
-    v_mean2d[0] -= v_sigma * (conic[0] * dx + conic[1] * dy);
-    v_mean2d[1] -= v_sigma * (conic[1] * dx + conic[2] * dy);
 }
 
 /* ---- spherical harmonics ---------------------------------------------------------------------------- */

@@ -101,6 +101,9 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
         const float half_a = 0.5f * con[0];
+        float fcs, fsn; /* the conic gradient is summed in the conic's frame (gauss_math.h) */
+        sp_gm_conic_frame(con, &fcs, &fsn);
+        const cpu_v4f v_fcs = cpu_v4_splat(fcs), v_fsn = cpu_v4_splat(fsn);
         const cpu_v4f v_half_a = cpu_v4_splat(half_a), v_opac = cpu_v4_splat(op), v_cut = cpu_v4_splat(cut);
         const float *restrict col = colors + (size_t)g * D;
         const int32_t pos1 = (int32_t)(j - start); /* contributes where pos < last[p] */
@@ -150,9 +153,10 @@ static inline __attribute__((always_inline)) void tile_backward(cpu_raster *r,
                 v_op += gva;
                 const cpu_v4f v_sigma = -vop * gva;
                 const cpu_v4f hs = cpu_v4_splat(0.5f) * v_sigma;
-                v_ca += hs * dx * dx;
-                v_cb += hs * dx * vdy;
-                v_cc += hs * vdy * vdy;
+                const cpu_v4f d0 = v_fcs * dx + v_fsn * vdy, d1 = v_fcs * vdy - v_fsn * dx;
+                v_ca += hs * d0 * d0;
+                v_cb += hs * d0 * d1;
+                v_cc += hs * d1 * d1;
                 /* d = centre - mean2d: d sigma / d mean2d = -(conic d) */
                 v_mx -= v_sigma * (cpu_v4_splat(con[0]) * dx + cpu_v4_splat(con[1]) * vdy);
                 v_my -= v_sigma * (cpu_v4_splat(con[1]) * dx + cpu_v4_splat(con[2]) * vdy);

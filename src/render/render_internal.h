@@ -97,8 +97,8 @@ typedef struct cpu_raster {
     int n_scratch;
 } cpu_raster;
 
-/* Slot layout: v_mean2d x, y; v_conic (element convention) 00, 01, 11; v_opacity; v_depth;
- * then D colour gradients. */
+/* Slot layout: v_mean2d x, y; v_conic (element convention, in the conic's principal frame:
+ * sp_gm_conic_frame) 00, 01, 11; v_opacity; v_depth; then D colour gradients. */
 #define SP_SLOT_FIXED 7
 
 /* project.c */

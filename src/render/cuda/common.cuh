@@ -59,7 +59,8 @@ struct sp_cuda_raster {
     sp_cu_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
     sp_cu_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
     sp_cu_scratch s_tfinal, s_last, s_bg;
-    /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3, v_opacity, v_depth, pad) */
+    /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3 in the conic's frame, v_opacity,
+     * v_depth, pad) */
     sp_cu_scratch s_vgeo;
     sp_cuda_proj proj;
     const uint32_t *sorted_ids; /* [n_pairs] Gaussian index per sorted pair */

@@ -80,7 +80,8 @@ int sp_cuda_project(sp_cuda_raster *r, sp_error *err)
 }
 
 /* vgeo[i] = per-Gaussian sums from the rasterizer backward:
- * (v_mean2d x, y, v_conic a, b, c (element convention), v_opacity, v_depth, unused). */
+ * (v_mean2d x, y, v_conic a, b, c (element convention, in the conic's principal frame:
+ * sp_gm_conic_frame), v_opacity, v_depth, unused). */
 __global__ void k_project_bwd(size_t n, sp_camera cam, sp_raster_cfg cfg,
                               const float *__restrict__ means, const float *__restrict__ quats,
                               const float *__restrict__ log_scales,

@@ -86,7 +86,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
     float *s_z = (float *)(s_xy + BLOCK);             /* [BLOCK] */
     float *s_cut = s_z + BLOCK;                       /* [BLOCK] */
-    int *s_id = (int *)(s_cut + BLOCK);               /* [BLOCK] */
+    float2 *s_frame = (float2 *)(s_cut + BLOCK);      /* [BLOCK] conic frame (cs, sn) */
+    int *s_id = (int *)(s_frame + BLOCK);             /* [BLOCK] */
     float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
     __shared__ int s_block_last;
 
@@ -132,6 +133,10 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             const float4 co = conic_op[g];
             s_conic[tid] = co;
             s_cut[tid] = sp_cu_sigma_cut(co.w);
+            const float con[3] = {co.x, co.y, co.z};
+            float fcs, fsn;
+            sp_gm_conic_frame(con, &fcs, &fsn);
+            s_frame[tid] = make_float2(fcs, fsn);
             s_z[tid] = depths[g];
         }
         __syncthreads();
@@ -181,9 +186,12 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     const float v_sigma = -co.w * vis * v_alpha;
                     geo[0] = -v_sigma * (co.x * dx + co.y * dy);
                     geo[1] = -v_sigma * (co.y * dx + co.z * dy);
-                    geo[2] = 0.5f * v_sigma * dx * dx;
-                    geo[3] = 0.5f * v_sigma * dx * dy;
-                    geo[4] = 0.5f * v_sigma * dy * dy;
+                    /* the conic gradient in the conic's frame (gauss_math.h) */
+                    const float2 fr = s_frame[t];
+                    const float d0 = fr.x * dx + fr.y * dy, d1 = fr.x * dy - fr.y * dx;
+                    geo[2] = 0.5f * v_sigma * d0 * d0;
+                    geo[3] = 0.5f * v_sigma * d0 * d1;
+                    geo[4] = 0.5f * v_sigma * d1 * d1;
                     geo[5] = vis * v_alpha;
                 }
             }
@@ -209,7 +217,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 
 static size_t bwd_smem(int ch)
 {
-    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
+    return (size_t)BLOCK * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
                             sizeof(float) * ch);
 }
 
