@@ -20,14 +20,14 @@ static void help(void)
            "  --model-path   where model://NAME is looked up (also GAZEBO_MODEL_PATH,\n"
            "                 GZ_SIM_RESOURCE_PATH, and <world dir>/models, ../models)\n"
            "  --views 150  --size 640x480  --fov-deg 70 (horizontal)  --heights 0.3,1.5 (m)\n"
-           "  --supersample 2 (per axis)  --points 30000  --seed 1\n"
+           "  --supersample 4 (per axis)  --points 30000  --seed 1\n"
            "  --skip-missing warn about missing models, meshes and textures and go on\n");
 }
 
 int cmd_synth(int argc, char **argv)
 {
     const char *world = NULL, *out = NULL, *mpath = NULL, *v;
-    long views = 150, ss = 2, points = 30000, seed = 1, threads = 0;
+    long views = 150, ss = 4, points = 30000, seed = 1, threads = 0;
     int w = 640, h = 480, quiet = 0, skip = 0, bad = 0;
     double fov = 70, hmin = 0.3, hmax = 1.5;
     for (int i = 1; i < argc; i++) {

@@ -139,7 +139,7 @@ int sp_synth_is_structure(const char *model_name, const char *class_name);
 /* ---- rendering ------------------------------------------------------------------------------- */
 
 typedef struct sp_synth_render_opts {
-    int supersample; /* samples per pixel along each axis (1..4); 0 = 2 */
+    int supersample; /* samples per pixel along each axis (1..4); 0 = 4 */
     int no_detail;   /* 1 = flat material colours (no procedural detail, no textures) */
 } sp_synth_render_opts;
 
@@ -169,7 +169,7 @@ typedef struct sp_synth_capture_opts {
     int width, height;
     float fov_deg;      /* horizontal field of view; 0 = 70 */
     float min_height_m, max_height_m; /* camera heights above the floor; 0,0 = 0.3, 1.5 */
-    int supersample;    /* 0 = 2 */
+    int supersample;    /* 0 = 4 */
     int n_points;       /* points3D sampled on visible surfaces; 0 = 30000 */
     unsigned seed;      /* view planning and point sampling */
     int n_threads;      /* <= 0: all CPUs */

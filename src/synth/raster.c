@@ -386,7 +386,7 @@ int sp_synth_render(const sp_world *w, const sp_camera *cam, const sp_synth_rend
     sp_synth_render_opts def = {0};
     if (!opts) opts = &def;
     if (!w || !cam || !out) return sp_error_set(err, SP_E_ARG, "sp_synth_render: NULL argument");
-    int S = opts->supersample ? opts->supersample : 2;
+    int S = opts->supersample ? opts->supersample : 4;
     if (S < 1 || S > 4) return sp_error_set(err, SP_E_ARG, "supersample %d: expected 1..4", S);
     if (cam->width <= 0 || cam->height <= 0 || cam->width > 16384 || cam->height > 16384 ||
         !(cam->fx > 0) || !(cam->fy > 0))
