@@ -25,7 +25,7 @@ echo "== lift alone on the GPU"
   --colmap "$cap" --device cuda --quiet
 
 echo "== distill (joint RGB + feature training) on the GPU"
-cp -r "$out/demo/model" "$out/distilled"
+rm -rf "$out/distilled"; cp -r "$out/demo/model" "$out/distilled"
 "$B/semsplat" distill --model "$out/distilled" --features "$out/demo/features" --colmap "$cap" \
   --steps 3000 --device cuda --quiet
 

@@ -10,8 +10,8 @@ static void help(void)
 {
     printf("usage: semsplat synth --world W.world --out DIR [--model-path DIR[:DIR...]]\n"
            "                      [--views N] [--size WxH] [--fov-deg DEG] [--heights MIN,MAX]\n"
-           "                      [--supersample S] [--points N] [--seed N] [--threads N]\n"
-           "                      [--skip-missing] [--quiet]\n\n"
+           "                      [--supersample S] [--blur-px SIGMA] [--points N] [--seed N]\n"
+           "                      [--threads N] [--skip-missing] [--quiet]\n\n"
            "Renders the world (SDF 1.6+: models, includes via model://, boxes, cylinders,\n"
            "spheres, planes, .dae/.obj/.stl meshes with textures) along a robot-like path\n"
            "through every room plus views around objects, and writes DIR/sparse/0 (COLMAP,\n"
@@ -21,6 +21,8 @@ static void help(void)
            "                 GZ_SIM_RESOURCE_PATH, and <world dir>/models, ../models)\n"
            "  --views 150  --size 640x480  --fov-deg 70 (horizontal)  --heights 0.3,1.5 (m)\n"
            "  --supersample 4 (per axis)  --points 30000  --seed 1\n"
+           "  --blur-px 0.5  the camera's blur (Gaussian sigma, pixels) over the colours;\n"
+           "                 0 = none (sharp box-filtered pixels)\n"
            "  --skip-missing warn about missing models, meshes and textures and go on\n");
 }
 
@@ -29,7 +31,7 @@ int cmd_synth(int argc, char **argv)
     const char *world = NULL, *out = NULL, *mpath = NULL, *v;
     long views = 150, ss = 4, points = 30000, seed = 1, threads = 0;
     int w = 640, h = 480, quiet = 0, skip = 0, bad = 0;
-    double fov = 70, hmin = 0.3, hmax = 1.5;
+    double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
         if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
@@ -46,6 +48,8 @@ int cmd_synth(int argc, char **argv)
                 return cli_usage_error("synth", "--heights: '%s' is not MIN,MAX in metres", v);
         } else if ((v = cli_flag_value(argc, argv, &i, "--supersample", &bad))) {
             if (cli_parse_int("synth", "--supersample", v, &ss)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--blur-px", &bad))) {
+            if (cli_parse_float("synth", "--blur-px", v, &psf)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--points", &bad))) {
             if (cli_parse_int("synth", "--points", v, &points)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--seed", &bad))) {
@@ -61,6 +65,7 @@ int cmd_synth(int argc, char **argv)
     if (views < 1 || views > 100000) return cli_usage_error("synth", "--views %ld: expected 1..100000", views);
     if (ss < 1 || ss > 4) return cli_usage_error("synth", "--supersample %ld: expected 1..4", ss);
     if (!(fov > 1 && fov < 170)) return cli_usage_error("synth", "--fov-deg %g: expected 1..170", fov);
+    if (!(psf >= 0 && psf <= 4)) return cli_usage_error("synth", "--blur-px %g: expected 0..4", psf);
     if (points < 1) return cli_usage_error("synth", "--points %ld: expected at least 1", points);
     sp_error err = {0};
     sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
@@ -79,7 +84,7 @@ int cmd_synth(int argc, char **argv)
             wd.n_missing ? " (some assets missing, skipped)" : "", sp_time_now() - t0);
     sp_synth_capture_opts co = {.n_views = (int)views, .width = w, .height = h, .fov_deg = (float)fov,
                                 .min_height_m = (float)hmin, .max_height_m = (float)hmax,
-                                .supersample = (int)ss, .n_points = (int)points, .seed = (unsigned)seed,
+                                .supersample = (int)ss, .psf_px = psf > 0 ? (float)psf : -1.f, .n_points = (int)points, .seed = (unsigned)seed,
                                 .n_threads = (int)threads, .log = &log};
     double t1 = sp_time_now();
     int rc = sp_synth_capture(&wd, out, &co, &err);

@@ -141,6 +141,8 @@ int sp_synth_is_structure(const char *model_name, const char *class_name);
 typedef struct sp_synth_render_opts {
     int supersample; /* samples per pixel along each axis (1..4); 0 = 4 */
     int no_detail;   /* 1 = flat material colours (no procedural detail, no textures) */
+    float psf_px;    /* camera blur: Gaussian sigma in pixels applied to the colour image after
+                        the per-pixel box integration (lens and sensor); 0 = 0.5, < 0 = none */
 } sp_synth_render_opts;
 
 /* One rendered view.
@@ -170,6 +172,7 @@ typedef struct sp_synth_capture_opts {
     float fov_deg;      /* horizontal field of view; 0 = 70 */
     float min_height_m, max_height_m; /* camera heights above the floor; 0,0 = 0.3, 1.5 */
     int supersample;    /* 0 = 4 */
+    float psf_px;       /* camera blur sigma in pixels (sp_synth_render_opts); 0 = 0.5, < 0 = none */
     int n_points;       /* points3D sampled on visible surfaces; 0 = 30000 */
     unsigned seed;      /* view planning and point sampling */
     int n_threads;      /* <= 0: all CPUs */

@@ -186,7 +186,7 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
     memset(f, 0, sizeof f);
     write_job job = {.out = out, .cams = cams, .frames = f, .pts = pts, .got = got, .per_view = per_view,
                      .seed = opts->seed};
-    sp_synth_render_opts ro = {.supersample = opts->supersample};
+    sp_synth_render_opts ro = {.supersample = opts->supersample, .psf_px = opts->psf_px};
     sp_progress prog;
     sp_progress_begin(&prog, opts->log, "synth", (long)n, "views");
     if (!pts || !got) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");

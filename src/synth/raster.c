@@ -380,6 +380,47 @@ static void band_fn(void *ctx, long band, int tid)
         }
 }
 
+/* The camera's blur: a separable Gaussian of sigma px (radius 3 sigma, weights renormalised,
+ * edges clamped) over the box-integrated colours. A real camera's lens and sensor soften
+ * edges beyond the pixel box; with sigma 0.5 a pixel's response has variance 1/12 + 1/4 = 0.33
+ * px^2, about the 0.3 px^2 low-pass 3DGS rasterizers assume for a pixel, and what physically
+ * based renderers use by default (pbrt-v4: Gaussian pixel filter, sigma 0.5). Depth and labels
+ * stay per pixel. Returns nonzero when out of memory. */
+static int camera_blur(float *rgb, int W, int H, float sigma)
+{
+    int R = (int)ceilf(3.f * sigma);
+    if (R < 1) return 0;
+    if (R > 12) R = 12;
+    float k[25], ksum = 0;
+    for (int i = -R; i <= R; i++) ksum += k[i + R] = expf(-0.5f * (float)(i * i) / (sigma * sigma));
+    for (int i = 0; i <= 2 * R; i++) k[i] /= ksum;
+    size_t n = (size_t)W * H * 3;
+    float *tmp = malloc(n * sizeof(float));
+    if (!tmp) return 1;
+    for (int y = 0; y < H; y++) /* rows into tmp */
+        for (int x = 0; x < W; x++)
+            for (int c = 0; c < 3; c++) {
+                float acc = 0;
+                for (int i = -R; i <= R; i++) {
+                    int xx = x + i < 0 ? 0 : (x + i >= W ? W - 1 : x + i);
+                    acc += k[i + R] * rgb[((size_t)y * W + xx) * 3 + c];
+                }
+                tmp[((size_t)y * W + x) * 3 + c] = acc;
+            }
+    for (int y = 0; y < H; y++) /* columns back */
+        for (int x = 0; x < W; x++)
+            for (int c = 0; c < 3; c++) {
+                float acc = 0;
+                for (int i = -R; i <= R; i++) {
+                    int yy = y + i < 0 ? 0 : (y + i >= H ? H - 1 : y + i);
+                    acc += k[i + R] * tmp[((size_t)yy * W + x) * 3 + c];
+                }
+                rgb[((size_t)y * W + x) * 3 + c] = acc;
+            }
+    free(tmp);
+    return 0;
+}
+
 int sp_synth_render(const sp_world *w, const sp_camera *cam, const sp_synth_render_opts *opts,
                     sp_pool *pool, sp_synth_frame *out, sp_error *err)
 {
@@ -388,6 +429,8 @@ int sp_synth_render(const sp_world *w, const sp_camera *cam, const sp_synth_rend
     if (!w || !cam || !out) return sp_error_set(err, SP_E_ARG, "sp_synth_render: NULL argument");
     int S = opts->supersample ? opts->supersample : 4;
     if (S < 1 || S > 4) return sp_error_set(err, SP_E_ARG, "supersample %d: expected 1..4", S);
+    float psf = opts->psf_px == 0.f ? 0.5f : opts->psf_px;
+    if (!(psf <= 4.f)) return sp_error_set(err, SP_E_ARG, "camera blur %g px: expected at most 4", psf);
     if (cam->width <= 0 || cam->height <= 0 || cam->width > 16384 || cam->height > 16384 ||
         !(cam->fx > 0) || !(cam->fy > 0))
         return sp_error_set(err, SP_E_ARG, "camera %dx%d fx %g fy %g: expected a positive size and focal length",
@@ -461,6 +504,8 @@ int sp_synth_render(const sp_world *w, const sp_camera *cam, const sp_synth_rend
     } else if (!rc)
         rc = sp_error_set(err, SP_E_NOMEM, "render: out of memory");
     if (!rc) sp_pool_for(nthreads > 1 ? pool : NULL, v.n_bands, band_fn, &v);
+    if (!rc && psf > 0.f && camera_blur(out->rgb, cam->width, cam->height, psf))
+        rc = sp_error_set(err, SP_E_NOMEM, "render: out of memory");
     for (int t = 0; t < nthreads; t++) {
         free(v.zbuf[t]);
         free(v.ibuf[t]);

@@ -40,6 +40,9 @@ static void test_bad_flags(void)
     CHECK_MSG(strstr(out, "--sh-interval") != NULL, "output: %s", out);
     CHECK(run_cli("train --colmap x --out y --sh-interval -5", out, sizeof out) == 2);
     CHECK_MSG(strstr(out, "--sh-interval must be positive") != NULL, "output: %s", out);
+    /* (a build without synth says so instead) */
+    CHECK(run_cli("synth --world x --out y --blur-px -1", out, sizeof out) == 2);
+    CHECK_MSG(strstr(out, "--blur-px -1: expected 0..4") || strstr(out, "not built"), "output: %s", out);
 }
 
 static void test_missing_capture(void)

@@ -189,6 +189,47 @@ static void test_threads_and_clipping(void)
     sp_world_free(&w);
 }
 
+/* The camera blur softens colours only: depth and labels are the same with and without it,
+ * edges get smaller pixel-to-pixel jumps, the mean colour stays, and a blur beyond 4 px is
+ * refused. */
+static void test_camera_blur(void)
+{
+    sp_world w;
+    sp_error err = {0};
+    CHECK_OK(load(&w, &err), &err);
+    if (err.code) return;
+    sp_camera c;
+    make_cam(&c, 96, 72, 0.2f, -2.5f, 1.0f, 0.0f, 0.0f, 0.0f);
+    sp_synth_render_opts sharp = {.psf_px = -1.f}, soft = {0};
+    sp_synth_frame a = {0}, b = {0};
+    CHECK_OK(sp_synth_render(&w, &c, &sharp, NULL, &a, &err), &err);
+    CHECK_OK(sp_synth_render(&w, &c, &soft, NULL, &b, &err), &err);
+    if (!a.rgb || !b.rgb) return;
+    size_t np = (size_t)c.width * c.height;
+    CHECK(!memcmp(a.depth, b.depth, np * sizeof(float)));
+    CHECK(!memcmp(a.labels, b.labels, np * sizeof(uint16_t)));
+    double jump_a = 0, jump_b = 0, mean_a = 0, mean_b = 0;
+    for (int y = 0; y < c.height; y++)
+        for (int x = 0; x + 1 < c.width; x++)
+            for (int k = 0; k < 3; k++) {
+                size_t i = ((size_t)y * c.width + x) * 3 + k;
+                jump_a = fmax(jump_a, fabs(a.rgb[i + 3] - a.rgb[i]));
+                jump_b = fmax(jump_b, fabs(b.rgb[i + 3] - b.rgb[i]));
+                mean_a += a.rgb[i];
+                mean_b += b.rgb[i];
+            }
+    fprintf(stderr, "    largest neighbour jump: sharp %.3f, blurred %.3f; mean %.4f vs %.4f\n",
+            jump_a, jump_b, mean_a / (double)np, mean_b / (double)np);
+    CHECK(jump_a > 0.2);
+    CHECK(jump_b < 0.8 * jump_a);
+    CHECK(fabs(mean_a - mean_b) / (double)np < 2e-3);
+    sp_synth_render_opts bad = {.psf_px = 5.f};
+    CHECK_FAILS(sp_synth_render(&w, &c, &bad, NULL, &a, &err), SP_E_ARG, &err, "camera blur 5");
+    sp_synth_frame_free(&a);
+    sp_synth_frame_free(&b);
+    sp_world_free(&w);
+}
+
 static void put(const char *dir, const char *name, const char *text)
 {
     char p[1400];
@@ -293,5 +334,6 @@ int main(void)
     RUN(test_depth_and_labels);
     RUN(test_labels_inside_gt_boxes);
     RUN(test_threads_and_clipping);
+    RUN(test_camera_blur);
     return TEST_EXIT();
 }
