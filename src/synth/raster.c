@@ -380,6 +380,23 @@ static void band_fn(void *ctx, long band, int tid)
         }
 }
 
+/* One 1-D pass of camera_blur: n lines of len pixels, pixel i of line l at
+ * (l * line_step + i * px_step) * 3, edges clamped. */
+static void blur_pass(const float *src, float *dst, int n, int len, size_t line_step,
+                      size_t px_step, const float *k, int R)
+{
+    for (int l = 0; l < n; l++)
+        for (int i = 0; i < len; i++)
+            for (int c = 0; c < 3; c++) {
+                float acc = 0;
+                for (int j = -R; j <= R; j++) {
+                    int ii = i + j < 0 ? 0 : (i + j >= len ? len - 1 : i + j);
+                    acc += k[j + R] * src[((size_t)l * line_step + (size_t)ii * px_step) * 3 + c];
+                }
+                dst[((size_t)l * line_step + (size_t)i * px_step) * 3 + c] = acc;
+            }
+}
+
 /* The camera's blur: a separable Gaussian of sigma px (radius 3 sigma, weights renormalised,
  * edges clamped) over the box-integrated colours. A real camera's lens and sensor soften
  * edges beyond the pixel box; with sigma 0.5 a pixel's response has variance 1/12 + 1/4 = 0.33
@@ -394,29 +411,10 @@ static int camera_blur(float *rgb, int W, int H, float sigma)
     float k[25], ksum = 0;
     for (int i = -R; i <= R; i++) ksum += k[i + R] = expf(-0.5f * (float)(i * i) / (sigma * sigma));
     for (int i = 0; i <= 2 * R; i++) k[i] /= ksum;
-    size_t n = (size_t)W * H * 3;
-    float *tmp = malloc(n * sizeof(float));
+    float *tmp = malloc((size_t)W * H * 3 * sizeof(float));
     if (!tmp) return 1;
-    for (int y = 0; y < H; y++) /* rows into tmp */
-        for (int x = 0; x < W; x++)
-            for (int c = 0; c < 3; c++) {
-                float acc = 0;
-                for (int i = -R; i <= R; i++) {
-                    int xx = x + i < 0 ? 0 : (x + i >= W ? W - 1 : x + i);
-                    acc += k[i + R] * rgb[((size_t)y * W + xx) * 3 + c];
-                }
-                tmp[((size_t)y * W + x) * 3 + c] = acc;
-            }
-    for (int y = 0; y < H; y++) /* columns back */
-        for (int x = 0; x < W; x++)
-            for (int c = 0; c < 3; c++) {
-                float acc = 0;
-                for (int i = -R; i <= R; i++) {
-                    int yy = y + i < 0 ? 0 : (y + i >= H ? H - 1 : y + i);
-                    acc += k[i + R] * tmp[((size_t)yy * W + x) * 3 + c];
-                }
-                rgb[((size_t)y * W + x) * 3 + c] = acc;
-            }
+    blur_pass(rgb, tmp, H, W, (size_t)W, 1, k, R); /* rows into tmp */
+    blur_pass(tmp, rgb, W, H, 1, (size_t)W, k, R); /* columns back */
     free(tmp);
     return 0;
 }
