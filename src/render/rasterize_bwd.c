@@ -13,28 +13,13 @@
 #include "render/gauss_math.h"
 #include "render/render_internal.h"
 
-#define TILE_PIX (SP_TILE_SIZE * SP_TILE_SIZE)
 
 typedef struct {
     cpu_raster *r;
     const sp_raster_grad_in *gin;
 } bwd_ctx;
 
-#define TILE_STRIDE (TILE_PIX + 4) /* room for the lanes past a row's end */
 
-static inline cpu_v4f load4(const float *p)
-{
-    cpu_v4f v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-static inline void store4(float *p, cpu_v4f v) { memcpy(p, &v, sizeof v); }
-static inline cpu_v4i load4i(const int32_t *p)
-{
-    cpu_v4i v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
 /* Horizontal sum in a fixed order (deterministic). */
 static inline float hsum(cpu_v4f v) { return (v[0] + v[1]) + (v[2] + v[3]); }
 

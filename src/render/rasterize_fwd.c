@@ -12,31 +12,13 @@
 #include "render/gauss_math.h"
 #include "render/render_internal.h"
 
-#define TILE_PIX (SP_TILE_SIZE * SP_TILE_SIZE)
 
 typedef struct {
     cpu_raster *r;
     sp_raster_out *out;
 } fwd_ctx;
 
-/* Per-pixel tile state is laid out channel-major ([c][TILE_STRIDE]) so that four neighbouring
- * pixels of a row are one vector; the stride leaves room for the lanes past a row's end. */
-#define TILE_STRIDE (TILE_PIX + 4)
 
-static inline cpu_v4f load4(const float *p)
-{
-    cpu_v4f v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-static inline void store4(float *p, cpu_v4f v) { memcpy(p, &v, sizeof v); }
-static inline cpu_v4i load4i(const int32_t *p)
-{
-    cpu_v4i v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-static inline void store4i(int32_t *p, cpu_v4i v) { memcpy(p, &v, sizeof v); }
 
 /* Always inlined so each call site below gets a constant D and the channel loops unroll.
  * Four pixels of a row per step: lanes past the row's range or already finished are masked out

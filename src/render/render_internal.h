@@ -141,6 +141,27 @@ static inline cpu_v4f cpu_v4_select(cpu_v4i mask, cpu_v4f a, cpu_v4f b)
     return (cpu_v4f)(((cpu_v4i)a & mask) | ((cpu_v4i)b & ~mask));
 }
 
+/* Unaligned four-lane loads and stores of tile state. */
+static inline cpu_v4f load4(const float *p)
+{
+    cpu_v4f v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void store4(float *p, cpu_v4f v) { memcpy(p, &v, sizeof v); }
+static inline cpu_v4i load4i(const int32_t *p)
+{
+    cpu_v4i v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+static inline void store4i(int32_t *p, cpu_v4i v) { memcpy(p, &v, sizeof v); }
+
+/* Per-pixel tile state is laid out channel-major ([c][TILE_STRIDE]) so that four neighbouring
+ * pixels of a row are one vector; the stride leaves room for the lanes past a row's end. */
+#define TILE_PIX (SP_TILE_SIZE * SP_TILE_SIZE)
+#define TILE_STRIDE (TILE_PIX + 4)
+
 /* e^x for x in [-80, 0] per lane: sp_gm_expf (gauss_math.h) four lanes wide, the same operations
  * in the same order, so the same bits (tests/render/test_exact_alpha checks); branch-free. */
 static inline cpu_v4f cpu_exp_neg4(cpu_v4f x)
