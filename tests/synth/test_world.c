@@ -19,6 +19,16 @@ static void put(const char *dir, const char *name, const char *text)
     fclose(f);
 }
 
+/* Loads DIR/w.world with DIR/models as the model path (no environment variables). */
+static int load_dir_world(const char *d, sp_world *w, sp_error *err)
+{
+    char path[1200], mp[1200];
+    snprintf(path, sizeof path, "%s/w.world", d);
+    snprintf(mp, sizeof mp, "%s/models", d);
+    sp_synth_load_opts o = {.model_path = mp, .no_env = 1};
+    return sp_synth_load_world(path, &o, w, err);
+}
+
 static const sp_synth_object *find(const sp_world *w, const char *name)
 {
     for (size_t i = 0; i < w->n_objects; i++)
@@ -102,13 +112,9 @@ static void test_poses_and_includes(void)
         "<size>4 6</size></plane></geometry></visual></link></model>\n"
         "<light name='sun' type='directional'><direction>0 0 -1</direction><diffuse>0.5 0.5 0.5 1</diffuse></light>\n"
         "</world></sdf>\n");
-    char path[1200], mp[1200];
-    snprintf(path, sizeof path, "%s/w.world", d);
-    snprintf(mp, sizeof mp, "%s/models", d);
     sp_world w;
     sp_error err = {0};
-    sp_synth_load_opts o = {.model_path = mp, .no_env = 1};
-    CHECK_OK(sp_synth_load_world(path, &o, &w, &err), &err);
+    CHECK_OK(load_dir_world(d, &w, &err), &err);
     CHECK(w.n_objects == 5);
     CHECK(w.n_lights == 1);
     /* rotated 90 degrees about z: the 1 x 2 footprint becomes 2 x 1 */
@@ -162,13 +168,9 @@ static void test_meshes(void)
         "<model name='cube'><pose>1 2 3 0 0 1.5707963267948966</pose><link name='l'><visual name='v'><geometry><mesh>"
         "<uri>meshes/cube.obj</uri><scale>1 2 3</scale></mesh></geometry></visual></link></model>\n"
         "</world></sdf>\n");
-    char path[1200], mp[1200];
-    snprintf(path, sizeof path, "%s/w.world", d);
-    snprintf(mp, sizeof mp, "%s/models", d);
     sp_world w;
     sp_error err = {0};
-    sp_synth_load_opts o = {.model_path = mp, .no_env = 1};
-    CHECK_OK(sp_synth_load_world(path, &o, &w, &err), &err);
+    CHECK_OK(load_dir_world(d, &w, &err), &err);
     /* centimetres -> metres, then <scale> 2 along x, then the pose */
     check_box(find(&w, "quad_1"), 5, 0, 0, 7, 2, 0);
     CHECK(find(&w, "quad_1") && find(&w, "quad_1")->n_triangles == 2);
