@@ -345,6 +345,21 @@ static void dir_of(const char *path, char *out, size_t cap)
     else snprintf(out, cap, ".");
 }
 
+/* Weights in place: puts them on the GPU when dev is a CUDA device, and takes dev's thread pool
+ * (or a pool of its own). */
+static int attach_device(sp_clip *c, sp_device *dev, sp_error *err)
+{
+    int rc;
+    c->dev = dev;
+    if (dev && sp_device_kind_of(dev) == SP_DEVICE_CUDA && (rc = clip_gpu_init(c, err))) return rc;
+    if (dev) c->pool = sp_device_pool(dev);
+    if (!c->pool) {
+        if ((rc = sp_pool_create(&c->pool, 0, err))) return rc;
+        c->own_pool = 1;
+    }
+    return 0;
+}
+
 int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_device *dev,
                  sp_error *err)
 {
@@ -398,15 +413,7 @@ int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_de
     take_all(&L, c);
     if ((rc = L.rc)) goto fail;
     sp_safetensors_close(&st);
-    c->dev = dev;
-    if (dev && sp_device_kind_of(dev) == SP_DEVICE_CUDA) {
-        if ((rc = clip_gpu_init(c, err))) goto fail;
-    }
-    if (dev) c->pool = sp_device_pool(dev);
-    if (!c->pool) {
-        if ((rc = sp_pool_create(&c->pool, 0, err))) goto fail;
-        c->own_pool = 1;
-    }
+    if ((rc = attach_device(c, dev, err))) goto fail;
     *out = c;
     return 0;
 fail:
@@ -444,13 +451,7 @@ int clip_create_random(sp_clip **out, const sp_clip_config *cfg, uint64_t seed, 
     L.used = 0;
     L.measuring = 0;
     take_all(&L, c);
-    c->dev = dev;
-    if (dev && sp_device_kind_of(dev) == SP_DEVICE_CUDA && (rc = clip_gpu_init(c, err))) goto fail;
-    if (dev) c->pool = sp_device_pool(dev);
-    if (!c->pool) {
-        if ((rc = sp_pool_create(&c->pool, 0, err))) goto fail;
-        c->own_pool = 1;
-    }
+    if ((rc = attach_device(c, dev, err))) goto fail;
     *out = c;
     return 0;
 fail:
