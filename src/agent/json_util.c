@@ -9,6 +9,27 @@
 
 #include "agent_internal.h"
 
+/* Whether the bytes stop inside a string or an open object/array: a body cut short. */
+static int ends_open(const char *b, size_t n)
+{
+    int depth = 0, in_str = 0, esc = 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = b[i];
+        if (in_str) {
+            if (esc) esc = 0;
+            else if (c == '\\') esc = 1;
+            else if (c == '"') in_str = 0;
+        } else if (c == '"') {
+            in_str = 1;
+        } else if (c == '{' || c == '[') {
+            depth++;
+        } else if (c == '}' || c == ']') {
+            if (--depth < 0) return 0;
+        }
+    }
+    return in_str || depth > 0;
+}
+
 cJSON *agent_json_parse(const char *bytes, size_t size, const char *what, sp_error *err)
 {
     if (!bytes || size == 0) {
@@ -19,7 +40,7 @@ cJSON *agent_json_parse(const char *bytes, size_t size, const char *what, sp_err
     cJSON *j = cJSON_ParseWithLengthOpts(bytes, size, &end, 0);
     size_t at = end && end >= bytes && end <= bytes + size ? (size_t)(end - bytes) : 0;
     if (!j) {
-        if (at >= size)
+        if (at >= size || ends_open(bytes, size))
             sp_error_set(err, SP_E_FORMAT, "%s: JSON ends early (truncated after %zu bytes?)", what,
                          size);
         else

@@ -37,6 +37,21 @@ static double remaining_length(const offline *r)
     return d;
 }
 
+/* Distance along the path to where the robot must stand still: the next sharp corner (where it
+ * turns in place) or the end. */
+static double stop_distance(const offline *r)
+{
+    if (r->seg >= r->n - 1) return 0;
+    double d = agent_dist2d(r->pose.x, r->pose.y, r->wp[(r->seg + 1) * 4], r->wp[(r->seg + 1) * 4 + 1]);
+    for (int i = r->seg + 1; i < r->n - 1; i++) {
+        const double *a = r->wp + (i - 1) * 4, *b = r->wp + i * 4, *c = r->wp + (i + 1) * 4;
+        double h0 = atan2(b[1] - a[1], b[0] - a[0]), h1 = atan2(c[1] - b[1], c[0] - b[0]);
+        if (fabs(agent_wrap_angle(h1 - h0)) > TURN_IN_PLACE_RAD) break;
+        d += agent_dist2d(b[0], b[1], c[0], c[1]);
+    }
+    return d;
+}
+
 static int off_pose(void *ctx, sp_agent_pose *pose, sp_error *err)
 {
     *pose = ((offline *)ctx)->pose;
@@ -101,18 +116,23 @@ static void step(offline *r, double dt)
             continue;
         }
         r->pose.yaw = heading;
-        /* Accelerate, cap, and brake so that v^2 <= 2 a s (stop at the goal). */
-        double rem = remaining_length(r), a = r->opts.accel_mps2;
-        double v = fmin(fmin(r->v + a * dt, r->vmax), sqrt(2 * a * rem) + 1e-3);
-        double ds = fmin(v * dt, d);
+        /* Accelerate or brake by at most a dt toward the speed from which the robot can still
+         * stop at the corner or the goal (v^2 <= 2 a s); a creep speed finishes the last cm. */
+        double rem = stop_distance(r), a = r->opts.accel_mps2;
+        double ahead = fmax(rem - r->v * dt, 0); /* where this step will leave the robot */
+        double target = fmax(fmin(r->vmax, sqrt(2 * a * ahead)), 0.02);
+        double v = fmin(fmax(target, r->v - a * dt), r->v + a * dt);
+        double ds = fmin(fmin(0.5 * (r->v + v) * dt, d), rem);
+        if (ds < 1e-9) ds = fmin(d, 1e-3);
         r->pose.x += dx / d * ds;
         r->pose.y += dy / d * ds;
         if (isfinite(b[2])) r->pose.z = b[2];
+        double used = 0.5 * (r->v + v) > 1e-9 ? ds / (0.5 * (r->v + v)) : dt;
         r->v = v;
-        dt -= v > 0 ? ds / v : dt;
+        dt -= fmin(used, dt);
         if (ds >= d - 1e-9) {
             r->seg++;
-            /* A sharp corner: stop there and turn in place (braking into it is not modelled). */
+            /* A sharp corner (braked for above): turn in place there. */
             if (r->seg < r->n - 1) {
                 const double *c = r->wp + (r->seg + 1) * 4;
                 double next = atan2(c[1] - b[1], c[0] - b[0]);
