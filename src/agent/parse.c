@@ -359,13 +359,18 @@ static int has_letters(const pw_words *t)
     return 0;
 }
 
-void sp_agent_parse(const char *text, sp_agent_intent *o)
+static void intent_init(sp_agent_intent *o, const char *text, pw_words *t)
 {
     memset(o, 0, sizeof *o);
     o->k = 3;
     o->radius_m = SP_AGENT_DEFAULT_RADIUS_M;
+    pw_tokenize(text, t);
+}
+
+void sp_agent_parse(const char *text, sp_agent_intent *o)
+{
     pw_words t;
-    pw_tokenize(text, &t);
+    intent_init(o, text, &t);
     strip_preamble(&t);
     if (t.n == 0 || !has_letters(&t)) {
         if (t.n == 0 || !parse_select(&t, o)) ask(o, help_question);
@@ -439,11 +444,8 @@ void sp_agent_parse(const char *text, sp_agent_intent *o)
 
 void agent_parse_phrase(const char *phrase, sp_agent_intent *o)
 {
-    memset(o, 0, sizeof *o);
-    o->k = 3;
-    o->radius_m = SP_AGENT_DEFAULT_RADIUS_M;
     pw_words t;
-    pw_tokenize(phrase, &t);
+    intent_init(o, phrase, &t);
     finish_target(&t, 0, t.n, o);
 }
 
