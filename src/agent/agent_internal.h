@@ -284,7 +284,17 @@ struct sp_agent_session {
     int goal_active;
     /* the answer being built (images the tools wrote) */
     sp_agent_answer *cur;
+    /* ambiguity guard: a query in this command matched several instances, and whether the
+     * command (or the question it answers) chose among them */
+    int amb_active, amb_n, user_chose, last_asked_back;
+    double amb_xy[AGENT_MAX_INSTANCES][2];
+    char amb_phrase[SP_AGENT_MAX_PHRASE + 1];
 };
+
+/* AMBIGUOUS error result when a goal near (x, y) (or an instance pick, x NaN) picks one of the
+ * instances an ambiguous query of this command returned while the user has not chosen; NULL
+ * when the call may go ahead. */
+char *agent_ambiguity_guard(sp_agent_session *s, int tool, double x, double y);
 
 /* Opens a session on a world and robot the caller built (both move into the session, also on
  * error). Used by sp_agent_session_open and by tests with a fake world. */

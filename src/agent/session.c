@@ -209,6 +209,11 @@ int sp_agent_session_ask(sp_agent_session *s, const char *text, sp_agent_answer 
     sp_agent_intent in;
     sp_agent_parse(text, &in);
     a->intent = in.kind;
+    /* The user chose when the command says nearest / any / which one, narrows by a relation, or
+     * answers the question the last answer asked. */
+    s->amb_active = 0;
+    s->user_chose = in.selector != SP_AGENT_SELECT_NONE || in.kind == SP_AGENT_INTENT_SELECT ||
+                    in.anchor[0] || s->last_asked_back;
     s->n_answers++;
     s->cur = a;
     agent_convo_trim(&s->convo, AGENT_CONVO_MAX);
@@ -250,6 +255,7 @@ int sp_agent_session_ask(sp_agent_session *s, const char *text, sp_agent_answer 
         a->text = agent_strdup(t);
     }
     a->asked_back = !rc && ends_with_question(a->text);
+    s->last_asked_back = a->asked_back;
     sp_error werr;
     if (write_answer(s, a, &werr) && !rc) {
         *err = werr;

@@ -99,6 +99,11 @@ static char *tool_query(sp_agent_session *s, const sp_agent_args *a)
         char q[1024];
         agent_ambiguity_question(a->text, &r, q, sizeof q);
         cJSON_AddStringToObject(d, "ask_user", q);
+        s->amb_active = 1;
+        s->amb_n = r.found.n;
+        for (int i = 0; i < r.found.n; i++)
+            s->amb_xy[i][0] = r.found.inst[i].position[0], s->amb_xy[i][1] = r.found.inst[i].position[1];
+        snprintf(s->amb_phrase, sizeof s->amb_phrase, "%s", a->text);
     }
     if (!r.found.found && r.n_suggestions) {
         cJSON *m = cJSON_CreateArray();
@@ -132,9 +137,24 @@ static sp_agent_pose pose_from(const double *v, int n)
     return p;
 }
 
+char *agent_ambiguity_guard(sp_agent_session *s, int tool, double x, double y)
+{
+    if (!s->amb_active || s->user_chose) return NULL;
+    int near = !isfinite(x);
+    for (int i = 0; i < s->amb_n && !near; i++) near = agent_dist2d(x, y, s->amb_xy[i][0], s->amb_xy[i][1]) < 1.5;
+    if (!near) return NULL;
+    char msg[512];
+    snprintf(msg, sizeof msg, "'%s' matched %d instances and the user has not said which one", s->amb_phrase, s->amb_n);
+    return agent_result_error(tool, "AMBIGUOUS", msg,
+                              "ask the user which one (query_object_location's ask_user), then continue with their choice",
+                              NULL);
+}
+
 static char *tool_plan(sp_agent_session *s, const sp_agent_args *a)
 {
     sp_error e = {0};
+    char *guard = agent_ambiguity_guard(s, a->tool, a->goal[0], a->goal[1]);
+    if (guard) return guard;
     sp_agent_pose start = pose_from(a->start, a->start_n);
     if (!isfinite(start.yaw)) start.yaw = 0;
     agent_goalspec g = {{a->goal[0], a->goal[1], a->goal_n > 2 ? a->goal[2] : 0},

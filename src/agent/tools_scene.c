@@ -245,6 +245,12 @@ static const agent_instance *resolve_pick(sp_agent_session *s, const sp_agent_ar
         *result = agent_result_error(a->tool, "QUERY_FAILED", e.msg, NULL, NULL);
         return NULL;
     }
+    if (a->instance > 0 && r->ambiguous && !s->user_chose) { /* a model choosing for the user */
+        s->amb_active = 1, s->amb_n = r->found.n;
+        snprintf(s->amb_phrase, sizeof s->amb_phrase, "%s", a->text);
+        *result = agent_ambiguity_guard(s, a->tool, NAN, NAN);
+        return NULL;
+    }
     return agent_pick_instance(a->tool, a->text, a->instance, r, result);
 }
 

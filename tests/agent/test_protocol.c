@@ -603,6 +603,47 @@ static void test_invalid_from_model(int dialect)
 static void test_openai_invalid(void) { test_invalid_from_model(OAI); }
 static void test_anthropic_invalid(void) { test_invalid_from_model(ANT); }
 
+/* A model that skips the question: "go to the chair" straight to a plan. */
+static char *respond_query_chair(const char *req, void *u)
+{
+    const char *calls[] = {"query_object_location", "{\"object_name\":\"chair\"}", "get_robot_pose", "{}"};
+    return reply(g_dialect, NULL, 2, calls);
+}
+/* What the last tool message of an OpenAI request said. */
+static char *respond_after_plan(const char *req, void *u)
+{
+    cJSON *j = cJSON_Parse(req);
+    const cJSON *m = cJSON_GetObjectItemCaseSensitive(j, "messages");
+    const cJSON *last = cJSON_GetArrayItem(m, cJSON_GetArraySize(m) - 1);
+    const cJSON *c = cJSON_GetObjectItemCaseSensitive(last, "content");
+    const char *t = cJSON_IsString(c) ? c->valuestring : "";
+    char *r = reply(g_dialect, strstr(t, "AMBIGUOUS") ? "asked" : strstr(t, "\"ok\":true") ? "planned" : "?", 0, NULL);
+    cJSON_Delete(j);
+    return r;
+}
+static char *respond_pick_2(const char *req, void *u)
+{
+    const char *calls[] = {"describe_surroundings", "{\"object_name\":\"chair\",\"instance\":2}"};
+    return reply(g_dialect, NULL, 1, calls);
+}
+
+static void test_model_must_ask(void)
+{
+    static const ts_response script[] = {
+        {200, NULL, NULL, respond_query_chair}, {200, NULL, NULL, respond_plan}, {200, NULL, NULL, respond_after_plan},
+        {200, NULL, NULL, respond_query_chair}, {200, NULL, NULL, respond_plan}, {200, NULL, NULL, respond_after_plan},
+        {200, NULL, NULL, respond_pick_2},      {200, NULL, NULL, respond_after_plan}};
+    run r;
+    start(&r, OAI, script, 8, 0, 5, 0);
+    ask(&r, "go to the chair");
+    CHECK_MSG(r.rc == 0 && !strcmp(r.a.text, "asked"), "%s", r.a.text ? r.a.text : r.err.msg);
+    ask(&r, "go to the nearest chair"); /* said which: the plan goes ahead */
+    CHECK_MSG(r.rc == 0 && !strcmp(r.a.text, "planned"), "%s", r.a.text ? r.a.text : r.err.msg);
+    ask(&r, "what is near the chair?"); /* the model picks instance 2 itself */
+    CHECK_MSG(r.rc == 0 && !strcmp(r.a.text, "asked"), "%s", r.a.text ? r.a.text : r.err.msg);
+    finish(&r);
+}
+
 static void test_loop_bound(void)
 {
     static const ts_response again[] = {
@@ -698,6 +739,7 @@ int main(void)
     RUN(test_refused);
     RUN(test_openai_invalid);
     RUN(test_anthropic_invalid);
+    RUN(test_model_must_ask);
     RUN(test_loop_bound);
     RUN(test_malformed_bodies);
     RUN(test_proxy_bypassed);
