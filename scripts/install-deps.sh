@@ -2,12 +2,12 @@
 # Installs the Debian packages semsplat builds and runs with (run as root, or with sudo).
 # This list is the one place dependencies are named; README.md points here.
 set -e
-# Round 1: the core. Round 2: libcurl (LLM APIs), Cairo (maps, sheets, plots, captions), FFmpeg's
-# libraries (the demo video; ffmpeg for ffprobe in tests), Cyclone DDS (ROS 2), WordNet (offline
-# text); Fast DDS, COLMAP and clang (libFuzzer) are test references and tools.
+# Round 1: the core. Round 2: libcurl (LLM APIs), Cairo and the DejaVu fonts (maps, sheets, plots,
+# captions), FFmpeg's libraries (the demo video; ffmpeg for ffprobe in tests), Cyclone DDS (ROS 2),
+# WordNet (offline text); Fast DDS, COLMAP and clang (libFuzzer) are test references and tools.
 PKGS="build-essential cmake pkg-config libpng-dev libjpeg-dev libcjson-dev libassimp-dev \
 libopenblas-dev libxml2-dev zlib1g-dev python3 python3-numpy \
-libcurl4-openssl-dev libcairo2-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
+libcurl4-openssl-dev libcairo2-dev fonts-dejavu-core libavcodec-dev libavformat-dev libavutil-dev libswscale-dev \
 cyclonedds-dev cyclonedds-tools wordnet-base \
 libfastrtps-dev colmap ffmpeg clang libclang-rt-14-dev"
 SUDO=""
