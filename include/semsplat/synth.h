@@ -72,7 +72,8 @@ typedef struct sp_synth_object {
     char name[128];       /* model name in the world, e.g. "dining_chair_2" */
     char source[256];     /* model it was included from ("dining_chair"), else its own name */
     char class_name[128]; /* "dining chair" */
-    int is_structure;     /* wall*, floor*, ground*, ceiling*: labelled, not an object */
+    int is_structure;     /* walls, floors, ceilings, ground (sp_synth_is_structure): labelled,
+                           * listed under "structure" in ground_truth.json, not an object */
     float pose[16];       /* model frame in world, row-major 4x4 */
     float aabb_min[3], aabb_max[3]; /* world-frame box of its visual triangles */
     size_t n_triangles;
@@ -132,8 +133,11 @@ void sp_world_free(sp_world *w);
  * lower case: "aws_robomaker_retail_BookshelfB_01" -> "bookshelf", "dining_chair_2" -> "dining
  * chair". */
 void sp_synth_class_name(const char *model_name, char *out, size_t cap);
-/* 1 when a top-level model with this name (or class) is structure: wall*, floor*, ground*,
- * ceiling*. */
+/* 1 when a top-level model is structure (walls, floors, ceilings, the ground): the last word of
+ * its class, or of the class read from its instance name, is wall(s), floor(s), flooring,
+ * ceiling(s) or ground, or the class ends in "ground plane" / "floor plane". Words before the
+ * last only modify it: "shop wall" is structure, "floor lamp", "wall clock" and "ceiling fan" are
+ * objects. */
 int sp_synth_is_structure(const char *model_name, const char *class_name);
 
 /* ---- rendering ------------------------------------------------------------------------------- */

@@ -79,6 +79,26 @@ static void test_class_names(void)
     CHECK(!sp_synth_is_structure("standing_lamp", "standing lamp"));
     CHECK(!sp_synth_is_structure("lamp_1", "floor lamp"));
     CHECK(!sp_synth_is_structure("window_1", "window"));
+    /* Modifiers are not heads: the furniture named after where it stands or hangs is an object
+     * (each with the class name the loader gives it, so the model name is what decides). */
+    const char *objects[] = {"floor_lamp", "FloorLamp_01", "wall_clock", "ceiling_fan", "WallShelf_2",
+                             "groundskeeper_cart", "ceiling_light_3", "floor_mat", "wall_art_1", "aws_robomaker_retail_Spotlight_01"};
+    const char *structure[] = {"floor", "Floor_3", "walls", "Wall_12", "kitchen_floor", "ceiling", "ceilings",
+                               "ground_plane", "ground", "aws_robomaker_retail_RetailShopCeiling_01",
+                               "RetailShopWall_01_001", "floor_plane", "WoodFloor"};
+    for (size_t i = 0; i < sizeof objects / sizeof *objects; i++) {
+        char cls[128];
+        sp_synth_class_name(objects[i], cls, sizeof cls);
+        CHECK_MSG(!sp_synth_is_structure(objects[i], cls), "%s ('%s') classed as structure", objects[i], cls);
+    }
+    for (size_t i = 0; i < sizeof structure / sizeof *structure; i++) {
+        char cls[128];
+        sp_synth_class_name(structure[i], cls, sizeof cls);
+        CHECK_MSG(sp_synth_is_structure(structure[i], cls), "%s ('%s') not classed as structure", structure[i], cls);
+    }
+    /* an include named after its place keeps its model's class: a lamp included as floor_lamp_2 */
+    CHECK(!sp_synth_is_structure("floor_lamp_2", "lamp"));
+    CHECK(sp_synth_is_structure("north_wall", "box"));
 }
 
 static const char *crate_sdf =
