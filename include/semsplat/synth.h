@@ -110,12 +110,15 @@ typedef struct sp_world {
     float ambient[3];       /* <scene><ambient> */
     float background[3];    /* <scene><background> */
     float exposure;         /* scales lighting so a typical surface is well exposed (set at load) */
-    size_t n_missing;       /* assets skipped under skip_missing */
+    size_t n_missing;       /* models and meshes skipped under skip_missing */
+    size_t n_missing_textures; /* textures not found: their meshes are drawn in the material
+                                * colour with a warning, as Gazebo does (never an error) */
 } sp_world;
 
 typedef struct sp_synth_load_opts {
     const char *model_path; /* extra model dirs, ':'-separated (may be NULL) */
-    int skip_missing;       /* warn and continue on a missing model, mesh or texture */
+    int skip_missing;       /* warn and continue on a missing model or mesh (a missing texture
+                             * is always a warning) */
     int no_env;             /* ignore GAZEBO_MODEL_PATH / GZ_SIM_RESOURCE_PATH (tests) */
     const sp_log *log;
 } sp_synth_load_opts;
@@ -123,7 +126,7 @@ typedef struct sp_synth_load_opts {
 /* Loads an SDF world (or a single-model .sdf). The model path is <dir>/<stem>_models (the world's
  * own models, e.g. house_models beside house.world), opts->model_path, GAZEBO_MODEL_PATH,
  * GZ_SIM_RESOURCE_PATH and IGN_GAZEBO_RESOURCE_PATH, then <dir>/models and <dir>/../models. Errors name the file and line (malformed
- * XML, bad numbers), the missing model:// and the dirs searched, or the missing mesh/texture. */
+ * XML, bad numbers), the missing model:// and the dirs searched, or the missing mesh. */
 int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_world *w,
                         sp_error *err);
 void sp_world_free(sp_world *w);
