@@ -65,8 +65,9 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
  * 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err);
-/* Per-pixel raw cosine / relevancy of a rendered feature image where alpha > 0.5 (else -1 / 0.5). */
-void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
-                      const float *alpha, size_t npix, float *raw, float *rel);
+/* Per-pixel raw cosine / relevancy of a rendered feature image (feat [npix][dim], alpha [npix])
+ * where alpha > 0.5 (else -1 / 0.5). SP_E_NOMEM when the normalised copy cannot be made. */
+int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                     const float *alpha, size_t npix, float *raw, float *rel, sp_error *err);
 
 #endif
