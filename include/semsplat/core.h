@@ -216,6 +216,17 @@ typedef struct sp_splat {
     float *features;
 } sp_splat;
 
+/* The largest semantic feature dimension (feat_dim, the scene PCA's dim) any stage accepts:
+ * the query engine's scorer keeps a text's projections as SP_FEATURE_DIM_MAX floats (in GPU
+ * constant memory on CUDA) and a Gram matrix of its square. `features` refuses a larger --dim at
+ * once, feature folders and model folders that claim more are refused when opened, and lift
+ * refuses it, so no stage makes a model that no query can open. */
+#define SP_FEATURE_DIM_MAX 64
+
+/* 0 when 1 <= dim <= SP_FEATURE_DIM_MAX, else `code` with a message "<what>: feature dim D is
+ * outside 1..64 (the limit of 64 ...)" naming the value and the limit. */
+int sp_feature_dim_check(int dim, int code, const char *what, sp_error *err);
+
 /* Allocates n Gaussians (contents zeroed, quats set to identity). */
 int sp_splat_alloc(sp_splat *s, size_t n, int sh_degree, int feat_dim, sp_error *err);
 void sp_splat_free(sp_splat *s);

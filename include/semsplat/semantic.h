@@ -1,6 +1,7 @@
 /* semsplat semantic: the language-embedded splat and the query engine.
  *
- * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64) that
+ * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64 in
+ * practice, at most SP_FEATURE_DIM_MAX = 64 in core.h) that
  * decodes to the full text space as  mean + basis^T f  (basis rows orthonormal). It is made by
  *   - lifting: one pass over the training views; each Gaussian's feature is the compositing-weight
  *     average of the target features of the pixels it contributes to,
@@ -58,15 +59,16 @@ typedef struct sp_sem_scorer {
     int dim;
     int n_neg;
     float temperature;
-    float q0, qb[64];                                   /* the query */
-    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][64]; /* the negatives */
-    float m2, mb[64];
-    float G[64 * 64];
+    float q0, qb[SP_FEATURE_DIM_MAX];                   /* the query */
+    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][SP_FEATURE_DIM_MAX]; /* the negatives */
+    float m2, mb[SP_FEATURE_DIM_MAX];
+    float G[SP_FEATURE_DIM_MAX * SP_FEATURE_DIM_MAX];
     int orthonormal; /* G == I within 1e-4: |decode(f)|^2 = m2 + 2 mb.f + |f|^2 */
 } sp_sem_scorer;
 
 /* Prepares a scorer. query [full_dim] and negatives [n_neg][full_dim] need not be unit length.
- * Fails with SP_E_ARG when dim > 64, n_neg > SP_SEM_MAX_NEGATIVES or a vector is zero. */
+ * Fails with SP_E_ARG when dim > SP_FEATURE_DIM_MAX, n_neg > SP_SEM_MAX_NEGATIVES or a vector is
+ * zero. */
 int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *query,
                        const float *negatives, int n_neg, float temperature, sp_error *err);
 /* Raw cosine and calibrated relevancy of n features [n][dim] (either output may be NULL).

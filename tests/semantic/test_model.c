@@ -250,9 +250,69 @@ static void test_clip_text_tower_sidecar(void)
     sp_device_free(dev);
 }
 
+static int lift_zero(void *user, size_t view, float *target, uint8_t *mask, sp_error *err)
+{
+    (void)user, (void)view, (void)mask, (void)err, (void)target;
+    return 0;
+}
+
+/* One limit on the feature dimension for every stage (64, what the query engine scores):
+ * lifting refuses more, and a model folder with more is refused by the engine with a message
+ * that names the value and the limit (it used to say "got ndim 2"). */
+static void test_feature_dim_limit(void)
+{
+    const char *dir = test_tmpdir("semantic_dim_limit");
+    enum { D = 65, F = 512, NG = 50 };
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    sp_splat s;
+    test_rng rng = {5};
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    CHECK_OK(sp_splat_alloc(&s, NG, 0, 0, &err), &err);
+    for (size_t i = 0; i < NG * 3; i++) s.means[i] = (float)test_range(&rng, -1, 1);
+    for (size_t i = 0; i < NG * 3; i++) s.log_scales[i] = -3.0f;
+    sp_camera cam;
+    sc_make_cams(&cam, 1, 32, 24);
+    CHECK_FAILS(sp_semantic_lift(r, &s, D, &cam, 1, lift_zero, NULL, NULL, NULL, NULL, &err), SP_E_ARG, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL, "message '%s' does not name the limit", err.msg);
+    sp_splat_free(&s);
+    /* a model folder made elsewhere with 65-dim features */
+    CHECK_OK(sp_splat_alloc(&s, NG, 0, D, &err), &err);
+    for (size_t i = 0; i < NG * 3; i++) s.means[i] = (float)test_range(&rng, -1, 1);
+    char path[1400];
+    snprintf(path, sizeof path, "%s/splat.ply", dir);
+    CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
+    static float mean[F], basis[D * F];
+    for (int k = 0; k < D; k++) basis[k * F + k] = 1.0f;
+    size_t s1[1] = {F}, s2[2] = {D, F};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, &err), &err);
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, &err), &err);
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", "labels");
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", "hash");
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    CHECK_OK(sp_json_write_file(path, o, &err), &err);
+    cJSON_Delete(o);
+    sp_query_engine *e = NULL;
+    CHECK_FAILS(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), SP_E_FORMAT, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL && !strstr(err.msg, "ndim"),
+              "message '%s' does not name the value and the limit", err.msg);
+    CHECK(e == NULL);
+    sp_splat_free(&s);
+    sp_raster_free(r);
+    sp_device_free(dev);
+}
+
 int main(void)
 {
     RUN(test_lift_model_folder_then_query);
     RUN(test_clip_text_tower_sidecar);
+    RUN(test_feature_dim_limit);
     return TEST_EXIT();
 }
