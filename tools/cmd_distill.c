@@ -135,7 +135,7 @@ int cmd_distill(int argc, char **argv)
         printf("distill  psnr_before  %.3f  dB  (%s)\n", before.psnr, before.eval_on_train ? "train views" : "held-out");
         printf("distill  psnr_after   %.3f  dB  (steps %ld, lambda %g%s)\n", after.psnr, steps, lambda,
                freeze ? ", geometry frozen" : "");
-        printf("distill  feature_mse  %.5f\n", after.feature_mse);
+        printf("distill  feature_mse  %.5f  (%s)\n", after.feature_mse, after.eval_on_train ? "train views" : "held-out");
         printf("distill  seconds      %.1f  s  (%s)\n", after.seconds, sp_device_name(dev));
     }
     sp_splat_free(&s);
