@@ -215,6 +215,61 @@ void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int
  * 4x4 row-major transform [sR t; 0 1]. Fails on degenerate (collinear) input. */
 int sp_umeyama(const double *src, const double *dst, size_t n, int with_scale, double M[16],
                double *rms, sp_error *err);
+/* Matches between the COLMAP frame and the world (semsplat align --matches): src [n][3] a
+ * COLMAP-frame point (a camera centre for image lines), dst [n][3] its world position, name [n]
+ * the image ("" for a point match). Owns its arrays (sp_align_matches_free). */
+typedef struct sp_align_matches {
+    size_t n;
+    double *src, *dst;
+    char (*name)[256];
+} sp_align_matches;
+
+/* Reads lines 'IMAGE_NAME x y z' (that image's camera centre in colmap_dir's model -> the world
+ * point) or 'x y z X Y Z'; '#' comments. colmap_dir may be NULL when no line names an image.
+ * Errors name the file and line (bad numbers, an image the model does not have). */
+int sp_align_read_matches(const char *path, const char *colmap_dir, sp_align_matches *out,
+                          sp_error *err);
+void sp_align_matches_free(sp_align_matches *m);
+
+/* The robust frame fit refuses unless at least this many matches, and at least half of them,
+ * agree: 3 matches fix a similarity, the 4th is the first that can contradict it; least median
+ * of squares (the fit most matches agree with) has a breakdown point of one half, so with fewer
+ * than half agreeing it cannot tell the right fit from one made by the wrong matches. */
+#define SP_ALIGN_MIN_INLIERS 4
+/* ... and, with the automatic bound, unless that bound is at most this fraction of the spread of
+ * the matched world points (RMS distance from their mean): when more than half the matches are
+ * wrong the median residual is a wrong match's and the bound grows with it; a frame whose
+ * errors are a tenth of the scene is no frame. An explicit bound skips this test. */
+#define SP_ALIGN_MAX_BOUND_FRACTION 0.1
+
+/* A robust similarity fit. Owns inlier and residual (sp_align_fit_free). */
+typedef struct sp_align_fit {
+    double M[16];           /* world_from_colmap, row-major [sR t; 0 1], refitted on the inliers */
+    size_t n, n_inliers;
+    uint8_t *inlier;        /* [n] 1 = agrees with the fit */
+    double *residual;       /* [n] |M src - dst| in world units */
+    double rms_inliers;     /* RMS residual of the inliers */
+    double rms_all;         /* RMS of plain least squares over all matches (for comparison) */
+    double median_residual; /* the least median (of the best minimal-sample fit) */
+    double threshold;       /* the inlier bound used (world units) */
+} sp_align_fit;
+
+/* Least median of squares over Umeyama fits of minimal samples (all triples up to 20000, else
+ * 20000 random ones, deterministic), then inliers = residual <= threshold and a refit on them
+ * (three rounds). threshold <= 0: automatic, 4.03 sigma (the 99.9% bound of the length of an
+ * isotropic 3D Gaussian error) with sigma from the median residual (median / 1.538, times
+ * Rousseeuw's 1 + 5/(n-3)), then from the inliers' RMS. Fails with SP_E_ARG below SP_ALIGN_MIN_INLIERS
+ * matches or when all are collinear, and with SP_E_FORMAT (fit filled, so the outliers can be
+ * reported) when fewer than max(SP_ALIGN_MIN_INLIERS, ceil(n/2)) agree or the automatic bound
+ * exceeds SP_ALIGN_MAX_BOUND_FRACTION of the world points' spread. */
+int sp_align_fit_robust(const double *src, const double *dst, size_t n, int with_scale,
+                        double threshold, sp_align_fit *fit, sp_error *err);
+void sp_align_fit_free(sp_align_fit *f);
+/* The fit as JSON text (malloc'd, free()): method, with_scale, world_from_colmap (4x4), matches,
+ * inliers, rms_inliers, rms_all_least_squares, median_residual, inlier_threshold, outliers
+ * [{image (or match index), residual}]. m may be NULL (outliers by index). */
+char *sp_align_fit_json(const sp_align_fit *fit, const sp_align_matches *m, int with_scale);
+
 /* Applies a similarity [sR t] to a splat: means, quats, log_scales and SH (rotated per band). */
 int sp_splat_transform(sp_splat *s, const double M[16], sp_error *err);
 /* RANSAC floor plane on the lowest Gaussians (along the cameras' mean "up" = -y_cam) and a
