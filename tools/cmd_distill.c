@@ -101,6 +101,14 @@ int cmd_distill(int argc, char **argv)
     int rc = sp_device_create(&dev, kind, (int)threads, &err);
     if (!rc) rc = sp_features_open(features, &f, &err);
     if (!rc) rc = sp_train_data_load(&d, colmap, images, (int)downscale, 8, &err);
+    /* The trainer undistorts the images, not the feature maps: refuse rather than distil maps
+     * whose pixels sit where the lens put them (lift resamples them: use lift). */
+    if (!rc && d.n_undistorted)
+        rc = sp_error_set(&err, SP_E_UNSUPPORTED,
+                          "%s: %zu of %zu images have a distorted camera; distill does not resample "
+                          "feature maps through the lens yet: use `semsplat lift`, or run `colmap "
+                          "image_undistorter` and extract features from its output",
+                          colmap, d.n_undistorted, d.n_views);
     snprintf(path, sizeof path, "%s/splat.ply", model);
     if (!rc) rc = sp_ply_read_splat(path, &s, &err);
     sp_train_result before = {0}, after = {0};

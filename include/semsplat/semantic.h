@@ -106,7 +106,9 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
                            sp_error *err);
 
 /* The same in memory: lifts the feature folder's maps (matched to the COLMAP images by name,
- * rendered at the maps' resolution) into s->features. */
+ * rendered at the maps' resolution) into s->features. Maps of images with a distorted camera
+ * (SIMPLE_RADIAL, RADIAL, OPENCV) are resampled into the pinhole camera the renderer uses
+ * (sp_camera_remap_to_pinhole), pixels the image did not see left out. */
 int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
                               sp_device *dev, const sp_log *log, sp_error *err);
 
@@ -157,7 +159,9 @@ typedef struct sp_query_result {
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];
     int width, height;           /* of relevancy_image */
-    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made */
+    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made;
+                                  * in the pixels of image view_name: a distorted camera's
+                                  * pinhole render is resampled through its lens */
     float *relevancy;            /* [height][width] calibrated relevancy of that view, or NULL */
     int n_instances;
     sp_query_instance *instances; /* best first */
@@ -193,6 +197,7 @@ sp_query_opts *sp_query_engine_opts(sp_query_engine *e); /* change between queri
 int sp_query_engine_full_dim(const sp_query_engine *e);
 size_t sp_query_engine_n_cameras(const sp_query_engine *e);
 const sp_splat *sp_query_engine_splat(const sp_query_engine *e);
+/* Camera i as COLMAP has it, lens included (renders use its pinhole part). */
 const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
 
 /* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),

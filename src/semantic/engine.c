@@ -158,8 +158,9 @@ static int load_cameras(sp_query_engine *e, const char *colmap_dir, sp_error *er
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for cameras");
     }
     for (size_t i = 0; i < m.n_images; i++) {
+        /* The lens is kept: renders use the pinhole part (the renderer ignores distortion) and
+         * heatmaps are resampled into the photo's own pixels (sem_heatmap). */
         if ((rc = sp_colmap_image_camera(&m, i, &e->cams[e->n_cams], err))) break;
-        e->cams[e->n_cams].distortion = SP_DIST_NONE; /* heatmaps are pinhole renders */
         snprintf(e->cam_names[e->n_cams], 256, "%s", m.images[i].name ? m.images[i].name : "");
         e->n_cams++;
     }

@@ -20,64 +20,6 @@ static int write_capture(const char *dir, const sp_camera *cams, sp_error *err)
     return sc_write_colmap(path, cams, N, W, H, "%05d.png", err);
 }
 
-/* Label maps rendered from the scene's true features at half resolution, as f16 .npy. */
-static int write_features(const char *dir, const sp_splat *s, const sp_sem_pca *pca, const sp_camera *cams,
-                          sp_error *err)
-{
-    char path[1400];
-    snprintf(path, sizeof path, "%s/maps", dir);
-    int rc = sp_mkdirs(path, err);
-    if (rc) return rc;
-    sp_device *dev = NULL;
-    sp_raster *r = NULL;
-    float *f = malloc(sizeof(float) * MW * MH * SC_DIM), *a = malloc(sizeof(float) * MW * MH);
-    uint16_t *h = malloc(sizeof(uint16_t) * MW * MH * SC_DIM);
-    cJSON *o = cJSON_CreateObject(), *arr = cJSON_AddArrayToObject(o, "images");
-    if ((rc = sp_device_create(&dev, SP_DEVICE_CPU, 2, err)) || (rc = sp_raster_create(&r, dev, err))) goto done;
-    for (int v = 0; v < N && !rc; v++) {
-        sp_camera c = cams[v];
-        sp_camera_downscale(&c, 2);
-        sp_render_request req = {NULL, f, NULL, a, NULL};
-        if ((rc = sp_render_splat(r, s, &c, &req, err))) break;
-        for (int p = 0; p < MW * MH; p++)
-            for (int k = 0; k < SC_DIM; k++)
-                h[p * SC_DIM + k] = sp_float_to_half(a[p] > 1e-3f ? f[p * SC_DIM + k] / a[p] : 0.0f);
-        size_t shape[3] = {MH, MW, SC_DIM};
-        snprintf(path, sizeof path, "%s/maps/%05d.npy", dir, v);
-        if ((rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err))) break;
-        cJSON *it = cJSON_CreateObject();
-        snprintf(path, sizeof path, "%05d.png", v);
-        cJSON_AddStringToObject(it, "name", path);
-        snprintf(path, sizeof path, "maps/%05d.npy", v);
-        cJSON_AddStringToObject(it, "map", path);
-        cJSON_AddNumberToObject(it, "height", MH);
-        cJSON_AddNumberToObject(it, "width", MW);
-        cJSON_AddNumberToObject(it, "image_height", H);
-        cJSON_AddNumberToObject(it, "image_width", W);
-        cJSON_AddItemToArray(arr, it);
-    }
-    if (rc) goto done;
-    cJSON_AddStringToObject(o, "format", "semsplat-features-1");
-    cJSON_AddStringToObject(o, "source", "labels");
-    cJSON_AddNumberToObject(o, "dim", SC_DIM);
-    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
-    cJSON_AddNullToObject(o, "model");
-    cJSON_AddStringToObject(o, "label_embedding", "hash");
-    snprintf(path, sizeof path, "%s/features.json", dir);
-    if ((rc = sp_json_write_file(path, o, err))) goto done;
-    size_t s1[1] = {SC_FULL}, s2[2] = {SC_DIM, SC_FULL};
-    snprintf(path, sizeof path, "%s/pca_mean.npy", dir);
-    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, pca->mean, err))) goto done;
-    snprintf(path, sizeof path, "%s/pca_basis.npy", dir);
-    rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, pca->basis, err);
-done:
-    cJSON_Delete(o);
-    sp_raster_free(r);
-    sp_device_free(dev);
-    free(f), free(a), free(h);
-    return rc;
-}
-
 static void test_lift_model_folder_then_query(void)
 {
     const char *root = test_tmpdir("semantic_model");
@@ -95,7 +37,7 @@ static void test_lift_model_folder_then_query(void)
     sc_make_cams(cams, N, W, H);
     sp_error err = {0};
     CHECK_OK(write_capture(cap, cams, &err), &err);
-    CHECK_OK(write_features(feat, &s, &pca, cams, &err), &err);
+    CHECK_OK(sc_write_features(feat, &s, &pca, cams, N, NULL, &err), &err);
     /* the trained model: geometry only, and train.json naming the capture */
     sp_splat geo;
     CHECK_OK(sp_splat_copy(&geo, &s, &err), &err);
