@@ -19,8 +19,9 @@
  *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
  *         no preference, used for thresholds and heatmaps.
  * Localization: 3D-native (relevant Gaussians -> opacity-weighted voxel clustering of centres into
- * instances) or multi-view (views that see the relevant Gaussians -> rendered features and depth
- * -> relevant pixels back-projected -> the same clustering). Things that are not there give low
+ * instances, 26-connected voxels of voxel_m) or multi-view (views that see the relevant Gaussians
+ * unoccluded -> rendered features and expected depth at 1/render_downscale -> relevant pixels
+ * with alpha > 0.9, eroded by one pixel, back-projected -> the same clustering). Things that are not there give low
  * confidence, valid = 0 and no position (NaN), never a random point.
  *
  * Ownership: sp_query_engine owns the splat, PCA, cameras and its raster; results own their
@@ -126,13 +127,17 @@ typedef struct sp_query_opts {
     char negatives[256];   /* comma-separated canonical negatives ("" = SP_SEM_DEFAULT_NEGATIVES) */
     float temperature;     /* relevancy temperature (SP_SEM_DEFAULT_TEMPERATURE) */
     float min_confidence;  /* below this raw cosine the query is "not found" (0.2) */
-    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence (0.6) */
+    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence, and >= 0.1
+                            * (0.6) */
     float min_relevancy;   /* ... and calibrated relevancy >= this (0.55) */
     float min_opacity;     /* Gaussians fainter than this are ignored (0.1) */
     float voxel_m;         /* clustering voxel edge in world units (0.12) */
-    float min_instance_fraction; /* instances lighter than this share of the best are dropped (0.1) */
+    float min_instance_fraction; /* instances lighter than this share of the best are dropped
+                                  * (0.1; multi-view uses a third of it: an instance seen from
+                                  * few views sums fewer pixels) */
     int n_views;           /* multi-view: views rendered and back-projected, at least (4; up to
-                            * twice as many while under 90% of the relevant set is seen) */
+                            * three times as many while under 97% of the relevant set, by
+                            * opacity, is seen) */
     int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
     int heatmap;           /* render relevancy_image (1) */
     int heatmap_view;      /* -1 = best view, else an index into the cameras */
@@ -142,9 +147,10 @@ sp_query_opts sp_query_opts_default(void);
 
 typedef struct sp_query_instance {
     float position[3];   /* world frame */
-    float extent_min[3]; /* robust (2%..98%) bounds of the instance's points */
-    float extent_max[3];
-    float score;         /* summed weight of its points (opacity * relevancy excess) */
+    float extent_min[3]; /* robust bounds: the 5% and 95% weighted quantiles of its points per */
+    float extent_max[3]; /* axis; position is their middle */
+    float score;         /* summed weight of its points: 3D, opacity * (relevancy - 0.5);
+                          * multi-view, (relevancy - 0.5) * alpha * the pixel's area at its depth */
     float confidence;    /* largest raw cosine inside it */
     int n_points;        /* Gaussians (3D) or pixels (multi-view) */
 } sp_query_instance;
@@ -154,7 +160,8 @@ typedef struct sp_query_result {
     int method;          /* sp_query_method used */
     int valid;           /* 1 when confidence >= min_confidence and an instance was found */
     float position[3];   /* best instance (world frame); NaN when !valid */
-    float confidence;    /* largest raw cosine (robust max over Gaussians) */
+    float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
+                          * opacity >= min_opacity */
     float relevancy_max; /* largest calibrated relevancy */
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];

@@ -457,7 +457,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
      * around the house) all get views; near-duplicate directions (< 25 degrees) count half. */
     int got = 0;
     while (got < k) {
-        if (got >= k_min) { /* past the minimum, stop once 90% of the relevant set is seen */
+        if (got >= k_min) { /* past the minimum, stop once 97% of the relevant set is seen */
             double seen = 0;
             for (size_t j = 0; j < n_smp; j++) seen += covered[j] ? wsmp[j] : 0;
             if (seen >= 0.97 * tot) break;

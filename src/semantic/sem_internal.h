@@ -53,7 +53,8 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
                            sp_query_result *res, sp_error *err);
 /* Chooses cameras that see the relevant set (mask [n], or the thresholds when mask is NULL)
  * unoccluded (occupancy-grid test) and well framed, greedily covering what earlier picks did not
- * see: at least k_min views (when they add anything), then more up to k until 90% is covered.
+ * see: at least k_min views (when they add anything), then more up to k until 97% of the
+ * relevant set (weighted by opacity) is covered.
  * Writes indices best first; returns the count or a negative error. */
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                    const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err);
