@@ -5,22 +5,11 @@
 #include "test.h"
 
 #include <cjson/cJSON.h>
-#include <sys/wait.h>
 
 #include "semantic/matches.h"
 #include "semsplat/io.h"
 
-static int run_cli(const char *args, char *out, size_t cap)
-{
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
-    FILE *p = popen(cmd, "r");
-    if (!p) return -1;
-    size_t n = fread(out, 1, cap - 1, p);
-    out[n] = 0;
-    int st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+static int run_cli(const char *args, char *out, size_t cap) { return test_run_cli(args, out, cap); }
 
 enum { N = 49, NB = 5 };
 

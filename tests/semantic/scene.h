@@ -144,6 +144,31 @@ static inline void sc_make_cams(sp_camera *cams, int n, int w, int h)
     }
 }
 
+/* The query engine on the tiny scene with a ring of n_cams w x h cameras on a new CPU device of
+ * n_threads (emb may be NULL). Exits on failure: this is a test's setup. */
+static inline void sc_make_engine(int n_cams, int w, int h, int n_threads, float emb[SC_CLASSES][SC_FULL],
+                                  sp_device **dev, sp_query_engine **eng)
+{
+    static float own[SC_CLASSES][SC_FULL];
+    sp_sem_pca pca;
+    sc_make_pca(&pca, emb ? emb : own);
+    sp_splat s;
+    int *cls;
+    sc_make_splat(&s, &cls, &pca, emb ? emb : own);
+    sp_camera *cams = malloc(sizeof(sp_camera) * (size_t)n_cams);
+    sc_make_cams(cams, n_cams, w, h);
+    sp_error err = {0};
+    if (sp_device_create(dev, SP_DEVICE_CPU, n_threads, &err) ||
+        sp_query_engine_create(eng, &s, &pca, cams, (size_t)n_cams, 1, NULL, *dev, NULL, &err)) {
+        fprintf(stderr, "setup: %s\n", err.msg);
+        exit(1);
+    }
+    free(cams);
+    sp_splat_free(&s);
+    sp_sem_pca_free(&pca);
+    free(cls);
+}
+
 /* Writes the cameras' poses as a binary COLMAP model into model_dir with the one camera `cam`
  * (image i named by name_fmt, e.g. "%05d.png"). At most 64 cameras. */
 static inline int sc_write_colmap_camera(const char *model_dir, const sp_colmap_camera *cam_in,

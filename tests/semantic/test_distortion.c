@@ -185,13 +185,10 @@ static void test_distill_refuses_a_lens(void)
         snprintf(path, sizeof path, "%s/capture/images/%05d.png", root, v);
         CHECK_OK(sp_write_png_f32(path, grey, W, H, 3, &err), &err);
     }
-    snprintf(cmd, sizeof cmd, "'%s/semsplat' distill --model %s --features %s/features --colmap %s/capture "
-             "--steps 1 --device cpu --quiet 2>&1", SP_BUILD_DIR, model, root, root);
-    FILE *p = popen(cmd, "r");
-    char out[4096] = "";
-    size_t n = p ? fread(out, 1, sizeof out - 1, p) : 0;
-    out[n] = 0;
-    int st = p ? pclose(p) : -1;
+    snprintf(cmd, sizeof cmd, "distill --model %s --features %s/features --colmap %s/capture --steps 1 "
+             "--device cpu --quiet", model, root, root);
+    char out[4096];
+    int st = test_run_cli(cmd, out, sizeof out);
     CHECK_MSG(st != 0 && strstr(out, "12 of 12 images have a distorted camera"), "exit %d: %s", st, out);
 }
 

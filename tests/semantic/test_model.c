@@ -20,6 +20,30 @@ static int write_capture(const char *dir, const sp_camera *cams, sp_error *err)
     return sc_write_colmap(path, cams, N, W, H, "%05d.png", err);
 }
 
+/* A model folder's semantic part as made elsewhere: DIR/semantic.json naming the PCA files,
+ * semantic_pca_mean.npy [F] and semantic_pca_basis.npy [D][F]; model NULL = label embedding. */
+static int write_sidecar(const char *dir, int D, int F, const float *mean, const float *basis,
+                         const char *model, sp_error *err)
+{
+    char path[1400];
+    size_t s1[1] = {(size_t)F}, s2[2] = {(size_t)D, (size_t)F};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    int rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, err);
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    if (!rc) rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, err);
+    if (rc) return rc;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", model ? "clip" : "labels");
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", model ? "clip" : "hash");
+    if (model) cJSON_AddStringToObject(o, "model", model);
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    rc = sp_json_write_file(path, o, err);
+    cJSON_Delete(o);
+    return rc;
+}
+
 static void test_lift_model_folder_then_query(void)
 {
     const char *root = test_tmpdir("semantic_model");
@@ -136,20 +160,7 @@ static void test_clip_text_tower_sidecar(void)
     for (size_t i = 0; i < NG * D; i++) s.features[i] = (float)test_range(&r, -1, 1);
     snprintf(path, sizeof path, "%s/splat.ply", dir);
     CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
-    size_t s1[1] = {F}, s2[2] = {D, F};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, &err), &err);
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, &err), &err);
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "source", "clip");
-    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
-    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
-    cJSON_AddStringToObject(o, "label_embedding", "clip");
-    cJSON_AddStringToObject(o, "model", model);
-    snprintf(path, sizeof path, "%s/semantic.json", dir);
-    CHECK_OK(sp_json_write_file(path, o, &err), &err);
-    cJSON_Delete(o);
+    CHECK_OK(write_sidecar(dir, D, F, mean, basis, model, &err), &err);
     sp_device *dev = NULL;
     sp_query_engine *e = NULL;
     CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
@@ -178,11 +189,7 @@ static void test_clip_text_tower_sidecar(void)
     float mean2[64] = {0}, basis2[D * 64];
     memset(basis2, 0, sizeof basis2);
     for (int k = 0; k < D; k++) basis2[k * 64 + k] = 1.0f;
-    size_t t1[1] = {64}, t2[2] = {D, 64};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, t1, mean2, &err), &err);
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, t2, basis2, &err), &err);
+    CHECK_OK(write_sidecar(dir, D, 64, mean2, basis2, model, &err), &err);
     CHECK_OK(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), &err);
     if (e) {
         sp_query_result res;
@@ -228,19 +235,7 @@ static void test_feature_dim_limit(void)
     CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
     static float mean[F], basis[D * F];
     for (int k = 0; k < D; k++) basis[k * F + k] = 1.0f;
-    size_t s1[1] = {F}, s2[2] = {D, F};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, &err), &err);
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, &err), &err);
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "source", "labels");
-    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
-    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
-    cJSON_AddStringToObject(o, "label_embedding", "hash");
-    snprintf(path, sizeof path, "%s/semantic.json", dir);
-    CHECK_OK(sp_json_write_file(path, o, &err), &err);
-    cJSON_Delete(o);
+    CHECK_OK(write_sidecar(dir, D, F, mean, basis, NULL, &err), &err);
     sp_query_engine *e = NULL;
     CHECK_FAILS(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), SP_E_FORMAT, &err, "65");
     CHECK_MSG(strstr(err.msg, "limit of 64") != NULL && !strstr(err.msg, "ndim"),

@@ -74,27 +74,8 @@ enum { NCAM = 8, CW = 64, CH = 48 };
 static sp_device *g_dev;
 static sp_query_engine *g_eng;
 
-static void setup(void)
-{
-    static float emb[SC_CLASSES][SC_FULL];
-    sp_sem_pca pca;
-    sc_make_pca(&pca, emb);
-    sp_splat s;
-    int *cls;
-    sc_make_splat(&s, &cls, &pca, emb);
-    sp_camera cams[NCAM];
-    sc_make_cams(cams, NCAM, CW, CH);
-    sp_error err = {0};
-    /* one thread: the allocations happen in the same order every run */
-    if (sp_device_create(&g_dev, SP_DEVICE_CPU, 1, &err) ||
-        sp_query_engine_create(&g_eng, &s, &pca, cams, NCAM, 1, NULL, g_dev, NULL, &err)) {
-        fprintf(stderr, "setup: %s\n", err.msg);
-        exit(1);
-    }
-    sp_splat_free(&s);
-    sp_sem_pca_free(&pca);
-    free(cls);
-}
+/* one thread: the allocations happen in the same order every run */
+static void setup(void) { sc_make_engine(NCAM, CW, CH, 1, NULL, &g_dev, &g_eng); }
 
 static int same_result(const sp_query_result *a, const sp_query_result *b)
 {

@@ -350,6 +350,19 @@ static int rgb_target(void *user, size_t view, int w, int h, int F, float *dst, 
     return 0;
 }
 
+/* Three features trained with geometry frozen (SH degree 0, lr 0.02). */
+static sp_train_options frozen_feature_options(int steps, sp_feature_target_fn target, void *user)
+{
+    sp_train_options o = sp_train_options_default(steps);
+    o.sh_degree = 0;
+    o.feature_dim = 3;
+    o.freeze_geometry = 1;
+    o.get_feature_target = target;
+    o.feature_user = user;
+    o.lr_features = 0.02f;
+    return o;
+}
+
 static void test_feature_pass_frozen_geometry(void)
 {
     const char *dir = test_tmpdir("train_feat");
@@ -364,13 +377,7 @@ static void test_feature_pass_frozen_geometry(void)
     sp_splat s, before;
     CHECK_OK(sp_splat_copy(&s, &g_gt, &err), &err); /* the true geometry */
     CHECK_OK(sp_splat_copy(&before, &g_gt, &err), &err);
-    sp_train_options o = sp_train_options_default(300);
-    o.sh_degree = 0;
-    o.feature_dim = 3;
-    o.freeze_geometry = 1;
-    o.get_feature_target = rgb_target;
-    o.feature_user = &d;
-    o.lr_features = 0.02f;
+    sp_train_options o = frozen_feature_options(300, rgb_target, &d);
     sp_train_result res;
     CHECK_OK(sp_train_run(dev, &d, &o, &s, &res, NULL, &err), &err);
     CHECK(s.feat_dim == 3 && s.n == g_gt.n);
@@ -418,13 +425,7 @@ static void test_feature_mse_is_held_out(void)
     CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
     sp_splat s;
     CHECK_OK(sp_splat_copy(&s, &g_gt, &err), &err);
-    sp_train_options o = sp_train_options_default(150);
-    o.sh_degree = 0;
-    o.feature_dim = 3;
-    o.freeze_geometry = 1;
-    o.get_feature_target = offset_target;
-    o.feature_user = &d;
-    o.lr_features = 0.02f;
+    sp_train_options o = frozen_feature_options(150, offset_target, &d);
     sp_train_result res;
     CHECK_OK(sp_train_run(dev, &d, &o, &s, &res, NULL, &err), &err);
     /* the reference: render each held-out view's features, compare in double */
