@@ -1,0 +1,1 @@
+# ROS tests that need more than one executable (see tests/ros/)
