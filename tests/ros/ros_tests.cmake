@@ -33,3 +33,20 @@ message(STATUS "semsplat: Fast DDS test peer ${fastrtps_FOUND}")
 if(TARGET ros_test_fastdds)
   target_compile_definitions(ros_test_fastdds PRIVATE SP_FASTDDS_PEER="${SP_FASTDDS_PEER_PATH}")
 endif()
+
+# Tests that use Cyclone's API directly (a bare "tap" participant): only with Cyclone.
+if(SP_HAVE_CYCLONEDDS)
+  file(GLOB SP_ROS_DDS_TESTS CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/tests/ros/dds/test_*.c)
+  foreach(src ${SP_ROS_DDS_TESTS})
+    get_filename_component(name ${src} NAME_WE)
+    add_executable(ros_dds_${name} ${src})
+    target_include_directories(ros_dds_${name} PRIVATE ${CMAKE_SOURCE_DIR}/src ${CMAKE_SOURCE_DIR}/tests
+                               ${CMAKE_SOURCE_DIR}/tests/ros ${SP_ROS_IDL_OUT})
+    target_link_libraries(ros_dds_${name} PRIVATE semsplat CycloneDDS::ddsc m)
+    target_compile_options(ros_dds_${name} PRIVATE -std=gnu11)
+    target_compile_definitions(ros_dds_${name} PRIVATE
+      SP_SOURCE_DIR="${CMAKE_SOURCE_DIR}" SP_BUILD_DIR="${CMAKE_BINARY_DIR}")
+    add_test(NAME ros/dds/${name} COMMAND ros_dds_${name} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    set_tests_properties(ros/dds/${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 300)
+  endforeach()
+endif()
