@@ -17,40 +17,24 @@
 
 struct ros_planner {
     sp_ros_grid grid;   /* own copy of the cells */
-    float *dist_m;      /* distance from a cell centre to the nearest blocked cell, capped */
+    float *dist_m;      /* distance from a cell centre to the nearest blocked cell (INF: none) */
     double radius_m;
     double cos_o, sin_o;
 };
 
 static int blocked(int8_t v) { return v < 0 || v >= ROS_LETHAL; }
 
-/* Exact Euclidean distance to the nearest blocked cell within a window: only blocked cells with a
- * free neighbour can be nearest, so those stamp their disc. */
-static void distance_field(ros_planner *p, double cap_m)
+/* Distance from each cell centre to the nearest blocked cell centre (core's exact EDT). */
+static int distance_field(ros_planner *p, sp_error *err)
 {
     const sp_ros_grid *g = &p->grid;
-    int W = g->width, H = g->height, R = (int)ceil(cap_m / g->resolution_m);
-    for (long i = 0; i < (long)W * H; i++) p->dist_m[i] = blocked(g->cells[i]) ? 0.0f : (float)cap_m;
-    for (int r = 0; r < H; r++)
-        for (int c = 0; c < W; c++) {
-            if (!blocked(g->cells[(long)r * W + c])) continue;
-            int edge = 0;
-            for (int dr = -1; dr <= 1 && !edge; dr++)
-                for (int dc = -1; dc <= 1 && !edge; dc++) {
-                    int rr = r + dr, cc = c + dc;
-                    if (rr >= 0 && rr < H && cc >= 0 && cc < W && !blocked(g->cells[(long)rr * W + cc]))
-                        edge = 1;
-                }
-            if (!edge) continue;
-            for (int dr = -R; dr <= R; dr++)
-                for (int dc = -R; dc <= R; dc++) {
-                    int rr = r + dr, cc = c + dc;
-                    if (rr < 0 || rr >= H || cc < 0 || cc >= W) continue;
-                    float d = (float)(sqrt((double)dr * dr + (double)dc * dc) * g->resolution_m);
-                    float *t = &p->dist_m[(long)rr * W + cc];
-                    if (d < *t) *t = d;
-                }
-        }
+    size_t n = (size_t)g->width * g->height;
+    uint8_t *seed = malloc(n);
+    if (!seed) return sp_error_set(err, SP_E_NOMEM, "planner: %zu cells", n);
+    for (size_t i = 0; i < n; i++) seed[i] = blocked(g->cells[i]);
+    int rc = sp_edt2(seed, g->width, g->height, (float)g->resolution_m, p->dist_m, NULL, err);
+    free(seed);
+    return rc;
 }
 
 int ros_planner_create(ros_planner **out, const sp_ros_grid *grid, double robot_radius_m,
@@ -78,7 +62,11 @@ int ros_planner_create(ros_planner **out, const sp_ros_grid *grid, double robot_
     p->radius_m = robot_radius_m;
     p->cos_o = cos(grid->origin_yaw);
     p->sin_o = sin(grid->origin_yaw);
-    distance_field(p, robot_radius_m + ROS_SOFT_M);
+    int rc = distance_field(p, err);
+    if (rc) {
+        ros_planner_free(p);
+        return rc;
+    }
     *out = p;
     return 0;
 }
