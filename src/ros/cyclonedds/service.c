@@ -16,19 +16,32 @@ int ros_peek_header(const uint8_t *bytes, size_t n, sp_ros_rpc_header *h)
     return cdr_rpc_header(&in, h);
 }
 
+/* Both endpoints of one side of a service: the client writes requests and reads replies, the
+ * server the other way round; both carry "<key>=<id>;" in USER_DATA. */
+static int service_endpoints(ros_node *n, const char *fq, ros_type req, ros_type rep,
+                             const char *key, const char *id, int client, dds_entity_t *on_req,
+                             dds_entity_t *on_rep, sp_error *err)
+{
+    char topic[ROS_NAME_MAX + 16], ud[96];
+    snprintf(ud, sizeof ud, "%s=%s;", key, id);
+    if (ros_dds_name(fq, 'q', topic, sizeof topic, err)) return SP_E_ARG;
+    *on_req = client ? ros_writer(n, req, topic, ROS_QOS_DEFAULT, ud, err)
+                     : ros_reader(n, req, topic, ROS_QOS_DEFAULT, ud, err);
+    if (*on_req < 0) return (int)*on_req;
+    if (ros_dds_name(fq, 'r', topic, sizeof topic, err)) return SP_E_ARG;
+    *on_rep = client ? ros_reader(n, rep, topic, ROS_QOS_DEFAULT, ud, err)
+                     : ros_writer(n, rep, topic, ROS_QOS_DEFAULT, ud, err);
+    return *on_rep < 0 ? (int)*on_rep : 0;
+}
+
 int ros_client_init(ros_client *c, ros_node *n, const char *service_fq, ros_type req,
                     ros_type rep, const char *clientid, sp_error *err)
 {
-    char topic[ROS_NAME_MAX + 16], ud[96];
     memset(c, 0, sizeof *c);
     snprintf(c->fq, sizeof c->fq, "%s", service_fq);
-    snprintf(ud, sizeof ud, "clientid=%s;", clientid);
-    if (ros_dds_name(service_fq, 'q', topic, sizeof topic, err)) return SP_E_ARG;
-    c->req_w = ros_writer(n, req, topic, ROS_QOS_DEFAULT, ud, err);
-    if (c->req_w < 0) return (int)c->req_w;
-    if (ros_dds_name(service_fq, 'r', topic, sizeof topic, err)) return SP_E_ARG;
-    c->rep_r = ros_reader(n, rep, topic, ROS_QOS_DEFAULT, ud, err);
-    if (c->rep_r < 0) return (int)c->rep_r;
+    int rc = service_endpoints(n, service_fq, req, rep, "clientid", clientid, 1, &c->req_w,
+                               &c->rep_r, err);
+    if (rc) return rc;
     dds_instance_handle_t ih;
     if (dds_get_instance_handle(c->req_w, &ih) != DDS_RETCODE_OK)
         return sp_error_set(err, SP_E_NET, "%s: no instance handle for the request writer",
@@ -90,16 +103,10 @@ int ros_client_server_info(const ros_client *c, int *has_serviceid, sp_ros_distr
 int ros_server_init(ros_server *s, ros_node *n, const char *service_fq, ros_type req,
                     ros_type rep, const char *serviceid, sp_error *err)
 {
-    char topic[ROS_NAME_MAX + 16], ud[96];
     memset(s, 0, sizeof *s);
     snprintf(s->fq, sizeof s->fq, "%s", service_fq);
-    snprintf(ud, sizeof ud, "serviceid=%s;", serviceid);
-    if (ros_dds_name(service_fq, 'q', topic, sizeof topic, err)) return SP_E_ARG;
-    s->req_r = ros_reader(n, req, topic, ROS_QOS_DEFAULT, ud, err);
-    if (s->req_r < 0) return (int)s->req_r;
-    if (ros_dds_name(service_fq, 'r', topic, sizeof topic, err)) return SP_E_ARG;
-    s->rep_w = ros_writer(n, rep, topic, ROS_QOS_DEFAULT, ud, err);
-    return s->rep_w < 0 ? (int)s->rep_w : 0;
+    return service_endpoints(n, service_fq, req, rep, "serviceid", serviceid, 0, &s->req_r,
+                             &s->rep_w, err);
 }
 
 void ros_server_fini(ros_server *s, ros_node *n)

@@ -121,10 +121,12 @@ static void reply_goal(sim *s, ros_server *srv, const sp_ros_rpc_header *h,
     ros_server_reply(srv, writer, &m);
 }
 
-/* Goals are in the map frame, which the simulator takes as its odom frame. */
-static int frame_ok(const sim *s, const char *frame)
+/* Goals are in the map frame, which the simulator takes as its odom frame; others are refused. */
+static int frame_refused(const sim *s, const char *frame, sp_error *e)
 {
-    return !frame[0] || !strcmp(frame, s->map_frame) || !strcmp(frame, s->odom_frame);
+    if (!frame[0] || !strcmp(frame, s->map_frame) || !strcmp(frame, s->odom_frame)) return 0;
+    sp_error_set(e, SP_E_ARG, "frame '%s' is neither %s nor %s", frame, s->map_frame, s->odom_frame);
+    return 1;
 }
 
 static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
@@ -138,10 +140,7 @@ static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sam
     }
     double *xy = NULL;
     size_t np = 0;
-    if (!frame_ok(s, r.frame_id))
-        sp_error_set(&e, SP_E_ARG, "frame '%s' is neither %s nor %s", r.frame_id, s->map_frame,
-                     s->odom_frame);
-    else
+    if (!frame_refused(s, r.frame_id, &e))
         ros_planner_plan(s->planner, s->drive.x, s->drive.y, r.pose.x, r.pose.y, &xy, &np, &e);
     sim_goal *g = e.code ? NULL : new_goal(s, ROS_ACTION_NAV, r.goal_id);
     if (!g) {
@@ -193,7 +192,8 @@ static void on_path_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sa
     double *xy = NULL, t0 = ros_now();
     size_t np = 0;
     sim_goal *g = NULL;
-    if (!ros_planner_plan(s->planner, sx, sy, r.pose.x, r.pose.y, &xy, &np, &e))
+    if (!frame_refused(s, r.frame_id, &e) &&
+        !ros_planner_plan(s->planner, sx, sy, r.pose.x, r.pose.y, &xy, &np, &e))
         g = new_goal(s, ROS_ACTION_PATH, r.goal_id);
     if (!g || path_result(&g->result.path, xy, np, r.pose.yaw, s->map_frame)) {
         sp_logf(s->log, SP_LOG_INFO, "ComputePathToPose goal (%.2f, %.2f) rejected: %s", r.pose.x,
