@@ -166,7 +166,8 @@ typedef struct sp_ros_goal_status {
 typedef struct sp_ros_goal sp_ros_goal;
 
 /* Sends a NavigateToPose goal (pose in the map frame; behavior_tree NULL or "" = the server's
- * default) and waits, up to server_timeout_s in all, for a server and its answer. On return 0,
+ * default), waiting up to server_timeout_s for a server and then (up to 1 s more) for its
+ * answer. On return 0,
  * *out is a goal whose state is ACCEPTED or REJECTED; an accepted goal's result has already been
  * requested (GetResult right after acceptance, as rclcpp_action does). Errors: SP_E_NOTFOUND (no
  * action server: the message names the action, domain and what to check), SP_E_UNSUPPORTED (a

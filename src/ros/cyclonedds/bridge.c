@@ -173,6 +173,7 @@ static int check_grid(const sp_ros_grid *g, sp_error *err)
 int sp_ros_publish_map(sp_ros_bridge *b, const sp_ros_grid *grid, sp_error *err)
 {
     if (check_grid(grid, err)) return SP_E_ARG;
+    bridge_tick(b);
     nav_msgs_msg_dds__OccupancyGrid_ m;
     const char *frame = grid->frame_id[0] ? grid->frame_id : b->map_frame;
     ros_fill_occupancy_grid(&m, grid, frame, ros_wall_time());
@@ -221,6 +222,7 @@ int sp_ros_publish_paths(sp_ros_bridge *b, const sp_ros_path *paths, int n, sp_e
         return sp_error_set(err, SP_E_ARG, "publish_paths: %d paths (0..%d)", n, SP_ROS_MAX_PATHS);
     for (int i = 0; i < n; i++)
         if (check_path(&paths[i], i + 1, err)) return SP_E_ARG;
+    bridge_tick(b);
     double stamp = ros_wall_time();
     int rc;
     for (int i = 0; i < n; i++)
