@@ -150,6 +150,31 @@ static void cancel_stops_robot(sp_ros_bridge *b)
     sp_ros_goal_free(g);
 }
 
+/* A second goal preempts the first (aborted, with Jazzy's error_msg); both handles get their own
+ * results from the one pump. */
+static void preemption(sp_ros_bridge *b)
+{
+    sp_ros_odom o;
+    sp_error err = {0};
+    CHECK(settled_odom(b, &o) == 0);
+    sp_ros_pose far = {o.pose.x > 4 ? 1.0 : 6.5, 4.5, 0, 0};
+    sp_ros_pose near = {o.pose.x > 4 ? 5.0 : 2.5, o.pose.y > 3 ? 2.5 : 3.5, 0, 0};
+    sp_ros_goal *a = NULL, *c = NULL;
+    sp_ros_goal_status sa, sc;
+    CHECK_OK(sp_ros_navigate_to(b, &far, NULL, &a, &err), &err);
+    usleep(500000);
+    CHECK_OK(sp_ros_navigate_to(b, &near, NULL, &c, &err), &err);
+    if (a && c) {
+        CHECK_OK(sp_ros_goal_wait(a, 10, &sa, NULL, NULL, &err), &err);
+        CHECK_MSG(sa.state == SP_ROS_GOAL_ABORTED && strstr(sa.error_msg, "preempted"),
+                  "first goal: %s (%s)", sp_ros_goal_state_name(sa.state), sa.error_msg);
+        CHECK_OK(sp_ros_goal_wait(c, 40, &sc, NULL, NULL, &err), &err);
+        CHECK_MSG(sc.state == SP_ROS_GOAL_SUCCEEDED, "second goal: %s", sp_ros_goal_state_name(sc.state));
+    }
+    sp_ros_goal_free(a);
+    sp_ros_goal_free(c);
+}
+
 static void compute_path(sp_ros_bridge *b)
 {
     sp_ros_pose goal = {6.0, 2.0, 0, 1.0}, wall = {4.0, 2.0, 0, 0};
@@ -206,6 +231,7 @@ static void test_jazzy_robot(void)
         goal_rejected(b, 4.0, 2.0, "inside a wall");
         goal_rejected(b, 7.0, 1.0, "in unknown space");
         cancel_stops_robot(b);
+        preemption(b);
         compute_path(b);
         sp_ros_bridge_free(b);
     }
