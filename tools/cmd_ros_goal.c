@@ -37,6 +37,11 @@ static int print_pose(sp_ros_bridge *b, double timeout)
     if (sp_ros_odom_wait(b, timeout, &o, &err)) return cli_fail("ros-goal", &err);
     printf("pose: (%.3f, %.3f, %.3f) yaw %.3f in %s\n", o.pose.x, o.pose.y, o.pose.z, o.pose.yaw,
            o.frame_id);
+    sp_ros_pose m;
+    if (sp_ros_robot_pose(b, &m, NULL, &err) == 0)
+        printf("map pose: (%.3f, %.3f, %.3f) yaw %.3f\n", m.x, m.y, m.z, m.yaw);
+    else
+        printf("map pose: unknown (%s)\n", err.msg);
     return 0;
 }
 

@@ -6,7 +6,8 @@
  *     client; publishing our costmap as nav_msgs/OccupancyGrid (transient local, like
  *     map_server) and ranked candidate paths as nav_msgs/Path, for RViz and Foxglove;
  *   - the simulated robot (sp_ros_sim_run): a differential-drive robot that serves
- *     NavigateToPose and ComputePathToPose on a costmap, publishes /odom at 20 Hz and /tf;
+ *     NavigateToPose and ComputePathToPose on a costmap, publishes /odom at 20 Hz and /tf
+ *     (odom -> base_link at 20 Hz, map -> odom identity at 2 Hz, as a localization would);
  *   - wire decoders (sp_ros_decode_*): bounds-checked CDR readers, one per message type, that
  *     take (bytes, size) and fail with a message naming the field and offset; never a crash.
  *
@@ -123,6 +124,12 @@ sp_ros_distro sp_ros_bridge_distro(sp_ros_bridge *b);
 int sp_ros_odom_latest(sp_ros_bridge *b, sp_ros_odom *out, double *age_s, sp_error *err);
 /* Waits up to timeout_s for fresh odometry (then as sp_ros_odom_latest). */
 int sp_ros_odom_wait(sp_ros_bridge *b, double timeout_s, sp_ros_odom *out, sp_error *err);
+/* The robot's pose in the map frame, what goals and our maps use: the newest odometry composed
+ * with the newest map -> <odometry frame> transform on tf (published by the localization, e.g.
+ * AMCL or slam_toolbox), or the odometry itself when it is already in the map frame. age_s (may
+ * be NULL) is the odometry's age. Errors as sp_ros_odom_latest, plus SP_E_NOTFOUND when no such
+ * transform has been seen (is localization running?). */
+int sp_ros_robot_pose(sp_ros_bridge *b, sp_ros_pose *map_pose, double *age_s, sp_error *err);
 
 /* Goal states: action_msgs/GoalStatus codes 0..6, plus REJECTED (the server said no) and
  * LOST (the server vanished or stopped answering for this goal). */
@@ -332,6 +339,9 @@ int sp_ros_decode_occupancy_grid(const uint8_t *bytes, size_t size, sp_ros_grid 
                                  sp_error *err);
 int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform *out,
                              sp_error *err);
+/* The first parent -> child transform of a TFMessage (SP_E_NOTFOUND when it has none). */
+int sp_ros_decode_tf_find(const uint8_t *bytes, size_t size, const char *parent,
+                          const char *child, sp_ros_transform *out, sp_error *err);
 int sp_ros_decode_nav_goal_request(const uint8_t *bytes, size_t size, sp_ros_goal_request *out,
                                    sp_error *err);
 int sp_ros_decode_path_goal_request(const uint8_t *bytes, size_t size, sp_ros_goal_request *out,

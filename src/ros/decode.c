@@ -159,22 +159,30 @@ int sp_ros_decode_occupancy_grid(const uint8_t *bytes, size_t size, sp_ros_grid 
     return 0;
 }
 
-int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform *out,
-                             sp_error *err)
+/* tf2 frame ids carry no leading '/' in ROS 2; ROS 1 bags and old code may add one. */
+static int same_frame(const char *a, const char *b)
 {
+    return !strcmp(a + (a[0] == '/'), b + (b[0] == '/'));
+}
+
+/* Reads a TFMessage through; keeps the first transform, or the first parent -> child one. */
+static int decode_tf(const uint8_t *bytes, size_t size, const char *parent, const char *child,
+                     sp_ros_transform *out, int *found, sp_error *err)
+{
+    static const char *names[7] = {"translation.x", "translation.y", "translation.z",
+                                   "rotation.x",    "rotation.y",    "rotation.z", "rotation.w"};
     cdr_in in;
-    sp_ros_transform t, first;
+    sp_ros_transform t, keep;
     size_t n = 0;
-    memset(&first, 0, sizeof first);
+    memset(&keep, 0, sizeof keep);
+    *found = 0;
     if (cdr_begin(&in, bytes, size, "tf2_msgs/TFMessage", err)) return cdr_end(&in);
     /* TransformStamped: header 13 + child_frame_id 5 + padding 6 + transform 56 at least. */
     cdr_count(&in, NULL, "transforms", 80, &n);
     for (size_t i = 0; i < n && !in.failed; i++) {
         char p[64];
         double stamp, v[7];
-        static const char *names[7] = {"translation.x", "translation.y", "translation.z",
-                                       "rotation.x",    "rotation.y",    "rotation.z",
-                                       "rotation.w"};
+        memset(&t, 0, sizeof t);
         snprintf(p, sizeof p, "transforms[%zu].header", i);
         cdr_header(&in, p, &stamp, t.frame_id, sizeof t.frame_id);
         snprintf(p, sizeof p, "transforms[%zu]", i);
@@ -183,16 +191,41 @@ int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform
         for (int k = 0; k < 7 && !in.failed; k++)
             if (!cdr_f64(&in, p, names[k], &v[k]) && !isfinite(v[k]))
                 fail_numeric(&in, p, names[k], v[k]);
-        if (i == 0 && !in.failed) {
-            first = t;
-            first.x = v[0], first.y = v[1], first.z = v[2];
-            first.qx = v[3], first.qy = v[4], first.qz = v[5], first.qw = v[6];
+        int wanted = parent ? same_frame(t.frame_id, parent) && same_frame(t.child_frame_id, child)
+                            : i == 0;
+        if (wanted && !*found && !in.failed) {
+            keep = t;
+            keep.x = v[0], keep.y = v[1], keep.z = v[2];
+            keep.qx = v[3], keep.qy = v[4], keep.qz = v[5], keep.qw = v[6];
+            *found = 1;
         }
     }
     int rc = cdr_end(&in);
     if (rc) return rc;
-    first.n_transforms = n;
-    *out = first;
+    keep.n_transforms = n;
+    *out = keep;
+    return 0;
+}
+
+int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform *out,
+                             sp_error *err)
+{
+    int found;
+    return decode_tf(bytes, size, NULL, NULL, out, &found, err);
+}
+
+int sp_ros_decode_tf_find(const uint8_t *bytes, size_t size, const char *parent,
+                          const char *child, sp_ros_transform *out, sp_error *err)
+{
+    int found;
+    if (!parent || !child) return sp_error_set(err, SP_E_ARG, "tf: parent and child frames needed");
+    sp_ros_transform t;
+    int rc = decode_tf(bytes, size, parent, child, &t, &found, err);
+    if (rc) return rc;
+    if (!found)
+        return sp_error_set(err, SP_E_NOTFOUND, "tf2_msgs/TFMessage: no %s -> %s among its %zu "
+                            "transforms", parent, child, t.n_transforms);
+    *out = t;
     return 0;
 }
 

@@ -218,6 +218,13 @@ static void test_round_trips(void)
     CHECK(r.planning_time_s == 0.125);
     sp_ros_result_response_free(&r);
     free(b);
+    b = sample(3, &n);
+    sp_ros_transform t;
+    CHECK_OK(sp_ros_decode_tf_find(b, n, "/odom", "base_link", &t, &err), &err);
+    CHECK(t.n_transforms == 1 && t.x == 1 && t.qw == 0.9689);
+    CHECK_FAILS(sp_ros_decode_tf_find(b, n, "map", "odom", &t, &err), SP_E_NOTFOUND, &err,
+                "no map -> odom");
+    free(b);
     b = sample(10, &n);
     sp_ros_feedback_message m;
     CHECK_OK(sp_ros_decode_nav_feedback_message(b, n, &m, &err), &err);

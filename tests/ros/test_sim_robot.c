@@ -226,6 +226,13 @@ static void test_jazzy_robot(void)
         sp_error err = {0};
         CHECK_OK(sp_ros_odom_wait(b, 10.0, &o, &err), &err);
         CHECK(fabs(o.pose.x - 1) < 1e-6 && !strcmp(o.frame_id, "odom") && !strcmp(o.child_frame_id, "base_link"));
+        sp_ros_pose m = {0, 0, 0, 0};
+        double until = sp_time_now() + 5;
+        int rc; /* the robot's map -> odom comes at 2 Hz */
+        while ((rc = sp_ros_robot_pose(b, &m, NULL, &err)) == SP_E_NOTFOUND && sp_time_now() < until)
+            usleep(50000);
+        CHECK_OK(rc, &err);
+        CHECK(fabs(m.x - 1) < 1e-6 && fabs(m.y - 1) < 1e-6 && fabs(m.yaw) < 1e-6);
         goal_succeeds(b, 6.0, 2.0, 1.57); /* through the door */
         CHECK(sp_ros_bridge_distro(b) == SP_ROS_DISTRO_JAZZY); /* detected from the robot */
         goal_rejected(b, 4.0, 2.0, "inside a wall");

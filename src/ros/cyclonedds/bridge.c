@@ -48,6 +48,10 @@ static int make_endpoints(sp_ros_bridge *b, const sp_ros_options *o, sp_error *e
         return SP_E_ARG;
     b->odom_r = ros_reader(b->node, RT_ODOMETRY, b->odom_topic, ROS_QOS_SENSOR, NULL, err);
     if (b->odom_r < 0) return (int)b->odom_r;
+    if (resolve(b, "tf", "tf", fq, err) || ros_dds_name(fq, 't', topic, sizeof topic, err))
+        return SP_E_ARG;
+    b->tf_r = ros_reader(b->node, RT_TF, topic, ((ros_qos){0, 0, 100}), NULL, err);
+    if (b->tf_r < 0) return (int)b->tf_r;
     if (resolve(b, o->map_topic, d.map_topic, fq, err) ||
         ros_dds_name(fq, 't', topic, sizeof topic, err))
         return SP_E_ARG;
@@ -147,6 +151,46 @@ int sp_ros_odom_wait(sp_ros_bridge *b, double timeout_s, sp_ros_odom *out, sp_er
     int rc;
     while ((rc = sp_ros_odom_latest(b, out, &age, err)) != 0 && ros_now() < until) ros_nap();
     return rc;
+}
+
+/* ---- the pose in the map frame ---- */
+
+static const char *odom_frame(const sp_ros_bridge *b)
+{
+    return b->have_odom && b->odom.frame_id[0] ? b->odom.frame_id : "odom";
+}
+
+static void on_tf(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
+{
+    sp_ros_bridge *b = ctx;
+    sp_ros_transform t;
+    (void)info;
+    if (sp_ros_decode_tf_find(bytes, n, b->map_frame, odom_frame(b), &t, NULL)) return;
+    b->map_odom = t;
+    b->have_map_odom = 1;
+}
+
+int sp_ros_robot_pose(sp_ros_bridge *b, sp_ros_pose *map_pose, double *age_s, sp_error *err)
+{
+    sp_ros_odom o;
+    int rc = sp_ros_odom_latest(b, &o, age_s, err);
+    if (rc) return rc;
+    ros_take_raw(b->tf_r, on_tf, b, 1000);
+    if (!strcmp(o.frame_id, b->map_frame)) {
+        *map_pose = o.pose;
+        return 0;
+    }
+    if (!b->have_map_odom)
+        return sp_error_set(err, SP_E_NOTFOUND, "no %s -> %s transform on tf yet: is the robot's "
+                            "localization (AMCL, slam_toolbox) running?", b->map_frame, o.frame_id);
+    /* Planar composition: map_pose = T(map -> odom) * odom_pose. */
+    const sp_ros_transform *t = &b->map_odom;
+    double yaw = sp_ros_quat_yaw(t->qx, t->qy, t->qz, t->qw), c = cos(yaw), s = sin(yaw);
+    map_pose->x = t->x + c * o.pose.x - s * o.pose.y;
+    map_pose->y = t->y + s * o.pose.x + c * o.pose.y;
+    map_pose->z = t->z + o.pose.z;
+    map_pose->yaw = atan2(sin(yaw + o.pose.yaw), cos(yaw + o.pose.yaw));
+    return 0;
 }
 
 /* ---- map and paths ---- */

@@ -24,7 +24,9 @@ struct sp_ros_bridge {
     char nav_fq[ROS_NAME_MAX], path_fq[ROS_NAME_MAX], paths_fq[ROS_NAME_MAX];
     char odom_topic[ROS_NAME_MAX + 8];
     ros_node *node;
-    dds_entity_t odom_r, map_w, path_w[SP_ROS_MAX_PATHS];
+    dds_entity_t odom_r, tf_r, map_w, path_w[SP_ROS_MAX_PATHS];
+    sp_ros_transform map_odom;  /* the newest map -> odometry-frame transform from tf */
+    int have_map_odom;
     int n_paths_shown;
     sp_ros_odom odom;
     int have_odom;

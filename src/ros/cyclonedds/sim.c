@@ -83,6 +83,20 @@ static int make_endpoints(sim *s, sp_error *err)
     return ros_node_announce(s->node, err);
 }
 
+/* map -> odom, identity: the simulator knows where it is, as a perfect localization would. */
+static void publish_localization(sim *s)
+{
+    sp_ros_transform t;
+    memset(&t, 0, sizeof t);
+    snprintf(t.frame_id, sizeof t.frame_id, "%s", s->map_frame);
+    snprintf(t.child_frame_id, sizeof t.child_frame_id, "%s", s->odom_frame);
+    t.qw = 1;
+    tf2_msgs_msg_dds__TFMessage_ tm;
+    struct geometry_msgs_msg_dds__TransformStamped_ one;
+    ros_fill_tf(&tm, &one, &t, ros_wall_time());
+    dds_write(s->tf_w, &tm);
+}
+
 static void publish_odometry(sim *s)
 {
     static const double cov[36] = {[0] = 1e-3, [7] = 1e-3, [14] = 1e6, [21] = 1e6, [28] = 1e6,
@@ -129,7 +143,8 @@ static void run_loop(sim *s, const volatile sig_atomic_t *stop)
             s->sim_time += dt;
             sim_goal_progress(s, ev);
             publish_odometry(s);
-            if (tick++ % 2 == 0) sim_feedback(s);
+            if (tick % 2 == 0) sim_feedback(s);
+            if (tick++ % 10 == 0) publish_localization(s);
             sim_expire(s);
             next += period;
             if (next < now) next = now + period; /* fell behind (a slow machine): skip ahead */

@@ -32,6 +32,11 @@ int sp_ros_odom_wait(sp_ros_bridge *b, double timeout_s, sp_ros_odom *out, sp_er
     (void)b, (void)timeout_s, (void)out;
     return unsupported(err);
 }
+int sp_ros_robot_pose(sp_ros_bridge *b, sp_ros_pose *map_pose, double *age_s, sp_error *err)
+{
+    (void)b, (void)map_pose, (void)age_s;
+    return unsupported(err);
+}
 int sp_ros_navigate_to(sp_ros_bridge *b, const sp_ros_pose *goal, const char *behavior_tree,
                        sp_ros_goal **out, sp_error *err)
 {

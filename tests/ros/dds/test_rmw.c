@@ -201,6 +201,48 @@ static void check_map_bytes(ros_node *tap, sp_ros_bridge *b)
     free(ours);
 }
 
+/* ---- the map-frame pose: odometry composed with a localization's map -> odom ---- */
+
+static void check_map_pose(ros_node *tap)
+{
+    char ns2[128], topic[300];
+    snprintf(ns2, sizeof ns2, "%s/loc", ns);
+    sp_ros_options o;
+    sp_ros_options_default(&o);
+    o.domain_id = domain, o.ns = ns2, o.loopback_only = 1, o.distro = distro;
+    sp_ros_bridge *b = NULL;
+    sp_error err = {0};
+    CHECK_OK(sp_ros_bridge_create(&b, &o, &err), &err);
+    snprintf(topic, sizeof topic, "rt%s/odom", ns2);
+    dds_entity_t ow = ros_writer(tap, RT_ODOMETRY, topic, ROS_QOS_DEFAULT, NULL, &err);
+    snprintf(topic, sizeof topic, "rt%s/tf", ns2);
+    dds_entity_t tw = ros_writer(tap, RT_TF, topic, ROS_QOS_DEFAULT, NULL, &err);
+    CHECK(b && ow > 0 && tw > 0);
+    if (!b || ow <= 0 || tw <= 0) return;
+    sp_ros_odom od = {{1, 0.5, 0, 0.3}, 0, 0, 0, 0, 0, 0, 0, 0, "odom", "base_link"};
+    sp_ros_yaw_quat(0.3, &od.qx, &od.qy, &od.qz, &od.qw);
+    sp_ros_transform t = {1, "map", "odom", 2, -1, 0, 0, 0, sin(M_PI / 4), cos(M_PI / 4)};
+    sp_ros_pose m = {0, 0, 0, 0};
+    int rc = -1;
+    for (double until = sp_time_now() + 5; rc && sp_time_now() < until; usleep(50000)) {
+        nav_msgs_msg_dds__Odometry_ om;
+        tf2_msgs_msg_dds__TFMessage_ tm;
+        struct geometry_msgs_msg_dds__TransformStamped_ one;
+        od.stamp_s = ros_wall_time();
+        ros_fill_odometry(&om, &od, NULL, NULL);
+        ros_fill_tf(&tm, &one, &t, od.stamp_s);
+        dds_write(ow, &om);
+        dds_write(tw, &tm);
+        rc = sp_ros_robot_pose(b, &m, NULL, &err);
+    }
+    CHECK_OK(rc, &err);
+    /* (2, -1) + R(90 deg) (1, 0.5) = (1.5, 0); yaw 90 deg + 0.3. */
+    CHECK_NEAR(m.x, 1.5, 1e-9);
+    CHECK_NEAR(m.y, 0.0, 1e-9);
+    CHECK_NEAR(m.yaw, M_PI / 2 + 0.3, 1e-9);
+    sp_ros_bridge_free(b);
+}
+
 /* ---- one distro, in this process ---- */
 
 static int run_distro(const char *dir)
@@ -249,6 +291,7 @@ static int run_distro(const char *dir)
         CHECK_MSG(nr >= 6 && nw >= 13, "robot lists %d readers, %d writers", nr, nw);
         check_endpoints(tap->builtin_pub, tap->builtin_sub);
         check_map_bytes(tap, b);
+        check_map_pose(tap);
         void *s[8] = {NULL};
         dds_sample_info_t si[8];
         dds_entity_t parts = dds_create_reader(tap->pp, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, NULL, NULL);
