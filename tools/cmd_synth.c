@@ -11,7 +11,9 @@ static void help(void)
     printf("usage: semsplat synth --world W.world --out DIR [--model-path DIR[:DIR...]]\n"
            "                      [--views N] [--size WxH] [--fov-deg DEG] [--heights MIN,MAX]\n"
            "                      [--supersample S] [--blur-px SIGMA] [--points N] [--seed N]\n"
-           "                      [--threads N] [--skip-missing] [--quiet]\n\n"
+           "                      [--threads N] [--skip-missing] [--quiet]\n"
+           "                      [--walk-only | --drive [--drive-speed M/S] [--drive-rate HZ]\n"
+           "                       [--drive-turn RAD/S]]\n\n"
            "Renders the world (SDF 1.6+: models, includes via model://, boxes, cylinders,\n"
            "spheres, planes, .dae/.obj/.stl meshes with textures) along a robot-like path\n"
            "through every room plus views around objects, and writes DIR/sparse/0 (COLMAP,\n"
@@ -24,7 +26,13 @@ static void help(void)
            "  --blur-px 0.5  the camera's blur (Gaussian sigma, pixels) over the colours;\n"
            "                 0 = none (sharp box-filtered pixels)\n"
            "  --skip-missing warn about missing models and meshes and go on (a missing\n"
-           "                 texture is always a warning: the mesh keeps its colour)\n");
+           "                 texture is always a warning: the mesh keeps its colour)\n"
+           "  --walk-only    only the walk's spins: no view aimed at a ground-truth object\n"
+           "                 (for captures used in evaluation)\n"
+           "  --drive        one continuous robot drive through the reachable rooms, frames at\n"
+           "                 --drive-rate (10 Hz) at --drive-speed (0.4 m/s), turning at\n"
+           "                 --drive-turn (0.5 rad/s), a spin at each waypoint; every k-th frame\n"
+           "                 is kept so at most --views remain (capture.json says which)\n");
 }
 
 int cmd_synth(int argc, char **argv)
@@ -32,7 +40,8 @@ int cmd_synth(int argc, char **argv)
     const char *world = NULL, *out = NULL, *mpath = NULL, *v;
     long views = 150, ss = 4, points = 30000, seed = 1, threads = 0;
     int w = 640, h = 480, quiet = 0, skip = 0, bad = 0;
-    double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5;
+    double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5, dspeed = 0, drate = 0, dturn = 0;
+    int plan = SP_SYNTH_PLAN_MIXED;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
         if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
@@ -57,6 +66,17 @@ int cmd_synth(int argc, char **argv)
             if (cli_parse_int("synth", "--seed", v, &seed)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
             if (cli_parse_int("synth", "--threads", v, &threads)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--drive-speed", &bad))) {
+            if (cli_parse_float("synth", "--drive-speed", v, &dspeed)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--drive-rate", &bad))) {
+            if (cli_parse_float("synth", "--drive-rate", v, &drate)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--drive-turn", &bad))) {
+            if (cli_parse_float("synth", "--drive-turn", v, &dturn)) return 2;
+        } else if (!strcmp(argv[i], "--walk-only") || !strcmp(argv[i], "--drive")) {
+            int p = argv[i][2] == 'w' ? SP_SYNTH_PLAN_WALK : SP_SYNTH_PLAN_DRIVE;
+            if (plan != SP_SYNTH_PLAN_MIXED && plan != p)
+                return cli_usage_error("synth", "--walk-only and --drive exclude each other");
+            plan = p;
         } else if (!strcmp(argv[i], "--skip-missing")) skip = 1;
         else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("synth", "unknown argument '%s'", argv[i]);
@@ -68,6 +88,8 @@ int cmd_synth(int argc, char **argv)
     if (!(fov > 1 && fov < 170)) return cli_usage_error("synth", "--fov-deg %g: expected 1..170", fov);
     if (!(psf >= 0 && psf <= 4)) return cli_usage_error("synth", "--blur-px %g: expected 0..4", psf);
     if (points < 1) return cli_usage_error("synth", "--points %ld: expected at least 1", points);
+    if ((dspeed || drate || dturn) && plan != SP_SYNTH_PLAN_DRIVE)
+        return cli_usage_error("synth", "--drive-speed/--drive-rate/--drive-turn need --drive");
     sp_error err = {0};
     sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
     sp_synth_load_opts lo = {.model_path = mpath, .skip_missing = skip, .log = &log};
@@ -87,12 +109,16 @@ int cmd_synth(int argc, char **argv)
     sp_synth_capture_opts co = {.n_views = (int)views, .width = w, .height = h, .fov_deg = (float)fov,
                                 .min_height_m = (float)hmin, .max_height_m = (float)hmax,
                                 .supersample = (int)ss, .psf_px = psf > 0 ? (float)psf : -1.f, .n_points = (int)points, .seed = (unsigned)seed,
-                                .n_threads = (int)threads, .log = &log};
+                                .n_threads = (int)threads, .log = &log, .plan = plan,
+                                .drive_speed_mps = (float)dspeed, .drive_rate_hz = (float)drate,
+                                .drive_turn_rad_s = (float)dturn};
     double t1 = sp_time_now();
     int rc = sp_synth_capture(&wd, out, &co, &err);
     sp_world_free(&wd);
     if (rc) return cli_fail("synth", &err);
     if (!quiet)
-        printf("synth  %.2f  s  (%ld views %dx%d, %s -> %s)\n", sp_time_now() - t1, views, w, h, world, out);
+        printf("synth  %.2f  s  (%s plan, at most %ld views %dx%d, %s -> %s; see capture.json)\n",
+               sp_time_now() - t1, plan == SP_SYNTH_PLAN_DRIVE ? "drive" : plan ? "walk" : "walk+objects",
+               views, w, h, world, out);
     return 0;
 }

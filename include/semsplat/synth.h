@@ -173,8 +173,19 @@ void sp_synth_frame_free(sp_synth_frame *f);
 
 /* ---- captures -------------------------------------------------------------------------------- */
 
+/* How a capture's views are chosen (recorded in capture.json as "plan"). */
+typedef enum {
+    SP_SYNTH_PLAN_MIXED = 0, /* "walk+objects": spins at waypoints over the free floor (about 70%)
+                                and short arcs of views aimed at the world's objects (30%) */
+    SP_SYNTH_PLAN_WALK = 1,  /* "walk": the spins only; no view is aimed at a ground-truth object,
+                                so what is measured on it does not lean on the world's labels */
+    SP_SYNTH_PLAN_DRIVE = 2  /* "drive": one continuous robot drive through every reachable room,
+                                frames at a camera's rate (see drive_* below) */
+} sp_synth_plan_kind;
+
 typedef struct sp_synth_capture_opts {
-    int n_views;        /* total views (walk + object views) */
+    int n_views;        /* total views (walk + object views); for a drive, at most this many
+                           frames are kept (every k-th frame of the drive, k as small as fits) */
     int width, height;
     float fov_deg;      /* horizontal field of view; 0 = 70 */
     float min_height_m, max_height_m; /* camera heights above the floor; 0,0 = 0.3, 1.5 */
@@ -184,19 +195,52 @@ typedef struct sp_synth_capture_opts {
     unsigned seed;      /* view planning and point sampling */
     int n_threads;      /* <= 0: all CPUs */
     const sp_log *log;  /* progress and warnings (may be NULL) */
+    int plan;           /* sp_synth_plan_kind */
+    /* The drive (SP_SYNTH_PLAN_DRIVE): a differential-drive robot with its camera at a fixed
+     * height (the middle of min/max_height_m) looking ahead 0.1 rad down. It visits waypoints
+     * spread over the reachable free floor in a nearest-neighbour tour, on the shortest paths
+     * that keep a robot's clearance, turning on the spot before each straight leg and spinning
+     * once round at each waypoint, as robots do when they map a room. */
+    float drive_speed_mps; /* 0 = 0.4 */
+    float drive_turn_rad_s;/* 0 = 0.5 */
+    float drive_rate_hz;   /* camera frame rate; 0 = 10 */
 } sp_synth_capture_opts;
 
-/* Plans n views: a walk over the free floor of every room (heights between min and max, looking
- * around), then views around objects. cams is malloc'd [*n]; caller frees with free(). */
+/* What a plan made, for capture.json and the reports. */
+typedef struct sp_synth_plan_info {
+    int plan;                 /* sp_synth_plan_kind; drives on a world without floor orbit */
+    const char *name;         /* "walk+objects", "walk", "drive", "orbit" (static string) */
+    size_t n_views;
+    /* drives only (0 otherwise) */
+    size_t n_frames_driven;   /* frames at drive_rate_hz before keeping every keep_every-th */
+    int keep_every;
+    double rate_hz;           /* drive_rate_hz / keep_every */
+    double speed_mps, turn_rad_s, camera_height_m;
+    double path_length_m, duration_s;
+    int n_waypoints, n_segments; /* segments > 1: parts of the floor no path joins (teleports) */
+    double reachable_fraction;   /* free floor cells the drive could reach */
+    double max_step_m, max_turn_rad; /* largest baseline and rotation between kept frames */
+    double *t_s;              /* [n_views] time of each kept frame (owned; sp_synth_plan_info_free) */
+} sp_synth_plan_info;
+
+void sp_synth_plan_info_free(sp_synth_plan_info *info);
+
+/* Plans the views of opts->plan: a walk over the free floor of every room (heights between min
+ * and max, looking around), then (SP_SYNTH_PLAN_MIXED) views around objects; or the drive.
+ * cams is malloc'd [*n]; caller frees with free(). A world without floor gets an orbit. */
 int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *opts, sp_camera **cams,
                         size_t *n, sp_error *err);
+/* The same, and what the plan made (info may be NULL; free it with sp_synth_plan_info_free). */
+int sp_synth_plan(const sp_world *w, const sp_synth_capture_opts *opts, sp_camera **cams,
+                  size_t *n, sp_synth_plan_info *info, sp_error *err);
 
 /* Renders the planned views and writes under out_dir:
  *   sparse/0/{cameras,images,points3D}.bin  PINHOLE, exact poses, points on visible surfaces
  *   images/NNNNN.png  depth/NNNNN.npy (float32 metres [h][w])  labels/NNNNN.png (16-bit ids)
  *   labels.json  (id -> model name, class, is_structure)
  *   ground_truth.json  (world path; each object's name, class, world pose and AABB under
- *                       "objects", walls, floors, ceilings and the ground under "structure") */
+ *                       "objects", walls, floors, ceilings and the ground under "structure")
+ *   capture.json  (the plan used and its settings: sp_synth_plan_info; a drive's frame times) */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);
 

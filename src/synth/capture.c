@@ -158,7 +158,8 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
 {
     sp_camera *cams = NULL;
     size_t n = 0;
-    int rc = sp_synth_plan_views(w, opts, &cams, &n, err);
+    sp_synth_plan_info info;
+    int rc = sp_synth_plan(w, opts, &cams, &n, &info, err);
     if (rc) return rc;
     char path[2048];
     const char *sub[] = {"images", "depth", "labels", "sparse/0"};
@@ -166,12 +167,14 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
         snprintf(path, sizeof path, "%s/%s", out, sub[i]);
         if ((rc = sp_mkdirs(path, err))) {
             free(cams);
+            sp_synth_plan_info_free(&info);
             return rc;
         }
     }
     sp_pool *pool = NULL;
     if ((rc = sp_pool_create(&pool, opts->n_threads, err))) {
         free(cams);
+        sp_synth_plan_info_free(&info);
         return rc;
     }
     size_t target = opts->n_points > 0 ? (size_t)opts->n_points : 30000;
@@ -270,6 +273,8 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
         free(pids);
     }
     if (!rc) rc = write_json(w, out, err);
+    if (!rc) rc = synth_write_capture_json(out, w, opts, &info, err);
+    sp_synth_plan_info_free(&info);
     sp_progress_end(&prog, rc ? "failed" : NULL);
     free(pts);
     free(cams);

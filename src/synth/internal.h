@@ -75,4 +75,30 @@ int mp_resolve_file(const model_path *mp, const char *uri, const char *sdf_dir, 
 int pattern_from_names(const char *script, const char *visual, const char *link,
                        const char *model);
 
+/* Planners (plan.c, drive.c): the free floor's clearance (metres to the nearest obstacle or
+ * floor edge, robot height band) on a grid; SP_E_NOTFOUND when there is no floor. */
+int synth_floor_clearance(const sp_world *w, sp_grid2 *clear, sp_error *err);
+/* A drive's route (drive_route.c): points in order, each a waypoint where the robot spins
+ * (stop) or a corner between straight legs; jump marks the start of a new segment (a part of
+ * the floor no path reaches from the previous one). */
+typedef struct drive_route {
+    size_t n;
+    float *xy;     /* [n][2] world metres */
+    uint8_t *stop; /* [n] */
+    uint8_t *jump; /* [n] */
+    int n_waypoints, n_segments;
+    double reachable_fraction; /* free cells in the largest part / all free cells */
+} drive_route;
+/* Plans the route over the cells with clearance >= need, at most max_waypoints waypoints. */
+int drive_plan_route(const sp_grid2 *clear, float need, int max_waypoints, drive_route *r,
+                     sp_error *err);
+void drive_route_free(drive_route *r);
+/* capture.json: the plan (sp_synth_plan_info) and the capture's settings (capture_info.c). */
+int synth_write_capture_json(const char *out_dir, const sp_world *w,
+                             const sp_synth_capture_opts *o, const sp_synth_plan_info *info,
+                             sp_error *err);
+/* A capture camera (opts' size, fov_deg horizontal) at (x, y, z) looking along yaw, pitch up. */
+void synth_view(sp_camera *c, const sp_synth_capture_opts *o, float fov_deg, float x, float y,
+                float z, float yaw, float pitch);
+
 #endif

@@ -219,6 +219,7 @@ static void look(sp_camera *c, float x, float y, float z, float yaw, float pitch
 int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_camera **cams,
                         size_t *n_out, sp_error *err)
 {
+    if (o->plan == SP_SYNTH_PLAN_DRIVE) return sp_synth_plan(w, o, cams, n_out, NULL, err);
     *cams = NULL;
     *n_out = 0;
     if (o->n_views <= 0 || o->width <= 0 || o->height <= 0)
@@ -289,7 +290,8 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
      * headings at each waypoint (30 degrees apart, so with a 70-degree lens every frame is also
      * seen by its neighbours and held-out frames are true novel views of seen content), and object
      * views come as short arcs. Scattered single views made held-out PSNR 7 dB below training. */
-    size_t n_obj_views = n_objs ? (size_t)(0.3 * n) : 0, n_walk = n - n_obj_views;
+    size_t n_obj_views = n_objs && o->plan != SP_SYNTH_PLAN_WALK ? (size_t)(0.3 * n) : 0;
+    size_t n_walk = n - n_obj_views;
     /* waypoints: farthest-point sampling over the free cells */
     size_t n_wp = (n_walk + SPIN_VIEWS - 1) / SPIN_VIEWS;
     if (n_wp < 1) n_wp = 1;
@@ -407,4 +409,29 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
     *cams = out;
     *n_out = n;
     return 0;
+}
+
+/* The floor plan for synth's other planner (drive.c): clearance in metres from obstacles and
+ * the floor's edge (0 off the floor). Fails with SP_E_NOTFOUND when the world has no floor. */
+int synth_floor_clearance(const sp_world *w, sp_grid2 *clear, sp_error *err)
+{
+    memset(clear, 0, sizeof *clear);
+    grid g;
+    memset(&g, 0, sizeof g);
+    int rc = build_grid(w, &g);
+    if (rc == -1) rc = sp_error_set(err, SP_E_NOTFOUND, "%s: no floor to drive on", w->path);
+    else if (rc) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    else if (!(rc = sp_grid2_alloc(clear, g.nx, g.ny, g.res, g.x0, g.y0, err)))
+        memcpy(clear->data, g.clear, (size_t)g.nx * g.ny * sizeof(float));
+    grid_free(&g);
+    return rc;
+}
+
+/* One pinhole view of the capture's intrinsics at (x, y, z) looking along yaw, pitched up by
+ * pitch radians (drive.c's frames, the same cameras as the walk's). */
+void synth_view(sp_camera *c, const sp_synth_capture_opts *o, float fov_deg, float x, float y,
+                float z, float yaw, float pitch)
+{
+    set_cam(c, o, fov_deg);
+    look(c, x, y, z, yaw, pitch);
 }
