@@ -9,7 +9,7 @@
 #define SP_CMD(name) int cmd_##name(int argc, char **argv) __attribute__((weak));
 #define SP_COMMANDS(X) \
     X(info) X(render) X(synth) X(train) X(features) X(embed_text) X(lift) X(distill) X(query) \
-    X(align) X(demo) X(agent) X(sim_robot) X(ros_goal)
+    X(align) X(demo) X(agent) X(sim_robot) X(ros_goal) X(sfm)
 SP_COMMANDS(SP_CMD)
 #undef SP_CMD
 
@@ -34,6 +34,7 @@ static const command commands[] = {
     {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
     {"sim-robot", cmd_sim_robot, "a simulated robot serving Nav2 actions and /odom over ROS 2 DDS"},
     {"ros-goal", cmd_ros_goal, "send a Nav2 goal / ask for a path / read the pose of a ROS 2 robot"},
+    {"sfm", cmd_sfm, "poses from COLMAP structure-from-motion, aligned into a capture's frame"},
 };
 
 static void usage(FILE *f)
