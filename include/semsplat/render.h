@@ -22,39 +22,11 @@
 #define SEMSPLAT_RENDER_H
 
 #include "semsplat/core.h"
+#include "semsplat/device.h" /* sp_device (was declared here) */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* ---- devices ---------------------------------------------------------------------------------- */
-
-typedef enum {
-    SP_DEVICE_CPU = 0,
-    SP_DEVICE_CUDA = 1,
-    SP_DEVICE_AUTO = 2 /* CUDA when a GPU is usable, else CPU */
-} sp_device_kind;
-
-typedef struct sp_device sp_device;
-
-/* n_threads: CPU worker threads (<= 0: all cores). CUDA: fails with SP_E_NODEVICE when the
- * backend is not built or no GPU is present. */
-int sp_device_create(sp_device **out, sp_device_kind kind, int n_threads, sp_error *err);
-void sp_device_free(sp_device *dev);
-sp_device_kind sp_device_kind_of(const sp_device *dev);
-const char *sp_device_name(const sp_device *dev); /* "CPU (2 threads)", "NVIDIA H100 ..." */
-sp_pool *sp_device_pool(sp_device *dev);          /* CPU worker pool (also used by CUDA for host work) */
-int sp_cuda_available(void);                       /* 1 when the CUDA backend is built and a GPU answers */
-
-void *sp_device_alloc(sp_device *dev, size_t bytes, sp_error *err); /* zeroed; NULL on error */
-void sp_device_release(sp_device *dev, void *ptr);
-int sp_device_upload(sp_device *dev, void *dst, const void *src_host, size_t bytes, sp_error *err);
-int sp_device_download(sp_device *dev, void *dst_host, const void *src, size_t bytes, sp_error *err);
-int sp_device_copy(sp_device *dev, void *dst, const void *src, size_t bytes, sp_error *err);
-int sp_device_zero(sp_device *dev, void *dst, size_t bytes, sp_error *err);
-int sp_device_sync(sp_device *dev, sp_error *err);
-/* Peak bytes allocated through sp_device_alloc plus the rasterizer's scratch, since creation. */
-size_t sp_device_peak_bytes(const sp_device *dev);
 
 /* ---- rasterization ---------------------------------------------------------------------------- */
 
