@@ -192,6 +192,19 @@ void sp_camera_look_at(sp_camera *cam, sp_vec3 eye, sp_vec3 target, sp_vec3 up);
 /* Scales intrinsics and size for an image downscaled by `factor` (>= 1). */
 void sp_camera_downscale(sp_camera *cam, int factor);
 
+/* Cameras from a pose, for previews and agents (render_view_from_splat). */
+/* Pinhole intrinsics from an image size and a horizontal field of view: square pixels
+ * (fx = fy = width / (2 tan(hfov / 2))), principal point at the image centre (width / 2,
+ * height / 2 in the pixel-centre convention), no distortion. The pose is left as it was. */
+void sp_camera_intrinsics_fov(sp_camera *cam, int width, int height, float hfov_rad);
+/* The pose of a camera at world position pos in a z-up world frame: yaw about +z from +x
+ * (yaw 0 looks along +x, pi/2 along +y), pitch up positive (pi/2 looks straight up), no roll;
+ * image x to the right, y down. Intrinsics are left as they were. */
+void sp_camera_from_pose(sp_camera *cam, const float pos[3], float yaw, float pitch);
+/* The pose from a rigid 4x4 row-major camera-to-world matrix whose camera axes are OpenCV's
+ * (x right, y down, z forward): R = rotation^T, t = -R translation. */
+void sp_camera_set_world_from_cam(sp_camera *cam, const float M[16]);
+
 /* ---- Gaussians ------------------------------------------------------------------------------- */
 
 /* Number of SH coefficients per channel for degree d: (d+1)^2. */
