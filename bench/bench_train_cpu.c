@@ -53,7 +53,7 @@ int main(int argc, char **argv)
         double a = 6.2831853 * k / NV;
         sp_camera_look_at(&v->cam, sp_v3((float)(5 * cos(a)), (float)(5 * sin(a)), 1),
                           sp_v3(0, 0, 0), sp_v3(0, 0, 1));
-        sp_render_request req = {img, NULL, NULL, NULL, NULL};
+        sp_render_request req = {.rgb = img};
         if (sp_render_splat(r, &gt, &v->cam, &req, &err)) {
             fprintf(stderr, "bench_train_cpu: %s\n", err.msg);
             return 1;

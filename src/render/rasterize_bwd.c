@@ -164,13 +164,10 @@ static void backward_item(void *vctx, long tile, int thread_id)
     bwd_ctx *c = vctx;
     cpu_raster *r = c->r;
     float *scratch = r->scratch[thread_id].buf;
-    switch (r->D) {
-    case 1: tile_backward(r, c->gin, tile, scratch, 1); break;
-    case 3: tile_backward(r, c->gin, tile, scratch, 3); break;
-    case 4: tile_backward(r, c->gin, tile, scratch, 4); break;
-    case 8: tile_backward(r, c->gin, tile, scratch, 8); break;
-    case 16: tile_backward(r, c->gin, tile, scratch, 16); break;
-    case 32: tile_backward(r, c->gin, tile, scratch, 32); break;
+    switch (r->D) { /* a constant D for each specialised width (device.h), so loops unroll */
+#define SP_WIDTH_CASE(w) case w: tile_backward(r, c->gin, tile, scratch, w); break;
+    SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
+#undef SP_WIDTH_CASE
     default: tile_backward(r, c->gin, tile, scratch, r->D); break;
     }
 }

@@ -1,6 +1,6 @@
-/* Private to src/render: the device struct, the CPU rasterizer's per-view state, and the CPU
- * pipeline stages (one per file: project.c, tiles.c, rasterize_fwd.c, rasterize_bwd.c, sh.c).
- * raster.c dispatches between these and the CUDA backend (cuda_api.h). */
+/* Private to src/render: the CPU rasterizer's per-view state and the CPU pipeline stages (one per
+ * file: project.c, tiles.c, rasterize_fwd.c, rasterize_bwd.c, rasterize_surface.c, sh.c), which
+ * cpu_backend.c puts behind the render backend table (backend.h). */
 #ifndef SP_RENDER_INTERNAL_H
 #define SP_RENDER_INTERNAL_H
 
@@ -8,18 +8,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "device/device_impl.h"
 #include "semsplat/render.h"
-
-struct sp_device {
-    sp_device_kind kind; /* CPU or CUDA, never AUTO after creation */
-    sp_pool *pool;
-    char name[160];
-    size_t cur_bytes;  /* CPU: live sp_device_alloc bytes + rasterizer scratch */
-    size_t peak_bytes;
-};
-
-/* Records scratch growth (delta > 0) or release (delta < 0) for sp_device_peak_bytes. */
-void sp_device_account(sp_device *dev, long long delta);
 
 /* Grows a host scratch buffer to at least `bytes` (contents not kept), accounting the change
  * to dev. Returns 0 or SP_E_NOMEM. */
@@ -234,5 +224,14 @@ _Static_assert(sizeof(cpu_gauss) == 64, "cpu_gauss is one cache line");
 int cpu_reserve_thread_scratch(cpu_raster *r, sp_error *err);
 int cpu_rasterize_forward(cpu_raster *r, sp_raster_out *out, sp_error *err);
 int cpu_rasterize_backward(cpu_raster *r, const sp_raster_grad_in *gin, sp_error *err);
+/* rasterize_surface.c: first-surface depth of the last projection and binning (out [H][W]). */
+int cpu_rasterize_surface(cpu_raster *r, float surface_alpha, float *out, sp_error *err);
+/* sh.c: the CPU SH kernels for the backend table. */
+int cpu_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active, const float *sh,
+                  const float *means, sp_vec3 cam_center, float *rgb, int out_stride, sp_error *err);
+int cpu_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_active,
+                           const float *sh, const float *means, sp_vec3 cam_center,
+                           const float *rgb, const float *v_rgb, int stride, float *v_sh,
+                           float *v_means, sp_error *err);
 
 #endif

@@ -1,15 +1,15 @@
-/* The seam between the train module's C code (src/train/ (.c)) and its CUDA kernels
- * (src/train/cuda/ (.cu)): the per-element work of one training step (losses, Adam, densification
- * statistics, column packing). Plain C entry points on DEVICE pointers, compiled only when
- * SP_HAVE_CUDA is defined; the CPU versions in src/train/ (.c) have exactly the same semantics and
- * are the reference the CUDA test compares against. All sizes are element counts, all images
- * row-major [H][W][stride]. Every function returns 0 or a negative SP_E_* code (SP_E_DEVICE on a
- * CUDA failure, with the CUDA error string in err). Kernels run on the default stream; functions
- * that return host values (stats, out_mse) synchronise. */
-#ifndef SP_TRAIN_CUDA_API_H
-#define SP_TRAIN_CUDA_API_H
+/* The train module's backend seam: the per-element work of one training step (losses, Adam,
+ * densification statistics, column packing) as a table of entry points on DEVICE pointers, one
+ * table per backend: the CPU's (cpu_kernels.c over loss.c) and CUDA's (cuda/train_ops.cu;
+ * nocuda/ returns none). Both have exactly the same semantics; the CPU functions in loss.c are the
+ * reference the CUDA test compares against. All sizes are element counts, all images row-major
+ * [H][W][stride]. Every entry returns 0 or a negative SP_E_* code (SP_E_DEVICE on a CUDA failure,
+ * with the CUDA error string in err). CUDA work runs on the device's stream; entries that return
+ * host values (stats, out_mse, out_bad) wait for it. */
+#ifndef SP_TRAIN_KERNELS_H
+#define SP_TRAIN_KERNELS_H
 
-#include "semsplat/core.h"
+#include "semsplat/device.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -27,51 +27,61 @@ extern "C" {
 /* Scratch the RGB loss needs, in floats (device memory the caller allocates once per size). */
 #define SP_LOSS_SCRATCH_FLOATS(H, W, C) ((size_t)16 * (size_t)(H) * (size_t)(W) * (size_t)(C))
 
-/* RGB photometric loss of 3DGS: loss = (1 - ssim_lambda) * L1 + ssim_lambda * (1 - SSIM), with
- * L1 = mean |pred - target| over H*W*C and SSIM the mean SSIM above.
- *   pred    [H][W][pred_stride]   channels [0, C) are compared (C <= pred_stride)
- *   target  [H][W][C]
- *   scratch SP_LOSS_SCRATCH_FLOATS(H, W, C) floats
- *   v_pred  [H][W][pred_stride] or NULL (evaluation only): d loss / d pred WRITTEN into channels
- *           [0, C) (other channels untouched). L1's subgradient at pred == target is 0.
- *   stats   HOST double[4]: loss, L1, SSIM, MSE (mean squared error over H*W*C, for PSNR). */
-int sp_cuda_rgb_loss(const float *pred, int pred_stride, const float *target, int H, int W, int C,
-                     float ssim_lambda, float *scratch, float *v_pred, double stats[4],
-                     sp_error *err);
+typedef struct tr_kernels {
+    /* RGB photometric loss of 3DGS: loss = (1 - ssim_lambda) * L1 + ssim_lambda * (1 - SSIM), with
+     * L1 = mean |pred - target| over H*W*C and SSIM the mean SSIM above.
+     *   pred    [H][W][pred_stride]   channels [0, C) are compared (C <= pred_stride)
+     *   target  [H][W][C]
+     *   scratch SP_LOSS_SCRATCH_FLOATS(H, W, C) floats
+     *   v_pred  [H][W][pred_stride] or NULL (evaluation only): d loss / d pred WRITTEN into channels
+     *           [0, C) (other channels untouched). L1's subgradient at pred == target is 0.
+     *   stats   HOST double[4]: loss, L1, SSIM, MSE (mean squared error over H*W*C, for PSNR). */
+    int (*rgb_loss)(sp_device *dev, const float *pred, int pred_stride, const float *target, int H,
+                    int W, int C, float ssim_lambda, float *scratch, float *v_pred,
+                    double stats[4], sp_error *err);
 
-/* Feature distillation loss: lambda * mean over H*W*F of (pred - target)^2.
- *   pred    [H][W][pred_stride], channels [offset, offset + F) compared
- *   target  [H][W][F]
- *   v_pred  same layout as pred or NULL: d loss / d pred WRITTEN into channels [offset, offset+F)
- *   out_mse HOST: the unweighted mean squared error (may be NULL) */
-int sp_cuda_feature_mse(const float *pred, int pred_stride, int offset, const float *target, int H,
-                        int W, int F, float lambda, float *v_pred, double *out_mse, sp_error *err);
+    /* Feature distillation loss: lambda * mean over H*W*F of (pred - target)^2.
+     *   pred    [H][W][pred_stride], channels [offset, offset + F) compared
+     *   target  [H][W][F]
+     *   v_pred  same layout as pred or NULL: d loss / d pred WRITTEN into channels [offset, offset+F)
+     *   out_mse HOST: the unweighted mean squared error (may be NULL) */
+    int (*feature_mse)(sp_device *dev, const float *pred, int pred_stride, int offset,
+                       const float *target, int H, int W, int F, float lambda, float *v_pred,
+                       double *out_mse, sp_error *err);
 
-/* One Adam step (Kingma & Ba, as torch.optim.Adam without weight decay), elementwise on n:
- *   m = b1 m + (1-b1) g;  v = b2 v + (1-b2) g^2;
- *   param -= lr * (m / (1 - b1^step)) / (sqrt(v / (1 - b2^step)) + eps)
- * step is 1-based (the count of steps taken including this one). */
-int sp_cuda_adam_step(float *param, const float *grad, float *m, float *v, size_t n, float lr,
-                      float beta1, float beta2, float eps, int step, sp_error *err);
+    /* One Adam step (Kingma & Ba, as torch.optim.Adam without weight decay), elementwise on n:
+     *   m = b1 m + (1-b1) g;  v = b2 v + (1-b2) g^2;
+     *   param -= lr * (m / (1 - b1^step)) / (sqrt(v / (1 - b2^step)) + eps)
+     * step is 1-based (the count of steps taken including this one). */
+    int (*adam_step)(sp_device *dev, float *param, const float *grad, float *m, float *v, size_t n,
+                     float lr, float beta1, float beta2, float eps, int step, sp_error *err);
 
-/* Densification statistics (gsplat DefaultStrategy._update_state, absgrad off): for every
- * Gaussian i with radii[i] > 0,
- *   grad2d_sum[i] += sqrt((v_means2d[i][0] * scale_x)^2 + (v_means2d[i][1] * scale_y)^2)
- *   count[i]      += 1
- * where scale_x = W / 2 and scale_y = H / 2 turn pixel gradients into NDC ones.
- *   v_means2d [n][2], radii [n] (sp_raster_radii), grad2d_sum [n], count [n] */
-int sp_cuda_densify_accumulate(const float *v_means2d, const int32_t *radii, size_t n,
-                               float scale_x, float scale_y, float *grad2d_sum, float *count,
-                               sp_error *err);
+    /* Densification statistics (gsplat DefaultStrategy._update_state, absgrad off): for every
+     * Gaussian i with radii[i] > 0,
+     *   grad2d_sum[i] += sqrt((v_means2d[i][0] * scale_x)^2 + (v_means2d[i][1] * scale_y)^2)
+     *   count[i]      += 1
+     * where scale_x = W / 2 and scale_y = H / 2 turn pixel gradients into NDC ones.
+     *   v_means2d [n][2], radii [n] (sp_raster_radii), grad2d_sum [n], count [n] */
+    int (*densify_accumulate)(sp_device *dev, const float *v_means2d, const int32_t *radii,
+                              size_t n, float scale_x, float scale_y, float *grad2d_sum,
+                              float *count, sp_error *err);
 
-/* Strided column copy, used to pack features next to RGB in the colours buffer and to unpack
- * their gradients: for r < rows, c < cols:
- *   dst[r * dst_stride + dst_offset + c] = src[r * src_stride + src_offset + c] */
-int sp_cuda_copy_columns(float *dst, int dst_stride, int dst_offset, const float *src,
-                         int src_stride, int src_offset, size_t rows, int cols, sp_error *err);
+    /* Strided column copy, used to pack features next to RGB in the colours buffer and to unpack
+     * their gradients: for r < rows, c < cols:
+     *   dst[r * dst_stride + dst_offset + c] = src[r * src_stride + src_offset + c] */
+    int (*copy_columns)(sp_device *dev, float *dst, int dst_stride, int dst_offset,
+                        const float *src, int src_stride, int src_offset, size_t rows, int cols,
+                        sp_error *err);
 
-/* 1 when any of the n values is NaN or Inf (out_bad HOST int), for the NaN guard. */
-int sp_cuda_any_nonfinite(const float *x, size_t n, int *out_bad, sp_error *err);
+    /* 1 when any of the n values is NaN or Inf (out_bad HOST int), for the NaN guard. */
+    int (*any_nonfinite)(sp_device *dev, const float *x, size_t n, int *out_bad, sp_error *err);
+} tr_kernels;
+
+/* The CPU table (cpu_kernels.c), the CUDA table (NULL when built without CUDA) and the one for a
+ * device (never NULL for a device that exists). */
+extern const tr_kernels tr_cpu_kernels;
+const tr_kernels *tr_cuda_kernels(void);
+const tr_kernels *tr_kernels_of(const sp_device *dev);
 
 #ifdef __cplusplus
 }

@@ -37,7 +37,7 @@ static int write_features(const char *dir, const sp_splat *s, const sp_sem_pca *
     for (int v = 0; v < N && !rc; v++) {
         sp_camera c = cams[v];
         sp_camera_downscale(&c, 2);
-        sp_render_request req = {NULL, f, NULL, a, NULL};
+        sp_render_request req = {.features = f, .alpha = a};
         if ((rc = sp_render_splat(r, s, &c, &req, err))) break;
         for (int p = 0; p < MW * MH; p++)
             for (int k = 0; k < SC_DIM; k++)

@@ -74,7 +74,7 @@ static void write_capture(const char *dir, int model, const sp_splat *gt)
     float *rgb = malloc(IW * IH * 3 * sizeof(float));
     for (int k = 0; k < NV; k++) {
         sp_camera c = ring_camera(k);
-        sp_render_request req = {rgb, NULL, NULL, NULL, NULL};
+        sp_render_request req = {.rgb = rgb};
         CHECK_OK(sp_render_splat(r, gt, &c, &req, &err), &err);
         char name[64];
         snprintf(name, sizeof name, "%03d.png", k);
