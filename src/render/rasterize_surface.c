@@ -16,10 +16,9 @@ typedef struct {
 static void tile_surface(const surf_ctx *c, long tile, float *scratch)
 {
     const cpu_raster *r = c->r;
-    const int W = r->W, H = r->H;
-    const int tx0 = (int)(tile % r->tiles_x) * SP_TILE_SIZE, ty0 = (int)(tile / r->tiles_x) * SP_TILE_SIZE;
-    const int tx1 = tx0 + SP_TILE_SIZE - 1 < W - 1 ? tx0 + SP_TILE_SIZE - 1 : W - 1;
-    const int ty1 = ty0 + SP_TILE_SIZE - 1 < H - 1 ? ty0 + SP_TILE_SIZE - 1 : H - 1;
+    const int W = r->W;
+    const cpu_rect tr = cpu_tile_rect(r, tile);
+    const int tx0 = tr.x0, tx1 = tr.x1, ty0 = tr.y0, ty1 = tr.y1;
     const int npix = (tx1 - tx0 + 1) * (ty1 - ty0 + 1);
 
     float *T = scratch;                         /* [TILE_STRIDE] */
@@ -35,9 +34,8 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
     int ndone = 0;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
         const cpu_gauss *rec = r->tile_rec + j;
-        const int32_t *b = rec->box;
-        const int x0 = b[0] > tx0 ? b[0] : tx0, x1 = b[1] < tx1 ? b[1] : tx1;
-        const int y0 = b[2] > ty0 ? b[2] : ty0, y1 = b[3] < ty1 ? b[3] : ty1;
+        const cpu_rect bx = cpu_box_in_tile(rec, tr);
+        const int x0 = bx.x0, x1 = bx.x1, y0 = bx.y0, y1 = bx.y1;
         const float mx = rec->mx, my = rec->my;
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const cpu_v4f v_half_a = cpu_v4_splat(0.5f * con[0]), v_opac = cpu_v4_splat(rec->op);

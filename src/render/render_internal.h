@@ -91,6 +91,30 @@ typedef struct cpu_raster {
  * sp_gm_conic_frame) 00, 01, 11; v_opacity; v_depth; then D colour gradients. */
 #define SP_SLOT_FIXED 7
 
+/* Pixel bounds (inclusive) of a tile, clipped to the image; and the part of a Gaussian's pixel
+ * box inside it (empty when x0 > x1 or y0 > y1). Shared by the compositing passes. */
+typedef struct cpu_rect {
+    int x0, x1, y0, y1;
+} cpu_rect;
+
+static inline cpu_rect cpu_tile_rect(const cpu_raster *r, long tile)
+{
+    cpu_rect t;
+    t.x0 = (int)(tile % r->tiles_x) * SP_TILE_SIZE;
+    t.y0 = (int)(tile / r->tiles_x) * SP_TILE_SIZE;
+    t.x1 = t.x0 + SP_TILE_SIZE - 1 < r->W - 1 ? t.x0 + SP_TILE_SIZE - 1 : r->W - 1;
+    t.y1 = t.y0 + SP_TILE_SIZE - 1 < r->H - 1 ? t.y0 + SP_TILE_SIZE - 1 : r->H - 1;
+    return t;
+}
+
+static inline cpu_rect cpu_box_in_tile(const cpu_gauss *rec, cpu_rect t)
+{
+    const int32_t *b = rec->box;
+    cpu_rect o = {b[0] > t.x0 ? b[0] : t.x0, b[1] < t.x1 ? b[1] : t.x1,
+                  b[2] > t.y0 ? b[2] : t.y0, b[3] < t.y1 ? b[3] : t.y1};
+    return o;
+}
+
 /* project.c */
 int cpu_project(cpu_raster *r, sp_error *err);
 void cpu_project_backward(cpu_raster *r, const sp_raster_grads *grads);

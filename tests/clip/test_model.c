@@ -6,7 +6,7 @@
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 #include "test.h"
 
 enum { TW = 32, TH = 2, TL = 2, TM = 64, VOCAB = 49408, CTX = 77,

@@ -9,7 +9,7 @@
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 #include "test.h"
 
 static char dir[1024];

@@ -151,8 +151,9 @@ static int cu_copy_kind(sp_device *dev, void *dst, const void *src, size_t bytes
 {
     cudaStream_t st = ctx_of(dev)->stream;
     SP_CUDA_CHECK(cudaMemcpyAsync(dst, src, bytes, kind, st), err, what);
-    /* a download returns when the bytes are in host memory (also for pinned buffers) */
-    if (kind == cudaMemcpyDeviceToHost) SP_CUDA_CHECK(cudaStreamSynchronize(st), err, what);
+    /* uploads and downloads return when the host buffer may be reused / holds the bytes, also
+     * for pinned buffers (as the synchronous copies they replace did) */
+    if (kind != cudaMemcpyDeviceToDevice) SP_CUDA_CHECK(cudaStreamSynchronize(st), err, what);
     return 0;
 }
 
