@@ -1,7 +1,7 @@
 /* CUDA backend: a batch of views of one set of Gaussians (sp_render_views), with one wait for the
  * GPU per batch instead of one per view. Every view is projected into its own slice of one
  * projection buffer ([views][n]); one scan over all the slices' tile counts gives every pair its
- * place in one pair buffer, so one strided copy of the views' totals (the only wait) sizes every
+ * place in one pair buffer, so one copy of the views' totals (the only wait) sizes every
  * sort; then each view's pairs are emitted, sorted and composited with the single-view kernels,
  * unchanged, on pointers into its slices, all queued on the device's stream. The per-pixel
  * forward state (final transmittance, list ends) is shared: nothing differentiates a batch. */
@@ -45,6 +45,14 @@ static int reserve_upfront(sp_cuda_raster *r, const sp_raster_view *views, size_
     return sp_cuda_reserve_proj(r, nv * n, all, err);
 }
 
+/* ends[v] = offsets[(v + 1) n - 1]: where view v's pairs end in the batch's pair buffers. */
+__global__ void k_view_ends(const unsigned long long *__restrict__ offsets, size_t n, size_t nv,
+                            unsigned long long *__restrict__ ends)
+{
+    size_t v = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
+    if (v < nv) ends[v] = offsets[(v + 1) * n - 1];
+}
+
 /* Projections, the scan of all tile counts and the one wait for the views' pair totals. */
 static int project_and_count(sp_cuda_raster *r, const sp_raster_cfg *cfg, const sp_raster_in *geom,
                              batch_view *bv, size_t nv, unsigned long long *ends, sp_error *err)
@@ -64,9 +72,11 @@ static int project_and_count(sp_cuda_raster *r, const sp_raster_cfg *cfg, const 
     SP_CUDA_CHECK(cub::DeviceScan::InclusiveSum(r->s_cub.ptr, tmp, ntiles, offsets, (int64_t)count,
                                                 r->stream),
                   err, "tile-count scan");
-    /* view i's pairs end at offsets[(i + 1) n - 1]: one strided copy of nv values */
-    SP_CUDA_CHECK(cudaMemcpy2DAsync(ends, sizeof *ends, offsets + n - 1, n * sizeof *offsets,
-                                    sizeof *ends, nv, cudaMemcpyDeviceToHost, r->stream),
+    /* view i's pairs end at offsets[(i + 1) n - 1]: gathered, then one copy of nv values */
+    unsigned long long *d_ends = (unsigned long long *)r->s_counts.ptr;
+    k_view_ends<<<sp_div_up(nv, 256), 256, 0, r->stream>>>(offsets, n, nv, d_ends);
+    SP_CUDA_LAUNCHED(err, "gathering the views' pair counts");
+    SP_CUDA_CHECK(cudaMemcpyAsync(ends, d_ends, nv * sizeof *ends, cudaMemcpyDeviceToHost, r->stream),
                   err, "reading the views' pair counts");
     SP_CUDA_CHECK(cudaStreamSynchronize(r->stream), err,
                   "reading the views' pair counts (an earlier kernel may have failed)");
