@@ -12,13 +12,17 @@
  *                   [feature columns packed beside RGB], forward, L1+SSIM loss and gradient,
  *                   [feature MSE], backward, SH backward, densification statistics, Adam on
  *                   every parameter group (the loop src/train runs, minus host bookkeeping)
+ *   views           inference renders of an uploaded scene (sp_scene, SH degree 1 + 16 features):
+ *                   V views (RGB, features, expected depth, downloaded to the host) as one
+ *                   sp_render_views batch and one view per call, in ms per view
  * Median of 20 runs after 5 warm-ups, synchronised. Peak memory is what semsplat allocated on
  * the GPU (sp_device_peak_bytes of the CUDA device), measured per case in a child process so cases do not mix;
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
  *        bench_render_gpu raster N W H D  one rasterizer case
- *        bench_render_gpu step F          one training step case with F feature channels */
+ *        bench_render_gpu step F          one training step case with F feature channels
+ *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -317,6 +321,79 @@ static void case_step(int F, const char *gpu)
     fflush(stdout);
 }
 
+/* ---- inference batches --------------------------------------------------------------------- */
+
+typedef struct {
+    sp_raster *r;
+    sp_scene *sc;
+    const sp_camera *cams;
+    const sp_render_request *reqs;
+    int nv, batch;
+} vctx;
+
+static void run_views(void *p)
+{
+    vctx *c = p;
+    if (c->batch) {
+        OK(sp_render_views(c->r, c->sc, c->cams, (size_t)c->nv, c->reqs, &g_err));
+        return;
+    }
+    for (int v = 0; v < c->nv; v++) OK(sp_render_views(c->r, c->sc, &c->cams[v], 1, &c->reqs[v], &g_err));
+}
+
+static void case_views(size_t n, int W, int H, int nv, const char *gpu)
+{
+    enum { F = 16 };
+    sp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    sp_camera_intrinsics_fov(&cam, W, H, 1.0f);
+    sp_splat s;
+    OK(sp_splat_alloc(&s, n, 1, F, &g_err));
+    for (size_t i = 0; i < n; i++) { /* the raster cases' distribution, before the camera */
+        float z = 2.f + 8.f * frand();
+        s.means[i * 3] = (frand() * 2 - 1) * z * (W / 2.f) / cam.fx;
+        s.means[i * 3 + 1] = (frand() * 2 - 1) * z * (H / 2.f) / cam.fy;
+        s.means[i * 3 + 2] = z;
+        for (int k = 0; k < 3; k++)
+            s.log_scales[i * 3 + k] = logf(expf(logf(0.5f) + frand() * (logf(8.f) - logf(0.5f))) * z / cam.fx);
+        for (int k = 0; k < 4; k++) s.quats[i * 4 + k] = nrand();
+    }
+    for (size_t i = 0; i < n * 12; i++) s.sh[i] = 0.3f * nrand();
+    for (size_t i = 0; i < n * F; i++) s.features[i] = frand();
+    sp_raster *r = NULL;
+    sp_scene *sc = NULL;
+    OK(sp_raster_create(&r, g_dev, &g_err));
+    OK(sp_scene_create(&sc, g_dev, &s, SP_SCENE_RGB | SP_SCENE_FEATURES, &g_err));
+    sp_camera *cams = malloc(sizeof *cams * nv);
+    sp_render_request *reqs = calloc(nv, sizeof *reqs);
+    size_t npix = (size_t)W * H;
+    for (int v = 0; v < nv; v++) { /* small turns about the image's y axis */
+        cams[v] = cam;
+        float a = 0.2f * (v - nv / 2) / (float)nv, ca = cosf(a), sa = sinf(a);
+        float R[9] = {ca, 0, -sa, 0, 1, 0, sa, 0, ca};
+        memcpy(cams[v].R, R, sizeof R);
+        reqs[v].rgb = malloc(npix * 3 * 4);
+        reqs[v].features = malloc(npix * F * 4);
+        reqs[v].depth = malloc(npix * 4);
+    }
+    vctx c = {r, sc, cams, reqs, nv, 1};
+    double batch = time_ms(run_views, &c);
+    c.batch = 0;
+    double single = time_ms(run_views, &c);
+    char set[200];
+    snprintf(set, sizeof set, "(n=%zu %dx%d, %d views, RGB + %d features + depth to the host, %s)", n,
+             W, H, nv, F, gpu);
+    printf("views_batch_ms      %8.3f  ms/view %s\n", batch / nv, set);
+    printf("views_single_ms     %8.3f  ms/view %s\n", single / nv, set);
+    fflush(stdout);
+    for (int v = 0; v < nv; v++)
+        free(reqs[v].rgb), free(reqs[v].features), free(reqs[v].depth);
+    free(reqs), free(cams);
+    sp_scene_free(sc);
+    sp_raster_free(r);
+    sp_splat_free(&s);
+}
+
 static int run_child(char *const argv[])
 {
     pid_t pid = fork();
@@ -339,11 +416,13 @@ int main(int argc, char **argv)
     }
     /* each case in its own process with its own device, so peak memory does not mix */
     int is_raster = argc == 6 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
-    if (is_raster || is_step) {
+    int is_views = argc == 6 && !strcmp(argv[1], "views");
+    if (is_raster || is_step || is_views) {
         OK(sp_device_create(&g_dev, SP_DEVICE_CUDA, 0, &g_err));
         char gpu[256];
         snprintf(gpu, sizeof gpu, "%s", sp_device_name(g_dev));
         if (is_raster) case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
+        else if (is_views) case_views((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
         else case_step(atoi(argv[2]), gpu);
         sp_device_free(g_dev);
         return 0;
@@ -356,6 +435,12 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char *a[] = {argv[0], "raster", (char *)cases[i][0], (char *)cases[i][1],
                      (char *)cases[i][2], (char *)cases[i][3], NULL};
+        fails += run_child(a) != 0;
+    }
+    static const char *views[][4] = {{"300000", "320", "240", "16"}, {"1000000", "640", "480", "8"}};
+    for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
+        char *a[] = {argv[0], "views", (char *)views[i][0], (char *)views[i][1], (char *)views[i][2],
+                     (char *)views[i][3], NULL};
         fails += run_child(a) != 0;
     }
     static const char *feats[] = {"0", "32", "64"};
