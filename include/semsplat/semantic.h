@@ -198,6 +198,123 @@ const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
  * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms. */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
 
+/* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *
+ *
+ * Matches free text against a scene's own class names ("refrigerator", "kitchen counter", ...)
+ * with WordNet 3.0 (Debian's wordnet-base, read directly from /usr/share/wordnet). It is
+ * matching against KNOWN class names: it cannot find anything the world's labels do not name.
+ *
+ * Per class c and query q (the query's head noun h with its senses, its modifiers, and its
+ * description words D, e.g. "sit" in "something to sit on"), the confidence in 0..1 is
+ *   taxonomy  T = 1                                      h and c share a synset (synonym)
+ *               = WuP(h,c) = 2 dep(h) / (d + 2 dep(h))   h is a hypernym of c, d levels up
+ *               = LAMBDA^d WuP(h,c)                     c is a hypernym of h, d levels up
+ *               = PART                                   h is a part of c (WordNet part holonym)
+ *               = MU WuP(h,c)                            neither (siblings, cousins): < threshold
+ *   (Wu & Palmer 1994 on depths from 'entity'; class senses: WordNet's physical-entity senses of
+ *   the class's WordNet collocation or head noun; the best pair of senses counts), times
+ *     (1 - BETA)       per query modifier that names another class of the scene and not this one
+ *     (1 - EPS)        per attribute the class's definitions do not mention ("red": reported ignored)
+ *     (1 - GAMMA + GAMMA G)  when there is a description beside the head noun;
+ *   without a head noun (or with a placeholder: "something", "a place") the confidence is G:
+ *   gloss overlap  G = sum_d w_d DELTA^k(d) / sum_d w_d  over description words d found (as a base
+ *   form, or a lemma of their commonest sense, discounted) in the class's definition, its lemmas or
+ *   its name (k = 0), or its hypernyms' definitions (k = 1, 2); w_d = 1 / (1 + ln(1 + senses(d))),
+ *   WordNet's polysemy standing in for word frequency. A multi-word query whose modifier is itself
+ *   a class ("tv monitor") also scores T(modifier, c) * WuP(head, c).
+ * SP_LEX_THRESHOLD is the one threshold: at or above it a class is a match. Siblings can never
+ * reach it (MU * WuP < 0.5), which is what keeps near-category absent things ("dishwasher" in a
+ * house with a refrigerator) out.
+ * Relations: "X near / next to / beside / by / in / on / to / above / under ... Y" splits where
+ * both sides match; regions ("the kitchen", "area with appliances", "the area that looks like a
+ * kitchen") resolve to the classes that define them: entries of the region table
+ * (data/semantic/regions.json, extendable) and the nouns and description words of the region's
+ * WordNet definition, each matched as above.
+ * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (reads use pread);
+ * any number of threads may match against them at once. Results own nothing (fixed arrays). */
+
+#define SP_LEX_THRESHOLD 0.5f           /* confidence at or above which a class matches */
+#define SP_LEX_DEFAULT_WORDNET "/usr/share/wordnet"
+#define SP_LEX_MAX_CLASSES 128
+#define SP_LEX_MAX_IGNORED 8
+
+typedef struct sp_lexicon sp_lexicon;
+typedef struct sp_lex_vocab sp_lex_vocab;
+
+/* Opens WordNet's database files in dir (NULL = SP_LEX_DEFAULT_WORDNET). Reads nothing else:
+ * start-up is a few file opens and one synset read. Fails with SP_E_NOTFOUND naming the file and
+ * the Debian package when the database is missing. */
+int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err);
+void sp_lexicon_free(sp_lexicon *lx);
+
+/* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES, duplicates allowed: each index keeps
+ * its name) against lx, which must outlive the vocabulary. regions_path: a region table (JSON
+ * object: region name -> array of object phrases), NULL = sp_data_dir()/semantic/regions.json
+ * ("" = none). */
+int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
+                        int n, const char *regions_path, sp_error *err);
+void sp_lex_vocab_free(sp_lex_vocab *v);
+int sp_lex_vocab_size(const sp_lex_vocab *v);
+const char *sp_lex_vocab_class(const sp_lex_vocab *v, int i);
+
+/* How a class matched (strongest evidence). */
+typedef enum {
+    SP_LEX_NONE = 0,
+    SP_LEX_EXACT,     /* the class name itself (after plurals and inflections) */
+    SP_LEX_SYNONYM,   /* the query's head shares a WordNet synset with the class */
+    SP_LEX_HYPERNYM,  /* the query is more general ("appliance" -> refrigerator) */
+    SP_LEX_HYPONYM,   /* the query is more specific ("clock" -> timepiece) */
+    SP_LEX_PART,      /* the query names a part of the class */
+    SP_LEX_RELATED,   /* siblings or cousins in the taxonomy: always below the threshold */
+    SP_LEX_GLOSS,     /* description words found in the class's definitions */
+    SP_LEX_MODIFIER,  /* through a modifier that is itself a class ("tv monitor") */
+    SP_LEX_REGION     /* a member of the region the query names */
+} sp_lex_kind;
+
+const char *sp_lex_kind_name(int kind); /* "exact", "synonym", ... */
+
+typedef struct sp_lex_class_match {
+    int class_index;
+    float score;          /* confidence 0..1; >= SP_LEX_THRESHOLD = match */
+    int kind;             /* sp_lex_kind */
+    char query_sense[64]; /* the WordNet lemma of the query sense used ("" for gloss matches) */
+    char class_sense[64]; /* the lemma of the class sense used */
+    char path[256];       /* taxonomy path, "armchair > chair > seat" (class to query or LCS) */
+    char gloss_words[192];/* "sit (seat: furniture that is designed for sitting on)" */
+    char definition[192]; /* WordNet definition of the class sense used */
+} sp_lex_class_match;
+
+/* One resolved phrase: every class scored, best first. */
+typedef struct sp_lex_phrase {
+    char text[128];        /* the words of this phrase */
+    char head[64];         /* head noun or collocation used ("" = description only) */
+    int is_region;         /* the phrase names a region */
+    char region[64];       /* its name ("kitchen", or the phrase defining a generic area) */
+    int n_matches;         /* = number of classes */
+    sp_lex_class_match matches[SP_LEX_MAX_CLASSES];
+} sp_lex_phrase;
+
+typedef struct sp_lex_result {
+    char text[256];
+    sp_lex_phrase target;  /* what to find (X of "X near Y", or the whole query) */
+    char relation[24];     /* "" or "near", "next to", "in", "on", "to", "above", ... */
+    sp_lex_phrase anchor;  /* Y when relation[0] */
+    int n_ignored;
+    char ignored[SP_LEX_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
+    float confidence;      /* the target's best score (0 when nothing matched) */
+    int found;             /* confidence >= SP_LEX_THRESHOLD (and the anchor found, if any) */
+} sp_lex_result;
+
+/* Scores text against every class of v. The result is large (fixed arrays): allocate it on the
+ * heap. Fails on empty text; a text with no known words gives found = 0, not an error. */
+int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err);
+/* The result as JSON (malloc'd, caller frees): text, found, confidence, target {head, region,
+ * matches [{class, score, kind, query_sense, class_sense, path, gloss_words, definition}] above
+ * min_score}, relation, anchor, ignored. */
+char *sp_lex_result_json(const sp_lex_result *res, const sp_lex_vocab *v, float min_score);
+/* A human-readable explanation (--explain) into out. */
+void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, size_t cap);
+
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
 /* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
