@@ -129,7 +129,9 @@ lex_tax lex_compare(const lex_sense *q, const lex_sense *c)
         float s = wup(dep, 0, d);
         if (s > t.score) t = (lex_tax){s, SP_LEX_HYPERNYM, 0, i};
     }
-    for (int k = 0; k < q->n_holo; k++)
+    /* A part of the class names where it is, through one weak step: only for a sense of the
+     * query people use (magazine the periodical, not a camera's film chamber). */
+    for (int k = 0; k < q->n_holo && q->attested; k++)
         if (q->holo[k] == c->off && LEX_PART > t.score) t = (lex_tax){LEX_PART, SP_LEX_PART, -1, -1};
     if (t.kind != SP_LEX_NONE) return t;
     /* Neither subsumes the other: Wu-Palmer through the deepest common ancestor, scaled by MU. */
@@ -208,12 +210,12 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
     return 0;
 }
 
-float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, int *src)
+float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight, int *src)
 {
     float best = 0;
     for (int i = 0; i < b->n; i++)
         for (int k = 0; k < n; k++)
-            if (!strcmp(b->words[i].w, bases[k]) && b->words[i].weight > best) {
+            if (b->words[i].weight >= min_weight && !strcmp(b->words[i].w, bases[k]) && b->words[i].weight > best) {
                 best = b->words[i].weight;
                 if (src) *src = b->words[i].src;
             }

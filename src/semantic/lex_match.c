@@ -14,18 +14,6 @@ const char *sp_lex_kind_name(int kind)
     return kind >= 0 && kind <= SP_LEX_REGION ? names[kind] : "?";
 }
 
-/* Words that stand for "some area" and take their meaning from what follows ("area with
- * appliances") or precedes ("the kitchen area"). */
-static int is_generic_region(const char *w)
-{
-    static const char *const words[] = {"area", "areas", "region", "zone", "section", "part",
-                                        "corner", "space", "room", "place", "somewhere", "spot",
-                                        "side", NULL};
-    for (int i = 0; words[i]; i++)
-        if (!strcmp(w, words[i])) return 1;
-    return 0;
-}
-
 static void join_words(const lex_tokens *t, int from, int to, char *out, size_t cap)
 {
     size_t o = 0;
@@ -97,8 +85,8 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
             char base[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
             if (nb < 0) rc = nb;
-            if (rc || lex_word_class_of(w) != LW_CONTENT || is_generic_region(w) ||
-                (nb > 0 && is_generic_region(base[0])))
+            if (rc || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(w) ||
+                (nb > 0 && lex_is_generic_region(base[0])))
                 continue;
             int noun = lex_is_pos(v->lx, WN_NOUN, w, err), verb = lex_is_pos(v->lx, WN_VERB, w, err);
             if (noun < 0 || verb < 0) rc = noun < 0 ? noun : verb;
@@ -163,7 +151,7 @@ static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase 
     char name[WN_LEMMA_MAX];
     snprintf(name, sizeof name, "%s", region);
     for (char *save = NULL, *w = strtok_r(name, "_ ", &save); w; w = strtok_r(NULL, "_ ", &save)) {
-        if (is_generic_region(w)) continue;
+        if (lex_is_generic_region(w)) continue;
         for (int i = 0; i < v->n; i++)
             for (int k = 0; k < v->classes[i].n_tok; k++) {
                 sp_lex_class_match *m = &ph->matches[i];
@@ -199,7 +187,7 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     for (int s = 0; r && s < np->n_senses && !def; s++)
         if (lex_anc_find(&np->senses[s], ROOM) > 0) def = np->senses[s].definition;
     if (r && !def && np->n_senses) def = np->senses[0].definition;
-    int generic = is_generic_region(np->head);
+    int generic = lex_is_generic_region(np->head);
     int linked = np->head_start + 1 < t->n && lex_is_region_link(t->w[np->head_start + 1]);
     if (r || (def && !generic)) {
         start_members(v, ph);
@@ -329,7 +317,7 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         if (!k || i + k >= t.n) continue;
         if (!strcmp(name, "to") && purpose_to(v, &t, i, err)) continue;
         if (!strcmp(name, "of") && lex_word_class_of(t.w[i - 1]) == LW_PARTITIVE) continue;
-        if (is_generic_region(t.w[i - 1])) continue; /* "area with appliances" is one region */
+        if (lex_is_generic_region(t.w[i - 1])) continue; /* "area with appliances" is one region */
         memset(trial, 0, sizeof *trial);
         if ((rc = resolve(v, &t, 0, i, &trial->target, trial, 0, err))) break;
         if (best_of(&trial->target) < SP_LEX_THRESHOLD || trial->target.is_region) continue;

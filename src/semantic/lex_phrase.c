@@ -59,9 +59,9 @@ void lex_np_free(lex_np *np)
     memset(np, 0, sizeof *np);
 }
 
-/* Loads the noun senses of lemma (all of its morphy bases). Class names (attested_only) keep the
- * senses that the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of
- * paint"), and the first sense always; physical_only drops the non-physical ones. */
+/* Loads the noun senses of lemma (all of its morphy bases). attested_only keeps the senses that
+ * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
+ * the first sense always; physical_only drops the non-physical ones. */
 static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
                        lex_np *np, sp_error *err)
 {
@@ -88,6 +88,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == offs[i];
             if (dup) continue;
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
+            tmp->attested = i == 0 || i < tagged;
             if (physical_only && !lex_sense_physical(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
@@ -128,8 +129,9 @@ static int noun_like(const lex_db *lx, const char *w, sp_error *err)
     return rc != 0 ? rc : split_compound(lx, w, l, r, err);
 }
 
-/* The head's senses; a split compound's first part becomes the last modifier. Class names try
- * attested physical senses, then any physical ones, then all. */
+/* The head's senses; a split compound's first part becomes the last modifier. Queries keep
+ * every sense (a user may mean any); class names their attested physical ones, or when none is
+ * attested all physical ones (np->fallback: the vocabulary chooses by context), or all. */
 static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_np *np, sp_error *err)
 {
     char left[WN_LEMMA_MAX], right[WN_LEMMA_MAX];
@@ -145,7 +147,10 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     rc = load_senses(lx, h, physical_only, physical_only, np, err);
-    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 1, 0, np, err);
+    if (!rc && physical_only && np->n_senses == 0) {
+        np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
+        rc = load_senses(lx, h, 1, 0, np, err);
+    }
     if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, np, err);
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = rc ? 0 : lex_bases(lx, WN_NOUN, h, b, err);
@@ -174,7 +179,11 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
             continue;
         }
         if (marker) {
-            if (cls == LW_CONTENT && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
+            char b[WN_MAX_BASES][WN_LEMMA_MAX];
+            int nb = lex_bases(lx, WN_NOUN, w, b, err);
+            if (nb < 0) return nb;
+            int where = lex_is_generic_region(w) || (nb > 0 && lex_is_generic_region(b[0]));
+            if (cls == LW_CONTENT && !where && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
             continue;
         }
         if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;

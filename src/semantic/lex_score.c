@@ -69,7 +69,8 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
         int s = -1;
-        float w = lex_bag_find(&c->bag, one, 1, &s) * e->f[i];
+        /* one indirection at most: a synonym counts in the class's own definition only */
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
     if (best > 0 && why && src >= 0) snprintf(why, cap, "%s (%s)", word, c->bag.src[src]);
@@ -126,9 +127,9 @@ static float wup3(int depth_lcs, int dq, int dc)
 
 /* A name made of a noun modifier and a head ("shoe cabinet") is one level below the head's
  * sense: the head alone is its hypernym, and another kind of the head ("dresser", a cabinet) is
- * its sibling, not a match. sq, sc: the query's and the class's extra level (0 or 1); the
- * comparison t of the head senses is redone on the lengthened paths. */
-static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c, int sq, int sc)
+ * its sibling, not a match. The comparison t of the head senses is redone with the class's path
+ * one step longer. */
+static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
 {
     int dq, dc, dep;
     switch (t.kind) {
@@ -138,17 +139,16 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c, int
     case SP_LEX_RELATED: dq = q->anc[t.q_anc].dist, dc = c->anc[t.c_anc].dist, dep = c->anc[t.c_anc].depth; break;
     default: return t;
     }
-    dq += sq, dc += sc;
+    dc += 1;
     lex_tax r = t;
-    if (dq == 0 && dc == 0) r.score = 1.0f, r.kind = SP_LEX_SYNONYM;
-    else if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
+    if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
     else if (dc == 0) r.score = powf(LEX_LAMBDA, (float)dq) * wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
     else r.score = LEX_MU * wup3(dep, dq, dc), r.kind = SP_LEX_RELATED;
     return r;
 }
 
-/* The best taxonomic comparison of two sense sets; sq, sc: see specialize(). */
-static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc, int sq, int sc,
+/* The best taxonomic comparison of two sense sets; spec: the class is one level below its head. */
+static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc, int spec,
                         int *bq, int *bc)
 {
     lex_tax best = {0, SP_LEX_NONE, -1, -1};
@@ -156,7 +156,7 @@ static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc
     for (int i = 0; i < nq; i++)
         for (int j = 0; j < nc; j++) {
             lex_tax t = lex_compare(&qs[i], &cs[j]);
-            if (sq || sc) t = specialize(t, &qs[i], &cs[j], sq, sc);
+            if (spec) t = specialize(t, &qs[i], &cs[j]);
             if (t.score > best.score) best = t, *bq = i, *bc = j;
         }
     return best;
@@ -192,7 +192,6 @@ static void describe_tax(sp_lex_class_match *m, const lex_tax *t, const lex_sens
 /* Per query: the modifiers' base forms, expansions and (for those that name a class) senses. */
 typedef struct {
     char mod_base[8][WN_LEMMA_MAX];
-    int mod_noun[8]; /* the modifier is a noun */
     expansion mod_exp[8], desc_exp[16];
     lex_np ref[8]; /* modifier (or first part of a joined head) read as a noun of its own */
     int n_ref;
@@ -208,7 +207,6 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         int nb = lex_bases(lx, WN_NOUN, np->mods[i], b, err);
         if (nb < 0) return nb;
         snprintf(qp->mod_base[i], WN_LEMMA_MAX, "%s", nb > 0 ? b[0] : np->mods[i]);
-        qp->mod_noun[i] = nb > 0;
         rc = expand(lx, np->mods[i], &qp->mod_exp[i], err);
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
@@ -237,21 +235,6 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
     return rc;
 }
 
-/* 1 when the query names its own kind of the head: a noun modifier the class's name and
- * definitions do not have ("night" of "nightstand" against "tv stand"). */
-static int other_kind(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, const lex_class *c)
-{
-    for (int i = 0; i < np->n_mods; i++) {
-        int in_name = 0;
-        for (int k = 0; k < c->n_tok; k++) in_name |= !strcmp(c->tok[k], qp->mod_base[i]);
-        if (in_name || !qp->mod_noun[i]) continue;
-        if (bag_match(c, &qp->mod_exp[i], np->mods[i], NULL, 0) > 0) continue;
-        return 1;
-    }
-    (void)v;
-    return 0;
-}
-
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -269,8 +252,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
     } else if (has_head && c->np.n_senses) {
         int bq, bc;
-        lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses,
-                             c->spec && other_kind(v, np, qp, c), c->spec, &bq, &bc);
+        lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, c->spec, &bq, &bc);
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
@@ -329,7 +311,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     /* A compound whose modifier names this class: T(modifier, c) * WuP(head, c). */
     for (int r = 0; r < qp->n_ref && c->np.n_senses; r++) {
         int bq, bc;
-        lex_tax t = best_tax(qp->ref[r].senses, qp->ref[r].n_senses, c->np.senses, c->np.n_senses, 0,
+        lex_tax t = best_tax(qp->ref[r].senses, qp->ref[r].n_senses, c->np.senses, c->np.n_senses,
                              c->spec, &bq, &bc);
         if (t.kind == SP_LEX_RELATED) continue;
         float w = best_wup(np->senses, np->n_senses, c->np.senses, c->np.n_senses);

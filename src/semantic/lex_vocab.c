@@ -123,6 +123,36 @@ static int add_vocab_word(sp_lex_vocab *v, const char *w, sp_error *err)
     return 0;
 }
 
+/* A class name whose attested senses are not physical ("cube": the shapes) takes, among its
+ * physical senses, those closest to the scene's other classes (Resnik 1999, "disambiguating noun
+ * groupings"): support(s) = mean over other classes of the best Wu-Palmer similarity to one of
+ * their senses; senses within 0.02 of the best support stay ("magic cube" in a bookstore: the
+ * block, not the tropical shrub). */
+static void choose_by_context(sp_lex_vocab *v, int ci)
+{
+    lex_np *np = &v->classes[ci].np;
+    if (np->n_senses < 2 || v->n < 2) return;
+    float support[LEX_MAX_SENSES], best = 0;
+    for (int s = 0; s < np->n_senses; s++) {
+        float sum = 0;
+        for (int k = 0; k < v->n; k++) {
+            if (k == ci) continue;
+            float b = 0;
+            for (int j = 0; j < v->classes[k].np.n_senses; j++) {
+                float w = lex_wup(&np->senses[s], &v->classes[k].np.senses[j]);
+                if (w > b) b = w;
+            }
+            sum += b;
+        }
+        support[s] = sum / (float)(v->n - 1);
+        if (support[s] > best) best = support[s];
+    }
+    int kept = 0;
+    for (int s = 0; s < np->n_senses; s++)
+        if (support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+    np->n_senses = kept;
+}
+
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
                         int n, const char *regions_path, sp_error *err)
 {
@@ -145,6 +175,8 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
             sp_error_prefix(err, "lexical: class '%s': ", classes[i]);
         for (int k = 0; k < v->classes[i].n_tok && !rc; k++) rc = add_vocab_word(v, v->classes[i].tok[k], err);
     }
+    for (int i = 0; i < v->n && !rc; i++)
+        if (v->classes[i].np.fallback) choose_by_context(v, i);
     if (!rc) {
         char path[2048];
         if (!regions_path) sp_path_join(path, sizeof path, sp_data_dir(), "semantic/regions.json");

@@ -146,3 +146,15 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
     *weight = 1.0f / (1.0f + logf(1.0f + (float)senses));
     return 0;
 }
+
+/* Words that stand for "some area" and take their meaning from what follows ("area with
+ * appliances") or precedes ("the kitchen area"). */
+int lex_is_generic_region(const char *w)
+{
+    static const char *const words[] = {"area", "areas", "region", "zone", "section", "part",
+                                        "corner", "space", "room", "place", "somewhere", "spot",
+                                        "side", NULL};
+    for (int i = 0; words[i]; i++)
+        if (!strcmp(w, words[i])) return 1;
+    return 0;
+}

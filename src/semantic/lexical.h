@@ -51,6 +51,9 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
 int lex_word_class_of(const char *w);
 /* Relation phrase starting at token i: its length in tokens (0 = none) and its canonical name. */
 int lex_relation_at(const lex_tokens *t, int i, const char **name);
+/* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
+ * and no description of an object ("something that lights the room"). */
+int lex_is_generic_region(const char *w);
 /* Words that introduce what an area contains or resembles ("with", "like", "looks", ...). */
 int lex_is_region_link(const char *w);
 
@@ -75,6 +78,7 @@ typedef struct lex_anc {
 typedef struct lex_sense {
     uint32_t off;
     int rank;              /* sense number of the lemma (1 = commonest) */
+    int attested;          /* the first sense, or one the tagged corpora attest */
     char definition[192];  /* its name is anc[0].name */
     int n_anc;
     lex_anc anc[LEX_MAX_ANC];
@@ -121,8 +125,9 @@ void lex_bag_free(lex_bag *b);
 /* Adds the base forms of every content word of text at weight, citing source. */
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
                      const char *source, sp_error *err);
-/* Best weight of any of the bases in the bag (0 = absent); *src gets the source index. */
-float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, int *src);
+/* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
+ * absent); *src gets the source index. */
+float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight, int *src);
 
 /* ---- phrases and classes -------------------------------------------------------------------- */
 
@@ -134,6 +139,7 @@ typedef struct lex_np {
     int head_start, head_end;             /* [start, end) of the head collocation, -1 none */
     char head[WN_LEMMA_MAX];              /* the collocation as a WordNet lemma */
     int placeholder;                      /* the head was "something", "a place", ... */
+    int fallback;                         /* class name without an attested physical sense */
     int split;                            /* the head is a closed compound split in two: its
                                            * first part is the last modifier ("nightstand") */
     int n_senses;
