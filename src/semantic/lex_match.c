@@ -33,80 +33,6 @@ static void add_ignored(sp_lex_result *res, const char *w)
     if (res->n_ignored < SP_LEX_MAX_IGNORED) snprintf(res->ignored[res->n_ignored++], 32, "%s", w);
 }
 
-/* Scores text (an object phrase) into ph; the region resolution's building block. */
-static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
-{
-    lex_tokens raw, t;
-    lex_tokenize(text, &raw);
-    int rc = lex_merge_collocations(v->lx, &raw, &t, err);
-    lex_np np;
-    if (!rc) rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err);
-    if (!rc) rc = lex_score_np(v, &np, ph, NULL, err);
-    lex_np_free(&np);
-    return rc;
-}
-
-/* Raises the membership of every class matching ph at or above the threshold; returns 1 when
- * ph supports the region (some class matched). */
-static int absorb(sp_lex_phrase *region, const sp_lex_phrase *ph, const char *why)
-{
-    int any = 0;
-    for (int i = 0; i < ph->n_matches; i++) {
-        const sp_lex_class_match *m = &ph->matches[i];
-        if (m->score < SP_LEX_THRESHOLD) continue;
-        any = 1;
-        sp_lex_class_match *r = &region->matches[m->class_index]; /* indexed by class until sorted */
-        if (m->score <= r->score) continue;
-        *r = *m; /* keeps how the member phrase matched: exact members rank before gloss ones */
-        snprintf(r->path, sizeof r->path, "%s: '%s' (%s)", why, ph->text, sp_lex_kind_name(m->kind));
-    }
-    return any;
-}
-
-
-/* Members of a named region: the table's phrases, the nouns and the description words of its
- * WordNet definition, and classes named after it ("kitchen counter"). */
-static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
-                          sp_lex_phrase *out, int *support, sp_error *err)
-{
-    sp_lex_phrase *ph = malloc(sizeof *ph);
-    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-    int rc = 0;
-    for (int i = 0; r && i < r->n_members && !rc; i++) {
-        snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
-        if (!(rc = score_text(v, r->members[i], ph, err))) *support += absorb(out, ph, "region table");
-    }
-    if (definition && definition[0] && !rc) {
-        lex_tokens t;
-        lex_tokenize(definition, &t);
-        char desc[512] = "something that";
-        for (int i = 0; i < t.n && !rc; i++) {
-            const char *w = t.w[i];
-            char base[WN_MAX_BASES][WN_LEMMA_MAX];
-            int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
-            if (nb < 0) rc = nb;
-            if (rc || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(w) ||
-                (nb > 0 && lex_is_generic_region(base[0])))
-                continue;
-            int noun = lex_is_pos(v->lx, WN_NOUN, w, err), verb = lex_is_pos(v->lx, WN_VERB, w, err);
-            if (noun < 0 || verb < 0) rc = noun < 0 ? noun : verb;
-            else if (noun && !verb) {
-                snprintf(ph->text, sizeof ph->text, "%s", w);
-                if (!(rc = score_text(v, w, ph, err))) *support += absorb(out, ph, "WordNet definition");
-            } else if (verb || lex_is_pos(v->lx, WN_ADJ, w, err) > 0) {
-                strncat(desc, " ", sizeof desc - strlen(desc) - 1);
-                strncat(desc, w, sizeof desc - strlen(desc) - 1);
-            }
-        }
-        if (!rc && strcmp(desc, "something that")) {
-            snprintf(ph->text, sizeof ph->text, "%s", desc);
-            if (!(rc = score_text(v, desc, ph, err))) *support += absorb(out, ph, "WordNet definition");
-        }
-    }
-    free(ph);
-    return rc;
-}
-
 /* 1 when ph's matches are already sorted best first. */
 static int sub_sorted(const sp_lex_phrase *ph)
 {
@@ -119,54 +45,6 @@ static int sub_sorted(const sp_lex_phrase *ph)
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
 
-#define ROOM 4105893u /* room.n.01 */
-
-/* The named region a head stands for: a table entry, or one of its synonyms' ("hall" -> hallway). */
-static int find_named_region(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
-                             sp_error *err)
-{
-    *r = lex_region_find(v, np->head);
-    for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
-        wn_synset syn;
-        wn_id id = {np->senses[s].off, WN_NOUN};
-        int rc = wn_read(v->lx->db, id, &syn, err);
-        if (rc) return rc;
-        for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
-        wn_synset_free(&syn);
-    }
-    return 0;
-}
-
-static void start_members(const sp_lex_vocab *v, sp_lex_phrase *ph)
-{
-    memset(ph->matches, 0, sizeof ph->matches);
-    for (int i = 0; i < v->n; i++) ph->matches[i].class_index = i;
-    ph->n_matches = v->n;
-}
-
-/* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any. */
-static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
-{
-    int any = 0;
-    char name[WN_LEMMA_MAX];
-    snprintf(name, sizeof name, "%s", region);
-    for (char *save = NULL, *w = strtok_r(name, "_ ", &save); w; w = strtok_r(NULL, "_ ", &save)) {
-        if (lex_is_generic_region(w)) continue;
-        for (int i = 0; i < v->n; i++)
-            for (int k = 0; k < v->classes[i].n_tok; k++) {
-                sp_lex_class_match *m = &ph->matches[i];
-                if (strcmp(v->classes[i].tok[k], w) || m->score >= 0.9f) continue;
-                memset(m, 0, sizeof *m);
-                m->class_index = i;
-                m->score = 0.9f;
-                m->kind = SP_LEX_REGION;
-                snprintf(m->path, sizeof m->path, "named after the region ('%s')", w);
-                any = 1;
-            }
-    }
-    return any;
-}
-
 /* A phrase naming a region: a room of the table or of WordNet ("the kitchen", "bedroom"), or a
  * generic area defined by what follows a link word or by its modifiers ("area with appliances",
  * "the area that looks like a kitchen", "the kitchen area"). Sets *is_region. */
@@ -177,32 +55,15 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     *is_region = 0;
     if (np->head_start < 0) return 0;
     const lex_region *r = NULL;
-    int rc = np->placeholder ? 0 : find_named_region(v, np, &r, err);
+    int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
     if (rc) return rc;
     /* A room of WordNet when its commonest sense is one ("kitchen"; not "car", whose fourth
      * sense is an elevator's cabin). */
-    const char *def = NULL;
-    if (np->n_senses && np->senses[0].rank == 1 && lex_anc_find(&np->senses[0], ROOM) > 0)
-        def = np->senses[0].definition;
-    for (int s = 0; r && s < np->n_senses && !def; s++)
-        if (lex_anc_find(&np->senses[s], ROOM) > 0) def = np->senses[s].definition;
-    if (r && !def && np->n_senses) def = np->senses[0].definition;
+    const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
     int generic = lex_is_generic_region(np->head);
     int linked = np->head_start + 1 < t->n && lex_is_region_link(t->w[np->head_start + 1]);
     if (r || (def && !generic)) {
-        start_members(v, ph);
-        snprintf(ph->region, sizeof ph->region, "%s", r ? r->name : np->head);
-        int support = 0;
-        if ((rc = region_members(v, r, def, ph, &support, err))) return rc;
-        support += named_after(v, ph->region, ph);
-        /* A room is known by its furniture: one object alone (a sink) does not make a bathroom. */
-        if (support < 2)
-            for (int i = 0; i < v->n; i++) {
-                ph->matches[i].score *= LEX_MU;
-                if (ph->matches[i].score > 0)
-                    snprintf(ph->matches[i].gloss_words, sizeof ph->matches[i].gloss_words,
-                             "only one of the region's objects is in this scene");
-            }
+        if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
     } else if (generic && depth == 0 && (linked || np->n_mods > 0)) {
         /* The complement: modifiers and the words after the link, without the link words. */
         lex_tokens ct = {0, {{0}}};
@@ -218,8 +79,8 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                 memcpy(ph->matches, sub->matches, sizeof ph->matches);
                 ph->n_matches = sub->n_matches;
             } else {
-                start_members(v, ph);
-                absorb(ph, sub, "objects of the area");
+                lex_region_start(v, ph);
+                lex_region_absorb(ph, sub, "objects of the area");
             }
         }
         free(sub);

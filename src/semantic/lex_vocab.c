@@ -1,12 +1,10 @@
 /* A scene's vocabulary for the lexical text encoder: each class name parsed once (head noun and
  * its physical senses, hypernym closures, the words of its definitions), and the region table. */
-#include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "lexical.h"
-#include "semsplat/io.h"
 
 int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err)
 {
@@ -38,6 +36,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     }
     free(v->classes);
     free(v->vocab_words);
+    for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
     free(v->regions);
     free(v);
 }
@@ -182,6 +181,7 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
         if (!regions_path) sp_path_join(path, sizeof path, sp_data_dir(), "semantic/regions.json");
         else snprintf(path, sizeof path, "%s", regions_path);
         if (path[0]) rc = lex_regions_load(v, path, err);
+        if (!rc) rc = lex_regions_prepare(v, err);
     }
     if (rc) {
         sp_lex_vocab_free(v);
@@ -189,53 +189,4 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
     }
     *out = v;
     return 0;
-}
-
-int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err)
-{
-    cJSON *js = NULL;
-    int rc = sp_json_read_file(path, &js, err);
-    if (rc) return sp_error_prefix(err, "lexical: region table: ");
-    if (!cJSON_IsObject(js)) {
-        cJSON_Delete(js);
-        return sp_error_set(err, SP_E_FORMAT, "%s: the region table must be a JSON object", path);
-    }
-    int n = cJSON_GetArraySize(js);
-    v->regions = calloc(n ? (size_t)n : 1, sizeof *v->regions);
-    if (!v->regions) {
-        cJSON_Delete(js);
-        return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-    }
-    const cJSON *it;
-    cJSON_ArrayForEach(it, js) {
-        if (it->string && it->string[0] == '_') continue;
-        if (!cJSON_IsArray(it)) {
-            rc = sp_error_set(err, SP_E_FORMAT, "%s: region '%s' must list object phrases", path, it->string);
-            break;
-        }
-        lex_region *r = &v->regions[v->n_regions++];
-        snprintf(r->name, sizeof r->name, "%s", it->string);
-        const cJSON *m;
-        cJSON_ArrayForEach(m, it) {
-            if (!cJSON_IsString(m) || !m->valuestring[0]) {
-                rc = sp_error_set(err, SP_E_FORMAT, "%s: region '%s': members must be strings", path, r->name);
-                break;
-            }
-            if (r->n_members < 24) snprintf(r->members[r->n_members++], 64, "%s", m->valuestring);
-        }
-        if (rc) break;
-    }
-    cJSON_Delete(js);
-    return rc;
-}
-
-const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name)
-{
-    char key[64];
-    snprintf(key, sizeof key, "%s", name);
-    for (char *p = key; *p; p++)
-        if (*p == '_') *p = ' ';
-    for (int i = 0; i < v->n_regions; i++)
-        if (!strcmp(v->regions[i].name, key)) return &v->regions[i];
-    return NULL;
 }

@@ -169,6 +169,7 @@ typedef struct lex_region {
     char name[64];
     int n_members;
     char members[24][64];
+    sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
 } lex_region;
 
 struct sp_lex_vocab {
@@ -185,6 +186,20 @@ int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
+/* Resolves every table region's members once (r->cache). */
+int lex_regions_prepare(sp_lex_vocab *v, sp_error *err);
+/* The table region an NP's head stands for (itself or a synonym), or NULL. */
+int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
+/* The definition of a region name's room sense (first sense that is a room; for table entries
+ * any room sense, else the first), or NULL when it names no room. */
+const char *lex_region_definition(const lex_np *np, int table_entry);
+/* Members of a named region into ph, sorted (the cached ones for table regions). */
+int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                       const char *definition, sp_lex_phrase *ph, sp_error *err);
+/* Clears ph's matches to every class at score 0, indexed by class. */
+void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
+/* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */
+int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *sub, const char *why);
 
 /* What a query modifier did for the best class. */
 enum { LEX_MOD_IGNORED = 0, LEX_MOD_USED = 1, LEX_MOD_CONTRARY = 2 };
