@@ -204,34 +204,40 @@ char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
  * with WordNet 3.0 (Debian's wordnet-base, read directly from /usr/share/wordnet). It is
  * matching against KNOWN class names: it cannot find anything the world's labels do not name.
  *
- * Per class c and query q (the query's head noun h with its senses, its modifiers, and its
- * description words D, e.g. "sit" in "something to sit on"), the confidence in 0..1 is
- *   taxonomy  T = 1                                      h and c share a synset (synonym)
- *               = WuP(h,c) = 2 dep(h) / (d + 2 dep(h))   h is a hypernym of c, d levels up
- *               = LAMBDA^d WuP(h,c)                     c is a hypernym of h, d levels up
- *               = PART                                   h is a part of c (WordNet part holonym)
- *               = MU WuP(h,c)                            neither (siblings, cousins): < threshold
- *   (Wu & Palmer 1994 on depths from 'entity'; class senses: WordNet's physical-entity senses of
- *   the class's WordNet collocation or head noun; the best pair of senses counts), times
- *     (1 - BETA)       per query modifier that names another class of the scene and not this one
- *     (1 - EPS)        per attribute the class's definitions do not mention ("red": reported ignored)
- *     (1 - GAMMA + GAMMA G)  when there is a description beside the head noun;
- *   without a head noun (or with a placeholder: "something", "a place") the confidence is G:
- *   gloss overlap  G = sum_d w_d DELTA^k(d) / sum_d w_d  over description words d found (as a base
- *   form, or a lemma of their commonest sense, discounted) in the class's definition, its lemmas or
- *   its name (k = 0), or its hypernyms' definitions (k = 1, 2); w_d = 1 / (1 + ln(1 + senses(d))),
- *   WordNet's polysemy standing in for word frequency. A multi-word query whose modifier is itself
- *   a class ("tv monitor") also scores T(modifier, c) * WuP(head, c).
- * SP_LEX_THRESHOLD is the one threshold: at or above it a class is a match. Siblings can never
- * reach it (MU * WuP < 0.5), which is what keeps near-category absent things ("dishwasher" in a
- * house with a refrigerator) out.
- * Relations: "X near / next to / beside / by / in / on / to / above / under ... Y" splits where
- * both sides match; regions ("the kitchen", "area with appliances", "the area that looks like a
- * kitchen") resolve to the classes that define them: entries of the region table
- * (data/semantic/regions.json, extendable) and the nouns and description words of the region's
- * WordNet definition, each matched as above.
- * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (reads use pread);
- * any number of threads may match against them at once. Results own nothing (fixed arrays). */
+ * A query is split into target and anchor at a spatial relation where both sides match ("X near
+ * / next to / beside / by / in / on / to / above / under ... Y"), and each phrase into a head noun
+ * (the longest WordNet collocation ending at its last noun: "coffee table", "tv set"; closed
+ * compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers before it,
+ * and description words after a clause marker ("something TO sit on", "a seat FOR two").
+ * Per class c, the confidence in 0..1 is, from the head h (all its senses) and the class's head
+ * (its physical senses that the tagged corpora attest; when none, its physical senses closest to
+ * the other classes of the scene, after Resnik 1999):
+ *   T = 1                                   exact name (after plurals) or a shared synset
+ *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
+ *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 0.6                                 h (a commonly used sense) is a part of c
+ *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
+ * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
+ * cabinet") sits one level below its head, so the head alone is its hypernym and another kind of
+ * the head ("dresser") its sibling. T is multiplied by
+ *   (1 - BETA)                 per query modifier that names other classes and not this one (0.3)
+ *   (1 - EPS)                  per attribute its definitions do not mention (0.1; "red", "wooden":
+ *                              reported in `ignored`)
+ *   (1 - GAMMA + GAMMA G)      when a description stands beside the head (GAMMA 0.3).
+ * Without a head noun (or with a placeholder: "something", "a place") the confidence is G:
+ *   G = sum_d w_d m_d / sum_d w_d,  w_d = 1 / (1 + ln(1 + senses(d)))  (polysemy for frequency),
+ *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
+ *   hypernym's, DELTA^2 two levels up, and 0.8 for a lemma of d's commonest sense found in the
+ *   class's own definition (one weak step at most). Location words (room, area) describe nothing.
+ * A compound whose modifier is itself a class name ("tv monitor") also scores
+ * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
+ * "the area that looks like a kitchen") list the classes that define them: the region table's
+ * object phrases (data/semantic/regions.json, extendable), the nouns of the region's WordNet
+ * definition, classes named after it ("kitchen counter"); a room needs two kinds of them, one
+ * alone is scaled by MU. SP_LEX_THRESHOLD is the one threshold for every world.
+ * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (the database files
+ * are mapped read-only); any number of threads may match against them at once. Results are
+ * plain structs with fixed arrays (no ownership). */
 
 #define SP_LEX_THRESHOLD 0.5f           /* confidence at or above which a class matches */
 #define SP_LEX_DEFAULT_WORDNET "/usr/share/wordnet"
@@ -247,10 +253,10 @@ typedef struct sp_lex_vocab sp_lex_vocab;
 int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err);
 void sp_lexicon_free(sp_lexicon *lx);
 
-/* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES, duplicates allowed: each index keeps
- * its name) against lx, which must outlive the vocabulary. regions_path: a region table (JSON
- * object: region name -> array of object phrases), NULL = sp_data_dir()/semantic/regions.json
- * ("" = none). */
+/* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES; each index keeps its name) against lx,
+ * which must outlive the vocabulary. regions_path: a region table (JSON object: region name ->
+ * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none). Resolves the
+ * table's regions once (house, 25 classes: about 60 ms). */
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
                         int n, const char *regions_path, sp_error *err);
 void sp_lex_vocab_free(sp_lex_vocab *v);
@@ -268,7 +274,7 @@ typedef enum {
     SP_LEX_RELATED,   /* siblings or cousins in the taxonomy: always below the threshold */
     SP_LEX_GLOSS,     /* description words found in the class's definitions */
     SP_LEX_MODIFIER,  /* through a modifier that is itself a class ("tv monitor") */
-    SP_LEX_REGION     /* a member of the region the query names */
+    SP_LEX_REGION     /* named after the region ("kitchen counter" in the kitchen) */
 } sp_lex_kind;
 
 const char *sp_lex_kind_name(int kind); /* "exact", "synonym", ... */
@@ -284,7 +290,8 @@ typedef struct sp_lex_class_match {
     char definition[192]; /* WordNet definition of the class sense used */
 } sp_lex_class_match;
 
-/* One resolved phrase: every class scored, best first. */
+/* One resolved phrase: every class scored, best first. For a region (is_region) the matches are
+ * its member classes, each with how its member phrase matched. */
 typedef struct sp_lex_phrase {
     char text[128];        /* the words of this phrase */
     char head[64];         /* head noun or collocation used ("" = description only) */

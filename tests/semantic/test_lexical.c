@@ -76,7 +76,10 @@ static void test_reader(void)
 
 typedef struct {
     int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
+    int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
 } tally;
+
+static int bin_of(float c) { return c < 0.7f ? 0 : c < 0.9f ? 1 : 2; }
 
 static int in_array(const cJSON *arr, const char *s)
 {
@@ -139,6 +142,7 @@ static tally run_table(const sp_lexicon *lx, const char *name, int verbose, cons
         }
         if (absent) t.absent++, t.absent_ok += ok;
         else t.present++, t.present_ok += ok;
+        if (res->found) t.bin_n[bin_of(res->confidence)]++, t.bin_ok[bin_of(res->confidence)] += ok;
         const cJSON *ig;
         cJSON_ArrayForEach(ig, ignored) {
             int got = 0;
@@ -164,6 +168,8 @@ static tally run_table(const sp_lexicon *lx, const char *name, int verbose, cons
            name, t.present_ok, t.present, t.present ? (double)t.present_ok / t.present : 0.0, t.absent_ok,
            t.absent, t.absent ? (double)t.absent_ok / t.absent : 0.0, t.ignored_ok, t.ignored_total,
            (double)SP_LEX_THRESHOLD);
+    printf("%s: found results correct by confidence: [0.5,0.7) %d/%d, [0.7,0.9) %d/%d, [0.9,1] %d/%d\n", name,
+           t.bin_ok[0], t.bin_n[0], t.bin_ok[1], t.bin_n[1], t.bin_ok[2], t.bin_n[2]);
     return t;
 }
 
