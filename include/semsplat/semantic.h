@@ -322,6 +322,55 @@ char *sp_lex_result_json(const sp_lex_result *res, const sp_lex_vocab *v, float 
 /* A human-readable explanation (--explain) into out. */
 void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, size_t cap);
 
+/* ---- lexical queries on a label-feature scene ------------------------------------------------- *
+ *
+ * The lexical encoder grounded through the query engine (label-feature scenes, whose classes'
+ * features are sp_label_embedding vectors): the engine localizes the matched classes' label
+ * embeddings, and the result's confidence is the lexical score (found = that score >=
+ * SP_LEX_THRESHOLD and an instance was localized). A region
+ * is each of its classes localized alone, their instances clustered in space (boxes within 2 m),
+ * and the cluster holding most of the region's kinds taken: its extent and centre. A target too
+ * is each matched class localized alone (the scene must show a cosine of 0.5 with the class's
+ * embedding, else the class is named but not seen), instances of the best-scoring class first.
+ * A relation then ranks them, within a class score, by their distance to the anchor's instances
+ * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
+ * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
+ * top (bottom), 0.3 m tolerance. */
+
+typedef struct sp_lex_extent {
+    float extent_min[3], extent_max[3]; /* world frame */
+    float centre[3];
+    int n_instances;
+} sp_lex_extent;
+
+typedef struct sp_lex_answer {
+    sp_lex_result lex;        /* what the text matched, and why */
+    sp_query_result result;   /* the target's instances (ranked by the relation when there is one;
+                               * a region's member instances); confidence = the lexical score;
+                               * position = the best instance, or the region's centre */
+    int is_region;
+    sp_lex_extent region;     /* is_region: the extent of the region's objects */
+    int has_anchor;
+    sp_lex_extent anchor;     /* relation: the anchor instance nearest the best target, or region */
+    int *instance_class;      /* [result.n_instances] the class (vocabulary index) of each */
+    float *relation_m;        /* [result.n_instances] each instance's relation cost in metres
+                               * (NULL without a relation or when the anchor is not found) */
+} sp_lex_answer;
+
+/* Answers text on engine e (a label-feature scene whose class names are v's). a is large: put it
+ * on the heap; free with sp_lex_answer_free. The engine's options are used as set, except that
+ * the lexical score decides what is found (min_confidence is not applied). */
+int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
+                 sp_error *err);
+void sp_lex_answer_free(sp_lex_answer *a);
+/* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
+ * sp_lex_result_json), region and anchor (extents, relation, instance_cost_m). */
+char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const char *heatmap_path);
+/* A vocabulary of the classes of a capture's labels.json (synth's format; "background" and
+ * repeats dropped). */
+int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
+                             const char *regions_path, sp_error *err);
+
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
 /* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
