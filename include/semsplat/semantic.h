@@ -370,6 +370,11 @@ char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const ch
  * repeats dropped). */
 int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
                              const char *regions_path, sp_error *err);
+/* The vocabulary of a label-feature model folder (semantic.json: source "labels", label_embedding
+ * "hash"): the labels.json of the capture it names. Other models fail with SP_E_UNSUPPORTED (their
+ * features live beside CLIP's text tower, not label embeddings). */
+int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
+                           const char *regions_path, sp_error *err);
 
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 

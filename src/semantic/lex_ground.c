@@ -436,3 +436,43 @@ int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const cha
     cJSON_Delete(js);
     return rc;
 }
+
+/* labels.json of the capture a model folder was lifted from: beside its COLMAP folder or up to
+ * two levels above it (capture/sparse/0). */
+static int find_labels(const char *colmap, char *out, size_t cap)
+{
+    char dir[2048];
+    snprintf(dir, sizeof dir, "%s", colmap);
+    for (int up = 0; up < 3; up++) {
+        snprintf(out, cap, "%s/labels.json", dir);
+        if (sp_file_exists(out)) return 0;
+        char *s = strrchr(dir, '/');
+        if (!s || s == dir) break;
+        *s = 0;
+    }
+    return -1;
+}
+
+int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
+                           const char *regions_path, sp_error *err)
+{
+    *out = NULL;
+    char path[2048], labels[2100];
+    sp_path_join(path, sizeof path, model_dir, "semantic.json");
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return rc;
+    const cJSON *src = cJSON_GetObjectItem(js, "source"), *le = cJSON_GetObjectItem(js, "label_embedding");
+    const cJSON *colmap = cJSON_GetObjectItem(js, "colmap");
+    if (!cJSON_IsString(src) || strcmp(src->valuestring, "labels") || !cJSON_IsString(le) ||
+        strcmp(le->valuestring, "hash"))
+        rc = sp_error_set(err, SP_E_UNSUPPORTED,
+                          "%s: lexical answers need a label-feature model (source \"labels\", label_embedding "
+                          "\"hash\"); this one has source \"%s\": query it with its CLIP text tower",
+                          path, cJSON_IsString(src) ? src->valuestring : "?");
+    else if (!cJSON_IsString(colmap) || find_labels(colmap->valuestring, labels, sizeof labels))
+        rc = sp_error_set(err, SP_E_NOTFOUND, "%s: no labels.json beside the capture it names (\"colmap\": %s)",
+                          path, cJSON_IsString(colmap) ? colmap->valuestring : "missing");
+    cJSON_Delete(js);
+    return rc ? rc : sp_lex_vocab_from_labels(out, lx, labels, regions_path, err);
+}

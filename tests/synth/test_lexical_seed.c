@@ -7,6 +7,7 @@
  * recognition. Distances are to the expected instance's ground-truth box (0 inside it). */
 #include <cjson/cJSON.h>
 #include <math.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "semsplat/clip.h"
@@ -92,7 +93,8 @@ static float error_m(const cJSON *gt, const seed *s, const float *p, float *cent
     return gap_to_box(p, ulo, uhi);
 }
 
-/* Capture, label features, Gaussians on points3D, lift; returns an engine (NULL on failure). */
+/* Capture, label features, Gaussians on points3D, lift; writes the model folder dir/model (splat
+ * with f_sem_*, semantic.json) for the CLI; returns an engine (NULL on failure). */
 static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *err)
 {
     char world[1024], cap[1200], feat[1200], sparse[1300];
@@ -125,6 +127,12 @@ static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *e
     if (err->code) return NULL;
     for (size_t i = 0; i < s.n; i++) s.opacity_logits[i] = sp_logit(0.9f);
     CHECK_OK(sp_semantic_lift_features(&s, feat, sparse, dev, NULL, err), err);
+    char model[1300], ply[1400];
+    snprintf(model, sizeof model, "%s/model", dir);
+    snprintf(ply, sizeof ply, "%s/splat.ply", model);
+    if (!err->code) CHECK_OK(sp_mkdirs(model, err), err);
+    if (!err->code) CHECK_OK(sp_ply_write_splat(ply, &s, err), err);
+    if (!err->code) CHECK_OK(sp_semantic_write_sidecar(model, feat, sparse, "lift", err), err);
     sp_features f;
     memset(&f, 0, sizeof f);
     if (!err->code) CHECK_OK(sp_features_open(feat, &f, err), err);
@@ -145,6 +153,49 @@ static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *e
     sp_features_free(&f);
     sp_splat_free(&s);
     return e;
+}
+
+/* The CLI on the model folder: semsplat lexical --model DIR --json, read back as JSON. */
+static void test_cli(const char *dir)
+{
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' lexical --model '%s/model' --device cpu --quiet --json "
+             "\"the fridge\" \"the kitchen\" \"giraffe\" 2>&1", SP_BUILD_DIR, dir);
+    FILE *p = popen(cmd, "r");
+    static char out[1 << 20];
+    size_t n = p ? fread(out, 1, sizeof out - 1, p) : 0;
+    out[n] = 0;
+    int st = p ? pclose(p) : -1;
+    CHECK_MSG(st == 0, "semsplat lexical exited %d: %.2000s", st, out);
+    cJSON *js = cJSON_Parse(out);
+    CHECK_MSG(cJSON_IsArray(js) && cJSON_GetArraySize(js) == 3, "not 3 JSON answers: %.2000s", out);
+    const cJSON *fridge = cJSON_GetArrayItem(js, 0), *kitchen = cJSON_GetArrayItem(js, 1), *giraffe = cJSON_GetArrayItem(js, 2);
+    CHECK(cJSON_IsTrue(cJSON_GetObjectItem(fridge, "found")));
+    CHECK(!strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(fridge, "encoder")), "lexical"));
+    const cJSON *inst = cJSON_GetArrayItem(cJSON_GetObjectItem(fridge, "instances"), 0);
+    CHECK(inst && !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(inst, "class")), "refrigerator"));
+    CHECK(cJSON_IsObject(cJSON_GetObjectItem(kitchen, "region")));
+    CHECK(cJSON_GetArraySize(cJSON_GetObjectItem(cJSON_GetObjectItem(kitchen, "region"), "centre")) == 3);
+    CHECK(cJSON_IsFalse(cJSON_GetObjectItem(giraffe, "found")) && cJSON_IsNull(cJSON_GetObjectItem(giraffe, "position")));
+    cJSON_Delete(js);
+    /* A CLIP model folder is refused with a reason, and bad flags are usage errors. */
+    char clip_dir[1300], sj[1400];
+    snprintf(clip_dir, sizeof clip_dir, "%s/clip_model", dir);
+    snprintf(sj, sizeof sj, "%s/semantic.json", clip_dir);
+    sp_error err = {0};
+    const char *clip_json = "{\"source\": \"clip\", \"label_embedding\": \"clip\"}";
+    CHECK_OK(sp_mkdirs(clip_dir, &err), &err);
+    CHECK_OK(sp_write_file_atomic(sj, clip_json, strlen(clip_json), &err), &err);
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' lexical --model '%s' \"chair\" 2>&1", SP_BUILD_DIR, clip_dir);
+    p = popen(cmd, "r");
+    n = p ? fread(out, 1, sizeof out - 1, p) : 0;
+    out[n] = 0;
+    st = p ? pclose(p) : -1;
+    CHECK_MSG(WEXITSTATUS(st) == 1 && strstr(out, "label-feature model"), "exit %d: %s", st, out);
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' lexical --classes chair --labels x \"chair\" > /dev/null 2>&1", SP_BUILD_DIR);
+    CHECK(WEXITSTATUS(system(cmd)) == 2);
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' lexical --classes 'chair, sofa' --frobnicate \"x\" > /dev/null 2>&1", SP_BUILD_DIR);
+    CHECK(WEXITSTATUS(system(cmd)) == 2);
 }
 
 static void test_seed_queries(void)
@@ -201,6 +252,7 @@ static void test_seed_queries(void)
     sp_lexicon_free(lx);
     sp_query_engine_free(e);
     sp_device_free(dev);
+    if (v) test_cli(dir);
 }
 
 int main(void)
