@@ -48,11 +48,13 @@ static void print_answer(const sp_lex_answer *a, const sp_lex_vocab *v)
            (double)r->position[0], (double)r->position[1], (double)r->position[2], (double)r->confidence,
            r->n_instances, r->n_instances == 1 ? "" : "s", a->is_region ? "  region " : "",
            a->is_region ? a->lex.target.region : "");
-    for (int k = 0; k < r->n_instances; k++)
-        printf("    instance %d  %-16s (%.3f, %.3f, %.3f)%s", k, sp_lex_vocab_class(v, a->instance_class[k]),
+    for (int k = 0; k < r->n_instances; k++) {
+        printf("    instance %d  %-16s (%.3f, %.3f, %.3f)", k, sp_lex_vocab_class(v, a->instance_class[k]),
                (double)r->instances[k].position[0], (double)r->instances[k].position[1],
-               (double)r->instances[k].position[2], a->relation_m ? "" : "\n");
-    if (a->relation_m) printf("\n");
+               (double)r->instances[k].position[2]);
+        if (a->relation_m) printf("  %.2f m %s the anchor", (double)a->relation_m[k], a->lex.relation);
+        printf("\n");
+    }
     if (a->is_region)
         printf("    extent (%.2f, %.2f, %.2f) .. (%.2f, %.2f, %.2f)\n", (double)a->region.extent_min[0],
                (double)a->region.extent_min[1], (double)a->region.extent_min[2], (double)a->region.extent_max[0],
