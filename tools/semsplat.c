@@ -9,7 +9,7 @@
 #define SP_CMD(name) int cmd_##name(int argc, char **argv) __attribute__((weak));
 #define SP_COMMANDS(X) \
     X(info) X(render) X(synth) X(train) X(features) X(embed_text) X(lift) X(distill) X(query) \
-    X(align) X(demo) X(lexical)
+    X(align) X(demo) X(agent) X(lexical)
 SP_COMMANDS(SP_CMD)
 #undef SP_CMD
 
@@ -32,6 +32,7 @@ static const command commands[] = {
     {"lexical", cmd_lexical, "match text to a scene's class names with WordNet (offline, --explain)"},
     {"align", cmd_align, "put a splat into the world frame (similarity / floor plane)"},
     {"demo", cmd_demo, "synth -> train -> features -> lift -> queries on the bundled house"},
+    {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
 };
 
 static void usage(FILE *f)
