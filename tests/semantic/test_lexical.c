@@ -74,6 +74,77 @@ static void test_reader(void)
     CHECK_FAILS(wn_open(&db, "/nonexistent/wordnet", &err), SP_E_NOTFOUND, &err, "wordnet-base");
 }
 
+/* A WordNet folder of links to the real files but for one file written here. */
+static const char *fake_wordnet(const char *name, const char *file, const char *text)
+{
+    const char *dir = test_tmpdir(name);
+    const char *files[] = {"index.noun", "index.verb", "index.adj", "index.adv", "data.noun", "data.verb",
+                           "data.adj", "data.adv", "noun.exc", "verb.exc", "adj.exc", "adv.exc"};
+    char a[1200], b[1200];
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        snprintf(b, sizeof b, "%s/%s", dir, files[i]);
+        if (!strcmp(files[i], file)) {
+            FILE *f = fopen(b, "w");
+            if (f) fputs(text, f), fclose(f);
+            continue;
+        }
+        snprintf(a, sizeof a, "%s/%s", wordnet_dir(), files[i]);
+        if (symlink(a, b) != 0) fprintf(stderr, "cannot link %s\n", b);
+    }
+    return dir;
+}
+
+static void test_bad_input(void)
+{
+    sp_error err = {0};
+    sp_lexicon *lx = NULL;
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_empty", "data.noun", ""), &err), SP_E_FORMAT, &err,
+                "data.noun: empty file");
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_trunc", "data.noun", "  1 license\n00001740 03 n 01 entity"),
+                                &err), SP_E_FORMAT, &err, "data.noun");
+    char other[2100]; /* a synset line where WordNet 3.0 has 'entity', naming something else */
+    memset(other, ' ', 1739);
+    other[1739] = '\n';
+    snprintf(other + 1740, sizeof other - 1740, "00001740 03 n 01 thing 0 000 | x\n");
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_other", "data.noun", other), &err), SP_E_FORMAT, &err,
+                "not 'entity'");
+    CHECK(lx == NULL);
+    CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
+    if (!lx) return;
+    sp_lex_vocab *v = NULL;
+    const char *empty[] = {"chair", ""};
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, empty, 2, "", &err), SP_E_ARG, &err, "class 1");
+    const char *names[] = {"chair", "sofa", "lamp"};
+    const char *dir = test_tmpdir("lex_regions");
+    char path[1200];
+    snprintf(path, sizeof path, "%s/regions.json", dir);
+    FILE *f = fopen(path, "w");
+    if (f) fputs("{\"kitchen\": \"stove\"}", f), fclose(f);
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, names, 3, path, &err), SP_E_FORMAT, &err, "kitchen");
+    CHECK(sp_lex_vocab_create(&v, lx, names, 3, "/nonexistent/regions.json", &err) != 0);
+    CHECK_MSG(strstr(err.msg, "regions.json") != NULL, "%s", err.msg);
+    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 3, "", &err), &err);
+    sp_lex_result *res = malloc(sizeof *res);
+    if (v && res) {
+        CHECK_FAILS(sp_lex_match(v, "", res, &err), SP_E_ARG, &err, "no words");
+        CHECK_FAILS(sp_lex_match(v, "?! ...", res, &err), SP_E_ARG, &err, "no words");
+        CHECK_OK(sp_lex_match(v, "zxqvw blorft", res, &err), &err);
+        CHECK(!res->found && res->confidence < SP_LEX_THRESHOLD);
+        char longtext[8192] = "";
+        for (int i = 0; i < 600; i++) strcat(longtext, i % 7 ? "very " : "the big red ");
+        strcat(longtext, "sofa");
+        CHECK_OK(sp_lex_match(v, longtext, res, &err), &err); /* 32 words kept, no crash */
+        CHECK_OK(sp_lex_match(v, "caf\xc3\xa9 \xff\xfe sofa", res, &err), &err);
+        CHECK(res->found && !strcmp(sp_lex_vocab_class(v, res->target.matches[0].class_index), "sofa"));
+        char *js = sp_lex_result_json(res, v, 0.0f);
+        CHECK(js && strstr(js, "\"encoder\":\t\"lexical\""));
+        free(js);
+    }
+    free(res);
+    sp_lex_vocab_free(v);
+    sp_lexicon_free(lx);
+}
+
 typedef struct {
     int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
     int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
@@ -188,6 +259,7 @@ int main(int argc, char **argv)
         return TEST_EXIT();
     }
     RUN(test_reader);
+    RUN(test_bad_input);
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
     const char *worlds[] = {"house", "bookstore"};
