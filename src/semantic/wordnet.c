@@ -90,11 +90,13 @@ int wn_open(wn_db **out, const char *dir, sp_error *err)
         wn_synset s;
         wn_id entity = {1740, WN_NOUN};
         rc = wn_read(db, entity, &s, err);
-        if (!rc && (s.n_words < 1 || strcmp(s.words[0], "entity")))
-            rc = sp_error_set(err, SP_E_FORMAT, "%s: offset 00001740 is not 'entity' (not WordNet 3.0?)",
-                              db->data[WN_NOUN].path);
-        if (!rc) wn_synset_free(&s);
-        else sp_error_prefix(err, "wordnet: ");
+        if (!rc) {
+            if (s.n_words < 1 || strcmp(s.words[0], "entity"))
+                rc = sp_error_set(err, SP_E_FORMAT, "%s: offset 00001740 is not 'entity' (not WordNet 3.0?)",
+                                  db->data[WN_NOUN].path);
+            wn_synset_free(&s);
+        }
+        if (rc) sp_error_prefix(err, "wordnet: ");
     }
     if (rc) {
         wn_close(db);
