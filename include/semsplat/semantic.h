@@ -377,6 +377,11 @@ typedef struct sp_lex_answer {
 int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
                  sp_error *err);
 void sp_lex_answer_free(sp_lex_answer *a);
+/* The lexical encoder as a text embedding for a label-feature scene: the target's classes
+ * matched at or above the threshold, sum of score * sp_label_embedding(class, dim), normalised
+ * (all zeros when nothing matches); *confidence (may be NULL) the lexical score. */
+int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
+                 sp_error *err);
 /* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
  * sp_lex_result_json), region and anchor (extents, relation, instance_cost_m). */
 char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const char *heatmap_path);

@@ -476,3 +476,31 @@ int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char 
     cJSON_Delete(js);
     return rc ? rc : sp_lex_vocab_from_labels(out, lx, labels, regions_path, err);
 }
+
+int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
+                 sp_error *err)
+{
+    if (!v || !text || !out || dim < 1) return sp_error_set(err, SP_E_ARG, "lexical embed: bad argument");
+    sp_lex_result *res = malloc(sizeof *res);
+    float *one = malloc(sizeof(float) * (size_t)dim);
+    if (!res || !one) {
+        free(res), free(one);
+        return sp_error_set(err, SP_E_NOMEM, "lexical embed: out of memory");
+    }
+    int rc = sp_lex_match(v, text, res, err);
+    memset(out, 0, sizeof(float) * (size_t)dim);
+    double n2 = 0;
+    for (int i = 0; !rc && i < res->target.n_matches; i++) {
+        const sp_lex_class_match *m = &res->target.matches[i];
+        if (m->score < SP_LEX_THRESHOLD) break;
+        sp_label_embedding(sp_lex_vocab_class(v, m->class_index), dim, one);
+        for (int j = 0; j < dim; j++) out[j] += m->score * one[j];
+    }
+    for (int j = 0; j < dim; j++) n2 += (double)out[j] * out[j];
+    if (n2 > 0)
+        for (int j = 0; j < dim; j++) out[j] = (float)(out[j] / sqrt(n2));
+    if (confidence) *confidence = rc ? 0 : res->confidence;
+    free(res);
+    free(one);
+    return rc;
+}

@@ -12,6 +12,7 @@
 
 #include "semantic/lexical.h"
 #include "semantic/wordnet.h"
+#include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "test.h"
 
@@ -136,6 +137,16 @@ static void test_bad_input(void)
         CHECK_OK(sp_lex_match(v, longtext, res, &err), &err); /* 32 words kept, no crash */
         CHECK_OK(sp_lex_match(v, "caf\xc3\xa9 \xff\xfe sofa", res, &err), &err);
         CHECK(res->found && !strcmp(sp_lex_vocab_class(v, res->target.matches[0].class_index), "sofa"));
+        /* As an embedding: "sofa" is the sofa's label vector, "giraffe" nothing. */
+        float e[512], ref[512], conf = 0;
+        CHECK_OK(sp_lex_embed(v, "sofas", 512, e, &conf, &err), &err);
+        sp_label_embedding("sofa", 512, ref);
+        double dot = 0;
+        for (int j = 0; j < 512; j++) dot += (double)e[j] * ref[j];
+        CHECK_NEAR(dot, 1.0, 1e-5);
+        CHECK_NEAR(conf, 1.0, 1e-6);
+        CHECK_OK(sp_lex_embed(v, "giraffe", 512, e, &conf, &err), &err);
+        CHECK(conf < SP_LEX_THRESHOLD && e[0] == 0.0f && e[511] == 0.0f);
         char *js = sp_lex_result_json(res, v, 0.0f);
         CHECK(js && strstr(js, "\"encoder\":\t\"lexical\""));
         free(js);
