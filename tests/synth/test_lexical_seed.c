@@ -155,6 +155,44 @@ static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *e
     return e;
 }
 
+/* The phrasing tables (tests/semantic/phrases_*.json) name each world's classes as synth makes
+ * them: a change of class naming must show up here, not as silently stale tables. */
+static void test_tables_match_worlds(void)
+{
+    const char *worlds[2][3] = {{"house", "data/worlds/house.world", NULL},
+                                {"bookstore", "data/worlds/bookstore/worlds/bookstore.world",
+                                 "data/worlds/bookstore/models"}};
+    for (int k = 0; k < 2; k++) {
+        char world[1024], models[1024], table[1024];
+        snprintf(world, sizeof world, "%s/%s", SP_SOURCE_DIR, worlds[k][1]);
+        snprintf(models, sizeof models, "%s/%s", SP_SOURCE_DIR, worlds[k][2] ? worlds[k][2] : "");
+        snprintf(table, sizeof table, "%s/tests/semantic/phrases_%s.json", SP_SOURCE_DIR, worlds[k][0]);
+        sp_error err = {0};
+        sp_world w;
+        sp_synth_load_opts lo = {.model_path = worlds[k][2] ? models : NULL, .skip_missing = 1, .no_env = 1};
+        cJSON *js = NULL;
+        CHECK_OK(sp_json_read_file(table, &js, &err), &err);
+        CHECK_OK(sp_synth_load_world(world, &lo, &w, &err), &err);
+        if (err.code) {
+            cJSON_Delete(js);
+            continue;
+        }
+        const cJSON *classes = cJSON_GetObjectItem(js, "classes"), *c;
+        for (size_t i = 0; i < w.n_objects; i++) {
+            int listed = 0;
+            cJSON_ArrayForEach(c, classes) listed |= !strcmp(c->valuestring, w.objects[i].class_name);
+            CHECK_MSG(listed, "%s: class '%s' missing from %s", worlds[k][0], w.objects[i].class_name, table);
+        }
+        cJSON_ArrayForEach(c, classes) {
+            int made = 0;
+            for (size_t i = 0; i < w.n_objects; i++) made |= !strcmp(c->valuestring, w.objects[i].class_name);
+            CHECK_MSG(made, "%s: table class '%s' is no class of the world", worlds[k][0], c->valuestring);
+        }
+        sp_world_free(&w);
+        cJSON_Delete(js);
+    }
+}
+
 /* The CLI on the model folder: semsplat lexical --model DIR --json, read back as JSON. */
 static void test_cli(const char *dir)
 {
@@ -261,6 +299,7 @@ int main(void)
         fprintf(stderr, "skipped: no WordNet at %s (Debian wordnet-base)\n", SP_LEX_DEFAULT_WORDNET);
         return 77;
     }
+    RUN(test_tables_match_worlds);
     RUN(test_seed_queries);
     return TEST_EXIT();
 }
