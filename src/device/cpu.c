@@ -62,7 +62,7 @@ static int cpu_supports(const sp_device *dev, sp_stage stage, int channels)
     case SP_STAGE_RASTER_FWD:
     case SP_STAGE_RASTER_BWD: return channels <= SP_CHANNELS_MAX;
     case SP_STAGE_SH: return channels == 0 || channels == 3;
-    case SP_STAGE_SEM_SCORE: return channels <= SP_CHANNEL_CHUNK_MAX;
+    case SP_STAGE_SEM_SCORE: return channels <= SP_FEATURE_DIM_MAX;
     default: return 1;
     }
 }

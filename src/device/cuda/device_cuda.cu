@@ -187,7 +187,7 @@ static int cu_supports(const sp_device *dev, sp_stage stage, int channels)
     case SP_STAGE_RASTER_BWD: return channels <= SP_CHANNELS_MAX; /* padded, then chunked */
     case SP_STAGE_SH: return channels == 0 || channels == 3;
     /* the scorer's query, mean and negatives projections travel as one kernel argument */
-    case SP_STAGE_SEM_SCORE: return channels <= SP_CHANNEL_CHUNK_MAX;
+    case SP_STAGE_SEM_SCORE: return channels <= SP_FEATURE_DIM_MAX;
     default: return 1;
     }
 }

@@ -5,13 +5,12 @@
 #include "device/cuda/device_cuda.h"
 #include "semantic/sem_cuda.h"
 
-#define SCORE_DIM 64 /* sp_sem_scorer's vectors (the CPU scorer's limit too) */
 
 struct score_params {
     float q0, m2, temperature;
     float n0[SP_SEM_MAX_NEGATIVES];
     int D, NN;
-    float qb[SCORE_DIM], mb[SCORE_DIM], nb[SP_SEM_MAX_NEGATIVES][SCORE_DIM];
+    float qb[SP_FEATURE_DIM_MAX], mb[SP_FEATURE_DIM_MAX], nb[SP_SEM_MAX_NEGATIVES][SP_FEATURE_DIM_MAX];
 };
 
 __global__ void k_score(const __grid_constant__ score_params p, size_t n, const float *__restrict__ f,
@@ -44,17 +43,17 @@ extern "C" int sem_cuda_score(sp_device *dev, const sp_sem_scorer *sc, size_t n,
 {
     if (!sc->orthonormal)
         return sp_error_set(err, SP_E_UNSUPPORTED, "relevancy on the GPU needs an orthonormal PCA basis");
-    if (sc->dim < 1 || sc->dim > SCORE_DIM)
+    if (sc->dim < 1 || sc->dim > SP_FEATURE_DIM_MAX)
         return sp_error_set(err, SP_E_UNSUPPORTED, "relevancy on the GPU: feature dim %d not in 1..%d",
-                            sc->dim, SCORE_DIM);
+                            sc->dim, SP_FEATURE_DIM_MAX);
     if (n == 0) return 0;
     score_params p;
     p.q0 = sc->q0, p.m2 = sc->m2, p.temperature = sc->temperature, p.D = sc->dim, p.NN = sc->n_neg;
     for (int q = 0; q < SP_SEM_MAX_NEGATIVES; q++) {
         p.n0[q] = q < sc->n_neg ? sc->n0[q] : 0.f;
-        for (int k = 0; k < SCORE_DIM; k++) p.nb[q][k] = sc->nb[q][k];
+        for (int k = 0; k < SP_FEATURE_DIM_MAX; k++) p.nb[q][k] = sc->nb[q][k];
     }
-    for (int k = 0; k < SCORE_DIM; k++) p.qb[k] = sc->qb[k], p.mb[k] = sc->mb[k];
+    for (int k = 0; k < SP_FEATURE_DIM_MAX; k++) p.qb[k] = sc->qb[k], p.mb[k] = sc->mb[k];
     unsigned blocks = (unsigned)((n + 255) / 256);
     k_score<<<blocks, 256, 0, sp_cuda_stream(dev)>>>(p, n, d_features, d_raw, d_rel);
     SP_CUDA_LAUNCHED(err, "relevancy on the GPU");
