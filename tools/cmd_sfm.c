@@ -10,7 +10,7 @@ static void help(void)
 {
     printf("usage: semsplat sfm --capture DIR --out DIR [--colmap PROGRAM] [--work DIR]\n"
            "                    [--threads N] [--nice N] [--timeout S] [--estimate-intrinsics]\n"
-           "                    [--max-features N] [--overlap N] [--quiet]\n\n"
+           "                    [--max-features N] [--overlap N] [--peak-threshold T] [--quiet]\n\n"
            "Runs COLMAP 3.8 on DIR/images (feature_extractor, sequential_matcher, mapper; CPU),\n"
            "takes the largest model, aligns it to DIR/sparse/0's camera centres (least median of\n"
            "squares, refit on the inliers) and writes a capture with COLMAP's poses and points in\n"
@@ -20,6 +20,8 @@ static void help(void)
            "  --estimate-intrinsics  let COLMAP refine the focal length (default: the capture's\n"
            "                 PINHOLE intrinsics, fixed, as for a calibrated camera)\n"
            "  --max-features 4096 (SIFT per image)  --overlap 10 (sequential neighbours)\n"
+           "  --peak-threshold T  SIFT contrast threshold (COLMAP's 0.0067; lower finds more\n"
+           "                 features in low-texture images such as synth's)\n"
            "  --work DIR     COLMAP's database, models and log (default OUT/colmap)\n");
 }
 
@@ -28,7 +30,7 @@ int cmd_sfm(int argc, char **argv)
     sp_sfm_opts o = {0};
     const char *v;
     long threads = 0, nice = 0, feats = 0, overlap = 0;
-    double timeout = 0;
+    double timeout = 0, peak = 0;
     int quiet = 0, bad = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
@@ -46,6 +48,8 @@ int cmd_sfm(int argc, char **argv)
             if (cli_parse_int("sfm", "--max-features", v, &feats)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--overlap", &bad))) {
             if (cli_parse_int("sfm", "--overlap", v, &overlap)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--peak-threshold", &bad))) {
+            if (cli_parse_float("sfm", "--peak-threshold", v, &peak)) return 2;
         } else if (!strcmp(argv[i], "--estimate-intrinsics")) o.estimate_intrinsics = 1;
         else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("sfm", "unknown argument '%s'", argv[i]);
@@ -61,6 +65,7 @@ int cmd_sfm(int argc, char **argv)
     o.timeout_s = timeout;
     o.max_features = (int)feats;
     o.overlap = (int)overlap;
+    o.peak_threshold = peak;
     sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
     o.log = &log;
     sp_error err = {0};

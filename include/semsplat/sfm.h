@@ -37,6 +37,8 @@ typedef struct sp_sfm_opts {
     int estimate_intrinsics; /* 0: the reference camera's PINHOLE intrinsics are given and fixed
                                 (a calibrated robot camera); 1: COLMAP estimates the focal length */
     int max_features;        /* SIFT features per image; 0 = 4096 */
+    double peak_threshold;   /* SIFT's contrast threshold; 0 = COLMAP's 0.0067 (0.02 / 3 octave
+                                layers). Lower finds more features in low-texture images */
     int overlap;             /* sequential matching: each image against the next N; 0 = 10 */
     const sp_log *log;       /* progress lines (may be NULL) */
 } sp_sfm_opts;

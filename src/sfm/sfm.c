@@ -75,7 +75,7 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
                       const sp_colmap_camera *cam, sp_sfm_result *res, sp_error *err)
 {
     char db[2400], images[2400], list[2400], sparse[2400], threads[32], feats[32], overlap[32];
-    char params[512];
+    char params[512], peak[32];
     snprintf(db, sizeof db, "%s/database.db", work);
     snprintf(images, sizeof images, "%s/images", o->capture);
     snprintf(list, sizeof list, "%s/images.txt", work);
@@ -83,6 +83,7 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
     snprintf(threads, sizeof threads, "%d", o->threads > 0 ? o->threads : -1);
     snprintf(feats, sizeof feats, "%d", o->max_features > 0 ? o->max_features : 4096);
     snprintf(overlap, sizeof overlap, "%d", o->overlap > 0 ? o->overlap : 10);
+    snprintf(peak, sizeof peak, "%.6g", o->peak_threshold > 0 ? o->peak_threshold : 0.02 / 3);
     snprintf(params, sizeof params, "%.17g,%.17g,%.17g,%.17g", cam->params[0], cam->params[1],
              cam->params[2], cam->params[3]);
     char *c = (char *)colmap, *fix = o->estimate_intrinsics ? "1" : "0";
@@ -90,7 +91,7 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
                        "--image_list_path", list, "--ImageReader.camera_model", "PINHOLE",
                        "--ImageReader.single_camera", "1", "--SiftExtraction.use_gpu", "0",
                        "--SiftExtraction.num_threads", threads, "--SiftExtraction.max_num_features",
-                       feats, o->estimate_intrinsics ? NULL : "--ImageReader.camera_params", params, NULL};
+                       feats, "--SiftExtraction.peak_threshold", peak, o->estimate_intrinsics ? NULL : "--ImageReader.camera_params", params, NULL};
     char *match[] = {c, "sequential_matcher", "--database_path", db, "--SiftMatching.use_gpu", "0",
                      "--SiftMatching.num_threads", threads, "--SequentialMatching.overlap", overlap, NULL};
     char *map[] = {c, "mapper", "--database_path", db, "--image_path", images, "--output_path", sparse,
@@ -149,6 +150,8 @@ int sp_sfm_colmap(const sp_sfm_opts *o, sp_sfm_result *res, sp_error *err)
     if (!o || !o->capture || !o->out) return sp_error_set(err, SP_E_ARG, "sfm: a capture and an output folder are needed");
     if (o->nice < 0 || o->nice > 19) return sp_error_set(err, SP_E_ARG, "sfm: niceness %d: expected 0..19", o->nice);
     if (o->timeout_s < 0) return sp_error_set(err, SP_E_ARG, "sfm: timeout %g s", o->timeout_s);
+    if (!(o->peak_threshold >= 0 && o->peak_threshold < 1))
+        return sp_error_set(err, SP_E_ARG, "sfm: SIFT peak threshold %g: expected 0..1", o->peak_threshold);
     char colmap[4096];
     int rc = sp_sfm_find_colmap(o->colmap, colmap, sizeof colmap, err);
     if (rc) return rc;
