@@ -10,7 +10,8 @@ static void help(void)
 {
     printf("usage: semsplat sfm --capture DIR --out DIR [--colmap PROGRAM] [--work DIR]\n"
            "                    [--threads N] [--nice N] [--timeout S] [--estimate-intrinsics]\n"
-           "                    [--max-features N] [--overlap N] [--peak-threshold T] [--quiet]\n\n"
+           "                    [--max-features N] [--overlap N] [--peak-threshold T]\n"
+           "                    [--init-tri-angle DEG] [--min-inliers N] [--quiet]\n\n"
            "Runs COLMAP 3.8 on DIR/images (feature_extractor, sequential_matcher, mapper; CPU),\n"
            "takes the largest model, aligns it to DIR/sparse/0's camera centres (least median of\n"
            "squares, refit on the inliers) and writes a capture with COLMAP's poses and points in\n"
@@ -22,6 +23,8 @@ static void help(void)
            "  --max-features 4096 (SIFT per image)  --overlap 10 (sequential neighbours)\n"
            "  --peak-threshold T  SIFT contrast threshold (COLMAP's 0.0067; lower finds more\n"
            "                 features in low-texture images such as synth's)\n"
+           "  --init-tri-angle 4 (degrees; COLMAP's 16 suits photo collections, not drives)\n"
+           "  --min-inliers 15 (2D-3D inliers to register an image; COLMAP's 30)\n"
            "  --work DIR     COLMAP's database, models and log (default OUT/colmap)\n");
 }
 
@@ -30,7 +33,8 @@ int cmd_sfm(int argc, char **argv)
     sp_sfm_opts o = {0};
     const char *v;
     long threads = 0, nice = 0, feats = 0, overlap = 0;
-    double timeout = 0, peak = 0;
+    double timeout = 0, peak = 0, tri = 0;
+    long inliers = 0;
     int quiet = 0, bad = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
@@ -48,6 +52,10 @@ int cmd_sfm(int argc, char **argv)
             if (cli_parse_int("sfm", "--max-features", v, &feats)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--overlap", &bad))) {
             if (cli_parse_int("sfm", "--overlap", v, &overlap)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--init-tri-angle", &bad))) {
+            if (cli_parse_float("sfm", "--init-tri-angle", v, &tri)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--min-inliers", &bad))) {
+            if (cli_parse_int("sfm", "--min-inliers", v, &inliers)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--peak-threshold", &bad))) {
             if (cli_parse_float("sfm", "--peak-threshold", v, &peak)) return 2;
         } else if (!strcmp(argv[i], "--estimate-intrinsics")) o.estimate_intrinsics = 1;
@@ -66,6 +74,8 @@ int cmd_sfm(int argc, char **argv)
     o.max_features = (int)feats;
     o.overlap = (int)overlap;
     o.peak_threshold = peak;
+    o.init_min_tri_angle_deg = tri;
+    o.abs_pose_min_inliers = (int)inliers;
     sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
     o.log = &log;
     sp_error err = {0};

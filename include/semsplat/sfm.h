@@ -40,6 +40,12 @@ typedef struct sp_sfm_opts {
     double peak_threshold;   /* SIFT's contrast threshold; 0 = COLMAP's 0.0067 (0.02 / 3 octave
                                 layers). Lower finds more features in low-texture images */
     int overlap;             /* sequential matching: each image against the next N; 0 = 10 */
+    double init_min_tri_angle_deg; /* mapper: triangulation angle of the initial pair; 0 = 4.
+                                      COLMAP's 16 suits photo collections; a drive's
+                                      neighbouring frames are 0.1-0.3 m apart and no pair reaches
+                                      16 degrees, so the map starts nowhere or in pieces */
+    int abs_pose_min_inliers;      /* mapper: 2D-3D inliers to register an image; 0 = 15 (COLMAP's
+                                      30 drops low-texture frames a drive passes through) */
     const sp_log *log;       /* progress lines (may be NULL) */
 } sp_sfm_opts;
 

@@ -199,8 +199,9 @@ typedef struct sp_synth_capture_opts {
     /* The drive (SP_SYNTH_PLAN_DRIVE): a differential-drive robot with its camera at a fixed
      * height (the middle of min/max_height_m) looking ahead 0.1 rad down. It visits waypoints
      * spread over the reachable free floor in a nearest-neighbour tour, on the shortest paths
-     * that keep a robot's clearance, turning on the spot before each straight leg and spinning
-     * once round at each waypoint, as robots do when they map a room. */
+     * that keep a robot's clearance, steering smoothly towards the path 0.6 m ahead (turning at
+     * most drive_turn_rad_s, on the spot when more than 45 degrees off). No spins on the spot:
+     * a camera turning in front of a blank wall breaks structure-from-motion's chain of views. */
     float drive_speed_mps; /* 0 = 0.4 */
     float drive_turn_rad_s;/* 0 = 0.5 */
     float drive_rate_hz;   /* camera frame rate; 0 = 10 */

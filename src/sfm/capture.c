@@ -72,6 +72,12 @@ static cJSON *sfm_json(const sp_sfm_opts *o, const sp_sfm_result *r)
     cJSON_AddStringToObject(s, "reference", o->capture);
     cJSON_AddStringToObject(s, "intrinsics", o->estimate_intrinsics ? "estimated by COLMAP (PINHOLE, refined focal)"
                                                                        : "given (the reference's PINHOLE), fixed");
+    cJSON *set = cJSON_AddObjectToObject(s, "settings");
+    cJSON_AddNumberToObject(set, "max_features", o->max_features > 0 ? o->max_features : 4096);
+    cJSON_AddNumberToObject(set, "peak_threshold", o->peak_threshold > 0 ? o->peak_threshold : 0.02 / 3);
+    cJSON_AddNumberToObject(set, "overlap", o->overlap > 0 ? o->overlap : 10);
+    cJSON_AddNumberToObject(set, "init_min_tri_angle_deg", o->init_min_tri_angle_deg > 0 ? o->init_min_tri_angle_deg : 4);
+    cJSON_AddNumberToObject(set, "abs_pose_min_inliers", o->abs_pose_min_inliers > 0 ? o->abs_pose_min_inliers : 15);
     cJSON_AddNumberToObject(s, "images", r->n_images);
     cJSON_AddNumberToObject(s, "models", r->n_models);
     cJSON_AddItemToObject(s, "model_images", cJSON_CreateIntArray(r->model_images, r->n_models));

@@ -75,7 +75,7 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
                       const sp_colmap_camera *cam, sp_sfm_result *res, sp_error *err)
 {
     char db[2400], images[2400], list[2400], sparse[2400], threads[32], feats[32], overlap[32];
-    char params[512], peak[32];
+    char params[512], peak[32], tri[32], inl[32];
     snprintf(db, sizeof db, "%s/database.db", work);
     snprintf(images, sizeof images, "%s/images", o->capture);
     snprintf(list, sizeof list, "%s/images.txt", work);
@@ -83,6 +83,8 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
     snprintf(threads, sizeof threads, "%d", o->threads > 0 ? o->threads : -1);
     snprintf(feats, sizeof feats, "%d", o->max_features > 0 ? o->max_features : 4096);
     snprintf(overlap, sizeof overlap, "%d", o->overlap > 0 ? o->overlap : 10);
+    snprintf(tri, sizeof tri, "%g", o->init_min_tri_angle_deg > 0 ? o->init_min_tri_angle_deg : 4);
+    snprintf(inl, sizeof inl, "%d", o->abs_pose_min_inliers > 0 ? o->abs_pose_min_inliers : 15);
     snprintf(peak, sizeof peak, "%.6g", o->peak_threshold > 0 ? o->peak_threshold : 0.02 / 3);
     snprintf(params, sizeof params, "%.17g,%.17g,%.17g,%.17g", cam->params[0], cam->params[1],
              cam->params[2], cam->params[3]);
@@ -96,7 +98,8 @@ static int run_colmap(const sp_sfm_opts *o, const char *colmap, const char *work
                      "--SiftMatching.num_threads", threads, "--SequentialMatching.overlap", overlap, NULL};
     char *map[] = {c, "mapper", "--database_path", db, "--image_path", images, "--output_path", sparse,
                    "--Mapper.num_threads", threads, "--Mapper.ba_refine_focal_length", fix,
-                   "--Mapper.ba_refine_extra_params", "0", NULL};
+                   "--Mapper.ba_refine_extra_params", "0", "--Mapper.init_min_tri_angle", tri,
+                   "--Mapper.abs_pose_min_num_inliers", inl, NULL};
     char log[2400];
     snprintf(log, sizeof log, "%s/colmap.log", work);
     int rc = stage(o, "feature extraction", extract, log, &res->t_extract_s, err);
@@ -150,6 +153,9 @@ int sp_sfm_colmap(const sp_sfm_opts *o, sp_sfm_result *res, sp_error *err)
     if (!o || !o->capture || !o->out) return sp_error_set(err, SP_E_ARG, "sfm: a capture and an output folder are needed");
     if (o->nice < 0 || o->nice > 19) return sp_error_set(err, SP_E_ARG, "sfm: niceness %d: expected 0..19", o->nice);
     if (o->timeout_s < 0) return sp_error_set(err, SP_E_ARG, "sfm: timeout %g s", o->timeout_s);
+    if (!(o->init_min_tri_angle_deg >= 0 && o->init_min_tri_angle_deg < 90) || o->abs_pose_min_inliers < 0)
+        return sp_error_set(err, SP_E_ARG, "sfm: mapper settings %g degrees, %d inliers: expected "
+                            "0..90 and >= 0", o->init_min_tri_angle_deg, o->abs_pose_min_inliers);
     if (!(o->peak_threshold >= 0 && o->peak_threshold < 1))
         return sp_error_set(err, SP_E_ARG, "sfm: SIFT peak threshold %g: expected 0..1", o->peak_threshold);
     char colmap[4096];

@@ -18,8 +18,8 @@ static const char *plan_note(const sp_synth_plan_info *in)
     if (!strcmp(in->name, "walk"))
         return "spins over the free floor only: no view is aimed at a ground-truth object";
     if (!strcmp(in->name, "drive"))
-        return "one continuous drive at a camera's frame rate through the reachable floor: "
-               "no view is aimed at a ground-truth object";
+        return "one continuous drive at a camera's frame rate through the reachable floor, the "
+               "camera looking ahead: no view is aimed at a ground-truth object";
     return "an orbit around the scene (the world has no floor to walk or drive on)";
 }
 

@@ -1,8 +1,8 @@
-/* Capture drives: a differential-drive robot follows the route of drive_route.c (spin once round
- * at each waypoint, turn on the spot towards the next corner, drive straight to it) and its
- * camera records at a fixed rate, as a recorded run does; every k-th frame is kept so the run
- * fits the view budget. Also sp_synth_plan, which dispatches between the planners and says what
- * the plan made. */
+/* Capture drives: a differential-drive robot follows the route of drive_route.c with a
+ * pure-pursuit controller (heading towards the route a little ahead, turning rate limited, on the
+ * spot when far off) and its camera records at a fixed rate, as a recorded run does; every k-th
+ * frame is kept so the run fits the view budget. Also sp_synth_plan, which dispatches between
+ * the planners and says what the plan made. */
 #include "internal.h"
 
 #include <stdlib.h>
@@ -13,30 +13,31 @@
 #define DRIVE_PITCH_RAD -0.10f
 #define DRIVE_MAX_FRAMES 2000000
 
-typedef struct prim {
-    float x0, y0, x1, y1; /* a move (x0,y0 == x1,y1 for a turn) */
-    double yaw0, yaw1;    /* radians, unwrapped */
-    double t0, dur;       /* seconds; dur 0 with distinct ends is a jump to a new segment */
-} prim;
+#define DRIVE_LOOKAHEAD_M 0.6f  /* the heading aims at the route this far ahead */
+#define DRIVE_TURN_IN_PLACE_RAD 0.7854 /* beyond 45 degrees off, the robot turns on the spot */
 
-typedef struct prims {
+/* One camera frame of the drive: pose, and the distance and turn accumulated up to it. */
+typedef struct frame {
+    float x, y;
+    double yaw, dist, turned;
+} frame;
+
+typedef struct frames {
     size_t n, cap;
-    prim *p;
-    double t;
-} prims;
+    frame *f;
+} frames;
 
-static int prim_add(prims *ps, float x0, float y0, float x1, float y1, double yaw0, double yaw1,
-                    double dur)
+static int frame_add(frames *fs, float x, float y, double yaw, double dist, double turned)
 {
-    if (ps->n == ps->cap) {
-        size_t cap = ps->cap ? 2 * ps->cap : 64;
-        prim *np = realloc(ps->p, cap * sizeof *np);
-        if (!np) return -1;
-        ps->p = np;
-        ps->cap = cap;
+    if (fs->n == fs->cap) {
+        if (fs->cap >= DRIVE_MAX_FRAMES) return -2;
+        size_t cap = fs->cap ? 2 * fs->cap : 1024;
+        frame *nf = realloc(fs->f, cap * sizeof *nf);
+        if (!nf) return -1;
+        fs->f = nf;
+        fs->cap = cap;
     }
-    ps->p[ps->n++] = (prim){x0, y0, x1, y1, yaw0, yaw1, ps->t, dur};
-    ps->t += dur;
+    fs->f[fs->n++] = (frame){x, y, yaw, dist, turned};
     return 0;
 }
 
@@ -47,44 +48,73 @@ static double wrap_pi(double a)
     return a - M_PI;
 }
 
-/* The route as turns, moves, spins and jumps. */
-static int route_motion(const drive_route *r, double speed, double turn, prims *ps, double *length)
+/* The point at arc length s along the polyline xy[0..n) (clamped to its ends). */
+static void along(const float *xy, size_t n, double s, float *x, float *y)
 {
-    double yaw = 0;
-    *length = 0;
-    if (r->n > 1) yaw = atan2(r->xy[3] - r->xy[1], r->xy[2] - r->xy[0]);
-    for (size_t i = 0; i < r->n; i++) {
-        float x = r->xy[2 * i], y = r->xy[2 * i + 1];
-        if (i > 0) {
-            float px = r->xy[2 * i - 2], py = r->xy[2 * i - 1];
-            if (r->jump[i]) {
-                if (prim_add(ps, px, py, x, y, yaw, yaw, 0)) return -1;
-            } else {
-                double L = hypot(x - px, y - py);
-                if (L > 1e-6) {
-                    double h = yaw + wrap_pi(atan2(y - py, x - px) - yaw);
-                    if (prim_add(ps, px, py, px, py, yaw, h, fabs(h - yaw) / turn)) return -1;
-                    yaw = h;
-                    if (prim_add(ps, px, py, x, y, yaw, yaw, L / speed)) return -1;
-                    *length += L;
-                }
-            }
+    for (size_t i = 1; i < n; i++) {
+        double L = hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+        if (s <= L || i + 1 == n) {
+            double u = L > 0 ? fmin(fmax(s / L, 0), 1) : 1;
+            *x = (float)(xy[2 * i - 2] + u * (xy[2 * i] - xy[2 * i - 2]));
+            *y = (float)(xy[2 * i - 1] + u * (xy[2 * i + 1] - xy[2 * i - 1]));
+            return;
         }
-        if (r->stop[i] && prim_add(ps, x, y, x, y, yaw, yaw + 2 * M_PI, 2 * M_PI / turn)) return -1;
-        if (r->stop[i]) yaw += 2 * M_PI;
+        s -= L;
     }
-    return 0;
+    *x = xy[0];
+    *y = xy[1];
 }
 
-/* Pose at time t within primitive p, and the distance and turn accumulated up to t. */
-static void pose_at(const prim *p, double t, float *x, float *y, double *yaw)
+static double polyline_length(const float *xy, size_t n)
 {
-    double u = p->dur > 0 ? (t - p->t0) / p->dur : 1;
-    if (u < 0) u = 0;
-    if (u > 1) u = 1;
-    *x = (float)(p->x0 + u * (p->x1 - p->x0));
-    *y = (float)(p->y0 + u * (p->y1 - p->y0));
-    *yaw = p->yaw0 + u * (p->yaw1 - p->yaw0);
+    double L = 0;
+    for (size_t i = 1; i < n; i++) L += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+    return L;
+}
+
+/* Drives one segment of the route (no jumps inside) at the camera's rate: the heading turns at
+ * most turn*dt per frame towards the route DRIVE_LOOKAHEAD_M ahead (a pure-pursuit controller),
+ * the robot advances along the route at speed*cos(heading error), and turns on the spot while the
+ * error exceeds 45 degrees, as a differential drive under Nav2's controllers does. */
+static int drive_segment(const float *xy, size_t n, double speed, double turn, double dt,
+                         frames *fs, double *dist, double *turned)
+{
+    double L = polyline_length(xy, n), s = 0;
+    float x = xy[0], y = xy[1], tx, ty;
+    along(xy, n, fmin(DRIVE_LOOKAHEAD_M, L), &tx, &ty);
+    double yaw = (tx != x || ty != y) ? atan2(ty - y, tx - x) : 0;
+    for (;;) {
+        int rc = frame_add(fs, x, y, yaw, *dist, *turned);
+        if (rc) return rc;
+        if (s >= L - 1e-6) return 0;
+        along(xy, n, fmin(s + DRIVE_LOOKAHEAD_M, L), &tx, &ty);
+        double err = wrap_pi(atan2(ty - y, tx - x) - yaw);
+        double dy = fmax(-turn * dt, fmin(turn * dt, err));
+        yaw += dy;
+        *turned += fabs(dy);
+        if (fabs(err) < DRIVE_TURN_IN_PLACE_RAD) {
+            double ds = fmin(speed * dt * cos(err), L - s);
+            s += ds;
+            *dist += ds;
+            along(xy, n, s, &x, &y);
+        }
+    }
+}
+
+/* The whole route, segment after segment (a jump between them moves no distance). */
+static int route_motion(const drive_route *r, double speed, double turn, double rate, frames *fs,
+                        double *length)
+{
+    double dist = 0, turned = 0;
+    for (size_t a = 0; a < r->n;) {
+        size_t b = a + 1;
+        while (b < r->n && !r->jump[b]) b++;
+        int rc = drive_segment(r->xy + 2 * a, b - a, speed, turn, 1.0 / rate, fs, &dist, &turned);
+        if (rc) return rc;
+        a = b;
+    }
+    *length = dist;
+    return 0;
 }
 
 static int check_drive_opts(const sp_synth_capture_opts *o, double *speed, double *turn,
@@ -102,16 +132,11 @@ static int check_drive_opts(const sp_synth_capture_opts *o, double *speed, doubl
     return 0;
 }
 
-/* Samples the motion at rate, keeps every k-th frame and makes their cameras. */
-static int sample(const prims *ps, const sp_synth_capture_opts *o, double rate, float height,
+/* Keeps every k-th frame (k as small as fits the budget) and makes their cameras. */
+static int sample(const frames *fs, const sp_synth_capture_opts *o, double rate, float height,
                   sp_camera **cams, size_t *n_out, sp_synth_plan_info *info, sp_error *err)
 {
-    double T = ps->t;
-    double nf = floor(T * rate) + 1;
-    if (nf > DRIVE_MAX_FRAMES)
-        return sp_error_set(err, SP_E_ARG, "drive of %.0f s at %g Hz: %.0f frames, more than %d", T,
-                            rate, nf, DRIVE_MAX_FRAMES);
-    size_t n_frames = (size_t)nf, k = (n_frames + (size_t)o->n_views - 1) / (size_t)o->n_views;
+    size_t n_frames = fs->n, k = (n_frames + (size_t)o->n_views - 1) / (size_t)o->n_views;
     if (k < 1) k = 1;
     size_t n = (n_frames + k - 1) / k;
     sp_camera *out = calloc(n, sizeof *out);
@@ -122,34 +147,16 @@ static int sample(const prims *ps, const sp_synth_capture_opts *o, double rate, 
         return sp_error_set(err, SP_E_NOMEM, "out of memory");
     }
     float fov = o->fov_deg > 0 ? o->fov_deg : 70.0f;
-    size_t pi = 0;
-    double dist = 0, turned = 0, last_dist = 0, last_turn = 0, max_step = 0, max_turn = 0;
-    double done_dist = 0, done_turn = 0; /* over the primitives before pi */
+    double max_step = 0, max_turn = 0;
     for (size_t f = 0, m = 0; f < n_frames; f += k, m++) {
-        double t = f / rate;
-        while (pi + 1 < ps->n && t > ps->p[pi].t0 + ps->p[pi].dur) {
-            const prim *p = &ps->p[pi];
-            if (p->dur > 0) {
-                done_dist += hypot(p->x1 - p->x0, p->y1 - p->y0);
-                done_turn += fabs(p->yaw1 - p->yaw0);
-            }
-            pi++;
-        }
-        const prim *p = &ps->p[pi];
-        float x, y;
-        double yaw;
-        pose_at(p, t, &x, &y, &yaw);
-        double u = p->dur > 0 ? fmin(fmax((t - p->t0) / p->dur, 0), 1) : 0;
-        dist = done_dist + (p->dur > 0 ? u * hypot(p->x1 - p->x0, p->y1 - p->y0) : 0);
-        turned = done_turn + (p->dur > 0 ? u * fabs(p->yaw1 - p->yaw0) : 0);
+        const frame *p = &fs->f[f];
         if (m > 0) {
-            max_step = fmax(max_step, dist - last_dist);
-            max_turn = fmax(max_turn, turned - last_turn);
+            const frame *q = &fs->f[f - k];
+            max_step = fmax(max_step, p->dist - q->dist);
+            max_turn = fmax(max_turn, p->turned - q->turned);
         }
-        last_dist = dist;
-        last_turn = turned;
-        synth_view(&out[m], o, fov, x, y, height, (float)wrap_pi(yaw), DRIVE_PITCH_RAD);
-        ts[m] = t;
+        synth_view(&out[m], o, fov, p->x, p->y, height, (float)wrap_pi(p->yaw), DRIVE_PITCH_RAD);
+        ts[m] = f / rate;
     }
     *cams = out;
     *n_out = n;
@@ -157,7 +164,7 @@ static int sample(const prims *ps, const sp_synth_capture_opts *o, double rate, 
         info->n_frames_driven = n_frames;
         info->keep_every = (int)k;
         info->rate_hz = rate / (double)k;
-        info->duration_s = T;
+        info->duration_s = (n_frames - 1) / rate;
         info->max_step_m = max_step;
         info->max_turn_rad = max_turn;
         info->t_s = ts;
@@ -205,11 +212,14 @@ static int plan_drive(const sp_world *w, const sp_synth_capture_opts *o, sp_came
     rc = drive_plan_route(&clear, need, DRIVE_MAX_WAYPOINTS, &route, err);
     sp_grid2_free(&clear);
     if (rc) return rc;
-    prims ps = {0};
+    frames fs = {0};
     double length = 0;
-    if (route_motion(&route, speed, turn, &ps, &length)) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    int mrc = route_motion(&route, speed, turn, rate, &fs, &length);
+    if (mrc == -2)
+        rc = sp_error_set(err, SP_E_ARG, "drive at %g Hz: more than %d frames", rate, DRIVE_MAX_FRAMES);
+    else if (mrc) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
     float height = 0.5f * (hmin + hmax);
-    if (!rc) rc = sample(&ps, o, rate, height, cams, n, info, err);
+    if (!rc) rc = sample(&fs, o, rate, height, cams, n, info, err);
     if (!rc && info) {
         info->name = "drive";
         info->n_views = *n;
@@ -221,7 +231,7 @@ static int plan_drive(const sp_world *w, const sp_synth_capture_opts *o, sp_came
         info->n_segments = route.n_segments;
         info->reachable_fraction = route.reachable_fraction;
     }
-    free(ps.p);
+    free(fs.f);
     drive_route_free(&route);
     return rc;
 }
