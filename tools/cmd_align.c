@@ -1,6 +1,7 @@
 /* semsplat align: puts a COLMAP-frame splat into the world (odometry) frame, from known camera
  * positions (Umeyama similarity, >= 3 matches), a given 4x4 transform, or the detected floor
- * plane (z up, floor at z = 0), and writes the transformed splat. */
+ * plane (z up, floor at z = 0). With --model it writes DIR/frame.json (source "align"), which the
+ * query engine applies to splat and cameras; --out writes a transformed copy of the splat. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +13,7 @@
 
 static void help(void)
 {
-    printf("usage: semsplat align (--splat IN.ply | --model DIR) --out OUT.ply\n"
+    printf("usage: semsplat align (--splat IN.ply --out OUT.ply | --model DIR [--out OUT.ply])\n"
            "                      (--matches FILE --colmap DIR | --transform FILE | --floor [--colmap DIR])\n"
            "                      [--no-scale]\n\n"
            "  --matches FILE   lines 'IMAGE_NAME x y z' (that camera's world position; needs\n"
@@ -20,7 +21,9 @@ static void help(void)
            "                   position); at least 3. Fits a similarity (Umeyama).\n"
            "  --transform FILE 12 or 16 numbers: a row-major 3x4 / 4x4 similarity.\n"
            "  --floor          RANSAC floor plane on the lowest Gaussians: z up, floor at z=0\n"
-           "                   (uses --colmap cameras for the rough up direction when given).\n");
+           "                   (uses --colmap cameras for the rough up direction when given).\n"
+           "  --model DIR      writes DIR/frame.json (world_from_model, source align); splat.ply\n"
+           "                   stays as it is and queries report world positions.\n");
 }
 
 static int read_transform(const char *path, double M[16], sp_error *err)
@@ -91,6 +94,20 @@ static int read_matches(const char *path, const sp_colmap_model *m, double **src
     return rc;
 }
 
+/* The model folder's frame: the fitted similarity as world_from_model (metres, z up). */
+static int write_frame(const char *model, const double M[16], double rms, const char *how, sp_error *err)
+{
+    sp_frame f;
+    sp_frame_init(&f, "align");
+    memcpy(f.world_from_model, M, sizeof f.world_from_model);
+    f.residual_m = rms;
+    snprintf(f.note, sizeof f.note, "semsplat align --%s", how);
+    if (!strcmp(how, "floor")) snprintf(f.units, sizeof f.units, "unknown"); /* no scale from a plane */
+    char path[2100];
+    snprintf(path, sizeof path, "%s/frame.json", model);
+    return sp_frame_write(path, &f, err);
+}
+
 int cmd_align(int argc, char **argv)
 {
     const char *splat = NULL, *model = NULL, *out = NULL, *matches = NULL, *tfile = NULL,
@@ -113,14 +130,14 @@ int cmd_align(int argc, char **argv)
     if (splat) snprintf(in, sizeof in, "%s", splat);
     else if (model) snprintf(in, sizeof in, "%s/splat.ply", model);
     else return cli_usage_error("align", "--splat IN.ply or --model DIR is required");
-    if (!out) return cli_usage_error("align", "--out OUT.ply is required");
+    if (!out && !model) return cli_usage_error("align", "--out OUT.ply is required with --splat");
     if (!!matches + !!tfile + floor_ != 1)
         return cli_usage_error("align", "give exactly one of --matches, --transform, --floor");
     sp_error err = {0};
     sp_splat s = {0};
     sp_colmap_model m;
     memset(&m, 0, sizeof m);
-    double M[16], *src = NULL, *dst = NULL;
+    double M[16], *src = NULL, *dst = NULL, rms = -1;
     sp_camera *cams = NULL;
     size_t nc = 0;
     int rc = sp_ply_read_splat(in, &s, &err);
@@ -128,7 +145,6 @@ int cmd_align(int argc, char **argv)
     if (!rc && tfile) rc = read_transform(tfile, M, &err);
     if (!rc && matches) {
         size_t n = 0;
-        double rms = 0;
         rc = read_matches(matches, colmap ? &m : NULL, &src, &dst, &n, &err);
         if (!rc) rc = sp_umeyama(src, dst, n, scale, M, &rms, &err);
         if (!rc) printf("similarity from %zu matches: rms %.4f\n", n, rms);
@@ -140,13 +156,15 @@ int cmd_align(int argc, char **argv)
         if (!rc) rc = sp_detect_floor(&s, cams, nc, M, n3, &inl, &err);
         if (!rc) printf("floor normal (%.4f, %.4f, %.4f), %.1f%% of low Gaussians on it\n", n3[0], n3[1], n3[2], 100 * inl);
     }
-    if (!rc) rc = sp_splat_transform(&s, M, &err);
-    if (!rc) rc = sp_ply_write_splat(out, &s, &err);
+    if (!rc && model) rc = write_frame(model, M, rms, matches ? "matches" : tfile ? "transform" : "floor", &err);
+    if (!rc && out) rc = sp_splat_transform(&s, M, &err);
+    if (!rc && out) rc = sp_ply_write_splat(out, &s, &err);
     if (!rc) {
         printf("transform (row-major 4x4):\n");
         for (int r = 0; r < 4; r++)
             printf("  %12.6f %12.6f %12.6f %12.6f\n", M[r * 4], M[r * 4 + 1], M[r * 4 + 2], M[r * 4 + 3]);
-        printf("wrote %s (%zu Gaussians)\n", out, s.n);
+        if (model) printf("wrote %s/frame.json (source align)\n", model);
+        if (out) printf("wrote %s (%zu Gaussians)\n", out, s.n);
     }
     free(src), free(dst), free(cams);
     sp_colmap_free(&m);

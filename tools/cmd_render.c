@@ -13,6 +13,7 @@
 #include "cli.h"
 #include "semsplat/io.h"
 #include "semsplat/render.h"
+#include "semsplat/semantic.h" /* sp_turbo */
 
 static void usage(FILE *f)
 {
@@ -22,20 +23,6 @@ static void usage(FILE *f)
             "                       [--threads N] [--background R,G,B] [--downscale F] [--quiet]\n"
             "Renders the splat from the cameras of a COLMAP model (pinhole; distortion ignored)\n"
             "and writes one PNG per image into DIR.\n");
-}
-
-/* Turbo colour map (Google, 2019), polynomial fit, t in [0, 1]. */
-static void turbo(float t, float rgb[3])
-{
-    t = t < 0.f ? 0.f : (t > 1.f ? 1.f : t);
-    float t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-    rgb[0] = 0.13572138f + 4.61539260f * t - 42.66032258f * t2 + 132.13108234f * t3 -
-             152.94239396f * t4 + 59.28637943f * t5;
-    rgb[1] = 0.09140261f + 2.19418839f * t + 4.84296658f * t2 - 14.18503333f * t3 +
-             4.27729857f * t4 + 2.82956604f * t5;
-    rgb[2] = 0.10667330f + 12.64194608f * t - 60.58204836f * t2 + 110.36276771f * t3 -
-             89.90310912f * t4 + 27.34824973f * t5;
-    for (int c = 0; c < 3; c++) rgb[c] = rgb[c] < 0.f ? 0.f : (rgb[c] > 1.f ? 1.f : rgb[c]);
 }
 
 static int cmp_float(const void *a, const void *b)
@@ -64,7 +51,7 @@ static void depth_to_rgb(const float *depth, const float *alpha, size_t n, float
             rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = 0.f;
             continue;
         }
-        turbo(1.f - (depth[i] - lo) / (hi - lo), rgb + 3 * i); /* near = red, far = blue */
+        sp_turbo(1.f - (depth[i] - lo) / (hi - lo), rgb + 3 * i); /* near = red, far = blue */
     }
     free(vals);
 }
@@ -87,24 +74,24 @@ int cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
     const char *splat_path = NULL, *colmap_dir = NULL, *image_name = NULL, *out_dir = NULL;
-    const char *channels = "rgb", *device = "auto";
-    int all = 0, quiet = 0, bad = 0;
-    long threads = 0, downscale = 1;
+    const char *channels = "rgb";
+    cli_common cf = cli_common_default();
+    int all = 0, bad = 0, took;
+    long downscale = 1;
     float bg[3] = {0.f, 0.f, 0.f};
     for (int i = 1; i < argc; i++) {
         const char *v;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage(stdout);
             return 0;
+        } else if ((took = cli_common_flag(cmd, argc, argv, &i, &cf))) {
+            if (took == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--splat", &bad))) splat_path = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--image", &bad))) image_name = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--channels", &bad))) channels = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int(cmd, "--threads", v, &threads)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--downscale", &bad))) {
+        else if ((v = cli_flag_value(argc, argv, &i, "--downscale", &bad))) {
             if (cli_parse_int(cmd, "--downscale", v, &downscale)) return 2;
             if (downscale < 1 || downscale > 64)
                 return cli_usage_error(cmd, "--downscale %ld: must be 1..64", downscale);
@@ -113,7 +100,6 @@ int cmd_render(int argc, char **argv)
             if (sscanf(v, "%f,%f,%f%c", &bg[0], &bg[1], &bg[2], &tail) != 3)
                 return cli_usage_error(cmd, "--background '%s': expected R,G,B in [0,1]", v);
         } else if (!strcmp(argv[i], "--all")) all = 1;
-        else if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) quiet = 1;
         else if (!bad)
             return cli_usage_error(cmd, "unknown argument '%s'", argv[i]);
         if (bad) return 2;
@@ -124,12 +110,8 @@ int cmd_render(int argc, char **argv)
     if (!all == !image_name) return cli_usage_error(cmd, "give exactly one of --image NAME and --all");
     int mode = !strcmp(channels, "rgb") ? 0 : !strcmp(channels, "depth") ? 1 : !strcmp(channels, "alpha") ? 2 : -1;
     if (mode < 0) return cli_usage_error(cmd, "--channels '%s': expected rgb, depth or alpha", channels);
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error(cmd, "--device '%s': expected cpu, cuda or auto", device);
 
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&cf, SP_LOG_INFO);
     sp_error err = {0};
     sp_splat splat = {0};
     sp_colmap_model model = {0};
@@ -138,7 +120,7 @@ int cmd_render(int argc, char **argv)
     float *buf = NULL, *aux = NULL, *rgb8 = NULL;
     int rc = 1;
     if (sp_ply_read_splat(splat_path, &splat, &err) || sp_colmap_read(colmap_dir, &model, &err) ||
-        sp_mkdirs(out_dir, &err) || sp_device_create(&dev, kind, (int)threads, &err) ||
+        sp_mkdirs(out_dir, &err) || sp_device_create(&dev, cf.device, (int)cf.threads, &err) ||
         sp_raster_create(&r, dev, &err)) {
         cli_fail(cmd, &err);
         goto done;

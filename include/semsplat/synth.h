@@ -188,7 +188,8 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *opts, sp
  *   sparse/0/{cameras,images,points3D}.bin  PINHOLE, exact poses, points on visible surfaces
  *   images/NNNNN.png  depth/NNNNN.npy (float32 metres [h][w])  labels/NNNNN.png (16-bit ids)
  *   labels.json  (id -> model name, class, is_structure)
- *   ground_truth.json  (world path; each object's name, class, world pose and AABB) */
+ *   ground_truth.json  (world path; each object's name, class, world pose and AABB)
+ *   frame.json  (source "synth": the model frame is the world frame; see sp_frame in io.h) */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);
 

@@ -238,7 +238,7 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
     for (size_t i = 0; i < s->n; i++)
         if (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel && e->opacity[i] >= th->min_op) m++;
     if (m == 0) {
-        set_best(res, e->opts.min_confidence);
+        set_best(res, th->opts->min_confidence);
         return 0;
     }
     float *pts = malloc(sizeof(float) * 3 * m), *w = malloc(sizeof(float) * m),
@@ -257,11 +257,11 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
         cf[j] = e->raw[i];
         j++;
     }
-    int rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction, 0.0f,
+    int rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction, 0.0f,
                          &res->instances, &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
-    set_best(res, e->opts.min_confidence);
+    set_best(res, th->opts->min_confidence);
     return 0;
 }
 
@@ -502,7 +502,7 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     /* n_views views at least; up to three times that while the relevant set is not covered
      * (instances spread over the house: windows, chairs on both sides of a table). With twice,
      * small instances far from the rest (a window, one chair) went unseen on the house. */
-    int k = e->opts.n_views > 0 ? e->opts.n_views : 4;
+    int k = th->opts->n_views > 0 ? th->opts->n_views : 4;
     int *views = malloc(sizeof(int) * (size_t)(3 * k));
     if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
     int got = sem_pick_views(e, sc, th, NULL, k, 3 * k, views, NULL, err);
@@ -514,7 +514,7 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     float *pts = NULL, *w = NULL, *cf = NULL;
     size_t m = 0, cap = 0;
     int rc = 0;
-    int ds = e->opts.render_downscale > 0 ? e->opts.render_downscale : 1;
+    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1;
     for (int q = 0; q < got && !rc; q++) {
         sp_camera cam;
         float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
@@ -575,11 +575,11 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     /* A cluster's weight here sums every view that saw it, so an instance seen from one or two
      * views weighs a fraction of one seen from many: the relative cut is a third of the 3D one. */
     if (!rc && m > 0)
-        rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction / 3.0f,
-                         MV_MIN_VOXEL_COVER * e->opts.voxel_m * e->opts.voxel_m, &res->instances,
+        rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
+                         MV_MIN_VOXEL_COVER * th->opts->voxel_m * th->opts->voxel_m, &res->instances,
                          &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
-    set_best(res, e->opts.min_confidence);
+    set_best(res, th->opts->min_confidence);
     return 0;
 }
