@@ -296,7 +296,8 @@ char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
 #define SP_SEMANTIC_ABI_VERSION 2
 int sp_semantic_abi_version(void);
 /* sizeof of a public struct by name ("sp_query_opts", "sp_query_result", "sp_query_instance",
- * "sp_query_source", "sp_query_frame", "sp_error", "sp_camera", "sp_image"); 0 when unknown. */
+ * "sp_query_source", "sp_query_frame", "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when
+ * unknown. */
 size_t sp_semantic_abi_sizeof(const char *type_name);
 
 /* ---- heatmaps --------------------------------------------------------------------------------- */

@@ -96,6 +96,7 @@ size_t sp_semantic_abi_sizeof(const char *name)
         {"sp_query_instance", sizeof(sp_query_instance)}, {"sp_query_source", sizeof(sp_query_source)},
         {"sp_query_frame", sizeof(sp_query_frame)},   {"sp_error", sizeof(sp_error)},
         {"sp_camera", sizeof(sp_camera)},             {"sp_image", sizeof(sp_image)},
+        {"sp_splat", sizeof(sp_splat)},
     };
     for (size_t i = 0; name && i < sizeof sizes / sizeof sizes[0]; i++)
         if (!strcmp(sizes[i].name, name)) return sizes[i].size;
