@@ -246,6 +246,55 @@ void sp_strbuf_printf(sp_strbuf *b, const char *fmt, ...) __attribute__((format(
 char *sp_strbuf_take(sp_strbuf *b);
 void sp_strbuf_free(sp_strbuf *b);
 
+/* ---- grids and distance transforms ------------------------------------------------------------ */
+
+/* A regular 2D grid of floats over the world's x-y plane (row-major [ny][nx]; cell (ix, iy)
+ * covers [origin + i*res, origin + (i+1)*res) on each axis, row 0 at the origin's y, as Nav2's
+ * maps and PGM rows read bottom-up). Owns data. Used by view selection, synth's planner and
+ * navigation's costmap. */
+typedef struct sp_grid2 {
+    int nx, ny;
+    float res;       /* cell edge, world units (metres) */
+    float origin[2]; /* world x, y of cell (0,0)'s lower-left corner */
+    float *data;     /* [ny][nx] */
+} sp_grid2;
+
+/* The same in 3D ([nz][ny][nx], origin = the lower corner of voxel (0,0,0)). Owns data. */
+typedef struct sp_grid3 {
+    int nx, ny, nz;
+    float res;
+    float origin[3];
+    float *data; /* [nz][ny][nx] */
+} sp_grid3;
+
+/* Allocates a zeroed grid; fails with SP_E_ARG on non-positive sizes or res, SP_E_NOMEM when the
+ * cell count overflows or memory is short. *g is left zeroed on error. */
+int sp_grid2_alloc(sp_grid2 *g, int nx, int ny, float res, float origin_x, float origin_y,
+                   sp_error *err);
+int sp_grid3_alloc(sp_grid3 *g, int nx, int ny, int nz, float res, const float origin[3],
+                   sp_error *err);
+void sp_grid2_free(sp_grid2 *g);
+void sp_grid3_free(sp_grid3 *g);
+
+/* World point -> cell index; returns 1 when inside the grid (indices written either way,
+ * floor-rounded, so callers can clamp). */
+int sp_grid2_cell(const sp_grid2 *g, float x, float y, int *ix, int *iy);
+int sp_grid3_cell(const sp_grid3 *g, const float p[3], int idx[3]);
+/* Cell centre in world coordinates. */
+void sp_grid2_center(const sp_grid2 *g, int ix, int iy, float *x, float *y);
+void sp_grid3_center(const sp_grid3 *g, const int idx[3], float p[3]);
+
+/* Exact Euclidean distance transforms (Felzenszwalb & Huttenlocher, "Distance Transforms of
+ * Sampled Functions", 2012: separable lower envelopes of parabolas, O(cells)). out[i] is the
+ * distance, in world units (cells * res), from cell i's centre to the centre of the nearest
+ * cell whose seed is nonzero: 0 on seeds, INFINITY when there is no seed at all. seed and out
+ * are [ny][nx] (2D) or [nz][ny][nx] (3D); out may not alias seed. Runs across pool (may be
+ * NULL). Fails with SP_E_ARG on bad sizes, SP_E_NOMEM when scratch cannot be allocated. */
+int sp_edt2(const uint8_t *seed, int nx, int ny, float res, float *out, sp_pool *pool,
+            sp_error *err);
+int sp_edt3(const uint8_t *seed, int nx, int ny, int nz, float res, float *out, sp_pool *pool,
+            sp_error *err);
+
 /* ---- paths ----------------------------------------------------------------------------------- */
 
 /* Joins a and b with one '/', into out (size cap); returns -1 if truncated. */
