@@ -59,7 +59,7 @@ void sp_query_engine_free(sp_query_engine *e)
     free(e->raw);
     free(e->rel);
     free(e->scores2);
-    free(e->occ);
+    sp_grid3_free(&e->occ);
     sp_raster_free(e->raster_aux);
     if (e->has_mutex) pthread_mutex_destroy(&e->mu);
     free(e);

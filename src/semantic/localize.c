@@ -338,8 +338,9 @@ static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float 
     return sp_render_splat(e->raster, &e->splat, cam, &req, err);
 }
 
-/* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels: a cheap occlusion test for
- * choosing views (a wall between a camera and the object), instead of rendering candidates. */
+/* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels (core's sp_grid3, 1 =
+ * occupied): a cheap occlusion test for choosing views (a wall between a camera and the object),
+ * instead of rendering candidates. */
 static int build_occupancy(sp_query_engine *e, sp_error *err)
 {
     const sp_splat *s = &e->splat;
@@ -351,20 +352,14 @@ static int build_occupancy(sp_query_engine *e, sp_error *err)
         }
     float ext = fmaxf(hi[0] - lo[0], fmaxf(hi[1] - lo[1], hi[2] - lo[2]));
     float vox = fmaxf(0.05f, ext / 255.0f);
-    size_t tot = 1;
-    for (int a = 0; a < 3; a++) {
-        e->occ_dim[a] = (int)((hi[a] - lo[a]) / vox) + 1;
-        e->occ_lo[a] = lo[a];
-        tot *= (size_t)e->occ_dim[a];
-    }
-    e->occ_voxel = vox;
-    e->occ = calloc(tot, 1);
-    if (!e->occ) return sp_error_set(err, SP_E_NOMEM, "query: out of memory for the occupancy grid");
+    int dim[3];
+    for (int a = 0; a < 3; a++) dim[a] = (int)((hi[a] - lo[a]) / vox) + 1;
+    int rc = sp_grid3_alloc(&e->occ, dim[0], dim[1], dim[2], vox, lo, err);
+    if (rc) return sp_error_prefix(err, "query: occupancy grid: ");
     for (size_t i = 0; i < s->n; i++) {
-        if (e->opacity[i] < 0.5f) continue;
         int c[3];
-        for (int a = 0; a < 3; a++) c[a] = (int)((s->means[3 * i + a] - lo[a]) / vox);
-        e->occ[((size_t)c[2] * e->occ_dim[1] + c[1]) * e->occ_dim[0] + c[0]] = 1;
+        if (e->opacity[i] >= 0.5f && sp_grid3_cell(&e->occ, s->means + 3 * i, c))
+            e->occ.data[((size_t)c[2] * dim[1] + c[1]) * dim[0] + c[0]] = 1.0f;
     }
     return 0;
 }
@@ -373,18 +368,17 @@ static int build_occupancy(sp_query_engine *e, sp_error *err)
  * the first 0.2 m are not tested: p's own surface and the camera's surroundings). */
 static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
 {
+    const sp_grid3 *g = &e->occ;
     sp_vec3 d = sp_v3_sub(p, c);
-    float len = sp_v3_norm(d), step = 0.5f * e->occ_voxel;
+    float len = sp_v3_norm(d), step = 0.5f * g->res;
     if (len < 1e-6f) return 1;
     d = sp_v3_scale(d, 1.0f / len);
-    for (float t = 0.2f; t < len - 2.5f * e->occ_voxel; t += step) {
+    for (float t = 0.2f; t < len - 2.5f * g->res; t += step) {
         sp_vec3 x = sp_v3_add(c, sp_v3_scale(d, t));
-        int q[3] = {(int)floorf((x.x - e->occ_lo[0]) / e->occ_voxel), (int)floorf((x.y - e->occ_lo[1]) / e->occ_voxel),
-                    (int)floorf((x.z - e->occ_lo[2]) / e->occ_voxel)};
-        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= e->occ_dim[0] || q[1] >= e->occ_dim[1] ||
-            q[2] >= e->occ_dim[2])
-            continue;
-        if (e->occ[((size_t)q[2] * e->occ_dim[1] + q[1]) * e->occ_dim[0] + q[0]]) return 0;
+        float xp[3] = {x.x, x.y, x.z};
+        int q[3];
+        if (!sp_grid3_cell(g, xp, q)) continue;
+        if (g->data[((size_t)q[2] * g->ny + q[1]) * g->nx + q[0]] != 0) return 0;
     }
     return 1;
 }
@@ -395,7 +389,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     (void)sc;
     const sp_splat *s = &e->splat;
     if (e->n_cams == 0 || k <= 0) return 0;
-    if (!e->occ) {
+    if (!e->occ.data) {
         int rc = build_occupancy(e, err);
         if (rc) return rc;
     }

@@ -34,9 +34,7 @@ struct sp_query_engine {
     float *scores2;            /* [n][2] (raw, rel) rendered as two channels */
     sp_raster *raster_aux;     /* renders of scores2 (its own upload cache) */
     float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
-    uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
-    int occ_dim[3];
-    float occ_lo[3], occ_voxel;
+    sp_grid3 occ;              /* occupancy of opaque Gaussian centres (1), built on first use */
 };
 
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
