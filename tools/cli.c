@@ -92,24 +92,24 @@ int cli_device_kind(const char *cmd, const char *value, sp_device_kind *kind)
     return 0;
 }
 
-int cli_common_flag(const char *cmd, int argc, char **argv, int *i, cli_common *c)
+int cli_common_flag(const char *cmd, int argc, char **argv, int *i, unsigned which, cli_common *c)
 {
     int bad = 0;
     const char *v;
-    if ((v = cli_flag_value(argc, argv, i, "--device", &bad))) {
+    if ((which & CLI_DEVICE) && (v = cli_flag_value(argc, argv, i, "--device", &bad))) {
         if (cli_device_kind(cmd, v, &c->device)) return 2;
         c->device_name = v;
         return 1;
     }
-    if ((v = cli_flag_value(argc, argv, i, "--threads", &bad))) {
+    if ((which & CLI_THREADS) && (v = cli_flag_value(argc, argv, i, "--threads", &bad))) {
         if (cli_parse_int(cmd, "--threads", v, &c->threads)) return 2;
         if (c->threads < 0 || c->threads > 4096)
             return cli_usage_error(cmd, "--threads: %ld not in 0..4096 (0 = all cores)", c->threads);
         return 1;
     }
     if (bad) return 2;
-    if (!strcmp(argv[*i], "--quiet") || !strcmp(argv[*i], "-q")) return c->quiet = 1, 1;
-    if (!strcmp(argv[*i], "--verbose")) return c->verbose = 1, 1;
+    if ((which & CLI_QUIET) && (!strcmp(argv[*i], "--quiet") || !strcmp(argv[*i], "-q"))) return c->quiet = 1, 1;
+    if ((which & CLI_VERBOSE) && !strcmp(argv[*i], "--verbose")) return c->verbose = 1, 1;
     return 0;
 }
 

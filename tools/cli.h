@@ -43,11 +43,14 @@ typedef struct cli_common {
     int quiet, verbose;
 } cli_common;
 
+/* Which shared flags a command takes (synth has no device, say). */
+enum { CLI_DEVICE = 1, CLI_THREADS = 2, CLI_QUIET = 4, CLI_VERBOSE = 8, CLI_ALL = 15 };
+
 cli_common cli_common_default(void);
-/* Takes argv[*i] when it is one of the shared flags (advancing *i past its value): returns 1 when
- * taken, 0 when it is not a shared flag, 2 (after printing a usage error naming the flag and the
- * value) when its value is bad; return that 2 as the exit status. */
-int cli_common_flag(const char *cmd, int argc, char **argv, int *i, cli_common *c);
+/* Takes argv[*i] when it is one of the shared flags in `which` (advancing *i past its value):
+ * returns 1 when taken, 0 when it is not such a flag, 2 (after printing a usage error naming the
+ * flag and the value) when its value is bad; return that 2 as the exit status. */
+int cli_common_flag(const char *cmd, int argc, char **argv, int *i, unsigned which, cli_common *c);
 /* "cpu", "cuda", "auto" -> kind; else prints a usage error naming the value and returns 2. */
 int cli_device_kind(const char *cmd, const char *value, sp_device_kind *kind);
 /* Creates the device the flags asked for; prints the error and returns 1 on failure. */

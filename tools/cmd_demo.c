@@ -10,7 +10,7 @@
 
 static const char *usage_text =
     "usage: semsplat demo [--out DIR] [--world W.world] [--model-path DIR] [--capture DIR]\n"
-    "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D]\n"
+    "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D] [--points N]\n"
     "                     [--match-radius M] [--device cpu|cuda|auto] [--threads N]\n"
     "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n\n"
     "Runs synth -> train -> features -> lift -> queries and writes DIR (default demo/):\n"
@@ -40,7 +40,7 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
     const char *v;
     for (int i = 1; i < argc && !bad; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return fputs(usage_text, stdout), -1;
-        if ((r = cli_common_flag("demo", argc, argv, &i, c))) {
+        if ((r = cli_common_flag("demo", argc, argv, &i, CLI_ALL, c))) {
             if (r == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) o->out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) o->world = v;
@@ -51,6 +51,7 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
         INT_OPT("--steps", steps)
         INT_OPT("--dim", dim)
         INT_OPT("--downscale", downscale)
+        INT_OPT("--points", points)
         else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--match-radius", &bad))) {

@@ -28,7 +28,7 @@ static int parse(int argc, char **argv, sp_distill_opts *o, cli_common *c)
     int bad = 0, r;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), -1;
-        if ((r = cli_common_flag("distill", argc, argv, &i, c))) {
+        if ((r = cli_common_flag("distill", argc, argv, &i, CLI_ALL, c))) {
             if (r == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) o->model_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--features", &bad))) o->features_dir = v;

@@ -26,7 +26,7 @@ int cmd_embed_text(int argc, char **argv)
     if (!texts) return 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return free(texts), help(), 0;
-        if ((r = cli_common_flag("embed-text", argc, argv, &i, &c))) {
+        if ((r = cli_common_flag("embed-text", argc, argv, &i, CLI_ALL, &c))) {
             if (r == 2) return free(texts), 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--clip", &bad))) weights = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--config", &bad))) config = v;

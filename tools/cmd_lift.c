@@ -23,7 +23,7 @@ int cmd_lift(int argc, char **argv)
     int bad = 0, r;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((r = cli_common_flag("lift", argc, argv, &i, &c))) {
+        if ((r = cli_common_flag("lift", argc, argv, &i, CLI_ALL, &c))) {
             if (r == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--features", &bad))) features = v;

@@ -55,7 +55,7 @@ int cmd_query(int argc, char **argv)
     sp_query_opts opts = sp_query_opts_default();
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((r = cli_common_flag("query", argc, argv, &i, &c))) {
+        if ((r = cli_common_flag("query", argc, argv, &i, CLI_ALL, &c))) {
             if (r == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--heatmap-dir", &bad))) heatmap_dir = v;

@@ -84,7 +84,7 @@ int cmd_render(int argc, char **argv)
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage(stdout);
             return 0;
-        } else if ((took = cli_common_flag(cmd, argc, argv, &i, &cf))) {
+        } else if ((took = cli_common_flag(cmd, argc, argv, &i, CLI_ALL, &cf))) {
             if (took == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--splat", &bad))) splat_path = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap_dir = v;

@@ -57,7 +57,7 @@ static int parse(int argc, char **argv, train_flags *f, cli_common *c)
     const char *v;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), -1;
-        if ((r = cli_common_flag("train", argc, argv, &i, c))) {
+        if ((r = cli_common_flag("train", argc, argv, &i, CLI_ALL, c))) {
             if (r == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) f->colmap = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) f->images = v;

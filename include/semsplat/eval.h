@@ -165,6 +165,7 @@ typedef struct sp_demo_opts {
     int views, steps;        /* 0: GPU 150 views, 7000 steps; CPU 48 views, 2000 steps */
     int width, height;       /* 0: GPU 640x480, CPU 320x240 */
     int dim;                 /* feature PCA dim (0: 32) */
+    int points;              /* synth's points3D (0: 30000) */
     int downscale;           /* training image downscale (0: 1) */
     int skip_missing;        /* synth: render without missing assets */
     int reuse;               /* skip stages whose outputs exist in out_dir */

@@ -10,7 +10,7 @@ int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int
     sp_world w;
     int rc = sp_synth_load_world(o->world, &lo, &w, err);
     if (rc) return rc;
-    sp_synth_capture_opts co = {.n_views = views, .width = width, .height = height, .seed = 1,
+    sp_synth_capture_opts co = {.n_views = views, .width = width, .height = height, .n_points = o->points, .seed = 1,
                                 .n_threads = o->threads, .log = o->log};
     rc = sp_synth_capture(&w, capture_dir, &co, err);
     sp_world_free(&w);

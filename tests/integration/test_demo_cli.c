@@ -1,10 +1,12 @@
-/* semsplat demo on bad input: bad flags, a missing capture, a capture without ground truth (a
- * real one: the demo stops after lift with a hint) and a malformed ground_truth.json. Stages are
- * skipped with --reuse over stub outputs, so no training runs here. */
+/* semsplat demo from the command line: the success path on a small room (every stage, the table,
+ * the report files), and bad input: bad flags, a missing capture, a capture without ground truth
+ * (a real one: the demo stops after lift with a hint) and a malformed ground_truth.json (stages
+ * skipped with --reuse over stub outputs). */
 #include "test.h"
 
 #include <sys/wait.h>
 
+#include "pipeline_world.h"
 #include "semsplat/core.h"
 
 /* Runs the CLI with args, returns its exit status and its combined output in out. */
@@ -88,11 +90,34 @@ static void test_malformed_ground_truth(void)
     CHECK_MSG(strstr(out, "ground_truth.json") != NULL, "output: %s", out);
 }
 
+static void test_success_path(void)
+{
+    static char out[65536];
+    char args[4096], dir[1100], p[1300];
+    snprintf(dir, sizeof dir, "%s", test_tmpdir("demo_cli_ok"));
+    snprintf(args, sizeof args, "demo --world %s --out %s/demo --views 24 --size 96x72 --steps 300 --dim 16 "
+             "--points 4000 --match-radius 0.3 --device cpu --threads 2 --quiet", pipeline_world(dir), dir);
+    int rc = run_cli(args, out, sizeof out);
+    CHECK_MSG(rc == 0, "exit %d: %s", rc, out);
+    const char *want[] = {"crate_1", "crate_2", "table_1", "source: text encoder exact, features labels",
+                          "perfect 2D segmentation", "frame: world (synth", "one-to-one", "3D: recall 3/3",
+                          "multi-view: recall 3/3", "absent controls rejected", "wrote "};
+    for (size_t k = 0; k < sizeof want / sizeof *want; k++)
+        CHECK_MSG(strstr(out, want[k]) != NULL, "output lacks '%s':\n%s", want[k], out);
+    snprintf(p, sizeof p, "%s/demo/report.md", dir);
+    CHECK(sp_file_exists(p));
+    /* again with --reuse: only the queries run */
+    snprintf(args + strlen(args), sizeof args - strlen(args), " --reuse");
+    rc = run_cli(args, out, sizeof out);
+    CHECK_MSG(rc == 0 && strstr(out, "train 0.0 s") && strstr(out, "3D: recall 3/3"), "exit %d: %s", rc, out);
+}
+
 int main(void)
 {
     char probe[1200];
     snprintf(probe, sizeof probe, "%s/semsplat", SP_BUILD_DIR);
     if (!sp_file_exists(probe)) TEST_SKIP("the semsplat CLI is not built");
+    RUN(test_success_path);
     RUN(test_bad_flags);
     RUN(test_missing_capture);
     RUN(test_no_ground_truth);

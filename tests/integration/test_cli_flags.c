@@ -1,0 +1,85 @@
+/* Every command's shared flags go through one parser (tools/cli.c): an unknown --device, a
+ * non-number --threads and a missing value are usage errors (exit 2) naming the flag and the value
+ * for every command that takes them, before any work; commands without a device refuse --device. */
+#include "test.h"
+
+#include <sys/wait.h>
+
+#include "semsplat/core.h"
+
+static int run_cli(const char *args, char *out, size_t cap)
+{
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
+    FILE *p = popen(cmd, "r");
+    if (!p) return -1;
+    size_t n = fread(out, 1, cap - 1, p);
+    out[n] = 0;
+    int st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* Each command with the arguments it needs to get past its own checks (paths need not exist:
+ * flags are checked first). */
+static const char *const with_device[] = {
+    "render --splat s.ply --colmap c --all --out o", "train --colmap c --out o",
+    "features --colmap c --out o", "embed-text hello", "lift --model m --features f",
+    "distill --model m --features f --colmap c", "query --model m table", "demo --out o",
+};
+
+static void test_device_and_threads(void)
+{
+    char out[8192], args[1024];
+    for (size_t k = 0; k < sizeof with_device / sizeof *with_device; k++) {
+        const char *c = with_device[k];
+        snprintf(args, sizeof args, "%s --device gpu0", c);
+        int rc = run_cli(args, out, sizeof out);
+        CHECK_MSG(rc == 2 && strstr(out, "--device") && strstr(out, "'gpu0' is not cpu, cuda or auto"),
+                  "'%s': exit %d: %s", args, rc, out);
+        snprintf(args, sizeof args, "%s --threads many", c);
+        rc = run_cli(args, out, sizeof out);
+        CHECK_MSG(rc == 2 && strstr(out, "--threads") && strstr(out, "'many'"), "'%s': exit %d: %s", args, rc, out);
+        snprintf(args, sizeof args, "%s --threads -2", c);
+        rc = run_cli(args, out, sizeof out);
+        CHECK_MSG(rc == 2 && strstr(out, "--threads"), "'%s': exit %d: %s", args, rc, out);
+        snprintf(args, sizeof args, "%s --device", c);
+        rc = run_cli(args, out, sizeof out);
+        CHECK_MSG(rc == 2 && strstr(out, "--device needs a value"), "'%s': exit %d: %s", args, rc, out);
+    }
+}
+
+static void test_commands_without_a_device(void)
+{
+    char out[8192];
+    int rc = run_cli("synth --world w --out o --device cpu", out, sizeof out);
+    CHECK_MSG(rc == 2 && (strstr(out, "'--device'") || strstr(out, "not built")), "synth: exit %d: %s", rc, out);
+    rc = run_cli("synth --world w --out o --threads x", out, sizeof out);
+    CHECK_MSG(rc == 2 && (strstr(out, "--threads") || strstr(out, "not built")), "synth: exit %d: %s", rc, out);
+    rc = run_cli("info --device cpu x", out, sizeof out);
+    CHECK_MSG(rc == 2 && strstr(out, "--device"), "info: exit %d: %s", rc, out);
+    rc = run_cli("align --model m --floor --device cpu", out, sizeof out);
+    CHECK_MSG(rc == 2 && strstr(out, "--device"), "align: exit %d: %s", rc, out);
+}
+
+static void test_help_everywhere(void)
+{
+    const char *cmds[] = {"info", "render", "synth", "train", "features", "embed-text", "lift", "distill",
+                          "query", "align", "demo"};
+    char out[8192], args[256];
+    for (size_t k = 0; k < sizeof cmds / sizeof *cmds; k++) {
+        snprintf(args, sizeof args, "%s --help", cmds[k]);
+        int rc = run_cli(args, out, sizeof out);
+        CHECK_MSG((rc == 0 && strstr(out, "usage")) || strstr(out, "not built"), "'%s': exit %d: %s", args, rc, out);
+    }
+}
+
+int main(void)
+{
+    char probe[1200];
+    snprintf(probe, sizeof probe, "%s/semsplat", SP_BUILD_DIR);
+    if (!sp_file_exists(probe)) TEST_SKIP("the semsplat CLI is not built");
+    RUN(test_device_and_threads);
+    RUN(test_commands_without_a_device);
+    RUN(test_help_everywhere);
+    return TEST_EXIT();
+}
