@@ -3,21 +3,8 @@
  * for every command that takes them, before any work; commands without a device refuse --device. */
 #include "test.h"
 
-#include <sys/wait.h>
-
+#include "cli_run.h"
 #include "semsplat/core.h"
-
-static int run_cli(const char *args, char *out, size_t cap)
-{
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
-    FILE *p = popen(cmd, "r");
-    if (!p) return -1;
-    size_t n = fread(out, 1, cap - 1, p);
-    out[n] = 0;
-    int st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
 
 /* Each command with the arguments it needs to get past its own checks (paths need not exist:
  * flags are checked first). */

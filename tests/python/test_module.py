@@ -14,26 +14,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import gs_semantic_query as gq  # noqa: E402
 
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("CHECK failed: " + what, file=sys.stderr)
-
-
-def raises(exc, fn, what):
-    try:
-        fn()
-    except exc as e:
-        return e
-    except Exception as e:  # noqa: BLE001
-        check(False, "%s: raised %s (%s), expected %s" % (what, type(e).__name__, e, exc.__name__))
-        return None
-    check(False, "%s: did not raise %s" % (what, exc.__name__))
-    return None
+import checks  # noqa: E402
+from checks import check, raises  # noqa: E402
 
 
 def test_closed(model):
@@ -158,11 +140,11 @@ def test_relevancy_and_heatmap(model):
 def main():
     model = sys.argv[1]
     for t in (test_abi, test_closed, test_errors, test_per_call_options, test_threads, test_relevancy_and_heatmap):
-        before = failures
+        before = checks.failures
         t(model)
-        print("%s %s" % ("ok  " if failures == before else "FAIL", t.__name__), file=sys.stderr)
-    print("python module: %d failures" % failures)
-    return 1 if failures else 0
+        print("%s %s" % ("ok  " if checks.failures == before else "FAIL", t.__name__), file=sys.stderr)
+    print("python module: %d failures" % checks.failures)
+    return 1 if checks.failures else 0
 
 
 if __name__ == "__main__":

@@ -15,14 +15,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import gs_semantic_query as gq  # noqa: E402
 
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("CHECK failed: " + what, file=sys.stderr)
+import checks  # noqa: E402
+from checks import check  # noqa: E402
 
 
 def cli(binary, model, text, method):
@@ -99,8 +93,8 @@ def main():
     except FileNotFoundError as e:
         check(isinstance(e, gq.SemsplatError) and "semantic.json" in str(e), "error names semantic.json: %s" % e)
     q.close()
-    print("python: %d failures" % failures)
-    return 1 if failures else 0
+    print("python: %d failures" % checks.failures)
+    return 1 if checks.failures else 0
 
 
 if __name__ == "__main__":
