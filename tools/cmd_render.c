@@ -13,7 +13,6 @@
 #include "cli.h"
 #include "semsplat/io.h"
 #include "semsplat/render.h"
-#include "semsplat/semantic.h" /* sp_turbo */
 
 static void usage(FILE *f)
 {
@@ -23,37 +22,6 @@ static void usage(FILE *f)
             "                       [--threads N] [--background R,G,B] [--downscale F] [--quiet]\n"
             "Renders the splat from the cameras of a COLMAP model (pinhole; distortion ignored)\n"
             "and writes one PNG per image into DIR.\n");
-}
-
-static int cmp_float(const void *a, const void *b)
-{
-    float x = *(const float *)a, y = *(const float *)b;
-    return (x > y) - (x < y);
-}
-
-/* depth [n] -> rgb [n][3]: turbo between the 2nd and 98th percentile of covered pixels, near in
- * red and far in blue; black where alpha < 0.5 (nothing solid drawn). */
-static void depth_to_rgb(const float *depth, const float *alpha, size_t n, float *rgb)
-{
-    float *vals = malloc((n ? n : 1) * sizeof(float));
-    size_t m = 0;
-    for (size_t i = 0; i < n; i++)
-        if (alpha[i] >= 0.5f && depth[i] > 0.f) vals[m++] = depth[i];
-    float lo = 0.f, hi = 1.f;
-    if (m > 0) {
-        qsort(vals, m, sizeof(float), cmp_float);
-        lo = vals[(size_t)(0.02 * (m - 1))];
-        hi = vals[(size_t)(0.98 * (m - 1))];
-        if (!(hi > lo)) hi = lo + 1e-3f;
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (alpha[i] < 0.5f || !(depth[i] > 0.f)) {
-            rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = 0.f;
-            continue;
-        }
-        sp_turbo(1.f - (depth[i] - lo) / (hi - lo), rgb + 3 * i); /* near = red, far = blue */
-    }
-    free(vals);
 }
 
 static void output_path(char *out, size_t cap, const char *dir, const char *image_name,
@@ -178,8 +146,8 @@ int cmd_render(int argc, char **argv)
         output_path(path, sizeof path, out_dir, model.images[k].name, suffix);
         int wrc;
         if (mode == 1) {
-            depth_to_rgb(buf, aux, npix, rgb8);
-            wrc = sp_write_png_f32(path, rgb8, cam.width, cam.height, 3, &err);
+            wrc = sp_depth_colormap(buf, aux, npix, rgb8, &err);
+            if (!wrc) wrc = sp_write_png_f32(path, rgb8, cam.width, cam.height, 3, &err);
         } else {
             wrc = sp_write_png_f32(path, buf, cam.width, cam.height, mode == 0 ? 3 : 1, &err);
         }

@@ -302,8 +302,7 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
 
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
-/* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
-void sp_turbo(float t, float rgb[3]);
+/* (The Turbo colour map, sp_turbo, is in render.h.) */
 /* Overlays relevancy [H][W] (0.5 = neutral .. 1) in turbo colours on rgb [H][W][3] floats,
  * writing out [H][W][3] uint8: a dimmed scene with the colour map fading in above 0.5. */
 void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int height,
