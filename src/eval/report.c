@@ -37,7 +37,7 @@ static void provenance(sp_strbuf *b, const sp_eval_report *r, const char *bullet
 
 static void summary_lines(sp_strbuf *b, const sp_eval_report *r, const char *bullet)
 {
-    char x[4][32];
+    char x[5][32];
     for (int m = 0; m < SP_EVAL_METHODS; m++) {
         const sp_eval_summary *s = &r->summary[m];
         sp_strbuf_printf(b, "%s%s: recall %d/%d (%s), precision %d/%d (%s); error over matched objects: "
@@ -45,7 +45,7 @@ static void summary_lines(sp_strbuf *b, const sp_eval_report *r, const char *bul
                          method_name[m], s->matched, s->objects, num(x[0], 32, s->recall, "-"),
                          s->true_instances, s->instances, num(x[1], 32, s->precision, "-"),
                          num(x[2], 32, s->mean_error_m, "-"), num(x[3], 32, s->median_error_m, "-"),
-                         num(x[0], 32, s->mean_error_with_misses_m, "-"));
+                         num(x[4], 32, s->mean_error_with_misses_m, "-"));
     }
     for (int m = 0; m < SP_EVAL_METHODS; m++) {
         const sp_eval_summary *s = &r->summary[m];
