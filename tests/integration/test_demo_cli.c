@@ -4,6 +4,8 @@
  * skipped with --reuse over stub outputs). */
 #include "test.h"
 
+#include <cjson/cJSON.h>
+
 #include "cli_run.h"
 #include "pipeline_world.h"
 #include "semsplat/core.h"
@@ -79,10 +81,11 @@ static void test_malformed_ground_truth(void)
 static void test_success_path(void)
 {
     static char out[65536];
-    char args[4096], dir[1100], p[1300];
+    char args[4096], demo[4096], dir[1100], p[1300];
     snprintf(dir, sizeof dir, "%s", test_tmpdir("demo_cli_ok"));
     snprintf(args, sizeof args, "demo --world %s --out %s/demo --views 24 --size 96x72 --steps 300 --dim 16 "
              "--points 4000 --match-radius 0.3 --device cpu --threads 2 --quiet", pipeline_world(dir), dir);
+    snprintf(demo, sizeof demo, "%s", args);
     int rc = run_cli(args, out, sizeof out);
     CHECK_MSG(rc == 0, "exit %d: %s", rc, out);
     const char *want[] = {"crate_1", "crate_2", "table_1", "source: text encoder exact, features labels",
@@ -92,8 +95,21 @@ static void test_success_path(void)
         CHECK_MSG(strstr(out, want[k]) != NULL, "output lacks '%s':\n%s", want[k], out);
     snprintf(p, sizeof p, "%s/demo/report.md", dir);
     CHECK(sp_file_exists(p));
+    /* the model answers `query --json` with its source and frame */
+    snprintf(args, sizeof args, "query --model %s/demo/model --json --device cpu table", dir);
+    rc = run_cli(args, out, sizeof out);
+    cJSON *j = cJSON_Parse(out);
+    CHECK_MSG(rc == 0 && j, "exit %d: %s", rc, out);
+    cJSON *src = cJSON_GetObjectItem(j, "source"), *fr = cJSON_GetObjectItem(j, "frame");
+    CHECK(src && !strcmp(cJSON_GetObjectItem(src, "encoder")->valuestring, "exact"));
+    CHECK(src && !strcmp(cJSON_GetObjectItem(src, "features")->valuestring, "labels"));
+    CHECK(src && strstr(cJSON_GetObjectItem(src, "note")->valuestring, "perfect 2D segmentation"));
+    CHECK(fr && !strcmp(cJSON_GetObjectItem(fr, "name")->valuestring, "world"));
+    CHECK(fr && !strcmp(cJSON_GetObjectItem(fr, "source")->valuestring, "synth"));
+    CHECK(cJSON_IsTrue(cJSON_GetObjectItem(j, "found")));
+    cJSON_Delete(j);
     /* again with --reuse: only the queries run */
-    snprintf(args + strlen(args), sizeof args - strlen(args), " --reuse");
+    snprintf(args, sizeof args, "%s --reuse", demo);
     rc = run_cli(args, out, sizeof out);
     CHECK_MSG(rc == 0 && strstr(out, "train 0.0 s") && strstr(out, "3D: recall 3/3"), "exit %d: %s", rc, out);
 }
