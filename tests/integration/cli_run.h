@@ -20,4 +20,14 @@ static inline int run_cli(const char *args, char *out, size_t cap)
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
+/* Skips the test (exit 77) when the CLI is not built. */
+static inline void require_cli(void)
+{
+    char probe[1200];
+    snprintf(probe, sizeof probe, "%s/semsplat", SP_BUILD_DIR);
+    FILE *f = fopen(probe, "rb");
+    if (!f) TEST_SKIP("the semsplat CLI is not built");
+    fclose(f);
+}
+
 #endif

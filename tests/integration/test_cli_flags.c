@@ -61,9 +61,7 @@ static void test_help_everywhere(void)
 
 int main(void)
 {
-    char probe[1200];
-    snprintf(probe, sizeof probe, "%s/semsplat", SP_BUILD_DIR);
-    if (!sp_file_exists(probe)) TEST_SKIP("the semsplat CLI is not built");
+    require_cli();
     RUN(test_device_and_threads);
     RUN(test_commands_without_a_device);
     RUN(test_help_everywhere);

@@ -116,9 +116,7 @@ static void test_success_path(void)
 
 int main(void)
 {
-    char probe[1200];
-    snprintf(probe, sizeof probe, "%s/semsplat", SP_BUILD_DIR);
-    if (!sp_file_exists(probe)) TEST_SKIP("the semsplat CLI is not built");
+    require_cli();
     RUN(test_success_path);
     RUN(test_bad_flags);
     RUN(test_missing_capture);
