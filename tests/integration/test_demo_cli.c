@@ -78,6 +78,21 @@ static void test_malformed_ground_truth(void)
     CHECK_MSG(strstr(out, "ground_truth.json") != NULL, "output: %s", out);
 }
 
+/* `query --json table` on the demo's model: the position, and the frame's source checked. */
+static int query_table(const char *dir, double pos[3])
+{
+    static char out[65536];
+    char args[2048];
+    snprintf(args, sizeof args, "query --model %s/demo/model --json --device cpu table", dir);
+    int rc = run_cli(args, out, sizeof out);
+    cJSON *j = cJSON_Parse(out), *p = cJSON_GetObjectItem(j, "position");
+    CHECK_MSG(rc == 0 && cJSON_GetArraySize(p) == 3, "exit %d: %s", rc, out);
+    int ok = rc == 0 && cJSON_GetArraySize(p) == 3;
+    for (int k = 0; ok && k < 3; k++) pos[k] = cJSON_GetArrayItem(p, k)->valuedouble;
+    cJSON_Delete(j);
+    return ok;
+}
+
 static void test_success_path(void)
 {
     static char out[65536];
@@ -112,6 +127,18 @@ static void test_success_path(void)
     snprintf(args, sizeof args, "%s --reuse", demo);
     rc = run_cli(args, out, sizeof out);
     CHECK_MSG(rc == 0 && strstr(out, "train 0.0 s") && strstr(out, "3D: recall 3/3"), "exit %d: %s", rc, out);
+    /* align writes frame.json; the engine then answers in that frame (x + 10) */
+    double before[3];
+    if (!query_table(dir, before)) return;
+    touch(dir, "shift.txt", "1 0 0 10\n0 1 0 0\n0 0 1 0\n");
+    snprintf(args, sizeof args, "align --model %s/demo/model --transform %s/shift.txt", dir, dir);
+    rc = run_cli(args, out, sizeof out);
+    CHECK_MSG(rc == 0 && strstr(out, "frame.json (source align)"), "exit %d: %s", rc, out);
+    double after[3];
+    if (query_table(dir, after)) {
+        CHECK_NEAR(after[0], before[0] + 10, 1e-3);
+        CHECK_NEAR(after[1], before[1], 1e-3);
+    }
 }
 
 int main(void)
