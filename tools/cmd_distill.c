@@ -75,7 +75,8 @@ int cmd_distill(int argc, char **argv)
                r.before.eval_on_train ? "train views" : "held-out");
         printf("distill  psnr_after   %.3f  dB  (steps %d, lambda %g%s)\n", r.after.psnr, o.steps,
                (double)o.lambda, o.freeze_geometry ? ", geometry frozen" : "");
-        printf("distill  feature_mse  %.5f\n", r.after.feature_mse);
+        printf("distill  feature_mse  %.5f  (%s)\n", r.after.feature_mse,
+               r.after.eval_on_train ? "train views" : "held-out");
         printf("distill  seconds      %.1f  s  (%s)\n", r.after.seconds, sp_device_name(dev));
     }
     sp_device_free(dev);

@@ -23,6 +23,7 @@ static const command commands[] = {
     {"query", cmd_query, "find a text query in the language-embedded splat"},
     {"align", cmd_align, "put a splat into the world frame (similarity / floor plane)"},
     {"demo", cmd_demo, "synth -> train -> features -> lift -> queries on the bundled house"},
+    {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
 };
 
 static void usage(FILE *f)

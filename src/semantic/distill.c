@@ -83,6 +83,14 @@ int sp_semantic_distill_model(sp_device *dev, const sp_distill_opts *o, sp_disti
     snprintf(path, sizeof path, "%s/splat.ply", o->model_dir);
     int rc = sp_features_open(o->features_dir, &f, err);
     if (!rc) rc = sp_train_data_load(&d, o->colmap_dir, o->images_dir, o->downscale, 8, err);
+    /* The trainer undistorts the images, not the feature maps: refuse rather than distil maps
+     * whose pixels sit where the lens put them (lift resamples them: use lift). */
+    if (!rc && d.n_undistorted)
+        rc = sp_error_set(err, SP_E_UNSUPPORTED,
+                          "%s: %zu of %zu images have a distorted camera; distill does not resample "
+                          "feature maps through the lens yet: use `semsplat lift`, or run `colmap "
+                          "image_undistorter` and extract features from its output",
+                          o->colmap_dir, d.n_undistorted, d.n_views);
     if (!rc) rc = sp_ply_read_splat(path, &s, err);
     float bg[3] = {0, 0, 0};
     if (!rc) rc = sp_train_evaluate(dev, &d, &s, bg, &res->before, err);

@@ -26,23 +26,7 @@ static double dist3(const float *a, const float *b)
 
 static void setup(void)
 {
-    sp_sem_pca pca;
-    sc_make_pca(&pca, g_emb);
-    sp_splat s;
-    int *cls;
-    sc_make_splat(&s, &cls, &pca, g_emb);
-    sp_camera cams[NCAM];
-    sc_make_cams(cams, NCAM, CW, CH);
-    sp_error err = {0};
-    if (sp_device_create(&g_dev, SP_DEVICE_CPU, 2, &err) ||
-        sp_query_engine_create(&g_eng, &(sp_query_model){.splat = &s, .pca = &pca, .cams = cams, .n_cams = NCAM},
-                               NULL, g_dev, NULL, &err)) {
-        fprintf(stderr, "setup: %s\n", err.msg);
-        exit(1);
-    }
-    sp_splat_free(&s);
-    sp_sem_pca_free(&pca);
-    free(cls);
+    sc_make_engine(NCAM, CW, CH, 2, g_emb, &g_dev, &g_eng);
     g_opts = sp_query_opts_default();
 }
 
