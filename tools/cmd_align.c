@@ -24,8 +24,8 @@ static void help(void)
            "                   names the outlying images, and refuses when fewer than half agree.\n"
            "  --inlier-m D     inlier bound in world units (default: 4.03 x the noise scale\n"
            "                   estimated from the median residual)\n"
-           "  --report FILE    the fit as JSON (default: OUT with .ply replaced by .align.json,\n"
-           "                   or DIR/align.json without --out)\n"
+           "  --report FILE    the fit as JSON (default: OUT with .ply replaced by .align.json;\n"
+           "                   with --model it is also under \"fit\" in DIR/frame.json)\n"
            "  --transform FILE 12 or 16 numbers: a row-major 3x4 / 4x4 similarity.\n"
            "  --floor          RANSAC floor plane on the lowest Gaussians: z up, floor at z=0\n"
            "                   (uses --colmap cameras for the rough up direction when given).\n"
@@ -47,7 +47,8 @@ static int read_transform(const char *path, double M[16], sp_error *err)
 }
 
 /* The model folder's frame: the fitted similarity as world_from_model (metres, z up). */
-static int write_frame(const char *model, const double M[16], double rms, const char *how, sp_error *err)
+static int write_frame(const char *model, const double M[16], double rms, const char *how,
+                       const char *fit_json, sp_error *err)
 {
     sp_frame f;
     sp_frame_init(&f, "align");
@@ -57,7 +58,7 @@ static int write_frame(const char *model, const double M[16], double rms, const 
     if (!strcmp(how, "floor")) snprintf(f.units, sizeof f.units, "unknown"); /* no scale from a plane */
     char path[2100];
     snprintf(path, sizeof path, "%s/frame.json", model);
-    return sp_frame_write(path, &f, err);
+    return sp_frame_write_fit(path, &f, fit_json, err);
 }
 
 int cmd_align(int argc, char **argv)
@@ -123,21 +124,22 @@ int cmd_align(int argc, char **argv)
         if (!rc) printf("floor normal (%.4f, %.4f, %.4f), %.1f%% of low Gaussians on it\n", n3[0], n3[1], n3[2], 100 * inl);
     }
     if (!rc && model)
-        rc = write_frame(model, M, matches ? fit.rms_inliers : -1, matches ? "matches" : tfile ? "transform" : "floor", &err);
+        rc = write_frame(model, M, matches ? fit.rms_inliers : -1, matches ? "matches" : tfile ? "transform" : "floor",
+                         json, &err);
     if (!rc && out) rc = sp_splat_transform(&s, M, &err);
     if (!rc && out) rc = sp_ply_write_splat(out, &s, &err);
     size_t stem = out && strlen(out) > 4 && !strcmp(out + strlen(out) - 4, ".ply") ? strlen(out) - 4 : out ? strlen(out) : 0;
     snprintf(rpath, sizeof rpath, "%s", report ? report : "");
     if (!report && out) snprintf(rpath, sizeof rpath, "%.*s.align.json", (int)stem, out);
-    if (!report && !out) snprintf(rpath, sizeof rpath, "%s/align.json", model);
-    if (!rc && json) rc = sp_write_file_atomic(rpath, json, strlen(json), &err);
+    int write_report = report || out; /* with --model only, the fit lives in frame.json */
+    if (!rc && json && write_report) rc = sp_write_file_atomic(rpath, json, strlen(json), &err);
     if (!rc) {
         printf("transform (row-major 4x4):\n");
         for (int r = 0; r < 4; r++)
             printf("  %12.6f %12.6f %12.6f %12.6f\n", M[r * 4], M[r * 4 + 1], M[r * 4 + 2], M[r * 4 + 3]);
         if (model) printf("wrote %s/frame.json (source align)\n", model);
         if (out) printf("wrote %s (%zu Gaussians)\n", out, s.n);
-        if (json) printf("wrote %s (the fit)\n", rpath);
+        if (json && write_report) printf("wrote %s (the fit)\n", rpath);
     }
     free(cams), free(json);
     sp_align_fit_free(&fit);

@@ -187,7 +187,7 @@ int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t
  *                    (scale and up unknown) and are not world positions.
  * File: {"format": "semsplat-frame-1", "source", "frame": "world"|"colmap", "world_from_model":
  * 4 rows of 4 numbers (a similarity [sR t; 0 0 0 1]), "up", "units", "residual_m" (align's fit
- * residual or null), "note"}. */
+ * residual or null), "note", and from align --matches "fit" (the robust fit's report)}. */
 typedef struct sp_frame {
     double world_from_model[16]; /* row-major */
     char source[16];             /* "synth", "align", "colmap" */
@@ -206,6 +206,9 @@ double sp_frame_scale(const sp_frame *f);       /* s of world_from_model */
 int sp_frame_check(const sp_frame *f, const char *what, sp_error *err);
 int sp_frame_read(const char *path, sp_frame *f, sp_error *err);
 int sp_frame_write(const char *path, const sp_frame *f, sp_error *err); /* atomic; checks first */
+/* The same with the fit that made the frame recorded under "fit" (fit_json: a JSON object's text,
+ * e.g. sp_align_fit_json's: matches, inliers, residuals, the outlying images); NULL = none. */
+int sp_frame_write_fit(const char *path, const sp_frame *f, const char *fit_json, sp_error *err);
 /* The frame of a capture: <dir>/frame.json, or the capture root's when dir is its sparse/<n>
  * model folder; else a capture with ground_truth.json (synth's, before frame.json existed) is
  * "synth"; else "colmap". */

@@ -123,10 +123,21 @@ int sp_frame_read(const char *path, sp_frame *out, sp_error *err)
 
 int sp_frame_write(const char *path, const sp_frame *f, sp_error *err)
 {
+    return sp_frame_write_fit(path, f, NULL, err);
+}
+
+int sp_frame_write_fit(const char *path, const sp_frame *f, const char *fit_json, sp_error *err)
+{
     int rc = sp_frame_check(f, path, err);
     if (rc) return rc;
+    cJSON *fit = NULL;
+    if (fit_json && !(fit = cJSON_Parse(fit_json)))
+        return sp_error_set(err, SP_E_ARG, "%s: the fit to record is not JSON", path);
     cJSON *o = cJSON_CreateObject();
-    if (!o) return sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
+    if (!o) {
+        cJSON_Delete(fit);
+        return sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
+    }
     cJSON_AddStringToObject(o, "format", FRAME_FORMAT);
     cJSON_AddStringToObject(o, "source", f->source);
     cJSON_AddStringToObject(o, "frame", sp_frame_name(f));
@@ -138,6 +149,7 @@ int sp_frame_write(const char *path, const sp_frame *f, sp_error *err)
     if (f->residual_m >= 0) cJSON_AddNumberToObject(o, "residual_m", f->residual_m);
     else cJSON_AddNullToObject(o, "residual_m");
     if (f->note[0]) cJSON_AddStringToObject(o, "note", f->note);
+    if (fit) cJSON_AddItemToObject(o, "fit", fit);
     rc = sp_json_write_file(path, o, err);
     cJSON_Delete(o);
     return rc;

@@ -45,6 +45,16 @@ static void test_round_trip_and_checks(void)
     CHECK_NEAR(sp_frame_scale(&g), 2.0, 1e-12);
     sp_frame_init(&g, "colmap");
     CHECK(!sp_frame_is_world(&g) && !strcmp(g.units, "unknown"));
+    /* the fit that made it rides along under "fit"; the reader takes the frame as before */
+    CHECK_OK(sp_frame_write_fit(path, &f, "{\"inliers\": 44, \"outliers\": [{\"image\": \"a.png\"}]}", &err), &err);
+    CHECK_OK(sp_frame_read(path, &g, &err), &err);
+    CHECK(!strcmp(g.source, "align"));
+    char *text = NULL;
+    size_t tn = 0;
+    CHECK_OK(sp_read_file(path, &text, &tn, &err), &err);
+    CHECK(text && strstr(text, "\"fit\"") && strstr(text, "a.png"));
+    free(text);
+    CHECK_FAILS(sp_frame_write_fit(path, &f, "{not json", &err), SP_E_ARG, &err, "not JSON");
     /* what is not a similarity is refused before writing */
     sp_frame bad = f;
     bad.world_from_model[1] += 0.3; /* shear */
