@@ -21,6 +21,9 @@ int cmd_query(int argc, char **argv);
 int cmd_align(int argc, char **argv);
 int cmd_demo(int argc, char **argv);
 int cmd_agent(int argc, char **argv);
+int cmd_sim_robot(int argc, char **argv);
+int cmd_ros_goal(int argc, char **argv);
+int cmd_lexical(int argc, char **argv);
 
 /* Returns the value after flag `name` ("--out") at argv[*i] (advancing *i), or NULL. Accepts
  * "--out=VALUE" too. Prints an error and sets *bad when the value is missing. */

@@ -439,6 +439,16 @@ static int best_view(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thre
     return 0;
 }
 
+void sp_query_engine_result_init(const sp_query_engine *e, const char *text, sp_query_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->view_index = -1;
+    res->position[0] = res->position[1] = res->position[2] = NAN;
+    snprintf(res->text, sizeof res->text, "%s", text ? text : "");
+    res->source = e->source;
+    res->frame = e->qframe;
+}
+
 static void result_init(const sp_query_engine *e, const char *label, int method, sp_query_result *res)
 {
     memset(res, 0, sizeof *res);
