@@ -269,7 +269,8 @@ int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const
 void sp_query_engine_free(sp_query_engine *e);
 
 /* Embeds the text (the engine's text encoder) and localizes it with opts (NULL = the engine's
- * defaults). res is filled (free with sp_query_result_free) even when nothing is found. */
+ * defaults). res is filled (free with sp_query_result_free) even when nothing is found; on an
+ * error it is left empty (nothing to free). */
 int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *opts,
                           sp_query_result *res, sp_error *err);
 /* Same with a precomputed full_dim embedding (need not be unit length); label names the result. */

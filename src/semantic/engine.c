@@ -504,8 +504,11 @@ static int query_embedding(sp_query_engine *e, const float *embedding, const cha
     return 0;
 }
 
-static int check_opts(const sp_query_opts *o, sp_error *err)
+static int check_opts(const sp_query_engine *e, const sp_query_opts *o, sp_error *err)
 {
+    if (o->heatmap && e->n_cams > 0 && o->heatmap_view >= 0 && (size_t)o->heatmap_view >= e->n_cams)
+        return sp_error_set(err, SP_E_ARG, "query: heatmap view %d not in 0..%zu", o->heatmap_view,
+                            e->n_cams - 1);
     if (o->method != SP_QUERY_3D && o->method != SP_QUERY_MULTIVIEW)
         return sp_error_set(err, SP_E_ARG, "query: method %d is not 3d (0) or multiview (1)", o->method);
     if (!(o->temperature > 0) || !(o->voxel_m > 0))
@@ -521,11 +524,12 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, 
 {
     const sp_query_opts *o = opts ? opts : &e->defaults;
     memset(res, 0, sizeof *res);
-    int rc = check_opts(o, err);
+    int rc = check_opts(e, o, err);
     if (rc) return rc;
     pthread_mutex_lock(&e->mu);
     rc = query_embedding(e, embedding, label, o, res, err);
     pthread_mutex_unlock(&e->mu);
+    if (rc) sp_query_result_free(res); /* nothing half-made is handed back */
     return rc;
 }
 
@@ -534,7 +538,7 @@ int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_o
 {
     const sp_query_opts *o = opts ? opts : &e->defaults;
     memset(res, 0, sizeof *res);
-    int rc = check_opts(o, err);
+    int rc = check_opts(e, o, err);
     if (rc) return rc;
     float *q = malloc(sizeof(float) * e->pca.full_dim);
     if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
@@ -546,7 +550,10 @@ int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_o
     if (!rc) rc = query_embedding(e, q, text, o, res, err);
     pthread_mutex_unlock(&e->mu);
     free(q);
-    if (rc) return rc;
+    if (rc) {
+        sp_query_result_free(res); /* nothing half-made is handed back */
+        return rc;
+    }
     res->ms_embed = (t1 - t0) * 1e3;
     res->ms_total += res->ms_embed;
     return 0;
