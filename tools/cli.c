@@ -85,10 +85,8 @@ cli_common cli_common_default(void)
 
 int cli_device_kind(const char *cmd, const char *value, sp_device_kind *kind)
 {
-    if (!strcmp(value, "cpu")) *kind = SP_DEVICE_CPU;
-    else if (!strcmp(value, "cuda")) *kind = SP_DEVICE_CUDA;
-    else if (!strcmp(value, "auto")) *kind = SP_DEVICE_AUTO;
-    else return cli_usage_error(cmd, "--device: '%s' is not cpu, cuda or auto", value);
+    sp_error err = {0};
+    if (sp_device_kind_parse(value, kind, &err)) return cli_usage_error(cmd, "--device: %s", err.msg);
     return 0;
 }
 

@@ -55,7 +55,8 @@ cli_common cli_common_default(void);
  * returns 1 when taken, 0 when it is not such a flag, 2 (after printing a usage error naming the
  * flag and the value) when its value is bad; return that 2 as the exit status. */
 int cli_common_flag(const char *cmd, int argc, char **argv, int *i, unsigned which, cli_common *c);
-/* "cpu", "cuda", "auto" -> kind; else prints a usage error naming the value and returns 2. */
+/* "cpu", "cuda", "auto" -> kind (sp_device_kind_parse); else prints a usage error naming the value
+ * and returns 2. */
 int cli_device_kind(const char *cmd, const char *value, sp_device_kind *kind);
 /* Creates the device the flags asked for; prints the error and returns 1 on failure. */
 int cli_device_open(const char *cmd, const cli_common *c, sp_device **dev);

@@ -12,6 +12,7 @@ static const char *const with_device[] = {
     "render --splat s.ply --colmap c --all --out o", "train --colmap c --out o",
     "features --colmap c --out o", "embed-text hello", "lift --model m --features f",
     "distill --model m --features f --colmap c", "query --model m table", "demo --out o",
+    "lexical --classes chair chair",
 };
 
 static void test_device_and_threads(void)
@@ -21,7 +22,7 @@ static void test_device_and_threads(void)
         const char *c = with_device[k];
         snprintf(args, sizeof args, "%s --device gpu0", c);
         int rc = run_cli(args, out, sizeof out);
-        CHECK_MSG(rc == 2 && strstr(out, "--device") && strstr(out, "'gpu0' is not cpu, cuda or auto"),
+        CHECK_MSG(rc == 2 && strstr(out, "--device") && strstr(out, "'gpu0' is not one of cpu, cuda, auto"),
                   "'%s': exit %d: %s", args, rc, out);
         snprintf(args, sizeof args, "%s --threads many", c);
         rc = run_cli(args, out, sizeof out);

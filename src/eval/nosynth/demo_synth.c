@@ -1,5 +1,5 @@
 /* Built when synth's dependencies (assimp, libxml2) are missing: the demo needs --capture. */
-#include "../eval_internal.h"
+#include "eval/eval_internal.h"
 
 int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height,
                   sp_error *err)

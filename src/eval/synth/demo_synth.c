@@ -1,6 +1,6 @@
 /* The demo's synth stage: the world into a capture with ground truth (synth's defaults, seed 1,
  * as `semsplat synth` runs them). */
-#include "eval_internal.h"
+#include "eval/eval_internal.h"
 #include "semsplat/synth.h"
 
 int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height,
