@@ -32,19 +32,20 @@ int cmd_sfm(int argc, char **argv)
 {
     sp_sfm_opts o = {0};
     const char *v;
-    long threads = 0, nice = 0, feats = 0, overlap = 0;
+    long nice = 0, feats = 0, overlap = 0;
     double timeout = 0, peak = 0, tri = 0;
     long inliers = 0;
-    int quiet = 0, bad = 0;
+    int bad = 0, rf;
+    cli_common c = cli_common_default();
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--capture", &bad))) o.capture = v;
+        if ((rf = cli_common_flag("sfm", argc, argv, &i, CLI_THREADS | CLI_QUIET, &c))) {
+            if (rf == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--capture", &bad))) o.capture = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) o.out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) o.colmap = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--work", &bad))) o.work_dir = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("sfm", "--threads", v, &threads)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--nice", &bad))) {
+        else if ((v = cli_flag_value(argc, argv, &i, "--nice", &bad))) {
             if (cli_parse_int("sfm", "--nice", v, &nice)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--timeout", &bad))) {
             if (cli_parse_float("sfm", "--timeout", v, &timeout)) return 2;
@@ -59,16 +60,14 @@ int cmd_sfm(int argc, char **argv)
         } else if ((v = cli_flag_value(argc, argv, &i, "--peak-threshold", &bad))) {
             if (cli_parse_float("sfm", "--peak-threshold", v, &peak)) return 2;
         } else if (!strcmp(argv[i], "--estimate-intrinsics")) o.estimate_intrinsics = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("sfm", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
     if (!o.capture || !o.out) return cli_usage_error("sfm", "--capture and --out are required");
-    if (threads < 0 || threads > 256) return cli_usage_error("sfm", "--threads %ld: expected 0..256", threads);
     if (nice < 0 || nice > 19) return cli_usage_error("sfm", "--nice %ld: expected 0..19", nice);
     if (timeout < 0) return cli_usage_error("sfm", "--timeout %g: expected seconds >= 0", timeout);
     if (feats < 0 || overlap < 0) return cli_usage_error("sfm", "--max-features/--overlap: expected >= 0");
-    o.threads = (int)threads;
+    o.threads = (int)c.threads;
     o.nice = (int)nice;
     o.timeout_s = timeout;
     o.max_features = (int)feats;
@@ -76,7 +75,7 @@ int cmd_sfm(int argc, char **argv)
     o.peak_threshold = peak;
     o.init_min_tri_angle_deg = tri;
     o.abs_pose_min_inliers = (int)inliers;
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     o.log = &log;
     sp_error err = {0};
     sp_sfm_result r;
@@ -87,7 +86,7 @@ int cmd_sfm(int argc, char **argv)
     char sizes[256] = "";
     for (int k = 0, at = 0; k < r.n_models && at < 200; k++)
         at += snprintf(sizes + at, sizeof sizes - at, "%s%d", k ? "+" : "", r.model_images[k]);
-    if (!quiet)
+    if (!c.quiet)
         printf("sfm  registered %d of %d images (%d model%s: %s images), %d inliers; camera error after "
                "alignment RMS %.3f m, median %.3f m, max %.3f m (%s), rotation %.2f deg mean  -> %s\n",
                r.n_registered, r.n_images, r.n_models, r.n_models == 1 ? "" : "s", sizes, r.n_inliers,

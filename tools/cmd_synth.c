@@ -38,13 +38,17 @@ static void help(void)
 int cmd_synth(int argc, char **argv)
 {
     const char *world = NULL, *out = NULL, *mpath = NULL, *v;
-    long views = 150, ss = 4, points = 30000, seed = 1, threads = 0;
-    int w = 640, h = 480, quiet = 0, skip = 0, bad = 0;
-    double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5, dspeed = 0, drate = 0, dturn = 0;
+    long views = 150, ss = 4, points = 30000, seed = 1;
+    int w = 640, h = 480, skip = 0, bad = 0, r;
+    cli_common c = cli_common_default();
+    double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5;
+    double dspeed = 0, drate = 0, dturn = 0;
     int plan = SP_SYNTH_PLAN_MIXED;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
+        if ((r = cli_common_flag("synth", argc, argv, &i, CLI_THREADS | CLI_QUIET, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--model-path", &bad))) mpath = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--views", &bad))) {
@@ -64,8 +68,6 @@ int cmd_synth(int argc, char **argv)
             if (cli_parse_int("synth", "--points", v, &points)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--seed", &bad))) {
             if (cli_parse_int("synth", "--seed", v, &seed)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("synth", "--threads", v, &threads)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--drive-speed", &bad))) {
             if (cli_parse_float("synth", "--drive-speed", v, &dspeed)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--drive-rate", &bad))) {
@@ -78,7 +80,6 @@ int cmd_synth(int argc, char **argv)
                 return cli_usage_error("synth", "--walk-only and --drive exclude each other");
             plan = p;
         } else if (!strcmp(argv[i], "--skip-missing")) skip = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("synth", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
@@ -91,7 +92,7 @@ int cmd_synth(int argc, char **argv)
     if ((dspeed || drate || dturn) && plan != SP_SYNTH_PLAN_DRIVE)
         return cli_usage_error("synth", "--drive-speed/--drive-rate/--drive-turn need --drive");
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     sp_synth_load_opts lo = {.model_path = mpath, .skip_missing = skip, .log = &log};
     sp_world wd;
     double t0 = sp_time_now();
@@ -109,14 +110,14 @@ int cmd_synth(int argc, char **argv)
     sp_synth_capture_opts co = {.n_views = (int)views, .width = w, .height = h, .fov_deg = (float)fov,
                                 .min_height_m = (float)hmin, .max_height_m = (float)hmax,
                                 .supersample = (int)ss, .psf_px = psf > 0 ? (float)psf : -1.f, .n_points = (int)points, .seed = (unsigned)seed,
-                                .n_threads = (int)threads, .log = &log, .plan = plan,
+                                .n_threads = (int)c.threads, .log = &log, .plan = plan,
                                 .drive_speed_mps = (float)dspeed, .drive_rate_hz = (float)drate,
                                 .drive_turn_rad_s = (float)dturn};
     double t1 = sp_time_now();
     int rc = sp_synth_capture(&wd, out, &co, &err);
     sp_world_free(&wd);
     if (rc) return cli_fail("synth", &err);
-    if (!quiet)
+    if (!c.quiet)
         printf("synth  %.2f  s  (%s plan, at most %ld views %dx%d, %s -> %s; see capture.json)\n",
                sp_time_now() - t1, plan == SP_SYNTH_PLAN_DRIVE ? "drive" : plan ? "walk" : "walk+objects",
                views, w, h, world, out);

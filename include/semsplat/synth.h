@@ -241,6 +241,7 @@ int sp_synth_plan(const sp_world *w, const sp_synth_capture_opts *opts, sp_camer
  *   labels.json  (id -> model name, class, is_structure)
  *   ground_truth.json  (world path; each object's name, class, world pose and AABB under
  *                       "objects", walls, floors, ceilings and the ground under "structure")
+ *   frame.json  (source "synth": the model frame is the world frame; see sp_frame in io.h)
  *   capture.json  (the plan used and its settings: sp_synth_plan_info; a drive's frame times) */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);

@@ -69,16 +69,9 @@ static int label_parts(const sp_grid2 *g, float need, int32_t *label, size_t **s
     return n;
 }
 
-/* Farthest-point sampling of k waypoints in part p, the first at its most open cell. */
-static void pick_waypoints(const sp_grid2 *g, const int32_t *label, int p, int k, float *mind,
-                           size_t *out)
+void synth_farthest_points(const sp_grid2 *g, float *mind, size_t first, int k, size_t *out)
 {
-    size_t nc = (size_t)g->nx * g->ny, first = 0;
-    float best = -1;
-    for (size_t c = 0; c < nc; c++)
-        if (label[c] == p && g->data[c] > best) { best = g->data[c]; first = c; }
-    float want = fminf(WAYPOINT_CLEAR_M, best);
-    for (size_t c = 0; c < nc; c++) mind[c] = label[c] == p && g->data[c] >= want ? INFINITY : -1;
+    size_t nc = (size_t)g->nx * g->ny;
     for (int q = 0; q < k; q++) {
         size_t pick = first;
         if (q > 0) {
@@ -97,6 +90,19 @@ static void pick_waypoints(const sp_grid2 *g, const int32_t *label, int p, int k
             if (d < mind[c]) mind[c] = d;
         }
     }
+}
+
+/* Farthest-point sampling of k waypoints in part p, the first at its most open cell. */
+static void pick_waypoints(const sp_grid2 *g, const int32_t *label, int p, int k, float *mind,
+                           size_t *out)
+{
+    size_t nc = (size_t)g->nx * g->ny, first = 0;
+    float best = -1;
+    for (size_t c = 0; c < nc; c++)
+        if (label[c] == p && g->data[c] > best) { best = g->data[c]; first = c; }
+    float want = fminf(WAYPOINT_CLEAR_M, best);
+    for (size_t c = 0; c < nc; c++) mind[c] = label[c] == p && g->data[c] >= want ? INFINITY : -1;
+    synth_farthest_points(g, mind, first, k, out);
 }
 
 /* Nearest-neighbour tour over wp[0..k) starting at wp[0], in place. */

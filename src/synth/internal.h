@@ -78,6 +78,12 @@ int pattern_from_names(const char *script, const char *visual, const char *link,
 /* Planners (plan.c, drive.c): the free floor's clearance (metres to the nearest obstacle or
  * floor edge, robot height band) on a grid; SP_E_NOTFOUND when there is no floor. */
 int synth_floor_clearance(const sp_world *w, sp_grid2 *clear, sp_error *err);
+/* Farthest-point sampling on a clearance grid (plan.c's walk, drive_route.c): k cells into out,
+ * the first at `first`, each next the candidate (mind >= 0 on entry: INFINITY = a candidate, -1
+ * = excluded) farthest from those picked, its distance weighted by its clearance capped at
+ * 0.8 m (plain FPS would pick the corners; a hard clearance cut would skip furnished rooms whose
+ * free floor is narrow). mind is scratch [cells]. */
+void synth_farthest_points(const sp_grid2 *g, float *mind, size_t first, int k, size_t *out);
 /* A drive's route (drive_route.c): points in order, each a waypoint where the robot spins
  * (stop) or a corner between straight legs; jump marks the start of a new segment (a part of
  * the floor no path reaches from the previous one). */
