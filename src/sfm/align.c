@@ -49,8 +49,21 @@ static double rotation_error_deg(const float A[9], const float B[9])
     return 2 * asin(s > 1 ? 1 : s) * 180 / M_PI;
 }
 
-int sfm_align(sp_colmap_model *est, const sp_colmap_model *ref, sp_sfm_result *res, sp_error *err)
+/* The fit's report (sp_align_fit_json) with the matched images' names for its outliers. */
+static char *fit_report(const sp_align_fit *fit, const sp_colmap_model *est, const size_t *ri, size_t m)
 {
+    sp_align_matches am = {.n = m, .name = calloc(m + 1, 256)};
+    if (!am.name) return NULL;
+    for (size_t k = 0; k < m; k++) snprintf(am.name[k], 256, "%s", est->images[ri[k]].name);
+    char *j = sp_align_fit_json(fit, &am, 1);
+    free(am.name);
+    return j;
+}
+
+int sfm_align(sp_colmap_model *est, const sp_colmap_model *ref, sp_sfm_result *res,
+              char **fit_json, sp_error *err)
+{
+    *fit_json = NULL;
     size_t n = est->n_images;
     double *src = malloc((n * 6 + 1) * sizeof *src), *dst = src ? src + 3 * n : NULL;
     size_t *ri = malloc((n + 1) * sizeof *ri);
@@ -83,6 +96,7 @@ int sfm_align(sp_colmap_model *est, const sp_colmap_model *ref, sp_sfm_result *r
                           "at least %d are needed to align", m, SP_ALIGN_MIN_INLIERS);
     if (!rc && (rc = sp_align_fit_robust(src, dst, m, 1, 0, &fit, err)))
         sp_error_prefix(err, "aligning COLMAP's %zu cameras to the reference: ", m);
+    if (!rc) *fit_json = fit_report(&fit, est, ri, m);
     double *resid = rc ? NULL : malloc((m + 1) * sizeof *resid);
     if (!rc && !resid) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
     if (!rc) {

@@ -126,8 +126,26 @@ static int write_capture_json(const sp_sfm_opts *o, const sp_sfm_result *r, sp_e
     return rc;
 }
 
+static int write_frame(const sp_sfm_opts *o, const sp_sfm_result *r, const char *fit_json, sp_error *err)
+{
+    sp_frame ref, f;
+    int rc = sp_frame_of_capture(o->capture, &ref, err);
+    if (rc) return sp_error_prefix(err, "sfm reference frame: ");
+    if (!sp_frame_is_world(&ref))
+        return sp_error_set(err, SP_E_ARG, "%s: its frame is '%s', not a world frame: COLMAP's poses "
+                            "would be aligned to nothing", o->capture, ref.source);
+    sp_frame_init(&f, "align");
+    memcpy(f.world_from_model, ref.world_from_model, sizeof f.world_from_model);
+    f.residual_m = r->align_rms_inliers_m;
+    snprintf(f.note, sizeof f.note, "COLMAP poses of %d/%d images, aligned to %s's cameras by semsplat sfm",
+             r->n_registered, r->n_images, o->capture);
+    char path[2400];
+    snprintf(path, sizeof path, "%s/frame.json", o->out);
+    return fit_json ? sp_frame_write_fit(path, &f, fit_json, err) : sp_frame_write(path, &f, err);
+}
+
 int sfm_write_capture(const sp_sfm_opts *o, const sp_colmap_model *est, const sp_sfm_result *res,
-                      sp_error *err)
+                      const char *fit_json, sp_error *err)
 {
     char path[2400];
     snprintf(path, sizeof path, "%s/sparse/0", o->out);
@@ -142,5 +160,6 @@ int sfm_write_capture(const sp_sfm_opts *o, const sp_colmap_model *est, const sp
         if (sp_file_exists(a)) rc = link_or_copy(a, path, err);
     }
     if (!rc) rc = write_capture_json(o, res, err);
+    if (!rc) rc = write_frame(o, res, fit_json, err);
     return rc;
 }

@@ -162,6 +162,7 @@ int sp_sfm_colmap(const sp_sfm_opts *o, sp_sfm_result *res, sp_error *err)
     int rc = sp_sfm_find_colmap(o->colmap, colmap, sizeof colmap, err);
     if (rc) return rc;
     sp_colmap_model ref = {0}, est = {0};
+    char *fit_json = NULL;
     if ((rc = sp_colmap_read(o->capture, &ref, err))) return sp_error_prefix(err, "sfm reference: ");
     const sp_colmap_camera *cam = ref.n_cameras ? &ref.cameras[0] : NULL;
     if (!cam || (!o->estimate_intrinsics && (cam->model != SP_COLMAP_PINHOLE || ref.n_cameras != 1))) {
@@ -190,14 +191,15 @@ int sp_sfm_colmap(const sp_sfm_opts *o, sp_sfm_result *res, sp_error *err)
     if (!rc) {
         sp_logf(o->log, SP_LOG_INFO, "sfm: %d models; the largest registered %d of %d images, %zu points",
                 res->n_models, res->n_registered, res->n_images, res->n_points);
-        rc = sfm_align(&est, &ref, res, err);
+        rc = sfm_align(&est, &ref, res, &fit_json, err);
     }
     if (!rc) {
         sp_logf(o->log, SP_LOG_INFO, "sfm: aligned (scale %.4g, %d inliers): camera error RMS %.3f m, "
                 "median %.3f m, max %.3f m (%s), rotation %.2f deg mean", res->scale, res->n_inliers,
                 res->ate_rms_m, res->ate_median_m, res->ate_max_m, res->worst_image, res->rot_err_mean_deg);
-        rc = sfm_write_capture(o, &est, res, err);
+        rc = sfm_write_capture(o, &est, res, fit_json, err);
     }
+    free(fit_json);
     sp_colmap_free(&est);
     sp_colmap_free(&ref);
     return rc;

@@ -121,7 +121,10 @@ static void test_align_recovers_similarity(void)
     i2[7].tvec[0] += 0.4 / S;
     sp_sfm_result res = {0};
     sp_error err = {0};
-    CHECK_OK(sfm_align(&est, &ref, &res, &err), &err);
+    char *fit = NULL;
+    CHECK_OK(sfm_align(&est, &ref, &res, &fit, &err), &err);
+    CHECK(fit && strstr(fit, "00007.png")); /* the outlier, named in the fit's report */
+    free(fit);
     CHECK_NEAR(res.scale, S, 1e-3);
     CHECK_MSG(res.n_inliers == N - 1, "%d inliers, bound %g m", res.n_inliers, res.align_threshold_m);
     CHECK(!strcmp(res.worst_image, "00007.png"));
@@ -140,7 +143,8 @@ static void test_align_recovers_similarity(void)
         for (int k = 0; k < 3; k++) CHECK_NEAR(est.points[p].xyz[k], ref.points[p].xyz[k], 2e-3);
     /* too few images known to the reference */
     est.n_images = 3;
-    CHECK_FAILS(sfm_align(&est, &ref, &res, &err), SP_E_FORMAT, &err, "at least 4");
+    CHECK_FAILS(sfm_align(&est, &ref, &res, &fit, &err), SP_E_FORMAT, &err, "at least 4");
+    CHECK(fit == NULL);
 }
 
 /* A stand-in for COLMAP: checks the CPU flags and, as the mapper, writes two models. */
@@ -244,6 +248,11 @@ static void test_pipeline_with_stand_in(void)
     CHECK(cJSON_IsObject(sfm) && cJSON_GetObjectItem(sfm, "alignment"));
     CHECK(cJSON_IsString(cJSON_GetObjectItem(j, "plan")));
     cJSON_Delete(j);
+    /* frame.json: a world frame made by alignment, with the fit's residual */
+    snprintf(p, sizeof p, "%s/frame.json", out);
+    sp_frame fr;
+    CHECK_OK(sp_frame_read(p, &fr, &err), &err);
+    CHECK(!strcmp(fr.source, "align") && sp_frame_is_world(&fr) && fr.residual_m >= 0 && fr.residual_m < 1e-3);
     snprintf(p, sizeof p, "%s/colmap/colmap.log", out);
     char *log = NULL;
     size_t n = 0;
