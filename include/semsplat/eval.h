@@ -53,6 +53,11 @@ typedef struct sp_ground_truth {
  * file and the object at fault (missing fields, non-finite numbers, min > max). */
 int sp_ground_truth_read(const char *path, sp_ground_truth *gt, sp_error *err);
 void sp_ground_truth_free(sp_ground_truth *gt);
+/* The ground truth of a world file (.world/.sdf through synth's loader, model:// through
+ * model_path): every top-level model that is not structure, its class and world box. Fails with
+ * SP_E_UNSUPPORTED when synth is not built, SP_E_FORMAT when the world has no objects. */
+int sp_ground_truth_from_world(const char *world, const char *model_path, int skip_missing,
+                               const sp_log *log, sp_ground_truth *gt, sp_error *err);
 
 /* ---- one-to-one matching ------------------------------------------------------------------------ */
 
@@ -139,7 +144,19 @@ typedef struct sp_eval_opts {
     const char *const *absent;     /* NULL-terminated; NULL = sp_eval_default_absent */
     const char *heatmap_dir;       /* when set, <dir>/<class>.png from the 3D query */
     const sp_log *log;
+    float merge_gap_m;             /* instances of one query whose extents come this close are
+                                      one object (sp_eval_merge_fragments); 0 = 0.15, < 0 = off */
 } sp_eval_opts;
+
+#define SP_EVAL_MERGE_GAP_M 0.15f
+
+/* A large object (bed, sofa, counter) often comes back as several instances, one per part the
+ * clustering split off. Instances whose extents, each grown by gap_m / 2, overlap on all three
+ * axes are merged (transitively) into one: extent the union, position its middle (as the
+ * engine's own positions are), score and points summed, confidence the largest; then re-sorted
+ * best first and res->position set to the best. No ground truth is used. Returns the number of
+ * instances left, or a negative error (out of memory; res unchanged). */
+int sp_eval_merge_fragments(sp_query_result *res, float gap_m, sp_error *err);
 
 /* Runs every query of the report through the engine with both methods (engine defaults otherwise)
  * and scores them. Fails (SP_E_ARG) when the engine's frame is not a world frame. */

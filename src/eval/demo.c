@@ -179,7 +179,7 @@ static int score(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, sp_er
     sp_query_engine *e = NULL;
     double t = sp_time_now();
     rc = sp_query_engine_open(&e, r->model_dir, NULL, dev, o->log, err);
-    sp_eval_opts eo = {o->match_radius_m, NULL, r->heatmap_dir, o->log};
+    sp_eval_opts eo = {.match_radius_m = o->match_radius_m, .heatmap_dir = r->heatmap_dir, .log = o->log};
     if (!rc) rc = sp_eval_localization(e, &gt, &eo, &r->report, err);
     r->t_queries = sp_time_now() - t;
     r->scored = rc == 0;

@@ -248,6 +248,11 @@ int sp_eval_localization(sp_query_engine *e, const sp_ground_truth *gt, const sp
             sp_query_result res;
             rc = sp_query_engine_query(e, rep->queries[k].text, &qo, &res, err);
             if (rc) sp_error_prefix(err, "query '%s': ", rep->queries[k].text);
+            float gap = o && o->merge_gap_m != 0 ? o->merge_gap_m : SP_EVAL_MERGE_GAP_M;
+            if (!rc) {
+                int left = sp_eval_merge_fragments(&res, gap, err);
+                if (left < 0) rc = left;
+            }
             if (!rc) rc = sp_eval_report_add(rep, gt, k, m, &res, err);
             if (!rc && qo.heatmap) rc = write_heatmap(&res, o->heatmap_dir, &rep->queries[k], err);
             sp_query_result_free(&res);

@@ -78,7 +78,7 @@ static void test_library_pipeline(void)
                       res.position[0], res.position[1], res.position[2]);
     sp_query_result_free(&res);
     sp_eval_report rep;
-    sp_eval_opts eo = {0.3f, NULL, NULL, NULL};
+    sp_eval_opts eo = {.match_radius_m = 0.3f};
     CHECK_OK(sp_eval_localization(e, &gt, &eo, &rep, &err), &err);
     for (int m = 0; m < SP_EVAL_METHODS; m++) {
         const sp_eval_summary *s = &rep.summary[m];
