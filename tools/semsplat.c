@@ -27,6 +27,7 @@ static const command commands[] = {
     {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
     {"sim-robot", cmd_sim_robot, "a simulated robot serving Nav2 actions and /odom over ROS 2 DDS"},
     {"ros-goal", cmd_ros_goal, "send a Nav2 goal / ask for a path / read the pose of a ROS 2 robot"},
+    {"eval", cmd_eval, "score a model against a world file: localization, vocabulary, report"},
     {"sfm", cmd_sfm, "poses from COLMAP structure-from-motion, aligned into a capture's frame"},
 };
 

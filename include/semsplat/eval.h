@@ -169,6 +169,94 @@ char *sp_eval_report_text(const sp_eval_report *rep);
 char *sp_eval_report_markdown(const sp_eval_report *rep, const char *title);
 struct cJSON *sp_eval_report_json(const sp_eval_report *rep);
 
+/* ---- semsplat eval: the whole evaluation (the users' task 5.1 - 5.4) --------------------------- *
+ *
+ * sp_eval_run scores a model folder against a world file and writes <out>/report.md,
+ * report.html (the same with its pictures inline) and report.json, with figures/:
+ *   5.1 localization: every object of the world (sp_ground_truth_from_world), both methods,
+ *       fragments merged, one-to-one matching (sp_eval_localization); per-object error bars.
+ *   5.2 open vs closed vocabulary: each query answered by the semantic splat (the lexical encoder
+ *       on a label-feature scene, else the engine's own text encoder) and by a closed-vocabulary
+ *       baseline: the same map restricted to the 80 COCO class names, i.e. the query is replaced
+ *       by the COCO class WordNet matches best (or none) and that class is looked up. Either is
+ *       "found" when its answer lies on an object the query means (its target classes; a region
+ *       query anywhere in the box spanning them), grown by the match radius.
+ *   5.3 / 5.4 (navigation commands through the agent and the simulated robot, trajectories to the
+ *       refrigerator) are reported as not measured, with the reason, until navigation is built in.
+ *   A written analysis made from the numbers, headed by the feature source, the text encoder, the
+ *   capture plan and the poses the model was trained on, and what they mean.
+ * Queries come from a JSON file ({"vocabulary": [{"text", "coco": bool, "targets": [classes],
+ * "region": bool, "near": [classes], "near_m": m}]}) or the task's ten (sp_eval_default_vocab). */
+
+#define SP_EVAL_MAX_TARGETS 10
+
+typedef struct sp_eval_query_spec {
+    char text[128];
+    int coco;                 /* 1 in COCO, 0 not, -1 = decide by WordNet against the COCO names */
+    int region;               /* a region: scored inside the box spanning its target objects */
+    int n_targets;
+    char targets[SP_EVAL_MAX_TARGETS][64]; /* classes of the world that answer the query */
+    int n_near;
+    char near[4][64];         /* only targets within near_m of an object of these classes */
+    float near_m;
+} sp_eval_query_spec;
+
+/* The task's ten queries (5 in COCO, 5 outside) and their targets; n gets the count. */
+const sp_eval_query_spec *sp_eval_default_vocab(size_t *n);
+/* The 80 COCO class names (NULL-terminated). */
+extern const char *const sp_eval_coco_classes[];
+/* Reads {"vocabulary": [...]} (see above); errors name the file and the entry. specs malloc'd. */
+int sp_eval_read_queries(const char *path, sp_eval_query_spec **specs, size_t *n, sp_error *err);
+
+typedef struct sp_eval_vocab_row {
+    sp_eval_query_spec spec;
+    int in_coco;              /* as given, or decided */
+    int n_targets;            /* objects of the world that answer it (0: the world lacks them) */
+    char coco_class[64];      /* the closed baseline's class ("" = no COCO class matched) */
+    float coco_score;         /* WordNet's score for it */
+    int closed_found;
+    float closed_error_m;     /* its answer to the nearest target (NaN: no answer or no target) */
+    int open_found;
+    float open_confidence;
+    float open_error_m;
+    float open_position[3];   /* NaN when nothing was answered */
+    char matched[160];        /* the classes the text matched (semantic splat), for the report */
+} sp_eval_vocab_row;
+
+typedef struct sp_eval_run_opts {
+    const char *model_dir;
+    const char *world;        /* the ground truth */
+    const char *model_path;   /* model:// folders of the world (may be NULL) */
+    const char *queries;      /* 5.2 queries (JSON), NULL = the task's ten */
+    const char *out_dir;
+    const char *title;        /* NULL: "semsplat evaluation: <world>" */
+    int skip_missing;         /* the world's missing assets skipped */
+    sp_device *dev;           /* borrowed */
+    float match_radius_m;     /* 0 = 0.5 */
+    const sp_log *log;
+} sp_eval_run_opts;
+
+typedef struct sp_eval_run {
+    char world[1024], model_dir[1024], capture_dir[1024];
+    char plan[32];            /* capture plan: "walk", "walk+objects", "drive", or "unknown" */
+    char poses[256];          /* "exact (rendered from the world)" or COLMAP's with its residual */
+    double sfm_ate_rms_m;     /* COLMAP poses: camera error after alignment (NaN otherwise) */
+    int sfm_registered, sfm_images;
+    double train_psnr;        /* held-out PSNR from train.json (NaN when absent) */
+    long n_gaussians;
+    sp_ground_truth gt;
+    sp_eval_report loc;       /* 5.1 */
+    size_t n_vocab;
+    sp_eval_vocab_row *vocab; /* 5.2 */
+    char vocab_encoder[32];   /* how 5.2 was answered: "lexical" or the engine's encoder */
+    char analysis[8192];      /* the written analysis (Markdown) */
+    double seconds;
+} sp_eval_run;
+
+/* Runs the evaluation and writes the report (see above). */
+int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err);
+void sp_eval_run_free(sp_eval_run *r);
+
 /* ---- the demo ------------------------------------------------------------------------------------- */
 
 typedef struct sp_demo_opts {

@@ -106,7 +106,14 @@ int sp_plot_bars_draw(sp_canvas *c, float x, float y, float w, float h, const sp
         sp_canvas_text_measure(c, &cs, p->categories[i] ? p->categories[i] : "", &lw);
         if (lw > label_w) label_w = lw;
     }
-    label_w = fminf(label_w, w * 0.4f);
+    /* labels wider than 40% of the chart: a smaller font (down to 70%), then an ellipsis */
+    float cap = w * 0.4f;
+    if (label_w > cap) {
+        float shrink = fmaxf(cap / label_w, 0.7f);
+        cs.size_px *= shrink;
+        label_w = fminf(label_w * shrink, cap);
+        cs.wrap_px = cap;
+    }
     float px0 = x + pad + label_w + pad, px1 = x + w - pad - fs * 3.5f;
     double xmax = p->x_max > 0 ? p->x_max : axis_max(p), step = nice_step(xmax);
     /* grid and tick labels */
@@ -131,7 +138,6 @@ int sp_plot_bars_draw(sp_canvas *c, float x, float y, float w, float h, const sp
     sp_text_style vs = {.size_px = fminf(fs * 0.8f, bar * 0.95f + 1), .color = INK, .max_lines = 1};
     for (int i = 0; i < nc; i++) {
         float ry = top + i * row;
-        cs.wrap_px = 0;
         sp_canvas_text(c, px0 - pad, ry + row * 0.5f + cs.size_px * 0.35f, &cs,
                        p->categories[i] ? p->categories[i] : "");
         for (int s = 0; s < ns; s++) {
