@@ -31,7 +31,7 @@ min_build() {
   done
   wait
   rm -f $b/libsp.a; ar rcs $b/libsp.a "${objs[@]}" || return 1
-  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lcudart -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
+  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lcublasLt -lcudart -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
   for t in $TESTS; do
     gcc "${cf[@]}" -Itests "-DSP_SOURCE_DIR=\"$PWD\"" "-DSP_BUILD_DIR=\"$PWD/build-gpu\"" -c tests/clip/$t.c -o $b/$t.o &&
       "$nv" -arch=sm_90 -o build-gpu/clip_$t $b/$t.o "${lk[@]}" || echo "link $t failed"

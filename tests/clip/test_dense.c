@@ -2,6 +2,7 @@
  * tiling and overlap averaging against per-tile dense-head calls done here, the bicubic resize
  * against a direct double implementation of PIL's antialiased filter, and bilinear upsampling. */
 #include "semsplat/clip.h"
+#include "semsplat/device.h"
 #include "test.h"
 
 static sp_clip *c;
@@ -134,8 +135,55 @@ static void test_upsample(void)
         }
 }
 
-int main(void)
+/* The device-resident dense pipeline against the CPU path on the same model: two scales (the
+ * second resampled onto the first's grid), an image that is not a whole number of tiles, both
+ * heads, fp32 and fp16. */
+static void test_gpu_dense(void)
 {
+    char w[1024];
+    snprintf(w, sizeof w, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_clip *gpu = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CUDA, 0, &err), &err);
+    if (dev) CHECK_OK(sp_clip_load(&gpu, w, NULL, dev, &err), &err);
+    if (!gpu) {
+        sp_device_free(dev);
+        return;
+    }
+    int W = 150, H = 97, P = sp_clip_embed_dim(c);
+    test_rng rng = {31};
+    float *rgb = malloc(sizeof(float) * W * H * 3);
+    for (int i = 0; i < W * H * 3; i++) rgb[i] = (float)test_uniform(&rng);
+    sp_clip_dense_opts o = sp_clip_dense_opts_default();
+    o.n_scales = 2;
+    o.scales[0] = 1.0f;
+    o.scales[1] = 0.75f;
+    o.batch = 3;
+    int gw, gh;
+    sp_clip_dense_grid(c, &o, W, H, &gw, &gh);
+    float *a = malloc(sizeof(float) * gw * gh * P), *b = malloc(sizeof(float) * gw * gh * P);
+    for (int fp16 = 0; fp16 <= 1; fp16++)
+        for (int head = 0; head <= 1; head++) {
+            o.head = (sp_clip_head)head;
+            CHECK_OK(sp_clip_set_fp16(gpu, fp16, &err), &err);
+            CHECK_OK(sp_clip_dense_features(c, rgb, W, H, &o, a, &err), &err);
+            for (int i = 0; i < gw * gh * P; i++) b[i] = NAN; /* every cell must be written */
+            CHECK_OK(sp_clip_dense_features(gpu, rgb, W, H, &o, b, &err), &err);
+            double worst = 0;
+            for (int i = 0; i < gw * gh * P; i++) worst = isfinite(b[i]) ? fmax(worst, fabs(a[i] - b[i])) : 1e9;
+            fprintf(stderr, "dense GPU %s head %d vs CPU (%dx%d grid): max abs %.3g\n", fp16 ? "fp16" : "fp32", head, gw,
+                    gh, worst);
+            CHECK(worst < (fp16 ? 3e-2 : 1e-4));
+        }
+    free(rgb); free(a); free(b);
+    sp_clip_free(gpu);
+    sp_device_free(dev);
+}
+
+int main(int argc, char **argv)
+{
+    TEST_ARGS(argc, argv);
     char w[1024];
     snprintf(w, sizeof w, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
     sp_error err = {0};
@@ -146,6 +194,7 @@ int main(void)
     RUN(test_tiles);
     RUN(test_preprocess);
     RUN(test_upsample);
+    RUN_GPU(test_gpu_dense);
     sp_clip_free(c);
     return TEST_EXIT();
 }
