@@ -83,6 +83,9 @@ typedef struct clip_axis_weights {
 int clip_axis_weights_make(clip_axis_weights *a, int n_in, int n_out); /* -1: out of memory */
 void clip_axis_weights_free(clip_axis_weights *a);
 
+/* fp32 -> fp16, round to nearest even (F16C when the CPU has it): the fp16 GPU path's uploads. */
+void clip_floats_to_half(const float *src, uint16_t *dst, size_t n);
+
 /* GPU forwards (cuda/ when built, nocuda/ stubs otherwise). */
 int clip_gpu_init(sp_clip *c, sp_error *err);
 void clip_gpu_free(sp_clip *c);

@@ -422,6 +422,25 @@ done:
     sp_device_free(dev);
 }
 
+/* The host fp32 -> fp16 conversion of the GPU uploads (F16C where the CPU has it) rounds as
+ * sp_float_to_half: to nearest even, denormals, overflow to infinity, signed zeros. */
+static void test_half_host(void)
+{
+    enum { N = 4099 };
+    static float x[N];
+    static uint16_t a[N];
+    for (int i = 0; i < N; i++) {
+        double mag = pow(2.0, test_range(&rng, -26, 17)); /* underflow to overflow */
+        x[i] = (float)((i & 1 ? -1 : 1) * mag);
+    }
+    x[0] = 0.f; x[1] = -0.f; x[2] = 65504.f; x[3] = 65520.f; x[4] = 1.0009765625f + 0.00048828125f; /* a tie */
+    x[5] = INFINITY; x[6] = -INFINITY; x[7] = 5.96e-8f; x[8] = 2.98e-8f;
+    clip_floats_to_half(x, a, N);
+    int bad = 0;
+    for (int i = 0; i < N; i++) bad += a[i] != sp_float_to_half(x[i]);
+    CHECK_MSG(bad == 0, "%d of %d conversions differ from sp_float_to_half", bad, N);
+}
+
 /* The fused fp16 attention kernel alone against a double reference on the same fp16-rounded
  * inputs: head widths 16/32/64, sequence lengths around the 64-row tiles (1, 63, 64, 65, 77,
  * 197), causal and not, q-q (ClearCLIP) and q-k; every output element written and finite. */
@@ -555,6 +574,7 @@ int main(int argc, char **argv)
     RUN(test_text);
     RUN(test_vision);
     RUN(test_half_files);
+    RUN(test_half_host);
     RUN_GPU(test_gpu);
     RUN_GPU(test_gpu_attention);
     RUN(test_errors);

@@ -136,24 +136,24 @@ extern "C" void clip_gpu_set_flags(sp_clip *c, int flags)
 struct copy_job {
     char *dst;
     const char *src;
-    size_t n, piece;
+    size_t n, piece; /* elements (bytes when not converting) */
+    int to_half;
 };
 
 static void copy_piece(void *ctx, long i, int thread_id)
 {
     copy_job *j = (copy_job *)ctx;
     size_t at = (size_t)i * j->piece, n = j->n - at < j->piece ? j->n - at : j->piece;
-    memcpy(j->dst + at, j->src + at, n);
+    if (j->to_half) clip_floats_to_half((const float *)j->src + at, (uint16_t *)j->dst + at, n);
+    else memcpy(j->dst + at, j->src + at, n);
 }
 
-int clip_upload(sp_clip *c, void *dst, const void *src, size_t bytes, sp_error *err)
+/* bytes of src (or, to_half, bytes / 4 floats becoming halves at dst) through the two pinned
+ * slots: pool threads fill one while the copy engine drains the other */
+static int upload_staged(sp_clip *c, void *dst, const void *src, size_t bytes, int to_half, sp_error *err)
 {
     sp_clip_gpu *g = c->gpu;
     const size_t slot = (size_t)16 << 20, piece = (size_t)1 << 20;
-    if (bytes < 2 * piece) {
-        CK(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyHostToDevice, g->stream), "upload");
-        return 0;
-    }
     if (!g->pin.buf[0]) {
         for (int i = 0; i < 2; i++) {
             CK(cudaHostAlloc((void **)&g->pin.buf[i], slot, cudaHostAllocDefault), "pinned staging");
@@ -161,16 +161,32 @@ int clip_upload(sp_clip *c, void *dst, const void *src, size_t bytes, sp_error *
         }
         g->pin.cap = slot;
     }
+    size_t unit = to_half ? 4 : 1, out_unit = to_half ? 2 : 1, per_slot = slot / out_unit, total = bytes / unit;
     int k = 0;
-    for (size_t at = 0; at < bytes; at += slot, k ^= 1) {
-        size_t n = bytes - at < slot ? bytes - at : slot;
+    for (size_t at = 0; at < total; at += per_slot, k ^= 1) {
+        size_t n = total - at < per_slot ? total - at : per_slot;
         CK(cudaEventSynchronize(g->pin.done[k]), "staging"); /* that slot's last copy has drained */
-        copy_job j = {g->pin.buf[k], (const char *)src + at, n, piece};
-        sp_pool_for(c->pool, (long)((n + piece - 1) / piece), copy_piece, &j);
-        CK(cudaMemcpyAsync((char *)dst + at, g->pin.buf[k], n, cudaMemcpyHostToDevice, g->stream), "upload");
+        copy_job j = {g->pin.buf[k], (const char *)src + at * unit, n, piece / unit, to_half};
+        sp_pool_for(c->pool, (long)((n + j.piece - 1) / j.piece), copy_piece, &j);
+        CK(cudaMemcpyAsync((char *)dst + at * out_unit, g->pin.buf[k], n * out_unit, cudaMemcpyHostToDevice, g->stream),
+           "upload");
         CK(cudaEventRecord(g->pin.done[k], g->stream), "staging");
     }
     return 0;
+}
+
+int clip_upload(sp_clip *c, void *dst, const void *src, size_t bytes, sp_error *err)
+{
+    if (bytes < ((size_t)2 << 20)) {
+        CK(cudaMemcpyAsync(dst, src, bytes, cudaMemcpyHostToDevice, c->gpu->stream), "upload");
+        return 0;
+    }
+    return upload_staged(c, dst, src, bytes, 0, err);
+}
+
+int clip_upload_half(sp_clip *c, __half *dst, const float *src, size_t count, sp_error *err)
+{
+    return upload_staged(c, dst, src, count * sizeof(float), 1, err);
 }
 
 /* ---- one transformer block ------------------------------------------------------------------------------ */
@@ -218,6 +234,9 @@ template <typename T> static ctx<T> ctx_of(sp_clip *c, sp_error *err)
 
 static int finish(sp_clip_gpu *g, float *out, const float *d_out, size_t n, const char *what, sp_error *err)
 {
+    cudaError_t launch = cudaGetLastError(); /* a refused launch configuration shows only here */
+    if (launch != cudaSuccess)
+        return sp_error_set(err, SP_E_DEVICE, "CLIP GPU: %s: %s", what, cudaGetErrorString(launch));
     if (cudaMemcpyAsync(out, d_out, n * sizeof(float), cudaMemcpyDeviceToHost, g->stream) != cudaSuccess ||
         cudaStreamSynchronize(g->stream) != cudaSuccess)
         return sp_error_set(err, SP_E_DEVICE, "CLIP GPU: %s failed: %s", what, cudaGetErrorString(cudaGetLastError()));
@@ -324,8 +343,8 @@ static int dense_head(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_laye
 }
 
 template <typename T>
-static int vision_run(sp_clip *c, const float *d_px, int n, int H, int W, clip_out_kind kind, float *d_out,
-                      sp_error *err)
+static int vision_run(sp_clip *c, const void *d_px, int px_half, int n, int H, int W, clip_out_kind kind,
+                      float *d_out, sp_error *err)
 {
     sp_clip_gpu *g = c->gpu;
     ctx<T> x = ctx_of<T>(c, err);
@@ -348,7 +367,7 @@ static int vision_run(sp_clip *c, const float *d_px, int n, int H, int W, clip_o
             continue;
         }
         cudaStream_t st = g->stream;
-        launch_im2col<T>(d_px, cols, n, H, W, p, st);
+        launch_im2col<T>(d_px, px_half, cols, n, H, W, p, st);
         if ((rc = lin(x, cols, K, n * np, K, x.W + off_of(c, c->patch_w), w, (const T *)NULL, pe, 0))) break;
         launch_assemble<T>(pe, x.W + off_of(c, c->cls), d_pos, xb, n, Tn, w, st);
         launch_layernorm<T>(xb, xb, (int)M, w, x.W + off_of(c, c->pre_ln_w), x.W + off_of(c, c->pre_ln_b), cfg->eps,
@@ -368,11 +387,11 @@ static int vision_run(sp_clip *c, const float *d_px, int n, int H, int W, clip_o
     return rc;
 }
 
-int clip_vision_device(sp_clip *c, const float *d_px, int n, int H, int W, clip_out_kind kind, float *d_out,
-                       sp_error *err)
+int clip_vision_device(sp_clip *c, const void *d_px, int px_half, int n, int H, int W, clip_out_kind kind,
+                       float *d_out, sp_error *err)
 {
-    return c->fp16 ? vision_run<__half>(c, d_px, n, H, W, kind, d_out, err)
-                   : vision_run<float>(c, d_px, n, H, W, kind, d_out, err);
+    return c->fp16 ? vision_run<__half>(c, d_px, px_half, n, H, W, kind, d_out, err)
+                   : vision_run<float>(c, d_px, px_half, n, H, W, kind, d_out, err);
 }
 
 /* ---- entry points ------------------------------------------------------------------------------------------- */
@@ -386,15 +405,17 @@ extern "C" int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, in
                                sp_error *err)
 {
     sp_clip_gpu *g = c->gpu;
-    int p = c->cfg.patch_size, P = c->cfg.projection_dim;
-    size_t in = (size_t)n * 3 * H * W * sizeof(float);
+    int p = c->cfg.patch_size, P = c->cfg.projection_dim, half = c->fp16; /* fp16: the pixels go up as fp16 */
+    size_t count = (size_t)n * 3 * H * W;
     size_t n_out = kind == CLIP_OUT_POOLED ? (size_t)n : (size_t)n * (H / p) * (W / p);
     int rc;
-    if ((rc = sp_device_scratch_reserve(g->dev, &g->io_in, in, err)) ||
-        (rc = sp_device_scratch_reserve(g->dev, &g->io_out, n_out * P * sizeof(float), err)) ||
-        (rc = clip_upload(c, g->io_in.ptr, pixels, in, err)) ||
-        (rc = clip_vision_device(c, (const float *)g->io_in.ptr, n, H, W, kind, (float *)g->io_out.ptr, err)))
+    if ((rc = sp_device_scratch_reserve(g->dev, &g->io_in, count * (half ? 2 : 4), err)) ||
+        (rc = sp_device_scratch_reserve(g->dev, &g->io_out, n_out * P * sizeof(float), err)))
         return rc;
+    rc = half ? clip_upload_half(c, (__half *)g->io_in.ptr, pixels, count, err)
+              : clip_upload(c, g->io_in.ptr, pixels, count * sizeof(float), err);
+    if (rc || (rc = clip_vision_device(c, g->io_in.ptr, half, n, H, W, kind, (float *)g->io_out.ptr, err))) return rc;
+    g->io_half = half;
     return finish(g, out, (const float *)g->io_out.ptr, n_out * P, "vision forward", err);
 }
 
@@ -402,9 +423,10 @@ extern "C" int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, in
 extern "C" int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err)
 {
     sp_clip_gpu *g = c->gpu;
-    size_t in = (size_t)n * 3 * H * W * sizeof(float);
-    if (!g || !g->io_in.ptr || g->io_in.cap < in || g->io_out.cap < (size_t)n * c->cfg.projection_dim * sizeof(float))
+    size_t in = (size_t)n * 3 * H * W * (g && g->io_half ? 2 : 4);
+    if (!g || !g->io_in.ptr || g->io_in.cap < in || g->io_half != c->fp16 ||
+        g->io_out.cap < (size_t)n * c->cfg.projection_dim * sizeof(float))
         return sp_error_set(err, SP_E_ARG, "CLIP GPU: no %d images of %dx%d on the device", n, W, H);
-    int rc = clip_vision_device(c, (const float *)g->io_in.ptr, n, H, W, CLIP_OUT_POOLED, (float *)g->io_out.ptr, err);
+    int rc = clip_vision_device(c, g->io_in.ptr, g->io_half, n, H, W, CLIP_OUT_POOLED, (float *)g->io_out.ptr, err);
     return rc ? rc : finish(g, out, (const float *)g->io_out.ptr, (size_t)n * c->cfg.projection_dim, "vision forward", err);
 }

@@ -60,6 +60,7 @@ struct sp_clip_gpu {
     sp_device_scratch io_in, io_out; /* the host entry points' inputs and outputs on the device */
     sp_device_scratch pos;           /* position embeddings of the last grid size (pos_gh x pos_gw) */
     int pos_gh, pos_gw;
+    int io_half;                     /* io_in holds fp16 pixels (the last vision call was fp16) */
     sp_device_scratch dense[8];      /* the dense pipeline's buffers (dense_cuda.cu) */
     int flags; /* CLIP_GPU_* (clip_internal.h) */
 };
@@ -102,8 +103,10 @@ template <typename T> static inline T *take(arena *a, size_t count)
 }
 
 int clip_arena_grow(sp_clip_gpu *g, size_t need, sp_error *err);
-/* Host -> device through the pinned staging (pool threads fill it, the copy engine drains it). */
+/* Host -> device through the pinned staging (pool threads fill it, the copy engine drains it);
+ * the _half one converts count floats to fp16 on the way. */
 int clip_upload(sp_clip *c, void *dst, const void *src, size_t bytes, sp_error *err);
+int clip_upload_half(sp_clip *c, __half *dst, const float *src, size_t count, sp_error *err);
 
 /* ---- linear layers (gemm.cu) -------------------------------------------------------------------- */
 
@@ -157,7 +160,7 @@ template <typename T> void launch_bias_act(T *y, long rows, int n, const T *bias
 template <typename T>
 void launch_embed_text(const int32_t *ids, const T *tok, const T *pos, T *x, int rows, int L, int w, cudaStream_t st);
 template <typename T>
-void launch_im2col(const float *px, T *cols, int n, int H, int W, int p, cudaStream_t st);
+void launch_im2col(const void *px, int px_half, T *cols, int n, int H, int W, int p, cudaStream_t st);
 template <typename T>
 void launch_assemble(const T *pe, const T *cls, const float *pos, T *x, int n, int Tn, int w, cudaStream_t st);
 template <typename T> void launch_softmax(T *s, long rows, int Tn, float scale, int causal, cudaStream_t st);
@@ -166,9 +169,10 @@ void launch_f32_to_f16(const float *x, __half *y, long n, cudaStream_t st);
 
 /* ---- towers (clip_cuda.cu), used by the dense pipeline ---------------------------------------------- */
 
-/* The vision tower on device pixels [n][3][H][W] -> device out [n_out][P] float (not normalised;
- * n_out = n for pooled, n * (H/p) * (W/p) for the dense heads); its scratch is the arena. */
-int clip_vision_device(sp_clip *c, const float *d_px, int n, int H, int W, clip_out_kind kind, float *d_out,
-                       sp_error *err);
+/* The vision tower on device pixels [n][3][H][W] (fp32, or fp16 when px_half) -> device out
+ * [n_out][P] float (not normalised; n_out = n for pooled, n * (H/p) * (W/p) for the dense heads);
+ * its scratch is the arena. */
+int clip_vision_device(sp_clip *c, const void *d_px, int px_half, int n, int H, int W, clip_out_kind kind,
+                       float *d_out, sp_error *err);
 
 #endif

@@ -229,7 +229,7 @@ static int run_scale(sp_clip *c, const scale_job *j, int width, int height, int 
         int nb = n_tiles - t0 < chunk ? n_tiles - t0 : chunk;
         k_tiles<<<blocks((size_t)nb * 3 * tile * tile), 256, 0, st>>>(norm, sp->pw, sp->ph, px, t0, nb, tile,
                                                                       it + j->o_xs, it + j->o_ys, j->nx);
-        if ((rc = clip_vision_device(c, px, nb, tile, tile, kind, feat + (size_t)t0 * tg * tg * P, err))) return rc;
+        if ((rc = clip_vision_device(c, px, 0, nb, tile, tile, kind, feat + (size_t)t0 * tg * tg * P, err))) return rc;
     }
     k_invnorm<<<(int)((rows + 7) / 8), 256, 0, st>>>(feat, inv, (int)rows, P);
     k_cells<<<sp->gw * sp->gh, 128, 0, st>>>(feat, inv, grid, sp->gw, P, tg, p, it + j->o_xs, it + j->o_ys, j->nx, j->ny);

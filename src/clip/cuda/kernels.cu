@@ -256,9 +256,9 @@ void launch_embed_text(const int32_t *ids, const T *tok, const T *pos, T *x, int
     k_embed_text<T><<<blocks_for(total, 256), 256, 0, st>>>(ids, tok, pos, x, L, w, total);
 }
 
-/* pixels [B][3][H][W] fp32 -> cols [B*np][3*p*p] in (channel, ky, kx) order */
-template <typename T>
-__global__ void k_im2col(const float *px, T *cols, int H, int W, int p, int gw, int np, size_t total)
+/* pixels [B][3][H][W] (fp32 or fp16) -> cols [B*np][3*p*p] in (channel, ky, kx) order */
+template <typename T, typename PX>
+__global__ void k_im2col(const PX *px, T *cols, int H, int W, int p, int gw, int np, size_t total)
 {
     int K = 3 * p * p;
     for (size_t i = blockIdx.x * (size_t)blockDim.x + threadIdx.x; i < total; i += (size_t)gridDim.x * blockDim.x) {
@@ -266,16 +266,19 @@ __global__ void k_im2col(const float *px, T *cols, int H, int W, int p, int gw, 
         size_t r = i / K;
         int b = (int)(r / np), pi = (int)(r % np), ch = k / (p * p), ky = (k / p) % p, kx = k % p;
         int y = (pi / gw) * p + ky, x = (pi % gw) * p + kx;
-        st1(cols + i, px[(((size_t)b * 3 + ch) * H + y) * W + x]);
+        st1(cols + i, ld1(px + (((size_t)b * 3 + ch) * H + y) * W + x));
     }
 }
 
 template <typename T>
-void launch_im2col(const float *px, T *cols, int n, int H, int W, int p, cudaStream_t st)
+void launch_im2col(const void *px, int px_half, T *cols, int n, int H, int W, int p, cudaStream_t st)
 {
     int gw = W / p, np = (H / p) * gw;
     size_t total = (size_t)n * np * 3 * p * p;
-    k_im2col<T><<<blocks_for(total, 256), 256, 0, st>>>(px, cols, H, W, p, gw, np, total);
+    if (px_half)
+        k_im2col<T, __half><<<blocks_for(total, 256), 256, 0, st>>>((const __half *)px, cols, H, W, p, gw, np, total);
+    else
+        k_im2col<T, float><<<blocks_for(total, 256), 256, 0, st>>>((const float *)px, cols, H, W, p, gw, np, total);
 }
 
 /* x [B][T][w]: row 0 = cls + pos[0], rows 1.. = patch embeddings + pos */
@@ -325,7 +328,7 @@ void launch_f32_to_f16(const float *x, __half *y, long n, cudaStream_t st)
     template void launch_layernorm<T>(const T *, T *, int, int, const T *, const T *, float, ln_rows, cudaStream_t); \
     template void launch_bias_act<T>(T *, long, int, const T *, int, cudaStream_t);                         \
     template void launch_embed_text<T>(const int32_t *, const T *, const T *, T *, int, int, int, cudaStream_t); \
-    template void launch_im2col<T>(const float *, T *, int, int, int, int, cudaStream_t);                  \
+    template void launch_im2col<T>(const void *, int, T *, int, int, int, int, cudaStream_t);              \
     template void launch_assemble<T>(const T *, const T *, const float *, T *, int, int, int, cudaStream_t); \
     template void launch_softmax<T>(T *, long, int, float, int, cudaStream_t);                              \
     template void launch_to_float<T>(const T *, float *, long, cudaStream_t);
