@@ -196,7 +196,8 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *opts, sp
  *   images/NNNNN.png  depth/NNNNN.npy (float32 metres [h][w])  labels/NNNNN.png (16-bit ids)
  *   labels.json  (id -> model name, class, is_structure)
  *   ground_truth.json  (world path; each object's name, class, world pose and AABB under
- *                       "objects", walls, floors, ceilings and the ground under "structure") */
+ *                       "objects", walls, floors, ceilings and the ground under "structure")
+ *   frame.json  (source "synth": the model frame is the world frame; see sp_frame in io.h) */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);
 

@@ -177,6 +177,37 @@ int sp_train_write_json(const char *path, const sp_train_options *opt, const sp_
                         const char *colmap_dir, const char *images_dir, int downscale,
                         sp_error *err);
 
+/* ---- a model folder (what `semsplat train` does) ----------------------------------------------- */
+
+typedef enum {
+    SP_TRAIN_INIT_POINTS = 0, /* COLMAP points3D (random when the model has none, with a warning) */
+    SP_TRAIN_INIT_RANDOM = 1, /* init_points uniform points around the cameras */
+    SP_TRAIN_INIT_PLY = 2     /* init_ply: continue from an existing splat (3DGS/gsplat PLY) */
+} sp_train_init;
+
+typedef struct sp_train_model_opts {
+    const char *colmap_dir;  /* capture root or COLMAP model folder (required) */
+    const char *images_dir;  /* NULL: <colmap_dir>/images */
+    const char *out_dir;     /* the model folder (required; made when missing) */
+    int downscale;           /* integer image downscale (1) */
+    int test_every;          /* hold out every n-th image (8; 0 = none) */
+    sp_train_init init;
+    const char *init_ply;    /* SP_TRAIN_INIT_PLY */
+    size_t init_points;      /* SP_TRAIN_INIT_RANDOM (100000) */
+    const char *resume;      /* continue from this checkpoint (NULL = fresh); replaces init */
+    sp_train_options train;  /* checkpoint_dir and resume are set by the call */
+} sp_train_model_opts;
+
+/* sp_train_options_default(steps) inside, init from points, downscale 1, test_every 8. */
+sp_train_model_opts sp_train_model_opts_default(int steps);
+
+/* Trains a model folder: OUT/splat.ply (3DGS layout), OUT/train.json (settings, held-out metrics),
+ * OUT/frame.json (the capture's frame: a synth capture's model frame is the world frame, see
+ * sp_frame_of_capture in io.h) and OUT/checkpoints/checkpoint.bin. res (may be NULL) receives the
+ * result; log the progress. Errors name the capture, image, file or setting at fault. */
+int sp_train_model(sp_device *dev, const sp_train_model_opts *o, sp_train_result *res,
+                   const sp_log *log, sp_error *err);
+
 /* ---- building blocks (host buffers; the loop uses device versions) ------------------------------ */
 
 /* RGB loss (see train_cuda_api.h for the exact definition): stats = loss, L1, SSIM, MSE; v_pred
