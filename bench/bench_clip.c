@@ -5,10 +5,11 @@
  * transformers. Output: `name  value  unit  (settings)`.
  * On the GPU the batch-32/128 image figures are also given with the pixels already on the device
  * (`_resident`, as the transformers anchor times it: its inputs are on the GPU), and --variants
- * adds batch 128 / text 256 without cuBLASLt epilogues and without the fused attention.
+ * adds batch 128 / text 256 in fp16 with the tiled fused-attention kernel and with neither
+ * cuBLASLt epilogues nor fused attention (the previous design); --variants 2 adds each alone.
  * --ncu runs one of each GPU workload only (for Nsight Compute).
  *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]
- *              [--variants] [--ncu] */
+ *              [--variants [2]] [--ncu] */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -155,7 +156,7 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--cpu-only")) gpu = 0;
         else if (!strcmp(argv[i], "--gpu-only")) cpu = 0;
         else if (!strcmp(argv[i], "--dense-cpu")) dense_cpu = 1;
-        else if (!strcmp(argv[i], "--variants")) variants = 1;
+        else if (!strcmp(argv[i], "--variants")) variants = i + 1 < argc && !strcmp(argv[i + 1], "2") ? (i++, 2) : 1;
         else if (!strcmp(argv[i], "--ncu")) ncu = 1;
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atol(argv[++i]);
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
@@ -218,10 +219,12 @@ int main(int argc, char **argv)
             bench_images(c, name, prec, 128, 2);
             bench_text(c, name, prec, 256);
             bench_dense(c, name, prec, 10);
-            /* the same without cuBLASLt epilogues / without the fused attention */
+            /* the same without cuBLASLt epilogues, without the fused attention (--variants 2: also
+             * each alone), with the tiled fused kernel instead of the sequence-resident one */
             static const struct { int flags; const char *suffix; } vs[] = {
-                {CLIP_GPU_NO_LT, "_nolt"}, {CLIP_GPU_NO_FLASH, "_noflash"}, {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"}};
-            for (int v = 0; variants && v < (half ? 3 : 1); v++) {
+                {CLIP_GPU_FLASH_V1, "_flashv1"}, {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"},
+                {CLIP_GPU_NO_LT, "_nolt"}, {CLIP_GPU_NO_FLASH, "_noflash"}};
+            for (int v = half ? 0 : 2; v < (variants > 1 ? 4 : 2) && variants; v++) {
                 clip_gpu_set_flags(c, vs[v].flags);
                 variant = vs[v].suffix;
                 bench_images(c, name, prec, 128, 2);

@@ -31,17 +31,21 @@ timeout 120 ./build-gpu/bench/bench_features --dir /tmp/bf 2>&1 | tail -3
 timeout 60 ./build-gpu/bench/bench_features --cpu --dir /tmp/bf2 2>&1 | tail -3
 timeout 120 ./build-gpu/bench/bench_sgemm --threads 16 2>&1 | tail -9
 el "feature benches done"
-if [ "${SANITIZE:-0}" = 1 ]; then
+left() { [ $(( $(date +%s) - t0 )) -lt "$1" ]; } # still inside a time budget (s)
+if [ "${SANITIZE:-0}" = 1 ] && left "${SANITIZE_BY:-200}"; then
   cs=$(command -v compute-sanitizer || ls /opt/nvidia/*/compute-sanitizer /usr/local/cuda/bin/compute-sanitizer 2>/dev/null | head -1)
-  for t in model dense; do
+  for t in ${SANITIZE_TESTS:-model dense}; do
     echo "== memcheck clip_test_$t"
-    timeout 240 "$cs" --tool memcheck --print-limit 5 ./build-gpu/clip_test_$t --gpu 2>&1 | grep -E "ERROR SUMMARY|Invalid|at 0x|ok |FAIL" | head -12
+    timeout 60 "$cs" --tool memcheck --print-limit 5 ./build-gpu/clip_test_$t --gpu 2>&1 | grep -E "ERROR SUMMARY|Invalid|at 0x|ok |FAIL" | head -12
   done
   el "sanitizer done"
 fi
-if [ "${NCU:-0}" = 1 ]; then
+if [ "${NCU:-0}" = 1 ] && left "${NCU_BY:-220}"; then
   ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu /usr/local/cuda/bin/ncu 2>/dev/null | head -1)
-  timeout 240 "$ncu" --clock-control none --section SpeedOfLight --section Occupancy --launch-skip 1 -c 16 \
+  # NCU_K: kernel-name regex, NCU_SKIP launches of it skipped, NCU_C profiled (defaults: the first
+  # block of the b128 image forward after the fp16 conversion)
+  timeout "${NCU_S:-60}" "$ncu" --clock-control none --section SpeedOfLight --section Occupancy \
+    -k "regex:${NCU_K:-.}" --launch-skip "${NCU_SKIP:-1}" -c "${NCU_C:-13}" \
     ./build-gpu/bench/bench_clip --gpu-only --ncu >"$OUT/ncu.txt" 2>&1
   grep -E "^  [a-zA-Z_].*\(|Duration|Memory Throughput|Compute \(SM\) Throughput|Achieved Occupancy|Registers Per" \
     "$OUT/ncu.txt" | head -90

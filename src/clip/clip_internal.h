@@ -106,16 +106,17 @@ int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int
                      sp_error *err);
 
 /* Variants for benchmarks and tests: CLIP_GPU_NO_LT runs the plain cuBLAS products and
- * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax). */
-enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2 };
+ * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax),
+ * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits. */
+enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4 };
 void clip_gpu_set_flags(sp_clip *c, int flags);
 /* Benchmarks: the last sp_clip_encode_pixels call again on the pixels still on the device (the
  * upload left out, as a framework's timing with inputs on the GPU). */
 int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err);
 /* The fused attention kernel alone on host data: qkv [B*T][3w] (converted to fp16) -> out
- * [B*T][w]; SP_E_UNSUPPORTED when the kernel does not take this head width. */
+ * [B*T][w] (v1: the tiled kernel); SP_E_UNSUPPORTED when the kernel does not take this head width. */
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
-                             int qq, float *out, sp_error *err);
+                             int qq, int v1, float *out, sp_error *err);
 
 static inline void clip_l2_normalize(float *v, int n)
 {

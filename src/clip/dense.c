@@ -194,18 +194,16 @@ void sp_clip_dense_grid(const sp_clip *c, const sp_clip_dense_opts *o, int width
     *grid_h = sp.gh;
 }
 
-/* Tile origins along one axis: 0, stride, ... and the last one flush with the end. */
+/* Tile origins along one axis: 0, stride, ... and the last one flush with the end. Returns the
+ * count, of which only the first cap are written (cap 0: count only). */
 int clip_tile_starts(int padded, int tile, int stride, int *out, int cap)
 {
     int n = 0;
-    for (int x = 0;; x += stride) {
-        if (x + tile >= padded) {
-            if (n < cap) out[n++] = padded - tile;
-            break;
-        }
-        if (n < cap) out[n++] = x;
+    for (int x = 0;; x += stride, n++) {
+        int last = x + tile >= padded;
+        if (n < cap) out[n] = last ? padded - tile : x;
+        if (last) return n + 1;
     }
-    return n;
 }
 
 /* Dense features of one scale into acc [gh][gw][P] (summed) + cnt [gh][gw]. */

@@ -3,6 +3,7 @@
  * against a direct double implementation of PIL's antialiased filter, and bilinear upsampling. */
 #include "semsplat/clip.h"
 #include "semsplat/device.h"
+#include "clip/clip_internal.h"
 #include "test.h"
 
 static sp_clip *c;
@@ -117,6 +118,19 @@ static void test_preprocess(void)
     free(rgb); free(px); free(row); free(tmp); free(col); free(colo);
 }
 
+/* Tile origins: the count alone (cap 0, as the GPU path sizes its tables) equals the count
+ * written; 640x480 at scale 2 is 11 x 8 tiles of 224 at stride 112, the last flush. */
+static void test_tile_starts(void)
+{
+    int xs[64], ys[64];
+    CHECK(clip_tile_starts(1280, 224, 112, NULL, 0) == 11 && clip_tile_starts(1280, 224, 112, xs, 64) == 11);
+    CHECK(clip_tile_starts(960, 224, 112, NULL, 0) == 8 && clip_tile_starts(960, 224, 112, ys, 64) == 8);
+    CHECK(xs[0] == 0 && xs[9] == 1008 && xs[10] == 1056 && ys[7] == 736);
+    CHECK(clip_tile_starts(224, 224, 112, NULL, 0) == 1 && clip_tile_starts(224, 224, 112, xs, 64) == 1 && xs[0] == 0);
+    /* more than cap: counted, only cap written */
+    CHECK(clip_tile_starts(1280, 224, 16, xs, 3) == 67 && xs[2] == 32);
+}
+
 static void test_upsample(void)
 {
     /* a linear ramp is reproduced exactly away from the borders */
@@ -194,6 +208,7 @@ int main(int argc, char **argv)
     RUN(test_tiles);
     RUN(test_preprocess);
     RUN(test_upsample);
+    RUN(test_tile_starts);
     RUN_GPU(test_gpu_dense);
     sp_clip_free(c);
     return TEST_EXIT();

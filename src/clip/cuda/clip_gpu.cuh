@@ -137,9 +137,10 @@ size_t attention_ptr_count(int B, int H);
 /* 1 when the fused kernel takes this attention (then no score buffer is needed) */
 int attention_fused_ok(const sp_clip_gpu *g, int half, int B, int w, int H);
 size_t attention_score_count(int B, int H, int Tn, int fused);
-/* The flash kernel alone (fp16, d in 16/32/64, w % 8 == 0, B <= 65535); 0 when launched, 1 when
- * it does not apply. */
-int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out,
+/* The flash kernels alone (fp16, d in 16/32/64, w % 8 == 0, B <= 65535): one block per head and
+ * sequence with K and V resident in shared memory when they fit, else (or v1) 64-query blocks
+ * streaming K/V tiles; 0 when launched, 1 when it does not apply. */
+int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out, int v1,
                     cudaStream_t st);
 
 /* ---- elementwise (kernels.cu) --------------------------------------------------------------------- */

@@ -186,7 +186,8 @@ int attention(ctx<T> &x, const T *qkv, int B, int Tn, int H, int w, int causal, 
     /* the same decision sized the scratch (attention_score_count): the fused kernel or the
      * batched products, never a fall-back onto a score buffer that was not reserved */
     if (attention_fused_ok(x.g, sizeof(T) == 2, B, w, H)) {
-        if (flash_attention((const __half *)qkv, B, Tn, H, w, causal, qq, (__half *)out, x.g->stream)) {
+        if (flash_attention((const __half *)qkv, B, Tn, H, w, causal, qq, (__half *)out,
+                            (x.g->flags & CLIP_GPU_FLASH_V1) != 0, x.g->stream)) {
             sp_error *err = x.err;
             return sp_error_set(err, SP_E_DEVICE, "CLIP GPU: fused attention refused %d x %d heads", B, H);
         }

@@ -256,42 +256,46 @@ void launch_embed_text(const int32_t *ids, const T *tok, const T *pos, T *x, int
     k_embed_text<T><<<blocks_for(total, 256), 256, 0, st>>>(ids, tok, pos, x, L, w, total);
 }
 
-/* pixels [B][3][H][W] (fp32 or fp16) -> cols [B*np][3*p*p] in (channel, ky, kx) order */
-template <typename T, typename PX>
-__global__ void k_im2col(const PX *px, T *cols, int H, int W, int p, int gw, int np, size_t total)
+/* pixels [B][3][H][W] (fp32 or fp16) -> cols [B*np][3*p*p] in (channel, ky, kx) order. I: the
+ * index type (32-bit where the sizes allow: 64-bit division per element dominated this kernel). */
+template <typename T, typename PX, typename I>
+__global__ void k_im2col(const PX *px, T *cols, I H, I W, I p, I gw, I np, I total)
 {
-    int K = 3 * p * p;
-    for (size_t i = blockIdx.x * (size_t)blockDim.x + threadIdx.x; i < total; i += (size_t)gridDim.x * blockDim.x) {
-        int k = (int)(i % K);
-        size_t r = i / K;
-        int b = (int)(r / np), pi = (int)(r % np), ch = k / (p * p), ky = (k / p) % p, kx = k % p;
-        int y = (pi / gw) * p + ky, x = (pi % gw) * p + kx;
-        st1(cols + i, ld1(px + (((size_t)b * 3 + ch) * H + y) * W + x));
+    I K = 3 * p * p, pp = p * p;
+    for (I i = blockIdx.x * (I)blockDim.x + threadIdx.x; i < total; i += (I)gridDim.x * blockDim.x) {
+        I k = i % K, r = i / K;
+        I b = r / np, pi = r % np, ch = k / pp, ky = (k / p) % p, kx = k % p;
+        I y = (pi / gw) * p + ky, x = (pi % gw) * p + kx;
+        st1(cols + i, ld1(px + ((b * 3 + ch) * H + y) * W + x));
     }
+}
+
+template <typename T, typename PX>
+static void im2col_as(const PX *px, T *cols, int n, int H, int W, int p, cudaStream_t st)
+{
+    int gw = W / p, np = (H / p) * gw;
+    size_t total = (size_t)n * np * 3 * p * p, in = (size_t)n * 3 * H * W;
+    if (total < 0x7fffffffu && in < 0x7fffffffu)
+        k_im2col<T, PX, unsigned><<<blocks_for(total, 256), 256, 0, st>>>(px, cols, H, W, p, gw, np, (unsigned)total);
+    else
+        k_im2col<T, PX, size_t><<<blocks_for(total, 256), 256, 0, st>>>(px, cols, H, W, p, gw, np, total);
 }
 
 template <typename T>
 void launch_im2col(const void *px, int px_half, T *cols, int n, int H, int W, int p, cudaStream_t st)
 {
-    int gw = W / p, np = (H / p) * gw;
-    size_t total = (size_t)n * np * 3 * p * p;
-    if (px_half)
-        k_im2col<T, __half><<<blocks_for(total, 256), 256, 0, st>>>((const __half *)px, cols, H, W, p, gw, np, total);
-    else
-        k_im2col<T, float><<<blocks_for(total, 256), 256, 0, st>>>((const float *)px, cols, H, W, p, gw, np, total);
+    if (px_half) im2col_as<T, __half>((const __half *)px, cols, n, H, W, p, st);
+    else im2col_as<T, float>((const float *)px, cols, n, H, W, p, st);
 }
 
 /* x [B][T][w]: row 0 = cls + pos[0], rows 1.. = patch embeddings + pos */
-template <typename T>
-__global__ void k_assemble(const T *pe, const T *cls, const float *pos, T *x, int Tn, int w, size_t total)
+template <typename T, typename I>
+__global__ void k_assemble(const T *pe, const T *cls, const float *pos, T *x, I Tn, I w, I total)
 {
-    for (size_t i = blockIdx.x * (size_t)blockDim.x + threadIdx.x; i < total; i += (size_t)gridDim.x * blockDim.x) {
-        int c = (int)(i % w);
-        size_t row = i / w;
-        int t = (int)(row % Tn);
-        size_t b = row / Tn;
+    for (I i = blockIdx.x * (I)blockDim.x + threadIdx.x; i < total; i += (I)gridDim.x * blockDim.x) {
+        I c = i % w, row = i / w, t = row % Tn, b = row / Tn;
         float v = t == 0 ? ld1(cls + c) : ld1(pe + (b * (Tn - 1) + t - 1) * w + c);
-        st1(x + i, v + pos[(size_t)t * w + c]);
+        st1(x + i, v + pos[t * w + c]);
     }
 }
 
@@ -299,7 +303,10 @@ template <typename T>
 void launch_assemble(const T *pe, const T *cls, const float *pos, T *x, int n, int Tn, int w, cudaStream_t st)
 {
     size_t total = (size_t)n * Tn * w;
-    k_assemble<T><<<blocks_for(total, 256), 256, 0, st>>>(pe, cls, pos, x, Tn, w, total);
+    if (total < 0x7fffffffu)
+        k_assemble<T, unsigned><<<blocks_for(total, 256), 256, 0, st>>>(pe, cls, pos, x, Tn, w, (unsigned)total);
+    else
+        k_assemble<T, size_t><<<blocks_for(total, 256), 256, 0, st>>>(pe, cls, pos, x, Tn, w, total);
 }
 
 template <typename T>

@@ -23,7 +23,7 @@ int clip_gpu_dense(sp_clip *c, const float *rgb, int width, int height, const sp
 }
 void clip_gpu_set_flags(sp_clip *c, int flags) { (void)c; (void)flags; }
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
-                             int qq, float *out, sp_error *err)
+                             int qq, int v1, float *out, sp_error *err)
 {
     return sp_error_set(err, SP_E_NODEVICE, "CLIP attention on the GPU: semsplat was built without CUDA");
 }
