@@ -2,8 +2,9 @@
  * views of 640x480, 16-bit label images with 40 classes in overlapping rectangles, labels.json as
  * synth writes it; the label embeddings are the hash ones (512 wide), PCA to 32. Times the whole
  * sp_features_extract (both passes, the PCA, the maps written) on the CUDA device when one
- * answers (cuBLAS covariance), else on the CPU.
- *   bench_features [--views N] [--cpu] [--dir DIR] */
+ * answers (cuBLAS covariance), else on the CPU; the device's pool (--threads, default all cores)
+ * writes the maps in parallel.
+ *   bench_features [--views N] [--cpu] [--threads N] [--dir DIR] */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -80,15 +81,16 @@ static int make_capture(const char *dir, int views, sp_error *err)
 
 int main(int argc, char **argv)
 {
-    int views = 150, cpu = 0;
+    int views = 150, cpu = 0, threads = 0;
     char dir[1024];
     snprintf(dir, sizeof dir, "/tmp/bench_features_%d", (int)getpid());
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--views") && i + 1 < argc) views = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--cpu")) cpu = 1;
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--dir") && i + 1 < argc) snprintf(dir, sizeof dir, "%s", argv[++i]);
         else {
-            fprintf(stderr, "usage: bench_features [--views N] [--cpu] [--dir DIR]\n");
+            fprintf(stderr, "usage: bench_features [--views N] [--cpu] [--threads N] [--dir DIR]\n");
             return 2;
         }
     }
@@ -102,7 +104,7 @@ int main(int argc, char **argv)
     double t_make = sp_time_now() - t0;
     sp_device *dev = NULL;
     sp_device_kind kind = !cpu && sp_cuda_available() ? SP_DEVICE_CUDA : SP_DEVICE_CPU;
-    if (sp_device_create(&dev, kind, 0, &err)) {
+    if (sp_device_create(&dev, kind, threads, &err)) {
         fprintf(stderr, "bench_features: %s\n", err.msg);
         return 1;
     }

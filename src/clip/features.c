@@ -10,9 +10,9 @@
 #include <unistd.h>
 
 #include <cJSON.h>
-#include <cblas.h>
 
 #include "clip_internal.h"
+#include "compat/sgemm_blocked.h"
 #include "features_internal.h"
 #include "semsplat/io.h"
 
@@ -308,13 +308,88 @@ static int encode_map(const encoder *e, const float *map, size_t cells, uint16_t
     if (!code) return sp_error_set(err, SP_E_NOMEM, "out of memory");
     for (size_t c0 = 0; c0 < cells; c0 += chunk) {
         size_t nb = cells - c0 < chunk ? cells - c0 : chunk;
-        cblas_sgemm(CblasRowMajor, CblasNoTrans, CblasTrans, (int)nb, e->D, e->cols, 1.f, map + c0 * e->cols, e->cols,
-                    e->table, e->cols, 0.f, code, e->D);
+        /* on the calling thread: the images themselves run in parallel */
+        if (sp_sgemm_blocked(NULL, 0, 1, (int)nb, e->D, e->cols, 1.f, map + c0 * e->cols, e->cols, e->table, e->cols, 0.f,
+                             code, e->D)) {
+            free(code);
+            return sp_error_set(err, SP_E_NOMEM, "out of memory");
+        }
         for (size_t c = 0; c < nb; c++)
             for (int k = 0; k < e->D; k++) out[(c0 + c) * e->D + k] = sp_float_to_half(code[c * e->D + k] - e->offset[k]);
     }
     free(code);
     return 0;
+}
+
+/* Pass 2 for one image: its full map (from the cache, or computed again), its PCA codes, the
+ * map file. Touches nothing shared but read-only state, so images run in parallel. */
+typedef struct codes_job {
+    extract_ctx *x;
+    const encoder *enc;
+    const int *mw, *mh;
+    const char *const *files;
+    const char *cache_dir; /* NULL: maps are computed again */
+    int *rc;
+    sp_error *errs;
+} codes_job;
+
+static int write_codes(const codes_job *j, size_t i, sp_error *err)
+{
+    const extract_ctx *x = j->x;
+    char stem[512], path[2000];
+    float *map = NULL;
+    int w2 = 0, h2 = 0, rc, D = j->enc->D;
+    stem_of(x->model.images[i].name, stem, sizeof stem);
+    if (j->cache_dir) {
+        snprintf(path, sizeof path, "%s/%s.npy", j->cache_dir, stem);
+        sp_npy a;
+        if ((rc = sp_npy_read(path, &a, err))) return rc;
+        rc = sp_npy_to_f32(&a, &map, err);
+        sp_npy_free(&a);
+        unlink(path);
+        if (rc) return rc;
+    } else if ((rc = compute_map(j->x, i, &map, &w2, &h2, err))) {
+        return rc;
+    }
+    size_t cells = (size_t)j->mw[i] * j->mh[i];
+    uint16_t *h = malloc(cells * D * sizeof *h);
+    if (!h) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    else rc = encode_map(j->enc, map, cells, h, err);
+    size_t shape[3] = {(size_t)j->mh[i], (size_t)j->mw[i], (size_t)D};
+    sp_path_join(path, sizeof path, x->o->out_dir, j->files[i]);
+    if (!rc) rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
+    free(h);
+    free(map);
+    return rc;
+}
+
+static void codes_task(void *ctx, long i, int thread_id)
+{
+    codes_job *j = ctx;
+    (void)thread_id;
+    j->rc[i] = write_codes(j, (size_t)i, &j->errs[i]);
+}
+
+/* Every image's codes across the device's (or a temporary) pool; the first failing image's
+ * error is reported. */
+static int write_all_codes(extract_ctx *x, const encoder *enc, const int *mw, const int *mh, const char *const *files,
+                           const char *cache_dir, sp_error *err)
+{
+    size_t n = x->model.n_images;
+    codes_job j = {x, enc, mw, mh, files, cache_dir, calloc(n, sizeof(int)), calloc(n, sizeof(sp_error))};
+    sp_pool *pool = x->o->dev ? sp_device_pool(x->o->dev) : NULL, *own = NULL;
+    int rc = j.rc && j.errs ? 0 : sp_error_set(err, SP_E_NOMEM, "out of memory");
+    if (!rc && !pool && sp_pool_create(&own, 0, err) == 0) pool = own;
+    if (!rc) sp_pool_for(pool, (long)n, codes_task, &j);
+    for (size_t i = 0; !rc && i < n; i++)
+        if (j.rc[i]) {
+            rc = j.rc[i];
+            if (err) *err = j.errs[i];
+        }
+    sp_pool_free(own);
+    free(j.rc);
+    free(j.errs);
+    return rc;
 }
 
 int sp_features_extract(const sp_features_opts *opts, sp_error *err)
@@ -393,33 +468,7 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
     sp_logf(o.log, SP_LOG_INFO, "PCA %d -> %d on %zu pixel features", F, D, n_samp);
     if ((rc = clip_pca_fit_dev(o.dev, samples, n_samp, F, D, mean, basis, err))) goto done;
     if ((rc = encoder_make(&x, mean, basis, D, &enc, err))) goto done;
-    for (size_t i = 0; i < n; i++) {
-        float *map = NULL;
-        int w2 = 0, h2 = 0;
-        char stem[512];
-        stem_of(x.model.images[i].name, stem, sizeof stem);
-        if (cache) {
-            snprintf(path, sizeof path, "%s/%s.npy", cache_dir, stem);
-            sp_npy a;
-            if ((rc = sp_npy_read(path, &a, err))) goto done;
-            rc = sp_npy_to_f32(&a, &map, err);
-            sp_npy_free(&a);
-            unlink(path);
-            if (rc) goto done;
-        } else if ((rc = compute_map(&x, i, &map, &w2, &h2, err))) {
-            goto done;
-        }
-        size_t cells = (size_t)mw[i] * mh[i];
-        uint16_t *h = malloc(cells * D * sizeof *h);
-        if (!h) { free(map); rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
-        rc = encode_map(&enc, map, cells, h, err);
-        size_t shape[3] = {(size_t)mh[i], (size_t)mw[i], (size_t)D};
-        sp_path_join(path, sizeof path, o.out_dir, files[i]);
-        if (!rc) rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
-        free(h);
-        free(map);
-        if (rc) goto done;
-    }
+    if ((rc = write_all_codes(&x, &enc, mw, mh, (const char *const *)files, cache ? cache_dir : NULL, err))) goto done;
     if (cache) rmdir(cache_dir);
     size_t s1 = (size_t)F, s2[2] = {(size_t)D, (size_t)F};
     sp_path_join(path, sizeof path, o.out_dir, "pca_mean.npy");

@@ -5,6 +5,7 @@
 #include "semsplat/io.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <cpuid.h>
 #include <immintrin.h>
 
 __attribute__((target("avx,f16c"))) static void to_half_f16c(const float *src, uint16_t *dst, size_t n)
@@ -15,10 +16,16 @@ __attribute__((target("avx,f16c"))) static void to_half_f16c(const float *src, u
     for (; i < n; i++) dst[i] = sp_float_to_half(src[i]);
 }
 
+/* CPUID leaf 1: F16C (ecx 29), AVX (ecx 28), OSXSAVE (ecx 27); and the OS saves the YMM state
+ * (XCR0 bits 1 and 2). Through cpuid.h and xgetbv, which GCC and clang both take. */
 static int have_f16c(void)
 {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("f16c") && __builtin_cpu_supports("avx");
+    unsigned a, b, c, d, lo, hi;
+    if (!__get_cpuid(1, &a, &b, &c, &d)) return 0;
+    if (!(c & (1u << 29)) || !(c & (1u << 28)) || !(c & (1u << 27))) return 0;
+    __asm__ volatile("xgetbv" : "=a"(lo), "=d"(hi) : "c"(0));
+    (void)hi;
+    return (lo & 6u) == 6u;
 }
 #else
 static void to_half_f16c(const float *src, uint16_t *dst, size_t n)
