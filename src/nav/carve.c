@@ -1,0 +1,163 @@
+/* Free space from the training cameras: each view is rendered (depth and alpha) at reduced size,
+ * and every ray that hits a surface marks the cells it crosses inside the robot's height band as
+ * seen, up to a little before the surface (and the hit cell itself when the surface is the
+ * floor). Space no ray crossed stays unknown. The same renders count, per Gaussian, the training
+ * views that see it (the coverage behind localizability). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "nav_internal.h"
+
+#define FLOOR_HIT_M 0.08f      /* a surface this close to the floor height is the floor */
+#define VIS_MIN_ALPHA 0.3f     /* pixels with less alpha have no usable depth for visibility */
+#define VIS_DEPTH_REL 1.05f    /* a Gaussian in front of rendered depth x this + VIS_DEPTH_ABS */
+#define VIS_DEPTH_ABS 0.05f
+
+int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
+                 void *ctx)
+{
+    double gx = (a[0] - cm->origin[0]) / cm->res, gy = (a[1] - cm->origin[1]) / cm->res;
+    double dx = (b[0] - cm->origin[0]) / cm->res - gx, dy = (b[1] - cm->origin[1]) / cm->res - gy;
+    int ix = (int)floor(gx), iy = (int)floor(gy);
+    int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
+    double tdx = dx != 0 ? fabs(1.0 / dx) : INFINITY, tdy = dy != 0 ? fabs(1.0 / dy) : INFINITY;
+    double tmx = dx != 0 ? ((sx > 0 ? ix + 1 - gx : gx - ix) * tdx) : INFINITY;
+    double tmy = dy != 0 ? ((sy > 0 ? iy + 1 - gy : gy - iy) * tdy) : INFINITY;
+    double t = 0;
+    long steps = (long)(fabs(dx) + fabs(dy)) + 4;
+    for (long k = 0; k <= steps; k++) {
+        double tn = fmin(fmin(tmx, tmy), 1.0);
+        if (nav_inside(cm, ix, iy)) {
+            int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
+            if (rc) return rc;
+        }
+        if (tn >= 1.0) break;
+        t = tn;
+        if (fabs(tmx - tmy) < 1e-9) { /* through a corner: both side cells touch the segment */
+            int rc = 0;
+            if (nav_inside(cm, ix + sx, iy)) rc = fn(ctx, nav_idx(cm, ix + sx, iy), (float)t, (float)t);
+            if (!rc && nav_inside(cm, ix, iy + sy)) rc = fn(ctx, nav_idx(cm, ix, iy + sy), (float)t, (float)t);
+            if (rc) return rc;
+            ix += sx, iy += sy;
+            tmx += tdx, tmy += tdy;
+        } else if (tmx < tmy) {
+            ix += sx;
+            tmx += tdx;
+        } else {
+            iy += sy;
+            tmy += tdy;
+        }
+    }
+    return 0;
+}
+
+typedef struct ray_ctx {
+    uint16_t *seen;
+    float z0, dz;      /* z(t) = z0 + t dz */
+    float t_stop;      /* carve up to here */
+    float band_lo, band_hi;
+} ray_ctx;
+
+static int carve_cell(void *vctx, long cell, float t0, float t1)
+{
+    ray_ctx *c = vctx;
+    if (t0 >= c->t_stop) return 1;
+    float te = fminf(t1, c->t_stop);
+    float za = c->z0 + t0 * c->dz, zb = c->z0 + te * c->dz;
+    float lo = fminf(za, zb), hi = fmaxf(za, zb);
+    if (hi >= c->band_lo && lo <= c->band_hi && c->seen[cell] < UINT16_MAX) c->seen[cell]++;
+    return 0;
+}
+
+/* Carves the rays of one rendered view (expected depth and alpha at cam's size). */
+static void carve_view(const sp_costmap *cm, const sp_camera *cam, const float *depth,
+                       const float *alpha, const sp_costmap_opts *o, uint16_t *seen)
+{
+    sp_vec3 C = sp_camera_center(cam);
+    ray_ctx rc = {seen, C.z, 0, 1, cm->band[0], cm->band[1]};
+    float Rt[9];
+    sp_mat3_transpose(cam->R, Rt);
+    for (int v = 0; v < cam->height; v++)
+        for (int u = 0; u < cam->width; u++) {
+            long p = (long)v * cam->width + u;
+            if (!(alpha[p] >= o->carve_alpha)) continue;
+            float d = depth[p]; /* expected depth along the optical axis */
+            if (!(d > 0)) continue;
+            sp_vec3 dc = sp_v3((u + 0.5f - cam->cx) / cam->fx, (v + 0.5f - cam->cy) / cam->fy, 1.0f);
+            sp_vec3 dw = sp_mat3_apply(Rt, dc);
+            float len = d * sp_v3_norm(dw);
+            int cut = len > o->max_range_m;
+            if (cut) d *= o->max_range_m / len, len = o->max_range_m;
+            sp_vec3 P = sp_v3_add(C, sp_v3_scale(dw, d));
+            rc.dz = P.z - C.z;
+            rc.t_stop = cut ? 1.0f : fmaxf(0.0f, 1.0f - o->carve_stop_m / len);
+            float a[2] = {C.x, C.y}, b[2] = {P.x, P.y};
+            nav_traverse(cm, a, b, carve_cell, &rc);
+            if (!cut && fabsf(P.z - cm->floor_z) < FLOOR_HIT_M) {
+                int ix, iy;
+                if (!sp_costmap_cell(cm, P.x, P.y, &ix, &iy) && seen[nav_idx(cm, ix, iy)] < UINT16_MAX)
+                    seen[nav_idx(cm, ix, iy)]++;
+            }
+        }
+}
+
+/* Counts the view for every opaque Gaussian whose centre projects into it in front of the
+ * rendered surface. */
+static void count_visible(const sp_splat *s, const sp_camera *cam, const float *depth,
+                          const float *alpha, float min_opacity, uint16_t *counts)
+{
+    for (size_t i = 0; i < s->n; i++) {
+        if (counts[i] == UINT16_MAX || sp_sigmoid(s->opacity_logits[i]) < min_opacity) continue;
+        const float *m = s->means + 3 * i;
+        sp_vec3 pc = sp_v3_add(sp_mat3_apply(cam->R, sp_v3(m[0], m[1], m[2])),
+                               sp_v3(cam->t[0], cam->t[1], cam->t[2]));
+        if (pc.z < 0.05f) continue;
+        int u = (int)floorf(cam->fx * pc.x / pc.z + cam->cx), v = (int)floorf(cam->fy * pc.y / pc.z + cam->cy);
+        if (u < 0 || v < 0 || u >= cam->width || v >= cam->height) continue;
+        long p = (long)v * cam->width + u;
+        if (alpha[p] < VIS_MIN_ALPHA) continue;
+        if (pc.z <= depth[p] * VIS_DEPTH_REL + VIS_DEPTH_ABS) counts[i]++;
+    }
+}
+
+int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+              const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
+              sp_error *err)
+{
+    size_t cap = 0;
+    float *depth = NULL, *alpha = NULL;
+    sp_progress pr;
+    sp_progress_begin(&pr, log, "carve", (long)n_cams, "views");
+    int rc = 0;
+    for (size_t c = 0; c < n_cams && !rc; c++) {
+        sp_camera cam = cams[c];
+        cam.distortion = SP_DIST_NONE;
+        if (o->carve_downscale > 1) sp_camera_downscale(&cam, o->carve_downscale);
+        if (cam.width < 1 || cam.height < 1) continue;
+        size_t np = (size_t)cam.width * cam.height;
+        if (np > cap) {
+            free(depth), free(alpha);
+            depth = malloc(sizeof(float) * np);
+            alpha = malloc(sizeof(float) * np);
+            cap = np;
+            if (!depth || !alpha) {
+                rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu-pixel renders", np);
+                break;
+            }
+        }
+        sp_render_request req;
+        memset(&req, 0, sizeof req);
+        req.depth = depth;
+        req.alpha = alpha;
+        if ((rc = sp_render_splat(r, s, &cam, &req, err))) {
+            sp_error_prefix(err, "costmap: rendering training view %zu for carving: ", c);
+            break;
+        }
+        carve_view(cm, &cam, depth, alpha, o, out->seen);
+        if (out->view_counts) count_visible(s, &cam, depth, alpha, o->min_opacity, out->view_counts);
+        sp_progress_update(&pr, (long)c + 1, NULL);
+    }
+    sp_progress_end(&pr, NULL);
+    free(depth), free(alpha);
+    return rc;
+}

@@ -1,0 +1,411 @@
+/* The costmap from the splat: floor detection, map bounds, opacity-weighted Gaussian footprints
+ * in the robot's height band, then free space from the carving pass (carve.c) and Nav2-style
+ * inflation (inflate.c). First stage of navigation, fed by the model folder's splat.ply. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "nav_internal.h"
+
+#define FLOOR_BIN_M 0.02f     /* floor histogram bin */
+#define FLOOR_MIN_OPACITY 0.5f
+#define FLOOR_FLATNESS 0.5f   /* smallest scale / middle scale below this is a flat Gaussian */
+#define FLOOR_NZ 0.9f         /* its normal within ~25 degrees of vertical */
+#define BOUNDS_QUANTILE 0.001 /* robust map bounds: drop this share of band Gaussians per side */
+
+sp_costmap_opts sp_costmap_opts_default(void)
+{
+    sp_costmap_opts o;
+    memset(&o, 0, sizeof o);
+    o.resolution_m = 0.05f;
+    o.band_lo_m = 0.05f;
+    o.band_hi_m = 1.0f;
+    o.floor_z = NAN;
+    o.robot_radius_m = 0.2f;
+    o.inflation_radius_m = 1.0f;
+    o.cost_scaling_factor = 3.0f;
+    o.keep_clear_of_unknown = 1;
+    o.min_opacity = 0.15f;
+    o.footprint_sigmas = 1.5f;
+    o.occupied_evidence = 0.5f;
+    o.carve_downscale = 4;
+    o.carve_alpha = 0.5f;
+    o.carve_stop_m = 0.1f;
+    o.max_range_m = 8.0f;
+    o.margin_m = 0.5f;
+    o.max_cells = 4096;
+    return o;
+}
+
+void sp_costmap_free(sp_costmap *cm)
+{
+    if (!cm) return;
+    free(cm->occ);
+    free(cm->cost);
+    free(cm->dist);
+    free(cm->seen);
+    memset(cm, 0, sizeof *cm);
+}
+
+int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err)
+{
+    memset(dst, 0, sizeof *dst);
+    size_t n = (size_t)src->nx * src->ny;
+    *dst = *src;
+    dst->occ = malloc(n);
+    dst->cost = malloc(n);
+    dst->dist = malloc(n * sizeof(float));
+    dst->seen = src->seen ? malloc(n * sizeof(uint16_t)) : NULL;
+    if (!dst->occ || !dst->cost || !dst->dist || (src->seen && !dst->seen)) {
+        sp_costmap_free(dst);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory copying %zu cells", n);
+    }
+    memcpy(dst->occ, src->occ, n);
+    memcpy(dst->cost, src->cost, n);
+    memcpy(dst->dist, src->dist, n * sizeof(float));
+    if (src->seen) memcpy(dst->seen, src->seen, n * sizeof(uint16_t));
+    return SP_OK;
+}
+
+int sp_costmap_cell(const sp_costmap *cm, float x, float y, int *ix, int *iy)
+{
+    *ix = (int)floorf((x - cm->origin[0]) / cm->res);
+    *iy = (int)floorf((y - cm->origin[1]) / cm->res);
+    return nav_inside(cm, *ix, *iy) ? 0 : -1;
+}
+
+void sp_costmap_cell_center(const sp_costmap *cm, int ix, int iy, float xy[2])
+{
+    xy[0] = cm->origin[0] + ((float)ix + 0.5f) * cm->res;
+    xy[1] = cm->origin[1] + ((float)iy + 0.5f) * cm->res;
+}
+
+int sp_costmap_traversable(const sp_costmap *cm, int ix, int iy)
+{
+    if (!nav_inside(cm, ix, iy)) return 0;
+    long i = nav_idx(cm, ix, iy);
+    return cm->occ[i] == SP_CELL_FREE && cm->cost[i] < SP_COST_INSCRIBED;
+}
+
+/* ---- Gaussian geometry ------------------------------------------------------------------------ */
+
+/* World covariance of Gaussian i (row-major 3x3) and its opacity. */
+static float gauss_cov(const sp_splat *s, size_t i, float C[9])
+{
+    float R[9], sc[3];
+    sp_quat_to_mat3(s->quats + 4 * i, R);
+    for (int k = 0; k < 3; k++) sc[k] = expf(2.0f * s->log_scales[3 * i + k]);
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            C[a * 3 + b] = R[a * 3] * R[b * 3] * sc[0] + R[a * 3 + 1] * R[b * 3 + 1] * sc[1] +
+                           R[a * 3 + 2] * R[b * 3 + 2] * sc[2];
+    return sp_sigmoid(s->opacity_logits[i]);
+}
+
+/* |z component| of the axis of Gaussian i's smallest scale, and flatness (smallest / middle). */
+static void gauss_normal(const sp_splat *s, size_t i, float *nz, float *flat)
+{
+    const float *ls = s->log_scales + 3 * i;
+    int a = 0;
+    for (int k = 1; k < 3; k++)
+        if (ls[k] < ls[a]) a = k;
+    float mid = INFINITY;
+    for (int k = 0; k < 3; k++)
+        if (k != a && ls[k] < mid) mid = ls[k];
+    float R[9];
+    sp_quat_to_mat3(s->quats + 4 * i, R);
+    *nz = fabsf(R[6 + a]); /* column a of R is the axis; its z component is row 2 */
+    *flat = expf(ls[a] - mid);
+}
+
+/* The floor: the heaviest 2 cm band of flat, horizontal, opaque Gaussians below the median
+ * camera height, weighted by area x opacity; refined to the weighted mean z within the band. */
+static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, float *floor_z,
+                        sp_error *err)
+{
+    float *zc = malloc(sizeof(float) * n_cams);
+    if (!zc) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    for (size_t c = 0; c < n_cams; c++) zc[c] = sp_camera_center(&cams[c]).z;
+    /* median camera height by partial selection (n_cams is small) */
+    for (size_t a = 0; a <= n_cams / 2; a++)
+        for (size_t b = a + 1; b < n_cams; b++)
+            if (zc[b] < zc[a]) {
+                float t = zc[a];
+                zc[a] = zc[b], zc[b] = t;
+            }
+    float z_top = zc[n_cams / 2];
+    free(zc);
+    float z_min = INFINITY;
+    for (size_t i = 0; i < s->n; i++)
+        if (s->means[3 * i + 2] < z_min && s->means[3 * i + 2] > z_top - 20.0f) z_min = s->means[3 * i + 2];
+    if (!(z_min < z_top))
+        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no Gaussians below the cameras (median "
+                            "camera height %.2f m): cannot find the floor", z_top);
+    int nb = (int)ceilf((z_top - z_min) / FLOOR_BIN_M) + 1;
+    double *hist = calloc((size_t)nb, sizeof(double));
+    if (!hist) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2];
+        if (!(z >= z_min && z < z_top)) continue;
+        float op = sp_sigmoid(s->opacity_logits[i]), nz, flat;
+        if (op < FLOOR_MIN_OPACITY) continue;
+        gauss_normal(s, i, &nz, &flat);
+        if (nz < FLOOR_NZ || flat > FLOOR_FLATNESS) continue;
+        const float *ls = s->log_scales + 3 * i;
+        float area = expf(ls[0] + ls[1] + ls[2] - fminf(ls[0], fminf(ls[1], ls[2])));
+        hist[(int)((z - z_min) / FLOOR_BIN_M)] += (double)op * area;
+    }
+    int best = -1;
+    for (int b = 0; b < nb; b++)
+        if (hist[b] > 0 && (best < 0 || hist[b] > hist[best])) best = b;
+    free(hist);
+    if (best < 0)
+        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no flat horizontal Gaussians below the "
+                            "cameras: cannot find the floor (give floor_z)");
+    float lo = z_min + (best - 1) * FLOOR_BIN_M, hi = z_min + (best + 2) * FLOOR_BIN_M;
+    double sw = 0, sz = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2];
+        if (!(z >= lo && z < hi)) continue;
+        float op = sp_sigmoid(s->opacity_logits[i]), nz, flat;
+        if (op < FLOOR_MIN_OPACITY) continue;
+        gauss_normal(s, i, &nz, &flat);
+        if (nz < FLOOR_NZ || flat > FLOOR_FLATNESS) continue;
+        sw += op;
+        sz += (double)op * z;
+    }
+    *floor_z = (float)(sz / sw);
+    return SP_OK;
+}
+
+/* Share of a 1-D Gaussian (mean m, std sd) inside [lo, hi]. */
+static float band_fraction(float m, float sd, float lo, float hi)
+{
+    float k = 1.0f / (sd * 1.41421356f);
+    return 0.5f * (erff((hi - m) * k) - erff((lo - m) * k));
+}
+
+static int cmp_float(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+/* Bounds: the band Gaussians (robust quantiles) and the cameras, plus the margin. */
+static int map_bounds(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                      const sp_costmap_opts *o, sp_error *err)
+{
+    size_t n = 0;
+    float *xs = malloc(sizeof(float) * (s->n + 1)), *ys = malloc(sizeof(float) * (s->n + 1));
+    if (!xs || !ys) {
+        free(xs), free(ys);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    }
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2];
+        if (z < cm->band[0] || z > cm->band[1]) continue;
+        if (sp_sigmoid(s->opacity_logits[i]) < o->min_opacity) continue;
+        xs[n] = s->means[3 * i], ys[n] = s->means[3 * i + 1];
+        n++;
+    }
+    float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    if (n > 0) {
+        qsort(xs, n, sizeof(float), cmp_float);
+        qsort(ys, n, sizeof(float), cmp_float);
+        size_t a = (size_t)(BOUNDS_QUANTILE * n), b = n - 1 - a;
+        lo[0] = xs[a], hi[0] = xs[b], lo[1] = ys[a], hi[1] = ys[b];
+    }
+    free(xs), free(ys);
+    for (size_t c = 0; c < n_cams; c++) {
+        sp_vec3 p = sp_camera_center(&cams[c]);
+        lo[0] = fminf(lo[0], p.x), hi[0] = fmaxf(hi[0], p.x);
+        lo[1] = fminf(lo[1], p.y), hi[1] = fmaxf(hi[1], p.y);
+    }
+    float res = o->resolution_m;
+    for (int k = 0; k < 2; k++) {
+        lo[k] = floorf((lo[k] - o->margin_m) / res) * res;
+        hi[k] = ceilf((hi[k] + o->margin_m) / res) * res;
+    }
+    double nx = ceil((hi[0] - lo[0]) / res), ny = ceil((hi[1] - lo[1]) / res);
+    if (nx > o->max_cells || ny > o->max_cells)
+        return sp_error_set(err, SP_E_UNSUPPORTED,
+                            "costmap: the observed space spans %.1f x %.1f m, %.0f x %.0f cells at "
+                            "%.3f m, over max_cells %d: use a coarser resolution",
+                            hi[0] - lo[0], hi[1] - lo[1], nx, ny, res, o->max_cells);
+    cm->nx = (int)nx, cm->ny = (int)ny;
+    cm->res = res;
+    cm->origin[0] = lo[0], cm->origin[1] = lo[1];
+    return SP_OK;
+}
+
+/* Accumulates log(1 - w) per cell over the band Gaussians' footprints, w = opacity x (share of
+ * the Gaussian's vertical mass inside the band), for every cell its footprint meets: the ellipse
+ * at footprint_sigmas of the xy marginal, grown by half a cell (the Minkowski sum with a disk of
+ * radius res/2, as the covariance k^2 S + (res/2)^2 I), so a cell counts when any part of it is
+ * covered, not only its centre. No soft tails: a wall stacks tens of Gaussians in one column,
+ * and their tails would add up to a phantom obstacle beside it. */
+static void splat_footprints(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o,
+                             float *log_free)
+{
+    const float grow = 0.25f * cm->res * cm->res, k2 = o->footprint_sigmas * o->footprint_sigmas;
+    for (size_t i = 0; i < s->n; i++) {
+        float C[9];
+        float op = gauss_cov(s, i, C);
+        if (op < o->min_opacity) continue;
+        const float *m = s->means + 3 * i;
+        float sz = sqrtf(C[8]);
+        if (m[2] + 3.0f * sz < cm->band[0] || m[2] - 3.0f * sz > cm->band[1]) continue;
+        float w = op * band_fraction(m[2], fmaxf(sz, 1e-6f), cm->band[0], cm->band[1]);
+        if (w < 0.02f) continue;
+        w = fminf(w, 0.999f);
+        float lw = log1pf(-w);
+        float a = k2 * C[0] + grow, b = k2 * C[1], c = k2 * C[4] + grow, det = a * c - b * b;
+        if (!(det > 0)) continue;
+        float ia = c / det, ib = -b / det, ic = a / det;
+        float rx = sqrtf(a), ry = sqrtf(c);
+        int x0, y0, x1, y1;
+        sp_costmap_cell(cm, m[0] - rx, m[1] - ry, &x0, &y0);
+        sp_costmap_cell(cm, m[0] + rx, m[1] + ry, &x1, &y1);
+        if (x0 < 0) x0 = 0;
+        if (y0 < 0) y0 = 0;
+        if (x1 >= cm->nx) x1 = cm->nx - 1;
+        if (y1 >= cm->ny) y1 = cm->ny - 1;
+        for (int iy = y0; iy <= y1; iy++)
+            for (int ix = x0; ix <= x1; ix++) {
+                float p[2];
+                sp_costmap_cell_center(cm, ix, iy, p);
+                float dx = p[0] - m[0], dy = p[1] - m[1];
+                if (ia * dx * dx + 2 * ib * dx * dy + ic * dy * dy <= 1.0f) log_free[nav_idx(cm, ix, iy)] += lw;
+            }
+    }
+}
+
+/* Unknown pockets enclosed by occupied cells (the insides of solid furniture and walls, which no
+ * ray reaches and no Gaussian covers) become occupied: a 4-connected unknown component that
+ * touches neither a free cell nor the map's border. */
+static int fill_enclosed(sp_costmap *cm)
+{
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *queue = malloc(sizeof(int32_t) * n);
+    uint8_t *mark = calloc(n, 1);
+    if (!queue || !mark) {
+        free(queue), free(mark);
+        return -1;
+    }
+    for (size_t seed = 0; seed < n; seed++) {
+        if (cm->occ[seed] != SP_CELL_UNKNOWN || mark[seed]) continue;
+        long head = 0, tail = 0;
+        int open = 0;
+        queue[tail++] = (int32_t)seed;
+        mark[seed] = 1;
+        while (head < tail) {
+            long c = queue[head++];
+            int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
+            for (int k = 0; k < 4; k++) {
+                int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
+                if (!nav_inside(cm, x, y)) {
+                    open = 1;
+                    continue;
+                }
+                long j = nav_idx(cm, x, y);
+                if (cm->occ[j] == SP_CELL_FREE) open = 1;
+                if (cm->occ[j] != SP_CELL_UNKNOWN || mark[j]) continue;
+                mark[j] = 1;
+                queue[tail++] = (int32_t)j;
+            }
+        }
+        if (!open)
+            for (long q = 0; q < tail; q++) cm->occ[queue[q]] = SP_CELL_OCCUPIED;
+    }
+    free(queue), free(mark);
+    return 0;
+}
+
+static int check_opts(const sp_costmap_opts *o, sp_error *err)
+{
+    if (!(o->resolution_m > 0.001f && o->resolution_m < 10.0f))
+        return sp_error_set(err, SP_E_ARG, "costmap: resolution_m %g not in (0.001, 10)", o->resolution_m);
+    if (!(o->band_hi_m > o->band_lo_m))
+        return sp_error_set(err, SP_E_ARG, "costmap: height band [%g, %g] m is empty", o->band_lo_m, o->band_hi_m);
+    if (!(o->robot_radius_m >= 0) || !(o->inflation_radius_m >= o->robot_radius_m))
+        return sp_error_set(err, SP_E_ARG, "costmap: robot radius %g m and inflation radius %g m "
+                            "(need 0 <= robot <= inflation)", o->robot_radius_m, o->inflation_radius_m);
+    if (!(o->cost_scaling_factor >= 0))
+        return sp_error_set(err, SP_E_ARG, "costmap: cost_scaling_factor %g < 0", o->cost_scaling_factor);
+    if (!(o->occupied_evidence > 0 && o->occupied_evidence < 1))
+        return sp_error_set(err, SP_E_ARG, "costmap: occupied_evidence %g not in (0, 1)", o->occupied_evidence);
+    if (o->carve_downscale < 1 || !(o->footprint_sigmas > 0) || !(o->max_range_m > 0) || o->max_cells < 1)
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_downscale %d, footprint_sigmas %g, "
+                            "max_range_m %g, max_cells %d must be positive", o->carve_downscale,
+                            o->footprint_sigmas, o->max_range_m, o->max_cells);
+    return SP_OK;
+}
+
+int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                      const sp_costmap_opts *opts, sp_raster *r, uint16_t *view_counts,
+                      const sp_log *log, sp_error *err)
+{
+    memset(cm, 0, sizeof *cm);
+    sp_costmap_opts o = opts ? *opts : sp_costmap_opts_default();
+    int rc = check_opts(&o, err);
+    if (rc) return rc;
+    if (!s || !s->n || !cams || !n_cams || !r)
+        return sp_error_set(err, SP_E_ARG, "costmap: needs a splat with Gaussians, at least one "
+                            "training camera and a raster (got %zu Gaussians, %zu cameras)",
+                            s ? s->n : 0, n_cams);
+    double t0 = sp_time_now();
+    float floor_z = o.floor_z;
+    if (isnan(floor_z) && (rc = detect_floor(s, cams, n_cams, &floor_z, err))) return rc;
+    cm->floor_z = floor_z;
+    cm->band[0] = floor_z + o.band_lo_m;
+    cm->band[1] = floor_z + o.band_hi_m;
+    cm->opts = o;
+    if ((rc = map_bounds(cm, s, cams, n_cams, &o, err))) return rc;
+    size_t n = (size_t)cm->nx * cm->ny;
+    float *log_free = calloc(n, sizeof(float));
+    cm->occ = malloc(n);
+    cm->cost = malloc(n);
+    cm->dist = malloc(n * sizeof(float));
+    cm->seen = calloc(n, sizeof(uint16_t));
+    if (!log_free || !cm->occ || !cm->cost || !cm->dist || !cm->seen) {
+        free(log_free);
+        sp_costmap_free(cm);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells", cm->nx, cm->ny);
+    }
+    nav_carve_out co = {cm->seen, view_counts};
+    rc = nav_carve(cm, s, cams, n_cams, &o, r, &co, log, err);
+    if (rc) {
+        free(log_free);
+        sp_costmap_free(cm);
+        return rc;
+    }
+    splat_footprints(cm, s, &o, log_free);
+    const float occ_log = logf(1.0f - o.occupied_evidence);
+    long n_occ = 0, n_free = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (log_free[i] <= occ_log) cm->occ[i] = SP_CELL_OCCUPIED, n_occ++;
+        else if (cm->seen[i] > 0) cm->occ[i] = SP_CELL_FREE, n_free++;
+        else cm->occ[i] = SP_CELL_UNKNOWN;
+    }
+    free(log_free);
+    if (fill_enclosed(cm)) {
+        sp_costmap_free(cm);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    }
+    if ((rc = sp_costmap_inflate(cm, &o, err))) {
+        sp_costmap_free(cm);
+        return rc;
+    }
+    n_occ = 0;
+    for (size_t i = 0; i < n; i++) n_occ += cm->occ[i] == SP_CELL_OCCUPIED;
+    sp_logf(log, SP_LOG_INFO,
+            "costmap: %dx%d cells at %.3f m, floor z %.3f, band %.2f..%.2f m: %ld occupied, %ld "
+            "free, %ld unknown (%.0f ms)", cm->nx, cm->ny, cm->res, cm->floor_z, o.band_lo_m,
+            o.band_hi_m, n_occ, n_free, (long)n - n_occ - n_free, 1e3 * (sp_time_now() - t0));
+    return SP_OK;
+}
+
+int sp_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                     const sp_costmap_opts *opts, sp_raster *r, const sp_log *log, sp_error *err)
+{
+    return nav_costmap_build(cm, s, cams, n_cams, opts, r, NULL, log, err);
+}
