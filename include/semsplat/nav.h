@@ -4,10 +4,11 @@
  * Costmap (sp_costmap): a grid in the world's xy plane (z up, metres; default 5 cm cells) built
  * from the splat alone:
  *   - the floor is detected (the heaviest band of flat, horizontal Gaussians below the cameras);
- *   - occupied: opacity-weighted Gaussian footprints (the 1.5-sigma ellipse of each Gaussian's
- *     xy marginal, not its centre), w_i = opacity x the share of its vertical mass inside the
- *     robot's height band above the floor; a cell is occupied when 1 - prod(1 - w_i) over the
- *     footprints that meet it reaches a threshold (0.5);
+ *   - occupied: opacity-weighted Gaussian footprints (each Gaussian's xy marginal over its
+ *     extent, not its centre), fused in voxels (cells x 10 cm slices of the robot's height band
+ *     above the floor) with the rays of the carving below: a voxel is occupied when the
+ *     footprints' evidence 1 - prod(1 - w_i) reaches a threshold and the cameras did not see
+ *     through it, or when rendered surfaces end in it; a cell when one of its voxels is;
  *   - free: carved along the training cameras' rays to their rendered depth, where the ray passes
  *     through the height band (or ends on the floor), so space no camera saw stays UNKNOWN;
  *   - costs: Nav2's inflation (LETHAL 254 on obstacles, INSCRIBED 253 within the robot radius,
@@ -26,6 +27,15 @@
  * kept only when it shares at most max_share of its length with every better one and is at
  * most max_length_ratio times the best's length; fewer are returned, with a note saying why,
  * when the map allows fewer.
+ *
+ * Scene (sp_nav): a model folder's splat, cameras and query engine with its costmap. Goals in
+ * words resolve to the engine's instances; k trajectories are ranked by an itemized score
+ * (length, minimum and mean clearance, localizability: the worst waypoint's rendered coverage by
+ * well-observed Gaussians, semantic relevance: related concepts in view along the way), with
+ * previews rendered from the splat and a top-down map drawn with Cairo. Exploration covers a
+ * region in words with views, preferring poorly reconstructed ones, in a short tour.
+ * Descriptions list the household objects near an anchor with distances and relations.
+ * The scene is not thread safe (one per thread); plans it issued are kept under their ids.
  *
  * Ownership: sp_costmap and sp_path own their arrays (free with the *_free calls, which accept
  * zeroed structs). Functions return 0 or a negative SP_E_* code with err filled; outputs are
@@ -61,13 +71,27 @@ typedef struct sp_costmap_opts {
     float robot_radius_m;      /* inscribed radius (0.2) */
     float inflation_radius_m;  /* costs decay to 0 here (1.0) */
     float cost_scaling_factor; /* Nav2's exponential decay rate, 1/m (3.0: a smooth potential) */
-    int keep_clear_of_unknown; /* cells within the robot radius of unknown are INSCRIBED (1) */
+    int keep_clear_of_unknown; /* cells within the robot radius of unknown are INSCRIBED (0, as
+                                * Nav2's inflate_around_unknown: the path itself never enters unknown) */
     float min_opacity;         /* Gaussians fainter than this are ignored (0.15) */
-    float footprint_sigmas;    /* footprint = the xy ellipse at this many std devs (1.5) */
-    float occupied_evidence;   /* a cell is occupied when 1 - prod(1 - w_i) >= this (0.5) */
+    int min_views;             /* ... and those fewer training views see (floaters) (3) */
+    float footprint_sigmas;    /* footprints are evaluated out to this many std devs (3) */
+    float occupied_evidence;   /* a voxel is occupied when 1 - prod(1 - w_i) >= this (0.5) */
+    int free_needs_floor;      /* a cell is free only when its floor was seen or rays crossed all
+                                * of its slices (1); 0: any ray through the band frees it */
+    int cameras_stand;         /* the robot radius under every training camera is free: the
+                                * capture stood there (1; 0 for cameras held above furniture) */
+    float fill_max_area_m2;    /* free pockets enclosed by obstacles up to this area are the
+                                * insides of furniture and become occupied (4) */
+    float slice_m;             /* the band is fused in slices this tall (0.1; at most 32 slices) */
+    float pass_veto;           /* ... unless rays passed through it more than this x (1 + rays
+                                * that ended in it) times: a floater the cameras saw through (3) */
     int carve_downscale;       /* training views rendered at 1/this size for carving (4) */
     float carve_alpha;         /* rays with less accumulated alpha hit nothing: not carved (0.5) */
-    float carve_stop_m;        /* carving stops this short of the surface hit (0.1) */
+    float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */
+    float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (0.15:
+                                * expected depth composites Gaussian centres, several cm off on
+                                * a floor seen at a slant) */
     float max_range_m;         /* rays longer than this are cut (8) */
     float margin_m;            /* map bounds: observed space plus this (0.5) */
     int max_cells;             /* largest nx or ny accepted (4096) */
@@ -144,6 +168,22 @@ const char *sp_nav_status_name(int status); /* "ok", "goal occupied", ... */
  * unknown space. Returns the status; why (may be NULL, cap bytes) gets a sentence. */
 int sp_costmap_check_goal(const sp_costmap *cm, const float start[2], const float goal[2],
                           char *why, size_t cap);
+
+/* Agreement with a ground-truth floor plan on the same grid (truth [ny][nx]: 1 occupied, 0 free;
+ * e.g. sp_synth_floor_plan of the world in the same height band). */
+typedef struct sp_costmap_agreement {
+    long cells;            /* all cells */
+    long known;            /* cells marked free or occupied */
+    long agree;            /* known cells matching the truth */
+    long truth_occupied;   /* truly occupied cells */
+    long occupied_as_free; /* truly occupied, marked free: the unsafe error */
+    long free_as_occupied; /* truly free, marked occupied */
+    double agreement;      /* agree / known */
+    double occupied_free_rate; /* occupied_as_free / truth_occupied */
+    double known_fraction; /* known / cells */
+} sp_costmap_agreement;
+
+void sp_costmap_compare(const sp_costmap *cm, const uint8_t *truth, sp_costmap_agreement *out);
 
 /* ---- planning --------------------------------------------------------------------------------- */
 
@@ -232,6 +272,211 @@ float sp_path_share(const float *a, int na, int stride_a, const float *b, int nb
 /* Distance from the path's cells to the nearest occupied cell: minimum and length-weighted mean
  * over the waypoint polyline sampled at half a cell (metres). */
 void sp_path_clearance(const sp_costmap *cm, const sp_path *p, float *min_m, float *mean_m);
+
+/* ---- the navigation scene: a model folder's splat, semantics, cameras and costmap ------------- */
+
+/* Weights of the ranking's terms (any scale; the total is their weighted mean). */
+typedef struct sp_rank_weights {
+    float length;          /* shortest / this path's length (0.35) */
+    float clearance_min;   /* min(1, smallest clearance / clearance_ref_m) (0.20) */
+    float clearance_mean;  /* min(1, mean clearance / (2 clearance_ref_m)) (0.10) */
+    float localizability;  /* the worst waypoint's localizability, 0..1 (0.20) */
+    float semantic;        /* related concepts seen along the way, relative to the best (0.15) */
+} sp_rank_weights;
+
+sp_rank_weights sp_rank_weights_default(void);
+
+typedef struct sp_nav_opts {
+    sp_costmap_opts costmap;
+    sp_planner_opts planner;
+    sp_rank_weights weights;
+    int k;                     /* trajectories asked for by default (3) */
+    float approach_m;          /* object goals end within this of the footprint (0.55) */
+    float camera_height_m;     /* previews and localizability views, above the floor (0.8) */
+    float camera_pitch_deg;    /* downward tilt of views along the path (10) */
+    float preview_hfov_deg;    /* 70 */
+    int preview_width, preview_height; /* 320 x 240 */
+    int n_previews;            /* key waypoints per trajectory, the last at the goal (4) */
+    float loc_spacing_m;       /* localizability is evaluated at waypoints this far apart (0.5) */
+    int loc_width, loc_height; /* renders for localizability (64 x 48) */
+    int loc_views_full;        /* training views that make a Gaussian fully covered (3) */
+    float clearance_ref_m;     /* clearance worth a full score (0.5) */
+    float min_confidence;      /* instances below this confidence are not found (0.25) */
+    float near_m;              /* describe: objects this close to the anchor's footprint (1.5) */
+    float region_margin_m;     /* a region in words extends this far around its objects (1.0) */
+    int max_tour_poses;        /* explore: at most this many views (12) */
+    float tour_coverage;       /* explore: stop once this share of the region is seen (0.9) */
+    const char *vocabulary;    /* comma-separated household vocabulary; NULL = built in */
+} sp_nav_opts;
+
+sp_nav_opts sp_nav_opts_default(void);
+
+typedef struct sp_nav sp_nav;
+struct sp_query_engine;
+
+/* Opens a model folder: splat.ply, its cameras (the capture of semantic.json or train.json),
+ * the query engine when the folder has a semantic field, and builds the costmap (1 s or so on 2
+ * cores for a house). dev is borrowed and must outlive the scene. */
+int sp_nav_open(sp_nav **out, const char *model_dir, const sp_nav_opts *opts, sp_device *dev,
+                const sp_log *log, sp_error *err);
+/* The same from memory: engine (borrowed, may be NULL) supplies the splat and cameras, else
+ * splat and cams (copied) do; no phrases without an engine. */
+int sp_nav_create(sp_nav **out, struct sp_query_engine *engine, const sp_splat *splat,
+                  const sp_camera *cams, size_t n_cams, const sp_nav_opts *opts, sp_device *dev,
+                  const sp_log *log, sp_error *err);
+void sp_nav_free(sp_nav *nav);
+const sp_costmap *sp_nav_costmap(const sp_nav *nav);
+const sp_nav_opts *sp_nav_options(const sp_nav *nav);
+/* The default start: the first training camera's position on the floor (snapped to the nearest
+ * traversable cell) and its heading: x, y, yaw. */
+int sp_nav_default_start(const sp_nav *nav, float start[3], sp_error *err);
+
+/* ---- targets in words ---- */
+
+/* A phrase resolved into footprints: the query engine's instances (extent_min/max as the
+ * footprint); a region word the engine does not find (kitchen, bedroom, ...) resolves through
+ * the objects a household keeps there, and source says so. */
+typedef struct sp_nav_instance {
+    float position[3];
+    float z_min, z_max;
+    sp_nav_box box;
+    float confidence;
+} sp_nav_instance;
+
+typedef struct sp_nav_target {
+    char text[256];
+    int found;
+    float confidence;
+    int n;
+    sp_nav_instance inst[SP_NAV_MAX_BOXES];
+    char source[256];  /* "query", or "region: kitchen = refrigerator, sink, stove found" */
+} sp_nav_target;
+
+int sp_nav_resolve(sp_nav *nav, const char *phrase, sp_nav_target *t, sp_error *err);
+
+/* ---- k ranked trajectories with previews ---- */
+
+typedef struct sp_nav_score {
+    float length_m, clearance_min_m, clearance_mean_m, localizability, semantic; /* raw */
+    float t_length, t_clearance_min, t_clearance_mean, t_localizability, t_semantic; /* 0..1 */
+    float total;           /* weighted mean of the terms */
+    int weakest_waypoint;  /* the least localizable waypoint */
+} sp_nav_score;
+
+typedef struct sp_nav_preview {
+    int waypoint;          /* index into the path's waypoints */
+    float distance_m;      /* along the path */
+    float localizability;
+    float pose[5];         /* camera x, y, z, yaw, pitch */
+    int width, height;
+    uint8_t *rgb;          /* [height][width][3] */
+    char file[256];        /* written PNG (relative to the output folder), "" until written */
+} sp_nav_preview;
+
+typedef struct sp_nav_trajectory {
+    char id[48];           /* "<plan id>.<rank>" */
+    int rank;              /* 1 = best */
+    sp_path path;
+    sp_nav_score score;
+    float *loc;            /* [path.n] localizability per waypoint, NAN where not evaluated */
+    int n_previews;
+    sp_nav_preview *previews;
+    float share;           /* largest share of length with a better-planned route */
+} sp_nav_trajectory;
+
+typedef struct sp_nav_request {
+    const float *start;    /* x, y, yaw; NULL = sp_nav_default_start */
+    const char *to;        /* a phrase ("refrigerator"), or NULL for goal */
+    sp_nav_goal goal;      /* used when to is NULL */
+    int k;                 /* 0 = opts.k */
+    int instance;          /* with to: -1 = any instance (the path picks), else its index */
+    int previews;          /* 1 = render previews */
+} sp_nav_request;
+
+sp_nav_request sp_nav_request_default(void);
+
+typedef struct sp_nav_plan {
+    char id[32];           /* "plan-<n>", unique within the sp_nav */
+    sp_nav_target target;  /* when the request had a phrase */
+    sp_nav_goal goal;
+    float start[3];
+    int k, n;
+    sp_nav_trajectory *traj; /* [n] by rank */
+    int n_related;
+    char related[8][64];   /* concepts behind the semantic term, found ones first */
+    int related_found[8];
+    char note[320];        /* why fewer than k, or "" */
+    double ms_plan, ms_rank, ms_previews;
+} sp_nav_plan;
+
+int sp_nav_plan_request(sp_nav *nav, const sp_nav_request *req, sp_nav_plan *out, sp_error *err);
+void sp_nav_plan_free(sp_nav_plan *p);
+/* Writes out_dir/plan.json (every trajectory's waypoints, score terms, previews), map.pgm +
+ * map.yaml (Nav2 map_server), map.png (top-down: costmap, objects found, start, ranked paths,
+ * legend) and previews/ (views and one contact sheet per trajectory). Drawing needs Cairo:
+ * without it map.png and the sheets are skipped and the JSON says so. */
+int sp_nav_plan_write(sp_nav *nav, sp_nav_plan *p, const char *out_dir, sp_error *err);
+/* plan.json's text (malloc'd). */
+char *sp_nav_plan_json(const sp_nav *nav, const sp_nav_plan *p);
+/* A plan issued by this scene, by trajectory id ("plan-3.1"); NULL when unknown. The agent's
+ * commitments go through this: a goal is a trajectory this scene planned. */
+const sp_path *sp_nav_lookup(const sp_nav *nav, const char *trajectory_id);
+
+/* ---- exploration ---- */
+
+typedef struct sp_nav_tour {
+    sp_nav_target target;
+    sp_nav_box area;       /* the region explored */
+    int n;
+    float *poses;          /* [n][4] x, y, z, yaw in visiting order */
+    float *quality;        /* [n] how well the splat reconstructs each view (0..1: low = poor) */
+    float *gain;           /* [n] share of the region first seen from this pose */
+    float coverage;        /* share of the region's cells the tour sees */
+    sp_path path;          /* start -> every pose, as one path */
+    int n_previews;
+    sp_nav_preview *previews; /* one per pose */
+    char note[256];
+} sp_nav_tour;
+
+/* Views covering a region in words, preferring poses the splat reconstructs poorly, ordered into
+ * a short tour from start (NULL = default). */
+int sp_nav_explore(sp_nav *nav, const char *region, const float *start, sp_nav_tour *out,
+                   sp_error *err);
+void sp_nav_tour_free(sp_nav_tour *t);
+/* out_dir/tour.json, map.png, previews/. */
+int sp_nav_tour_write(sp_nav *nav, sp_nav_tour *t, const char *out_dir, sp_error *err);
+char *sp_nav_tour_json(const sp_nav_tour *t);
+
+/* ---- scene descriptions ---- */
+
+typedef struct sp_nav_object {
+    char name[64];         /* vocabulary term */
+    sp_nav_instance inst;
+    float distance_m;      /* footprint to the anchor's footprint */
+    int left;              /* as seen from the robot: 1 left of the anchor, -1 right, 0 in line */
+    int front;             /* 1 nearer the robot than the anchor, -1 behind it, 0 beside */
+    char region[32];       /* "kitchen", "" when none */
+} sp_nav_object;
+
+typedef struct sp_nav_description {
+    sp_nav_target anchor;
+    char anchor_region[32];
+    float robot[3];        /* the viewpoint of left / right */
+    int n;
+    sp_nav_object *objects; /* nearest first */
+    int n_queried;         /* vocabulary terms asked */
+    char *sentence;        /* malloc'd plain-language answer */
+} sp_nav_description;
+
+/* "What objects are near the dining table?": every vocabulary term's confident instances within
+ * radius_m (<= 0: opts.near_m) of the anchor's footprint, with distances and relations. */
+int sp_nav_describe(sp_nav *nav, const char *anchor, float radius_m, const float *robot,
+                    sp_nav_description *out, sp_error *err);
+void sp_nav_description_free(sp_nav_description *d);
+char *sp_nav_description_json(const sp_nav_description *d);
+
+/* The built-in household vocabulary (COCO's 80 classes and common household objects), n terms. */
+const char *const *sp_nav_vocabulary(int *n);
 
 #ifdef __cplusplus
 }

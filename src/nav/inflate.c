@@ -169,3 +169,22 @@ int sp_costmap_check_goal(const sp_costmap *cm, const float start[2], const floa
     }
     return SP_NAV_OK;
 }
+
+void sp_costmap_compare(const sp_costmap *cm, const uint8_t *truth, sp_costmap_agreement *out)
+{
+    memset(out, 0, sizeof *out);
+    out->cells = (long)cm->nx * cm->ny;
+    for (long i = 0; i < out->cells; i++) {
+        int t = truth[i] != 0;
+        out->truth_occupied += t;
+        if (cm->occ[i] == SP_CELL_UNKNOWN) continue;
+        int o = cm->occ[i] == SP_CELL_OCCUPIED;
+        out->known++;
+        out->agree += o == t;
+        out->occupied_as_free += t && !o;
+        out->free_as_occupied += !t && o;
+    }
+    out->agreement = out->known ? (double)out->agree / out->known : 0;
+    out->occupied_free_rate = out->truth_occupied ? (double)out->occupied_as_free / out->truth_occupied : 0;
+    out->known_fraction = out->cells ? (double)out->known / out->cells : 0;
+}

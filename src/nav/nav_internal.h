@@ -19,15 +19,34 @@ static inline long nav_idx(const sp_costmap *cm, int ix, int iy) { return (long)
  * contract as core's sp_edt2, which replaces it once the grid module lands. */
 int nav_edt2(const uint8_t *seed, int nx, int ny, float res, float *out, sp_error *err);
 
-/* Per-camera results of the carving renders that other stages reuse. */
+#define NAV_MAX_SLICES 32
+
+/* The height band is split into n_slices slices of (band height / n_slices); voxel (slice v,
+ * cell i) is index v * cells + i. */
+typedef struct nav_slices {
+    int n;
+    float z0, dz;          /* world z of slice 0's bottom, slice height */
+    long cells;            /* nx * ny */
+} nav_slices;
+
+static inline int nav_slice_of(const nav_slices *sl, float z)
+{
+    int v = (int)floorf((z - sl->z0) / sl->dz);
+    return v < 0 ? 0 : v >= sl->n ? sl->n - 1 : v;
+}
+
+/* What the carving renders measure, per voxel and per Gaussian. */
 typedef struct nav_carve_out {
-    uint16_t *seen;        /* [ny][nx] rays that carved the cell (owned by the costmap) */
+    nav_slices sl;
+    uint16_t *passes;      /* [slices][cells] rays that crossed the voxel (carved it) */
+    uint16_t *hits;        /* [slices][cells] rays whose surface point lies in the voxel */
+    uint16_t *floor_seen;  /* [cells] rays that ended on the floor there */
     uint16_t *view_counts; /* [n Gaussians] training views that see each Gaussian, or NULL */
 } nav_carve_out;
 
-/* Carves free space along the training cameras' rendered depth into out->seen (the grid of cm
- * must be set up) and, when out->view_counts is not NULL, counts per Gaussian the training
- * views in which its centre is in front of the rendered surface. */
+/* Carves free space along the training cameras' rendered depth into out (the grid of cm and
+ * out->sl must be set up, the counters zeroed) and, when out->view_counts is not NULL, counts
+ * per Gaussian the training views in which its centre is in front of the rendered surface. */
 int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
               const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
               sp_error *err);

@@ -63,15 +63,33 @@ static inline void ns_box_faces(sp_splat *s, size_t *n, size_t cap, const ns_box
         }
 }
 
+static inline int ns_overlap(const ns_box *b, float x0, float y0, float x1, float y1)
+{
+    return x0 < b->hi[0] && x1 > b->lo[0] && y0 < b->hi[1] && y1 > b->lo[1];
+}
+
+/* Ground truth of the cell [x0, x1) x [y0, y1) (world): 1 when a wall, the pillar (when present)
+ * or the table overlaps it. */
+static inline int ns_truth_cell(float x0, float y0, float x1, float y1, int with_pillar)
+{
+    x0 -= NS_OFFX, x1 -= NS_OFFX, y0 -= NS_OFFY, y1 -= NS_OFFY;
+    for (int k = 0; k < 4; k++)
+        if (ns_overlap(&ns_walls[k], x0, y0, x1, y1)) return 1;
+    if (with_pillar && ns_overlap(&ns_pillar, x0, y0, x1, y1)) return 1;
+    return ns_overlap(&ns_table, x0, y0, x1, y1);
+}
+
 static inline int ns_make_splat(sp_splat *s, int with_pillar, sp_error *err)
 {
     const float step = 0.05f;
     size_t cap = 200000, n = 0;
     int rc = sp_splat_alloc(s, cap, 0, 0, err);
     if (rc) return rc;
+    /* the floor where it can be seen: not under the walls, the pillar or the table */
     for (float x = 0.5f * step; x < 6.0f; x += step)
         for (float y = 0.5f * step; y < 4.0f; y += step) {
             float p[3] = {x, y, 0.0f};
+            if (ns_truth_cell(x + NS_OFFX, y + NS_OFFY, x + NS_OFFX, y + NS_OFFY, with_pillar)) continue;
             ns_push(s, &n, p, 2, 0.6f * step);
         }
     for (int k = 0; k < 4; k++) ns_box_faces(s, &n, cap, &ns_walls[k], step);
@@ -104,22 +122,6 @@ static inline int ns_make_cams(sp_camera **out, size_t *n_out, int w, int h)
     *out = cams;
     *n_out = n;
     return 0;
-}
-
-static inline int ns_overlap(const ns_box *b, float x0, float y0, float x1, float y1)
-{
-    return x0 < b->hi[0] && x1 > b->lo[0] && y0 < b->hi[1] && y1 > b->lo[1];
-}
-
-/* Ground truth of the cell [x0, x1) x [y0, y1) (world): 1 when a wall, the pillar (when present)
- * or the table overlaps it. */
-static inline int ns_truth_cell(float x0, float y0, float x1, float y1, int with_pillar)
-{
-    x0 -= NS_OFFX, x1 -= NS_OFFX, y0 -= NS_OFFY, y1 -= NS_OFFY;
-    for (int k = 0; k < 4; k++)
-        if (ns_overlap(&ns_walls[k], x0, y0, x1, y1)) return 1;
-    if (with_pillar && ns_overlap(&ns_pillar, x0, y0, x1, y1)) return 1;
-    return ns_overlap(&ns_table, x0, y0, x1, y1);
 }
 
 #endif
