@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 
 __attribute__((unused)) static int t_failures = 0, t_checks = 0, t_cases = 0, t_case_failed = 0;
 
@@ -85,6 +86,20 @@ static inline const char *test_tmpdir(const char *name)
     snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", buf, buf);
     if (system(cmd) != 0) fprintf(stderr, "cannot make %s\n", buf);
     return buf;
+}
+
+/* Runs `SP_BUILD_DIR/semsplat args` (stderr too) and returns its exit status (-1 when it did not
+ * exit), its output in out. */
+static inline int test_run_cli(const char *args, char *out, size_t cap)
+{
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
+    FILE *p = popen(cmd, "r");
+    if (!p) return -1;
+    size_t n = fread(out, 1, cap - 1, p);
+    out[n] = 0;
+    int st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
 /* Deterministic random numbers (xorshift64*), independent of libc. */

@@ -9,7 +9,7 @@
 #define SP_CMD(name) int cmd_##name(int argc, char **argv) __attribute__((weak));
 #define SP_COMMANDS(X) \
     X(info) X(render) X(synth) X(train) X(features) X(embed_text) X(lift) X(distill) X(query) \
-    X(align) X(demo) X(plan) X(explore) X(describe)
+    X(align) X(demo) X(agent) X(sim_robot) X(ros_goal) X(plan) X(explore) X(describe)
 SP_COMMANDS(SP_CMD)
 #undef SP_CMD
 
@@ -31,6 +31,9 @@ static const command commands[] = {
     {"query", cmd_query, "find a text query in the language-embedded splat"},
     {"align", cmd_align, "put a splat into the world frame (similarity / floor plane)"},
     {"demo", cmd_demo, "synth -> train -> features -> lift -> queries on the bundled house"},
+    {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
+    {"sim-robot", cmd_sim_robot, "a simulated robot serving Nav2 actions and /odom over ROS 2 DDS"},
+    {"ros-goal", cmd_ros_goal, "send a Nav2 goal / ask for a path / read the pose of a ROS 2 robot"},
     {"plan", cmd_plan, "k distinct ranked trajectories to an object, with previews and a map"},
     {"explore", cmd_explore, "views covering a region in words, ordered into a short tour"},
     {"describe", cmd_describe, "the objects near an anchor, with distances and relations"},

@@ -164,7 +164,8 @@ void sp_mat4_rigid_inverse(const float A[16], float Ainv[16]);
 
 /* ---- cameras --------------------------------------------------------------------------------- */
 
-/* Distortion models carried from COLMAP; the renderer itself is pinhole. */
+/* Distortion models carried from COLMAP; the renderer itself is pinhole (it ignores them), so
+ * images of a distorted camera are resampled (sp_camera_remap_*) before they meet renders. */
 typedef enum {
     SP_DIST_NONE = 0,
     SP_DIST_SIMPLE_RADIAL, /* k1 */
@@ -192,6 +193,26 @@ void sp_camera_look_at(sp_camera *cam, sp_vec3 eye, sp_vec3 target, sp_vec3 up);
 /* Scales intrinsics and size for an image downscaled by `factor` (>= 1). */
 void sp_camera_downscale(sp_camera *cam, int factor);
 
+/* ---- lens distortion ------------------------------------------------------------------------- */
+
+/* COLMAP's distortion of normalised image coordinates (u, v) = (x/z, y/z) for cam's model
+ * (SIMPLE_RADIAL k1; RADIAL k1 k2; OPENCV k1 k2 p1 p2; identity for SP_DIST_NONE). */
+void sp_camera_distort(const sp_camera *cam, double u, double v, double *ud, double *vd);
+/* Its inverse by Newton iteration on the 2x2 Jacobian: 0, or -1 (u, v = ud, vd) where it does not
+ * converge or the model folds back there (no ray has that image point). */
+int sp_camera_undistort(const sp_camera *cam, double ud, double vd, double *u, double *v);
+/* Resamples img [src.height][src.width][channels], as seen through the distorted camera src, into
+ * the pinhole camera dst (same pose; dst's size and intrinsics, its distortion ignored): each dst
+ * pixel centre's ray is distorted by src's model and src is sampled bilinearly there. Pixels
+ * whose ray falls outside src's image (or beyond the fold of its model) get zeros and mask 0;
+ * mask [dst.height][dst.width] may be NULL. */
+int sp_camera_remap_to_pinhole(const sp_camera *src, const float *img, int channels,
+                               const sp_camera *dst, float *out, uint8_t *mask, sp_error *err);
+/* The reverse: img from the pinhole camera src (its distortion ignored) into the pixels of the
+ * distorted camera dst, each dst pixel undistorted by Newton iteration. Same masking. */
+int sp_camera_remap_from_pinhole(const sp_camera *src, const float *img, int channels,
+                                 const sp_camera *dst, float *out, uint8_t *mask, sp_error *err);
+
 /* ---- Gaussians ------------------------------------------------------------------------------- */
 
 /* Number of SH coefficients per channel for degree d: (d+1)^2. */
@@ -216,6 +237,17 @@ typedef struct sp_splat {
     float *features;
 } sp_splat;
 
+/* The largest semantic feature dimension (feat_dim, the scene PCA's dim) any stage accepts:
+ * the query engine's scorer keeps a text's projections as SP_FEATURE_DIM_MAX floats (in GPU
+ * constant memory on CUDA) and a Gram matrix of its square. `features` refuses a larger --dim at
+ * once, feature folders and model folders that claim more are refused when opened, and lift
+ * refuses it, so no stage makes a model that no query can open. */
+#define SP_FEATURE_DIM_MAX 64
+
+/* 0 when 1 <= dim <= SP_FEATURE_DIM_MAX, else `code` with a message "<what>: feature dim D is
+ * outside 1..64 (the limit of 64 ...)" naming the value and the limit. */
+int sp_feature_dim_check(int dim, int code, const char *what, sp_error *err);
+
 /* Allocates n Gaussians (contents zeroed, quats set to identity). */
 int sp_splat_alloc(sp_splat *s, size_t n, int sh_degree, int feat_dim, sp_error *err);
 void sp_splat_free(sp_splat *s);
@@ -229,6 +261,55 @@ int sp_splat_check_finite(const sp_splat *s, sp_error *err);
 
 static inline float sp_sigmoid(float x) { return 1.0f / (1.0f + expf(-x)); }
 static inline float sp_logit(float p) { return logf(p / (1.0f - p)); }
+
+/* ---- grids and distance transforms ------------------------------------------------------------ */
+
+/* A regular 2D grid of floats over the world's x-y plane (row-major [ny][nx]; cell (ix, iy)
+ * covers [origin + i*res, origin + (i+1)*res) on each axis, row 0 at the origin's y, as Nav2's
+ * maps and PGM rows read bottom-up). Owns data. Used by view selection, synth's planner and
+ * navigation's costmap. */
+typedef struct sp_grid2 {
+    int nx, ny;
+    float res;       /* cell edge, world units (metres) */
+    float origin[2]; /* world x, y of cell (0,0)'s lower-left corner */
+    float *data;     /* [ny][nx] */
+} sp_grid2;
+
+/* The same in 3D ([nz][ny][nx], origin = the lower corner of voxel (0,0,0)). Owns data. */
+typedef struct sp_grid3 {
+    int nx, ny, nz;
+    float res;
+    float origin[3];
+    float *data; /* [nz][ny][nx] */
+} sp_grid3;
+
+/* Allocates a zeroed grid; fails with SP_E_ARG on non-positive sizes or res, SP_E_NOMEM when the
+ * cell count overflows or memory is short. *g is left zeroed on error. */
+int sp_grid2_alloc(sp_grid2 *g, int nx, int ny, float res, float origin_x, float origin_y,
+                   sp_error *err);
+int sp_grid3_alloc(sp_grid3 *g, int nx, int ny, int nz, float res, const float origin[3],
+                   sp_error *err);
+void sp_grid2_free(sp_grid2 *g);
+void sp_grid3_free(sp_grid3 *g);
+
+/* World point -> cell index; returns 1 when inside the grid (indices written either way,
+ * floor-rounded, so callers can clamp). */
+int sp_grid2_cell(const sp_grid2 *g, float x, float y, int *ix, int *iy);
+int sp_grid3_cell(const sp_grid3 *g, const float p[3], int idx[3]);
+/* Cell centre in world coordinates. */
+void sp_grid2_center(const sp_grid2 *g, int ix, int iy, float *x, float *y);
+void sp_grid3_center(const sp_grid3 *g, const int idx[3], float p[3]);
+
+/* Exact Euclidean distance transforms (Felzenszwalb & Huttenlocher, "Distance Transforms of
+ * Sampled Functions", 2012: separable lower envelopes of parabolas, O(cells)). out[i] is the
+ * distance, in world units (cells * res), from cell i's centre to the centre of the nearest
+ * cell whose seed is nonzero: 0 on seeds, INFINITY when there is no seed at all. seed and out
+ * are [ny][nx] (2D) or [nz][ny][nx] (3D); out may not alias seed. Runs across pool (may be
+ * NULL). Fails with SP_E_ARG on bad sizes, SP_E_NOMEM when scratch cannot be allocated. */
+int sp_edt2(const uint8_t *seed, int nx, int ny, float res, float *out, sp_pool *pool,
+            sp_error *err);
+int sp_edt3(const uint8_t *seed, int nx, int ny, int nz, float res, float *out, sp_pool *pool,
+            sp_error *err);
 
 /* ---- paths ----------------------------------------------------------------------------------- */
 

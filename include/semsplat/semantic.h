@@ -1,6 +1,7 @@
 /* semsplat semantic: the language-embedded splat and the query engine.
  *
- * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64) that
+ * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64 in
+ * practice, at most SP_FEATURE_DIM_MAX = 64 in core.h) that
  * decodes to the full text space as  mean + basis^T f  (basis rows orthonormal). It is made by
  *   - lifting: one pass over the training views; each Gaussian's feature is the compositing-weight
  *     average of the target features of the pixels it contributes to,
@@ -18,8 +19,9 @@
  *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
  *         no preference, used for thresholds and heatmaps.
  * Localization: 3D-native (relevant Gaussians -> opacity-weighted voxel clustering of centres into
- * instances) or multi-view (views that see the relevant Gaussians -> rendered features and depth
- * -> relevant pixels back-projected -> the same clustering). Things that are not there give low
+ * instances, 26-connected voxels of voxel_m) or multi-view (views that see the relevant Gaussians
+ * unoccluded -> rendered features and expected depth at 1/render_downscale -> relevant pixels
+ * with alpha > 0.9, eroded by one pixel, back-projected -> the same clustering). Things that are not there give low
  * confidence, valid = 0 and no position (NaN), never a random point.
  *
  * Ownership: sp_query_engine owns the splat, PCA, cameras and its raster; results own their
@@ -58,15 +60,16 @@ typedef struct sp_sem_scorer {
     int dim;
     int n_neg;
     float temperature;
-    float q0, qb[64];                                   /* the query */
-    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][64]; /* the negatives */
-    float m2, mb[64];
-    float G[64 * 64];
+    float q0, qb[SP_FEATURE_DIM_MAX];                   /* the query */
+    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][SP_FEATURE_DIM_MAX]; /* the negatives */
+    float m2, mb[SP_FEATURE_DIM_MAX];
+    float G[SP_FEATURE_DIM_MAX * SP_FEATURE_DIM_MAX];
     int orthonormal; /* G == I within 1e-4: |decode(f)|^2 = m2 + 2 mb.f + |f|^2 */
 } sp_sem_scorer;
 
 /* Prepares a scorer. query [full_dim] and negatives [n_neg][full_dim] need not be unit length.
- * Fails with SP_E_ARG when dim > 64, n_neg > SP_SEM_MAX_NEGATIVES or a vector is zero. */
+ * Fails with SP_E_ARG when dim > SP_FEATURE_DIM_MAX, n_neg > SP_SEM_MAX_NEGATIVES or a vector is
+ * zero. */
 int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *query,
                        const float *negatives, int n_neg, float temperature, sp_error *err);
 /* Raw cosine and calibrated relevancy of n features [n][dim] (either output may be NULL).
@@ -104,7 +107,9 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
                            sp_error *err);
 
 /* The same in memory: lifts the feature folder's maps (matched to the COLMAP images by name,
- * rendered at the maps' resolution) into s->features. */
+ * rendered at the maps' resolution) into s->features. Maps of images with a distorted camera
+ * (SIMPLE_RADIAL, RADIAL, OPENCV) are resampled into the pinhole camera the renderer uses
+ * (sp_camera_remap_to_pinhole), pixels the image did not see left out. */
 int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
                               sp_device *dev, const sp_log *log, sp_error *err);
 
@@ -122,13 +127,17 @@ typedef struct sp_query_opts {
     char negatives[256];   /* comma-separated canonical negatives ("" = SP_SEM_DEFAULT_NEGATIVES) */
     float temperature;     /* relevancy temperature (SP_SEM_DEFAULT_TEMPERATURE) */
     float min_confidence;  /* below this raw cosine the query is "not found" (0.2) */
-    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence (0.6) */
+    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence, and >= 0.1
+                            * (0.6) */
     float min_relevancy;   /* ... and calibrated relevancy >= this (0.55) */
     float min_opacity;     /* Gaussians fainter than this are ignored (0.1) */
     float voxel_m;         /* clustering voxel edge in world units (0.12) */
-    float min_instance_fraction; /* instances lighter than this share of the best are dropped (0.1) */
+    float min_instance_fraction; /* instances lighter than this share of the best are dropped
+                                  * (0.1; multi-view uses a third of it: an instance seen from
+                                  * few views sums fewer pixels) */
     int n_views;           /* multi-view: views rendered and back-projected, at least (4; up to
-                            * twice as many while under 90% of the relevant set is seen) */
+                            * three times as many while under 97% of the relevant set, by
+                            * opacity, is seen) */
     int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
     int heatmap;           /* render relevancy_image (1) */
     int heatmap_view;      /* -1 = best view, else an index into the cameras */
@@ -138,9 +147,10 @@ sp_query_opts sp_query_opts_default(void);
 
 typedef struct sp_query_instance {
     float position[3];   /* world frame */
-    float extent_min[3]; /* robust (2%..98%) bounds of the instance's points */
-    float extent_max[3];
-    float score;         /* summed weight of its points (opacity * relevancy excess) */
+    float extent_min[3]; /* robust bounds: the 5% and 95% weighted quantiles of its points per */
+    float extent_max[3]; /* axis; position is their middle */
+    float score;         /* summed weight of its points: 3D, opacity * (relevancy - 0.5);
+                          * multi-view, (relevancy - 0.5) * alpha * the pixel's area at its depth */
     float confidence;    /* largest raw cosine inside it */
     int n_points;        /* Gaussians (3D) or pixels (multi-view) */
 } sp_query_instance;
@@ -150,12 +160,15 @@ typedef struct sp_query_result {
     int method;          /* sp_query_method used */
     int valid;           /* 1 when confidence >= min_confidence and an instance was found */
     float position[3];   /* best instance (world frame); NaN when !valid */
-    float confidence;    /* largest raw cosine (robust max over Gaussians) */
+    float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
+                          * opacity >= min_opacity */
     float relevancy_max; /* largest calibrated relevancy */
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];
     int width, height;           /* of relevancy_image */
-    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made */
+    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made;
+                                  * in the pixels of image view_name: a distorted camera's
+                                  * pinhole render is resampled through its lens */
     float *relevancy;            /* [height][width] calibrated relevancy of that view, or NULL */
     int n_instances;
     sp_query_instance *instances; /* best first */
@@ -191,6 +204,7 @@ sp_query_opts *sp_query_engine_opts(sp_query_engine *e); /* change between queri
 int sp_query_engine_full_dim(const sp_query_engine *e);
 size_t sp_query_engine_n_cameras(const sp_query_engine *e);
 const sp_splat *sp_query_engine_splat(const sp_query_engine *e);
+/* Camera i as COLMAP has it, lens included (renders use its pinhole part). */
 const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
 
 /* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
@@ -213,6 +227,61 @@ void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int
  * 4x4 row-major transform [sR t; 0 1]. Fails on degenerate (collinear) input. */
 int sp_umeyama(const double *src, const double *dst, size_t n, int with_scale, double M[16],
                double *rms, sp_error *err);
+/* Matches between the COLMAP frame and the world (semsplat align --matches): src [n][3] a
+ * COLMAP-frame point (a camera centre for image lines), dst [n][3] its world position, name [n]
+ * the image ("" for a point match). Owns its arrays (sp_align_matches_free). */
+typedef struct sp_align_matches {
+    size_t n;
+    double *src, *dst;
+    char (*name)[256];
+} sp_align_matches;
+
+/* Reads lines 'IMAGE_NAME x y z' (that image's camera centre in colmap_dir's model -> the world
+ * point) or 'x y z X Y Z'; '#' comments. colmap_dir may be NULL when no line names an image.
+ * Errors name the file and line (bad numbers, an image the model does not have). */
+int sp_align_read_matches(const char *path, const char *colmap_dir, sp_align_matches *out,
+                          sp_error *err);
+void sp_align_matches_free(sp_align_matches *m);
+
+/* The robust frame fit refuses unless at least this many matches, and at least half of them,
+ * agree: 3 matches fix a similarity, the 4th is the first that can contradict it; least median
+ * of squares (the fit most matches agree with) has a breakdown point of one half, so with fewer
+ * than half agreeing it cannot tell the right fit from one made by the wrong matches. */
+#define SP_ALIGN_MIN_INLIERS 4
+/* ... and, with the automatic bound, unless that bound is at most this fraction of the spread of
+ * the matched world points (RMS distance from their mean): when more than half the matches are
+ * wrong the median residual is a wrong match's and the bound grows with it; a frame whose
+ * errors are a tenth of the scene is no frame. An explicit bound skips this test. */
+#define SP_ALIGN_MAX_BOUND_FRACTION 0.1
+
+/* A robust similarity fit. Owns inlier and residual (sp_align_fit_free). */
+typedef struct sp_align_fit {
+    double M[16];           /* world_from_colmap, row-major [sR t; 0 1], refitted on the inliers */
+    size_t n, n_inliers;
+    uint8_t *inlier;        /* [n] 1 = agrees with the fit */
+    double *residual;       /* [n] |M src - dst| in world units */
+    double rms_inliers;     /* RMS residual of the inliers */
+    double rms_all;         /* RMS of plain least squares over all matches (for comparison) */
+    double median_residual; /* the least median (of the best minimal-sample fit) */
+    double threshold;       /* the inlier bound used (world units) */
+} sp_align_fit;
+
+/* Least median of squares over Umeyama fits of minimal samples (all triples up to 20000, else
+ * 20000 random ones, deterministic), then inliers = residual <= threshold and a refit on them
+ * (three rounds). threshold <= 0: automatic, 4.03 sigma (the 99.9% bound of the length of an
+ * isotropic 3D Gaussian error) with sigma from the median residual (median / 1.538, times
+ * Rousseeuw's 1 + 5/(n-3)), then from the inliers' RMS. Fails with SP_E_ARG below SP_ALIGN_MIN_INLIERS
+ * matches or when all are collinear, and with SP_E_FORMAT (fit filled, so the outliers can be
+ * reported) when fewer than max(SP_ALIGN_MIN_INLIERS, ceil(n/2)) agree or the automatic bound
+ * exceeds SP_ALIGN_MAX_BOUND_FRACTION of the world points' spread. */
+int sp_align_fit_robust(const double *src, const double *dst, size_t n, int with_scale,
+                        double threshold, sp_align_fit *fit, sp_error *err);
+void sp_align_fit_free(sp_align_fit *f);
+/* The fit as JSON text (malloc'd, free()): method, with_scale, world_from_colmap (4x4), matches,
+ * inliers, rms_inliers, rms_all_least_squares, median_residual, inlier_threshold, outliers
+ * [{image (or match index), residual}]. m may be NULL (outliers by index). */
+char *sp_align_fit_json(const sp_align_fit *fit, const sp_align_matches *m, int with_scale);
+
 /* Applies a similarity [sR t] to a splat: means, quats, log_scales and SH (rotated per band). */
 int sp_splat_transform(sp_splat *s, const double M[16], sp_error *err);
 /* RANSAC floor plane on the lowest Gaussians (along the cameras' mean "up" = -y_cam) and a

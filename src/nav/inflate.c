@@ -36,10 +36,10 @@ int sp_costmap_inflate(sp_costmap *cm, const sp_costmap_opts *opts, sp_error *er
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory inflating %zu cells", n);
     }
     for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_OCCUPIED;
-    int rc = nav_edt2(seed, cm->nx, cm->ny, cm->res, cm->dist, err);
+    int rc = sp_edt2(seed, cm->nx, cm->ny, cm->res, cm->dist, NULL, err);
     if (!rc && du) {
         for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_UNKNOWN;
-        rc = nav_edt2(seed, cm->nx, cm->ny, cm->res, du, err);
+        rc = sp_edt2(seed, cm->nx, cm->ny, cm->res, du, NULL, err);
     }
     free(seed);
     if (rc) {

@@ -14,11 +14,6 @@ static inline int nav_inside(const sp_costmap *cm, int ix, int iy)
 }
 static inline long nav_idx(const sp_costmap *cm, int ix, int iy) { return (long)iy * cm->nx + ix; }
 
-/* Exact Euclidean distance transform (Felzenszwalb & Huttenlocher 2012): out[i] = metres from
- * cell i's centre to the nearest cell with seed != 0, INFINITY when there is none. The same
- * contract as core's sp_edt2, which replaces it once the grid module lands. */
-int nav_edt2(const uint8_t *seed, int nx, int ny, float res, float *out, sp_error *err);
-
 #define NAV_MAX_SLICES 32
 
 /* The height band is split into n_slices slices of (band height / n_slices); voxel (slice v,

@@ -69,8 +69,8 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
         return sp_error_set(err, SP_E_FORMAT,
                             "query engine: the splat has %d f_sem_* features but the PCA has dim %d",
                             e->splat.feat_dim, e->pca.dim);
-    if (e->pca.dim < 1 || e->pca.dim > 64)
-        return sp_error_set(err, SP_E_FORMAT, "query engine: feature dim %d not in 1..64", e->pca.dim);
+    int rc = sp_feature_dim_check(e->pca.dim, SP_E_FORMAT, "query engine", err);
+    if (rc) return rc;
     size_t n = e->splat.n ? e->splat.n : 1;
     e->opacity = malloc(sizeof(float) * n);
     e->raw = malloc(sizeof(float) * n);
@@ -79,7 +79,7 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
     if (!e->opacity || !e->raw || !e->rel || !e->scores2)
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
     for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
-    int rc = sp_raster_create(&e->raster, e->dev, err);
+    rc = sp_raster_create(&e->raster, e->dev, err);
     if (!rc) rc = sp_raster_create(&e->raster_aux, e->dev, err);
 #ifdef SP_HAVE_CUDA
     /* A GPU engine keeps the features on the GPU and scores them there. */
@@ -158,8 +158,9 @@ static int load_cameras(sp_query_engine *e, const char *colmap_dir, sp_error *er
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for cameras");
     }
     for (size_t i = 0; i < m.n_images; i++) {
+        /* The lens is kept: renders use the pinhole part (the renderer ignores distortion) and
+         * heatmaps are resampled into the photo's own pixels (sem_heatmap). */
         if ((rc = sp_colmap_image_camera(&m, i, &e->cams[e->n_cams], err))) break;
-        e->cams[e->n_cams].distortion = SP_DIST_NONE; /* heatmaps are pinhole renders */
         snprintf(e->cam_names[e->n_cams], 256, "%s", m.images[i].name ? m.images[i].name : "");
         e->n_cams++;
     }

@@ -37,7 +37,8 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
 {
     sp_lift_opts o = opts ? *opts : sp_lift_opts_default();
     if (!r || !s || !cams || !target) return sp_error_set(err, SP_E_ARG, "lift: missing argument");
-    if (dim < 1 || dim > 512) return sp_error_set(err, SP_E_ARG, "lift: feature dim %d not in 1..512", dim);
+    int rc = sp_feature_dim_check(dim, SP_E_ARG, "lift", err);
+    if (rc) return rc;
     if (n_views == 0) return sp_error_set(err, SP_E_ARG, "lift: no views");
     if (s->n == 0) return sp_error_set(err, SP_E_ARG, "lift: the splat has no Gaussians");
     int maxw = 0, maxh = 0;
@@ -56,7 +57,6 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
     b.dev = dev;
     float *target_buf = NULL, *vimg = NULL, *acc = NULL;
     uint8_t *mask = NULL;
-    int rc = 0;
     sp_progress bar;
     int bar_on = 0;
 

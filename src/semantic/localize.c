@@ -267,15 +267,16 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
 
 /* ---- views ---------------------------------------------------------------------------------------- */
 
-void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
-                      const float *alpha, size_t npix, float *raw, float *rel)
+int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                     const float *alpha, size_t npix, float *raw, float *rel, sp_error *err)
 {
     int D = sc->dim;
+    /* Scoring the un-normalised composite instead would be another computation (decode(f)
+     * includes the PCA mean, so scaling f by alpha changes the cosine): fail instead. */
     float *norm = malloc(sizeof(float) * npix * (size_t)D);
-    if (!norm) { /* degrade to un-normalised features rather than failing a heatmap */
-        sp_sem_score(sc, sp_device_pool(e->dev), npix, feat, raw, rel);
-        return;
-    }
+    if (!norm)
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory scoring %zu pixels x %d features",
+                            npix, D);
     for (size_t p = 0; p < npix; p++) {
         float a = alpha[p] > 1e-6f ? alpha[p] : 1.0f;
         for (int c = 0; c < D; c++) norm[p * D + c] = feat[p * D + c] / a;
@@ -287,6 +288,7 @@ void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *
             if (rel) rel[p] = 0.5f;
         }
     free(norm);
+    return 0;
 }
 
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
@@ -455,7 +457,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
      * around the house) all get views; near-duplicate directions (< 25 degrees) count half. */
     int got = 0;
     while (got < k) {
-        if (got >= k_min) { /* past the minimum, stop once 90% of the relevant set is seen */
+        if (got >= k_min) { /* past the minimum, stop once 97% of the relevant set is seen */
             double seen = 0;
             for (size_t j = 0; j < n_smp; j++) seen += covered[j] ? wsmp[j] : 0;
             if (seen >= 0.97 * tot) break;
@@ -525,8 +527,8 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
             rel = malloc(sizeof(float) * np);
             if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
         }
+        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
         if (!rc) {
-            sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
             /* relevant pixels, eroded by one pixel: at object borders the expected depth blends
              * the object with what is behind it and would back-project into the gap */
             uint8_t *keep = calloc(np, 1);

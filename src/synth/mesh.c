@@ -154,12 +154,11 @@ int geom_mesh(wbuild *b, const xform *T, const char *path, const double scale[3]
             tp.data[0] != '*') {
             char tpath[PATH_MAX * 2];
             if (find_texture(path, tp.data, tpath, sizeof tpath)) {
-                if (!b->skip_missing) {
-                    rc = sp_error_set(err, SP_E_NOTFOUND, "missing texture %s (used by mesh %s)", tpath, path);
-                    goto done;
-                }
-                sp_logf(b->log, SP_LOG_WARN, "missing texture %s (used by mesh %s), using its colour", tpath, path);
-                b->w->n_missing++;
+                /* As Gazebo: the mesh is drawn in its material colour, with a warning (a texture
+                 * changes how a thing looks, not where it is; missing meshes stay errors). */
+                sp_logf(b->log, SP_LOG_WARN,
+                        "missing texture %s (used by mesh %s): drawn in its material colour", tpath, path);
+                b->w->n_missing_textures++;
             } else {
                 int ti = wb_texture(b, tpath, err);
                 if (ti < 0) {

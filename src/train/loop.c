@@ -442,6 +442,58 @@ static int bufs_init(tr_state *s, const sp_train_data *d, const sp_train_options
     return SP_OK;
 }
 
+/* Held-out feature error: the features rendered at each held-out view (every view when none is
+ * held out, res->eval_on_train) against that view's target from get_feature_target, as one mean
+ * of squared differences over all pixels and channels of those views. */
+static int evaluate_features(tr_state *s, sp_raster *r, const sp_train_data *d,
+                             const sp_train_options *o, step_bufs *b, int active,
+                             sp_train_result *res, sp_error *err)
+{
+    int any_test = 0;
+    for (size_t i = 0; i < d->n_views; i++) any_test |= d->views[i].is_test;
+    float *image_h = malloc(b->maxpx * (size_t)s->D * sizeof(float));
+    float *bg = calloc((size_t)s->D, sizeof(float));
+    int rc = SP_OK;
+    if (!image_h || !bg) {
+        rc = sp_error_set(err, SP_E_NOMEM, "feature evaluation: out of memory");
+        goto done;
+    }
+    if (s->rgb)
+        for (int c = 0; c < 3; c++) bg[c] = o->background[c];
+    double sse = 0, count = 0;
+    int nv = 0;
+    for (size_t i = 0; i < d->n_views; i++) {
+        const sp_train_view *v = &d->views[i];
+        if (any_test && !v->is_test) continue;
+        int W = v->cam.width, H = v->cam.height;
+        if ((rc = prepare_colors(s, o->sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
+        sp_raster_in in = raster_in(s, bg);
+        sp_raster_out out = {b->image, NULL, NULL};
+        sp_raster_cfg cfg = sp_raster_cfg_default();
+        if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
+        if ((rc = sp_device_download(s->dev, image_h, b->image, (size_t)W * H * s->D * sizeof(float), err)))
+            goto done;
+        if ((rc = o->get_feature_target(o->feature_user, i, W, H, s->F, b->ftmp_h, err))) {
+            sp_error_prefix(err, "feature target of view '%s': ", v->name);
+            goto done;
+        }
+        double mse = 0;
+        if ((rc = cpu_feature_mse(s->pool, image_h, s->D, s->rgb ? 3 : 0, b->ftmp_h, H, W, s->F, 0.0f,
+                                  NULL, &mse, err)))
+            goto done;
+        sse += mse * W * H * s->F;
+        count += (double)W * H * s->F;
+        nv++;
+    }
+    res->feature_mse = count > 0 ? sse / count : 0;
+    res->n_eval_views = nv;
+    res->eval_on_train = !any_test;
+done:
+    free(image_h);
+    free(bg);
+    return rc;
+}
+
 static int check_options(const sp_train_data *d, const sp_train_options *o, const sp_splat *sp,
                          sp_error *err)
 {
@@ -624,7 +676,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
 
     sp_progress prog;
     sp_progress_begin(&prog, log, "train", o->steps, "steps");
-    double loss_ema = 0, mse_ema = 0, fmse_ema = 0;
+    double loss_ema = 0, mse_ema = 0;
     float *bg = malloc((size_t)s.D * sizeof(float));
     if (!bg) {
         rc = sp_error_set(err, SP_E_NOMEM, "train: out of memory");
@@ -751,7 +803,6 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
 
         loss_ema = step == start_step ? loss : 0.9 * loss_ema + 0.1 * loss;
         mse_ema = step == start_step ? st[3] : 0.9 * mse_ema + 0.1 * st[3];
-        fmse_ema = step == start_step ? fmse : 0.9 * fmse_ema + 0.1 * fmse;
         res->last_loss = loss;
         int done = step + 1;
         if (o->checkpoint_every > 0 && done % o->checkpoint_every == 0 && done < o->steps) {
@@ -779,18 +830,14 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         }
     }
     sp_progress_end(&prog, rc ? "stopped" : NULL);
-    if (!rc && s.rgb) {
-        int active = o->sh_degree_interval > 0 ? (step - 1) / o->sh_degree_interval : o->sh_degree;
-        if (active < init_degree) active = init_degree;
-        if (active > o->sh_degree) active = o->sh_degree;
-        if (active < 0) active = 0;
-        /* The saved splat is rendered by viewers at its full degree; evaluate it that way only
-         * when training reached it, else at the degree trained. */
-        rc = evaluate_state(&s, r, d, o->sh_degree, active, o->background, res, err);
-    }
-    /* Feature error: running mean over the last training steps (the caller evaluates held-out
-     * feature maps itself, it owns their targets). */
-    res->feature_mse = fmse_ema;
+    int active = o->sh_degree_interval > 0 ? (step - 1) / o->sh_degree_interval : o->sh_degree;
+    if (active < init_degree) active = init_degree;
+    if (active > o->sh_degree) active = o->sh_degree;
+    if (active < 0) active = 0;
+    /* The saved splat is rendered by viewers at its full degree; evaluate it that way only
+     * when training reached it, else at the degree trained. */
+    if (!rc && s.rgb) rc = evaluate_state(&s, r, d, o->sh_degree, active, o->background, res, err);
+    if (!rc && s.F) rc = evaluate_features(&s, r, d, o, &b, active, res, err);
     res->steps = step;
     res->gaussians = last_good.n;
     res->seconds = sp_time_now() - t0;

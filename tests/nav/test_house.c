@@ -43,7 +43,7 @@ static void setup(void)
     CHECK_OK(sp_nav_default_start(g_nav, g_start, &err), &err);
     /* truly reachable: centre at least a robot radius from truly occupied cells, connected */
     float *d = malloc(sizeof(float) * n);
-    CHECK_OK(nav_edt2(g_truth, cm->nx, cm->ny, cm->res, d, &err), &err);
+    CHECK_OK(sp_edt2(g_truth, cm->nx, cm->ny, cm->res, d, NULL, &err), &err);
     g_reach = calloc(n, 1);
     long *queue = malloc(sizeof(long) * n), head = 0, tail = 0;
     int sx, sy;

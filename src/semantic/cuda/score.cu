@@ -4,7 +4,7 @@
 
 #include "semantic/sem_cuda.h"
 
-__constant__ float c_qb[64], c_mb[64], c_nb[SP_SEM_MAX_NEGATIVES][64];
+__constant__ float c_qb[SP_FEATURE_DIM_MAX], c_mb[SP_FEATURE_DIM_MAX], c_nb[SP_SEM_MAX_NEGATIVES][SP_FEATURE_DIM_MAX];
 
 struct score_params {
     float q0, m2, temperature;
@@ -53,9 +53,9 @@ extern "C" int sem_cuda_score(const sp_sem_scorer *sc, size_t n, const float *d_
     score_params p;
     p.q0 = sc->q0, p.m2 = sc->m2, p.temperature = sc->temperature, p.D = sc->dim, p.NN = sc->n_neg;
     for (int q = 0; q < SP_SEM_MAX_NEGATIVES; q++) p.n0[q] = q < sc->n_neg ? sc->n0[q] : 0.f;
-    CHECK(cudaMemcpyToSymbol(c_qb, sc->qb, sizeof(float) * 64), "query");
-    CHECK(cudaMemcpyToSymbol(c_mb, sc->mb, sizeof(float) * 64), "mean");
-    CHECK(cudaMemcpyToSymbol(c_nb, sc->nb, sizeof(float) * 64 * SP_SEM_MAX_NEGATIVES), "negatives");
+    CHECK(cudaMemcpyToSymbol(c_qb, sc->qb, sizeof(float) * SP_FEATURE_DIM_MAX), "query");
+    CHECK(cudaMemcpyToSymbol(c_mb, sc->mb, sizeof(float) * SP_FEATURE_DIM_MAX), "mean");
+    CHECK(cudaMemcpyToSymbol(c_nb, sc->nb, sizeof(float) * SP_FEATURE_DIM_MAX * SP_SEM_MAX_NEGATIVES), "negatives");
     unsigned blocks = (unsigned)((n + 255) / 256);
     k_score<<<blocks, 256>>>(p, n, d_features, d_raw, d_rel);
     CHECK(cudaGetLastError(), "launch");
