@@ -465,11 +465,13 @@ typedef struct sp_nav_description {
     int n;
     sp_nav_object *objects; /* nearest first */
     int n_queried;         /* vocabulary terms asked */
+    int n_walled_off;      /* instances within the radius but far on foot: behind a wall (left out) */
     char *sentence;        /* malloc'd plain-language answer */
 } sp_nav_description;
 
 /* "What objects are near the dining table?": every vocabulary term's confident instances within
- * radius_m (<= 0: opts.near_m) of the anchor's footprint, with distances and relations. */
+ * radius_m (<= 0: opts.near_m) of the anchor's footprint and not behind a wall from it, with
+ * distances and relations. */
 int sp_nav_describe(sp_nav *nav, const char *anchor, float radius_m, const float *robot,
                     sp_nav_description *out, sp_error *err);
 void sp_nav_description_free(sp_nav_description *d);

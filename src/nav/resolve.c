@@ -83,6 +83,7 @@ int sp_nav_resolve(sp_nav *nav, const char *phrase, sp_nav_target *t, sp_error *
     }
     if (t->n > 0) {
         t->found = 1;
+        snprintf(t->text, sizeof t->text, "%s", nav_region_name(r)); /* the region the phrase names */
         if (len < sizeof t->source) snprintf(t->source + len, sizeof t->source - len, " found");
     } else {
         snprintf(t->source, sizeof t->source, "region: %s (none of its objects found)", nav_region_name(r));

@@ -240,12 +240,59 @@ static void test_refrigerator_top3(void)
     sp_nav_plan_free(&plan);
 }
 
+static void test_describe_dining_table(void)
+{
+    sp_error err = {0};
+    sp_nav_description d;
+    double t0 = sp_time_now();
+    CHECK_OK(sp_nav_describe(g_nav, "dining table", 0, NULL, &d, &err), &err);
+    int chairs = 0;
+    for (int i = 0; i < d.n; i++) chairs += !strcmp(d.objects[i].name, "dining chair");
+    fprintf(stderr, "describe (%d terms, %.1f s): %s\n", d.n_queried, sp_time_now() - t0, d.sentence);
+    CHECK(chairs == 4);
+    CHECK(strstr(d.sentence, "4 dining chairs") != NULL);
+    CHECK(d.n_queried > 100);
+    for (int i = 0; i < d.n; i++) CHECK(d.objects[i].distance_m <= sp_nav_options(g_nav)->near_m);
+    char *js = sp_nav_description_json(&d);
+    CHECK(js && strstr(js, "\"left of\"") && strstr(js, "\"dining room\""));
+    free(js);
+    sp_nav_description_free(&d);
+    CHECK_FAILS(sp_nav_describe(g_nav, "grand piano", 0, NULL, &d, &err), SP_E_NOTFOUND, &err, "grand piano");
+}
+
+static void test_explore_kitchen(void)
+{
+    sp_error err = {0};
+    sp_nav_tour t;
+    double t0 = sp_time_now();
+    CHECK_OK(sp_nav_explore(g_nav, "explore the area around the kitchen", NULL, &t, &err), &err);
+    fprintf(stderr, "explore: %d views, %.0f %% covered, %.1f m tour, %.1f s (%s) %s\n", t.n, 100 * t.coverage,
+            t.path.length_m, sp_time_now() - t0, t.target.source, t.note);
+    CHECK(strncmp(t.target.source, "region: kitchen", 15) == 0);
+    CHECK(t.n >= 2 && t.coverage >= 0.5f);
+    const sp_costmap *cm = sp_nav_costmap(g_nav);
+    for (int k = 0; k < t.n; k++) {
+        int ix, iy;
+        CHECK(sp_costmap_cell(cm, t.poses[4 * k], t.poses[4 * k + 1], &ix, &iy) == 0 && sp_costmap_traversable(cm, ix, iy));
+        CHECK(t.poses[4 * k] >= t.area.min[0] - 1.01f && t.poses[4 * k] <= t.area.max[0] + 1.01f);
+        CHECK(t.quality[k] >= 0 && t.quality[k] <= 1);
+    }
+    int bad, truly;
+    path_cells(cm, &t.path, &bad, &truly);
+    CHECK(bad == 0);
+    const char *dir = test_tmpdir("nav_house_explore");
+    CHECK_OK(sp_nav_tour_write(g_nav, &t, dir, &err), &err);
+    sp_nav_tour_free(&t);
+}
+
 int main(void)
 {
     setup();
     RUN(test_costmap_vs_floor_plan);
     RUN(test_every_object);
     RUN(test_refrigerator_top3);
+    RUN(test_describe_dining_table);
+    RUN(test_explore_kitchen);
     sp_nav_free(g_nav);
     sp_query_engine_free(g_engine);
     sp_device_free(g_dev);
