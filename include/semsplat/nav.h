@@ -81,6 +81,8 @@ typedef struct sp_costmap_opts {
                                 * of its slices (1); 0: any ray through the band frees it */
     int cameras_stand;         /* the robot radius under every training camera is free: the
                                 * capture stood there (1; 0 for cameras held above furniture) */
+    int despeckle_cells;       /* occupied specks of at most this many cells amid free space are
+                                * floaters and become free (0 = keep everything) */
     float fill_max_area_m2;    /* free pockets enclosed by obstacles up to this area are the
                                 * insides of furniture and become occupied (4) */
     float slice_m;             /* the band is fused in slices this tall (0.1; at most 32 slices) */
@@ -123,6 +125,10 @@ typedef struct sp_costmap {
  * when the map would exceed max_cells. */
 int sp_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
                      const sp_costmap_opts *opts, sp_raster *r, const sp_log *log, sp_error *err);
+/* The same from a model folder (splat.ply and the capture train.json names), geometry only:
+ * what a robot-side process (the simulated robot) loads. */
+int sp_costmap_build_model(sp_costmap *cm, const char *model_dir, const sp_costmap_opts *opts,
+                           sp_device *dev, const sp_log *log, sp_error *err);
 void sp_costmap_free(sp_costmap *cm);
 int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err);
 
@@ -337,6 +343,7 @@ int sp_nav_default_start(const sp_nav *nav, float start[3], sp_error *err);
  * footprint); a region word the engine does not find (kitchen, bedroom, ...) resolves through
  * the objects a household keeps there, and source says so. */
 typedef struct sp_nav_instance {
+    char label[48];        /* what it is: the phrase, or for a region the object found */
     float position[3];
     float z_min, z_max;
     sp_nav_box box;

@@ -77,19 +77,39 @@ static int carve_cell(void *vctx, long cell, float t0, float t1)
     return 0;
 }
 
-/* Carves the rays of one rendered view (expected depth and alpha at cam's size). */
-static void carve_view(const sp_costmap *cm, const sp_camera *cam, const float *depth,
-                       const float *alpha, const sp_costmap_opts *o, nav_carve_out *out)
+/* The counters one thread carves into (merged after the last view). */
+typedef struct carve_bufs {
+    uint16_t *passes, *hits, *floor_seen;
+} carve_bufs;
+
+typedef struct view_job {
+    const sp_costmap *cm;
+    const sp_camera *cam;
+    const float *depth, *alpha;
+    const sp_costmap_opts *o;
+    const nav_slices *sl;
+    carve_bufs *bufs;   /* [threads] */
+    int rows_per_item;
+    const sp_splat *s;
+    uint16_t *counts;   /* visibility */
+    size_t per_item;
+} view_job;
+
+/* Carves the rays of rows [v0, v1) of one rendered view (expected depth and alpha). */
+static void carve_rows(const view_job *j, int v0, int v1, carve_bufs *b)
 {
+    const sp_costmap *cm = j->cm;
+    const sp_camera *cam = j->cam;
+    const sp_costmap_opts *o = j->o;
     sp_vec3 C = sp_camera_center(cam);
-    ray_ctx rc = {out->passes, &out->sl, C.z, 0, 1, cm->band[0], cm->band[1]};
+    ray_ctx rc = {b->passes, j->sl, C.z, 0, 1, cm->band[0], cm->band[1]};
     float Rt[9];
     sp_mat3_transpose(cam->R, Rt);
-    for (int v = 0; v < cam->height; v++)
+    for (int v = v0; v < v1; v++)
         for (int u = 0; u < cam->width; u++) {
             long p = (long)v * cam->width + u;
-            if (!(alpha[p] >= o->carve_alpha)) continue;
-            float d = depth[p]; /* expected depth along the optical axis */
+            if (!(j->alpha[p] >= o->carve_alpha)) continue;
+            float d = j->depth[p]; /* expected depth along the optical axis */
             if (!(d > 0)) continue;
             sp_vec3 dc = sp_v3((u + 0.5f - cam->cx) / cam->fx, (v + 0.5f - cam->cy) / cam->fy, 1.0f);
             sp_vec3 dw = sp_mat3_apply(Rt, dc);
@@ -99,24 +119,31 @@ static void carve_view(const sp_costmap *cm, const sp_camera *cam, const float *
             sp_vec3 P = sp_v3_add(C, sp_v3_scale(dw, d));
             rc.dz = P.z - C.z;
             rc.t_stop = cut ? 1.0f : fmaxf(0.0f, 1.0f - o->carve_stop_m / len);
-            float a[2] = {C.x, C.y}, b[2] = {P.x, P.y};
-            nav_traverse(cm, a, b, carve_cell, &rc);
+            float a[2] = {C.x, C.y}, e[2] = {P.x, P.y};
+            nav_traverse(cm, a, e, carve_cell, &rc);
             int ix, iy;
             if (cut || sp_costmap_cell(cm, P.x, P.y, &ix, &iy)) continue;
             long cell = nav_idx(cm, ix, iy);
-            if (fabsf(P.z - cm->floor_z) < o->floor_tolerance_m) bump(&out->floor_seen[cell]);
+            if (fabsf(P.z - cm->floor_z) < o->floor_tolerance_m) bump(&b->floor_seen[cell]);
             else if (P.z >= cm->band[0] && P.z <= cm->band[1])
-                bump(&out->hits[nav_slice_of(&out->sl, P.z) * out->sl.cells + cell]);
+                bump(&b->hits[nav_slice_of(j->sl, P.z) * j->sl->cells + cell]);
         }
+}
+
+static void carve_item(void *ctx, long i, int thread_id)
+{
+    const view_job *j = ctx;
+    int v0 = (int)i * j->rows_per_item, v1 = v0 + j->rows_per_item;
+    carve_rows(j, v0, v1 < j->cam->height ? v1 : j->cam->height, &j->bufs[thread_id]);
 }
 
 /* Counts the view for every opaque Gaussian whose centre projects into it in front of the
  * rendered surface: the deepest surface of the 3 x 3 pixels around it (a low-resolution pixel on
  * a floor seen at a slant spans tens of centimetres of depth), with 5 % + 5 cm to spare. */
 static void count_visible(const sp_splat *s, const sp_camera *cam, const float *depth,
-                          const float *alpha, float min_opacity, uint16_t *counts)
+                          const float *alpha, float min_opacity, uint16_t *counts, size_t i0, size_t i1)
 {
-    for (size_t i = 0; i < s->n; i++) {
+    for (size_t i = i0; i < i1; i++) {
         if (counts[i] == UINT16_MAX || sp_sigmoid(s->opacity_logits[i]) < min_opacity) continue;
         const float *m = s->means + 3 * i;
         sp_vec3 pc = sp_v3_add(sp_mat3_apply(cam->R, sp_v3(m[0], m[1], m[2])),
@@ -136,16 +163,52 @@ static void count_visible(const sp_splat *s, const sp_camera *cam, const float *
     }
 }
 
+static void visible_item(void *ctx, long i, int thread_id)
+{
+    const view_job *j = ctx;
+    size_t i0 = (size_t)i * j->per_item, i1 = i0 + j->per_item;
+    (void)thread_id;
+    count_visible(j->s, j->cam, j->depth, j->alpha, j->o->min_opacity, j->counts, i0, i1 < j->s->n ? i1 : j->s->n);
+}
+
+static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        unsigned v = (unsigned)dst[i] + src[i];
+        dst[i] = v > UINT16_MAX ? UINT16_MAX : (uint16_t)v;
+    }
+}
+
 int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
               const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
               sp_error *err)
 {
+    /* The geometry alone with one zero feature channel: depth and alpha come from a feature pass,
+     * which skips evaluating every Gaussian's spherical harmonics for each view. */
+    sp_splat g;
+    int rc = sp_splat_alloc(&g, s->n, 0, 1, err);
+    if (rc) return rc;
+    memcpy(g.means, s->means, sizeof(float) * 3 * s->n);
+    memcpy(g.quats, s->quats, sizeof(float) * 4 * s->n);
+    memcpy(g.log_scales, s->log_scales, sizeof(float) * 3 * s->n);
+    memcpy(g.opacity_logits, s->opacity_logits, sizeof(float) * s->n);
+    sp_pool *pool = sp_device_pool(sp_raster_device(r));
+    int T = sp_pool_size(pool);
+    size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
+    carve_bufs *bufs = calloc((size_t)T, sizeof *bufs);
+    if (!bufs) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    for (int t = 0; t < T && !rc; t++) {
+        bufs[t].passes = t ? calloc(nv, sizeof(uint16_t)) : out->passes;
+        bufs[t].hits = t ? calloc(nv, sizeof(uint16_t)) : out->hits;
+        bufs[t].floor_seen = t ? calloc(nc, sizeof(uint16_t)) : out->floor_seen;
+        if (!bufs[t].passes || !bufs[t].hits || !bufs[t].floor_seen)
+            rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
+    }
     size_t cap = 0;
-    float *depth = NULL, *alpha = NULL;
+    float *depth = NULL, *alpha = NULL, *feat = NULL;
     double t_render = 0, t_rays = 0, t_vis = 0;
     sp_progress pr;
     sp_progress_begin(&pr, log, "carve", (long)n_cams, "views");
-    int rc = 0;
     for (size_t c = 0; c < n_cams && !rc; c++) {
         sp_camera cam = cams[c];
         cam.distortion = SP_DIST_NONE;
@@ -153,11 +216,12 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         if (cam.width < 1 || cam.height < 1) continue;
         size_t np = (size_t)cam.width * cam.height;
         if (np > cap) {
-            free(depth), free(alpha);
+            free(depth), free(alpha), free(feat);
             depth = malloc(sizeof(float) * np);
             alpha = malloc(sizeof(float) * np);
+            feat = malloc(sizeof(float) * np);
             cap = np;
-            if (!depth || !alpha) {
+            if (!depth || !alpha || !feat) {
                 rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu-pixel renders", np);
                 break;
             }
@@ -166,21 +230,34 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         memset(&req, 0, sizeof req);
         req.depth = depth;
         req.alpha = alpha;
+        req.features = feat;
         double t0 = sp_time_now();
-        if ((rc = sp_render_splat(r, s, &cam, &req, err))) {
+        if ((rc = sp_render_splat(r, &g, &cam, &req, err))) {
             sp_error_prefix(err, "costmap: rendering training view %zu for carving: ", c);
             break;
         }
         double t1 = sp_time_now();
-        carve_view(cm, &cam, depth, alpha, o, out);
+        view_job job = {cm, &cam, depth, alpha, o, &out->sl, bufs, 0, s, out->view_counts, 0};
+        job.rows_per_item = (cam.height + 4 * T - 1) / (4 * T);
+        sp_pool_for(pool, (cam.height + job.rows_per_item - 1) / job.rows_per_item, carve_item, &job);
         double t2 = sp_time_now();
-        if (out->view_counts) count_visible(s, &cam, depth, alpha, o->min_opacity, out->view_counts);
+        job.per_item = (s->n + 16 * T - 1) / (16 * T);
+        if (out->view_counts && s->n) sp_pool_for(pool, (long)((s->n + job.per_item - 1) / job.per_item), visible_item, &job);
         t_render += t1 - t0, t_rays += t2 - t1, t_vis += sp_time_now() - t2;
         sp_progress_update(&pr, (long)c + 1, NULL);
     }
     sp_progress_end(&pr, NULL);
     sp_logf(log, SP_LOG_DEBUG, "carve: renders %.0f ms, rays %.0f ms, visibility %.0f ms", 1e3 * t_render,
             1e3 * t_rays, 1e3 * t_vis);
-    free(depth), free(alpha);
+    for (int t = 1; bufs && t < T; t++) {
+        if (bufs[t].passes) add_sat(out->passes, bufs[t].passes, nv);
+        if (bufs[t].hits) add_sat(out->hits, bufs[t].hits, nv);
+        if (bufs[t].floor_seen) add_sat(out->floor_seen, bufs[t].floor_seen, nc);
+        free(bufs[t].passes), free(bufs[t].hits), free(bufs[t].floor_seen);
+    }
+    free(bufs);
+    free(depth), free(alpha), free(feat);
+    sp_raster_forget(r); /* the copy goes away: the next render must not reuse its upload */
+    sp_splat_free(&g);
     return rc;
 }

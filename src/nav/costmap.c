@@ -34,6 +34,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.fill_max_area_m2 = 4.0f;
     o.free_needs_floor = 1;
     o.cameras_stand = 1;
+    o.despeckle_cells = 0;
     o.carve_downscale = 4;
     o.carve_alpha = 0.5f;
     o.carve_stop_m = 0.03f;
@@ -461,6 +462,52 @@ static int fill_pockets(sp_costmap *cm, float max_area_m2)
     return 0;
 }
 
+/* Speckle: 8-connected occupied components of at most max_cells cells with free cells all
+ * around (no unknown neighbour) are floaters the cameras saw past, not furniture; they become
+ * free. A thin pole of the world is larger than a cell in a well-trained splat. */
+static int despeckle(sp_costmap *cm, int max_cells)
+{
+    if (max_cells <= 0) return 0;
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *comp = malloc(sizeof(int32_t) * (size_t)(max_cells + 1));
+    uint8_t *mark = calloc(n, 1);
+    long *stack = malloc(sizeof(long) * n);
+    if (!comp || !mark || !stack) {
+        free(comp), free(mark), free(stack);
+        return -1;
+    }
+    for (size_t seed = 0; seed < n; seed++) {
+        if (cm->occ[seed] != SP_CELL_OCCUPIED || mark[seed]) continue;
+        long top = 0, size = 0;
+        int touches_unknown = 0;
+        stack[top++] = (long)seed;
+        mark[seed] = 1;
+        while (top > 0) {
+            long c = stack[--top];
+            if (size <= max_cells) comp[size] = (int32_t)c;
+            size++;
+            int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    int x = cx + dx, y = cy + dy;
+                    if (!nav_inside(cm, x, y)) {
+                        touches_unknown = 1;
+                        continue;
+                    }
+                    long j = nav_idx(cm, x, y);
+                    if (cm->occ[j] == SP_CELL_UNKNOWN) touches_unknown = 1;
+                    if (cm->occ[j] != SP_CELL_OCCUPIED || mark[j]) continue;
+                    mark[j] = 1;
+                    stack[top++] = j;
+                }
+        }
+        if (size <= max_cells && !touches_unknown)
+            for (long k = 0; k < size; k++) cm->occ[comp[k]] = SP_CELL_FREE;
+    }
+    free(comp), free(mark), free(stack);
+    return 0;
+}
+
 static int check_opts(const sp_costmap_opts *o, sp_error *err)
 {
     if (!(o->resolution_m > 0.001f && o->resolution_m < 10.0f))
@@ -540,7 +587,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     free(stood);
     sp_logf(log, SP_LOG_DEBUG, "costmap: carving %.0f ms, footprints %.0f ms", 1e3 * (t2 - t1),
             1e3 * (sp_time_now() - t2));
-    if (fill_pockets(cm, o.fill_max_area_m2)) {
+    if (despeckle(cm, o.despeckle_cells) || fill_pockets(cm, o.fill_max_area_m2)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
         goto done;
     }

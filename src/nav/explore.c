@@ -475,7 +475,7 @@ int sp_nav_tour_write(sp_nav *nav, sp_nav_tour *t, const char *out_dir, sp_error
         int tgt[SP_NAV_MAX_BOXES];
         for (int k = 0; k < t->target.n; k++) {
             boxes[k] = t->target.inst[k].box;
-            snprintf(obj[k], sizeof obj[k], "%s", t->target.text);
+            snprintf(obj[k], sizeof obj[k], "%s", t->target.inst[k].label);
             tgt[k] = 1;
         }
         float start[3] = {t->path.n ? t->path.waypoints[0] : 0, t->path.n ? t->path.waypoints[1] : 0,

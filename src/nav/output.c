@@ -32,6 +32,7 @@ cJSON *nav_json_target(const sp_nav_target *t)
     cJSON *arr = cJSON_AddArrayToObject(o, "instances");
     for (int k = 0; k < t->n; k++) {
         cJSON *e = cJSON_CreateObject();
+        cJSON_AddStringToObject(e, "label", t->inst[k].label);
         cJSON_AddItemToObject(e, "position", nav_json_floats(t->inst[k].position, 3));
         cJSON_AddItemToObject(e, "footprint_xy", box_json(&t->inst[k].box));
         float z[2] = {t->inst[k].z_min, t->inst[k].z_max};
@@ -195,7 +196,7 @@ static int plan_objects(sp_nav *nav, const sp_nav_plan *p, sp_nav_box *boxes, ch
     int n = 0;
     for (int k = 0; k < p->target.n && n < cap; k++, n++) {
         boxes[n] = p->target.inst[k].box;
-        snprintf(labels[n], 64, "%s", p->target.text);
+        snprintf(labels[n], 64, "%s", p->target.inst[k].label);
         is_target[n] = 1;
     }
     for (int i = 0; i < p->n_related && n < cap; i++) {
@@ -206,7 +207,7 @@ static int plan_objects(sp_nav *nav, const sp_nav_plan *p, sp_nav_box *boxes, ch
         if (!strncmp(t.source, "region", 6)) continue; /* a room: its objects are listed anyway */
         for (int k = 0; k < t.n && n < cap; k++, n++) {
             boxes[n] = t.inst[k].box;
-            snprintf(labels[n], 64, "%s", t.text);
+            snprintf(labels[n], 64, "%s", t.inst[k].label);
             is_target[n] = 0;
         }
     }

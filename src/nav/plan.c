@@ -197,7 +197,7 @@ static inline float cell_rate(const cost_field *cf, long i)
 }
 
 static int astar(const cost_field *cf, long start, const sp_nav_goal *goal, const uint8_t *goal_mask,
-                 long max_exp, int32_t **cells_out, int *n_out, int *status)
+                 long max_exp, int32_t **cells_out, int *n_out, int *status, long *expanded)
 {
     const sp_costmap *cm = cf->cm;
     long n = (long)cm->nx * cm->ny;
@@ -247,6 +247,7 @@ static int astar(const cost_field *cf, long start, const sp_nav_goal *goal, cons
             if (heap_push(&h, gj + cf->o->w_euc * nav_goal_bound(goal, p), (int32_t)j)) goto done;
         }
     }
+    *expanded = expansions;
     if (found >= 0) {
         int m = 0;
         for (long c = found; c >= 0; c = parent[c]) m++;
@@ -428,13 +429,19 @@ int nav_plan_once(const sp_costmap *cm, const float start[3], const sp_nav_goal 
     int32_t *cells = NULL;
     int m = 0, status = SP_NAV_NO_VALID_PATH;
     long max_exp = o->max_expansions > 0 ? o->max_expansions : (long)cm->nx * cm->ny;
-    if (astar(&cf, s, goal, goal_mask, max_exp, &cells, &m, &status))
+    long expanded = 0;
+    if (astar(&cf, s, goal, goal_mask, max_exp, &cells, &m, &status, &expanded))
         return sp_error_set(err, SP_E_NOMEM, "plan: out of memory");
+    if (status == SP_NAV_TIMEOUT) {
+        path->status = status;
+        return sp_error_set(err, SP_E_NOTFOUND, "plan: search budget of %ld cells exhausted from (%.2f, %.2f)",
+                            max_exp, start[0], start[1]);
+    }
     if (status != SP_NAV_OK) {
         path->status = status;
-        return sp_error_set(err, SP_E_NOTFOUND, "plan: %s from (%.2f, %.2f)",
-                            status == SP_NAV_TIMEOUT ? "search budget exhausted" : "no path through free space",
-                            start[0], start[1]);
+        return sp_error_set(err, SP_E_NOTFOUND, "plan: no path through free space from (%.2f, %.2f): the "
+                            "traversable space around the start holds %.1f m^2 (%ld cells) and does not reach "
+                            "the goal", start[0], start[1], expanded * cm->res * cm->res, expanded);
     }
     /* exact start, the cells' centres, and the exact goal point when it lies in the last cell */
     float *pts = malloc(sizeof(float) * 2 * (m + 2)), *corners = malloc(sizeof(float) * 2 * (m + 2));

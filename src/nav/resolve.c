@@ -31,12 +31,13 @@ static int query(sp_nav *nav, const char *text, sp_query_result *res, sp_error *
     return rc;
 }
 
-static void add_instances(sp_nav_target *t, const sp_query_result *res, float min_conf)
+static void add_instances(sp_nav_target *t, const char *label, const sp_query_result *res, float min_conf)
 {
     for (int k = 0; k < res->n_instances && t->n < SP_NAV_MAX_BOXES; k++) {
         const sp_query_instance *q = &res->instances[k];
         if (q->confidence < min_conf || !isfinite(q->position[0])) continue;
         sp_nav_instance *in = &t->inst[t->n++];
+        snprintf(in->label, sizeof in->label, "%s", label);
         memcpy(in->position, q->position, sizeof in->position);
         for (int a = 0; a < 2; a++) in->box.min[a] = q->extent_min[a], in->box.max[a] = q->extent_max[a];
         in->z_min = q->extent_min[2], in->z_max = q->extent_max[2];
@@ -58,7 +59,7 @@ int sp_nav_resolve(sp_nav *nav, const char *phrase, sp_nav_target *t, sp_error *
     int rc = query(nav, t->text, &res, err);
     if (rc) return rc;
     t->confidence = res.confidence;
-    if (res.valid) add_instances(t, &res, nav->opts.min_confidence);
+    if (res.valid) add_instances(t, t->text, &res, nav->opts.min_confidence);
     sp_query_result_free(&res);
     snprintf(t->source, sizeof t->source, "query");
     if (t->n > 0) {
@@ -73,7 +74,7 @@ int sp_nav_resolve(sp_nav *nav, const char *phrase, sp_nav_target *t, sp_error *
     for (int k = 0; k < n; k++) {
         if ((rc = query(nav, objs[k], &res, err))) return rc;
         int before = t->n;
-        if (res.valid) add_instances(t, &res, nav->opts.min_confidence);
+        if (res.valid) add_instances(t, objs[k], &res, nav->opts.min_confidence);
         if (t->n > before) {
             t->confidence = fmaxf(t->confidence, res.confidence);
             if (len < sizeof t->source)

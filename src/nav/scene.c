@@ -182,14 +182,14 @@ int sp_nav_create(sp_nav **out, struct sp_query_engine *engine, const sp_splat *
     return SP_OK;
 }
 
-/* splat.ply and the cameras of the capture train.json names (a model without semantics). */
-static int open_geometry(sp_nav *nav, const char *model_dir, sp_error *err)
+/* splat.ply and the pinhole cameras of the capture train.json names. */
+static int load_geometry(const char *model_dir, sp_splat *splat, sp_camera **cams, size_t *n_cams, sp_error *err)
 {
     char path[2048];
+    *cams = NULL, *n_cams = 0;
     sp_path_join(path, sizeof path, model_dir, "splat.ply");
-    int rc = sp_ply_read_splat(path, &nav->own_splat, err);
+    int rc = sp_ply_read_splat(path, splat, err);
     if (rc) return rc;
-    nav->splat = &nav->own_splat;
     sp_path_join(path, sizeof path, model_dir, "train.json");
     cJSON *tj = NULL;
     if ((rc = sp_json_read_file(path, &tj, err))) return sp_error_prefix(err, "nav: the capture: ");
@@ -205,14 +205,35 @@ static int open_geometry(sp_nav *nav, const char *model_dir, sp_error *err)
     cJSON_Delete(tj);
     sp_colmap_model m;
     if ((rc = sp_colmap_read(capture, &m, err))) return rc;
-    nav->cams = calloc(m.n_images ? m.n_images : 1, sizeof(sp_camera));
-    if (!nav->cams) rc = sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
+    *cams = calloc(m.n_images ? m.n_images : 1, sizeof(sp_camera));
+    if (!*cams) rc = sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
     for (size_t i = 0; i < m.n_images && !rc; i++) {
-        rc = sp_colmap_image_camera(&m, i, &nav->cams[i], err);
-        nav->cams[i].distortion = SP_DIST_NONE;
-        nav->n_cams = i + 1;
+        rc = sp_colmap_image_camera(&m, i, &(*cams)[i], err);
+        (*cams)[i].distortion = SP_DIST_NONE;
+        *n_cams = i + 1;
     }
     sp_colmap_free(&m);
+    return rc;
+}
+
+int sp_costmap_build_model(sp_costmap *cm, const char *model_dir, const sp_costmap_opts *opts,
+                           sp_device *dev, const sp_log *log, sp_error *err)
+{
+    memset(cm, 0, sizeof *cm);
+    if (!model_dir || !dev) return sp_error_set(err, SP_E_ARG, "costmap: missing model folder or device");
+    sp_splat s;
+    memset(&s, 0, sizeof s);
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    sp_raster *r = NULL;
+    int rc = load_geometry(model_dir, &s, &cams, &n, err);
+    if (!rc && !n) rc = sp_error_set(err, SP_E_NOTFOUND, "%s: the capture has no cameras", model_dir);
+    if (!rc) rc = sp_raster_create(&r, dev, err);
+    if (!rc) rc = sp_costmap_build(cm, &s, cams, n, opts, r, log, err);
+    if (rc) sp_error_prefix(err, "%s: ", model_dir);
+    sp_raster_free(r);
+    sp_splat_free(&s);
+    free(cams);
     return rc;
 }
 
@@ -242,7 +263,8 @@ int sp_nav_open(sp_nav **out, const char *model_dir, const sp_nav_opts *opts, sp
             nav->n_cams = n;
         }
     } else {
-        rc = open_geometry(nav, model_dir, err);
+        rc = load_geometry(model_dir, &nav->own_splat, &nav->cams, &nav->n_cams, err);
+        nav->splat = &nav->own_splat;
     }
     if (!rc && nav->n_cams == 0)
         rc = sp_error_set(err, SP_E_NOTFOUND, "%s: no training cameras (the capture the model names "

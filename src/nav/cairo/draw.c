@@ -283,7 +283,7 @@ static void draw_legend(cairo_t *cr, double x0, const nav_map_layers *L)
     double y = MARGIN_T + 10;
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
     if (L->n_paths) {
-        text_at(cr, x0, y, 14, 1, "Trajectories (ranked)");
+        text_at(cr, x0, y, 14, 1, L->n_poses ? "Tour" : "Trajectories (ranked)");
         y += 22;
         for (int i = 0; i < L->n_paths; i++, y += 20) {
             swatch(cr, x0, y, palette[i % 10], 1);
@@ -293,9 +293,7 @@ static void draw_legend(cairo_t *cr, double x0, const nav_map_layers *L)
         y += 12;
     }
     if (L->n_poses) {
-        cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-        text_at(cr, x0, y, 14, 1, "Tour");
-        y += 20;
+        y += 4;
         static const double purple[3] = {0.5, 0.2, 0.7};
         swatch(cr, x0, y, purple, 0);
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
@@ -360,20 +358,33 @@ int nav_draw_map(const nav_map_layers *L, const char *png_path, sp_error *err)
     return rc;
 }
 
+/* Fits a line of text into width by shrinking the font, down to 8 px. */
+static void fitted_text(cairo_t *cr, double x, double y, double size, int bold, double width, const char *s)
+{
+    cairo_text_extents_t e;
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    for (; size > 8; size -= 0.5) {
+        cairo_set_font_size(cr, size);
+        cairo_text_extents(cr, s, &e);
+        if (e.x_advance <= width) break;
+    }
+    text_at(cr, x, y, size, bold, s);
+}
+
 int nav_draw_sheet(const char *title, const sp_nav_preview *pv, int n, const char *png_path,
                    sp_error *err)
 {
     if (n < 1) return sp_error_set(err, SP_E_ARG, "%s: no previews", png_path);
     int cols = n < 4 ? n : 4, rows = (n + cols - 1) / cols, tw = pv[0].width, th = pv[0].height;
-    const int gap = 10, cap_h = 40, head = 40;
+    const int gap = 10, cap_h = 52, head = 44;
     int W = cols * (tw + gap) + gap, H = head + rows * (th + cap_h + gap);
-    if (W < 560) W = 560;
+    if (W < 640) W = 640;
     cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, W, H);
     cairo_t *cr = cairo_create(surf);
     cairo_set_source_rgb(cr, 0.97, 0.97, 0.97);
     cairo_paint(cr);
     cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
-    text_at(cr, gap, 26, 13, 1, title);
+    fitted_text(cr, gap, 28, 14, 1, W - 2 * gap, title);
     for (int j = 0; j < n; j++) {
         if (!pv[j].rgb || pv[j].width != tw || pv[j].height != th) continue;
         int x = gap + (j % cols) * (tw + gap), y = head + (j / cols) * (th + cap_h + gap);
@@ -393,11 +404,13 @@ int nav_draw_sheet(const char *title, const sp_nav_preview *pv, int n, const cha
         char line[128];
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
         snprintf(line, sizeof line, "%d. waypoint %d%s", j + 1, pv[j].waypoint, j == n - 1 ? " (goal)" : "");
-        text_at(cr, x, y + th + 16, 12, 1, line);
-        snprintf(line, sizeof line, "%.1f m along the path  -  localizability %.2f", pv[j].distance_m,
-                 pv[j].localizability);
+        fitted_text(cr, x, y + th + 16, 12, 1, tw, line);
+        snprintf(line, sizeof line, "%.1f m along the path", pv[j].distance_m);
+        fitted_text(cr, x, y + th + 31, 11, 0, tw, line);
+        snprintf(line, sizeof line, "localizability %.2f%s", pv[j].localizability,
+                 pv[j].localizability < 0.3f ? " (poor)" : "");
         if (pv[j].localizability < 0.3f) cairo_set_source_rgb(cr, 0.75, 0.1, 0.1);
-        text_at(cr, x, y + th + 32, 11, 0, line);
+        fitted_text(cr, x, y + th + 46, 11, 0, tw, line);
     }
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
