@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "semsplat/nav.h"
+#include "nav_cli.h"
 
 static void help(void)
 {
@@ -36,11 +36,7 @@ int cmd_describe(int argc, char **argv)
             if (cli_parse_float("describe", "--radius", v, &radius)) return 2;
             if (!(radius > 0)) return cli_usage_error("describe", "--radius: %g is not positive", radius);
         } else if ((v = cli_flag_value(argc, argv, &i, "--from", &bad))) {
-            char *e;
-            from[0] = strtof(v, &e);
-            if (*e == ',') from[1] = strtof(e + 1, &e);
-            if (*e == ',') from[2] = strtof(e + 1, &e);
-            if (*e) return cli_usage_error("describe", "--from: '%s' is not X,Y,YAW", v);
+            if (nav_cli_floats("describe", "--from", v, from, 3, 3, NULL)) return 2;
             has_from = 1;
         } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
             if (cli_parse_int("describe", "--threads", v, &threads)) return 2;
@@ -50,22 +46,14 @@ int cmd_describe(int argc, char **argv)
         if (bad) return 2;
     }
     if (!model || !near) return cli_usage_error("describe", "--model DIR and --near TEXT are required");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("describe", "--device: '%s' is not cpu, cuda or auto", device);
     sp_nav_opts opts = sp_nav_opts_default();
     opts.vocabulary = vocab;
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
-    sp_device *dev = NULL;
-    sp_nav *nav = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("describe", &err);
-    if (sp_nav_open(&nav, model, &opts, dev, &log, &err)) {
-        sp_device_free(dev);
-        return cli_fail("describe", &err);
-    }
+    sp_device *dev;
+    sp_nav *nav;
+    int rc = nav_cli_open("describe", model, device, threads, quiet, &opts, &dev, &nav);
+    if (rc) return rc;
     sp_nav_description d;
-    int rc = 0;
     if (sp_nav_describe(nav, near, (float)radius, has_from ? from : NULL, &d, &err)) {
         rc = cli_fail("describe", &err);
     } else if (json) {

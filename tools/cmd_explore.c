@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "semsplat/nav.h"
+#include "nav_cli.h"
 
 static void help(void)
 {
@@ -31,11 +31,7 @@ int cmd_explore(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--from", &bad))) {
-            char *e;
-            from[0] = strtof(v, &e);
-            if (*e == ',') from[1] = strtof(e + 1, &e);
-            if (*e == ',') from[2] = strtof(e + 1, &e);
-            if (*e) return cli_usage_error("explore", "--from: '%s' is not X,Y,YAW", v);
+            if (nav_cli_floats("explore", "--from", v, from, 3, 3, NULL)) return 2;
             has_from = 1;
         } else if ((v = cli_flag_value(argc, argv, &i, "--views", &bad))) {
             if (cli_parse_int("explore", "--views", v, &views)) return 2;
@@ -47,22 +43,14 @@ int cmd_explore(int argc, char **argv)
         if (bad) return 2;
     }
     if (!model || !region || !out) return cli_usage_error("explore", "--model DIR, --region TEXT and --out DIR are required");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("explore", "--device: '%s' is not cpu, cuda or auto", device);
     sp_nav_opts opts = sp_nav_opts_default();
     if (views) opts.max_tour_poses = (int)views;
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
-    sp_device *dev = NULL;
-    sp_nav *nav = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("explore", &err);
-    if (sp_nav_open(&nav, model, &opts, dev, &log, &err)) {
-        sp_device_free(dev);
-        return cli_fail("explore", &err);
-    }
+    sp_device *dev;
+    sp_nav *nav;
+    int rc = nav_cli_open("explore", model, device, threads, quiet, &opts, &dev, &nav);
+    if (rc) return rc;
     sp_nav_tour tour;
-    int rc = 0;
     if (sp_nav_explore(nav, region, has_from ? from : NULL, &tour, &err) || sp_nav_tour_write(nav, &tour, out, &err)) {
         rc = cli_fail("explore", &err);
     } else {

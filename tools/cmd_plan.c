@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
-#include "semsplat/nav.h"
+#include "nav_cli.h"
 
 static void help(void)
 {
@@ -21,24 +21,6 @@ static void help(void)
            "  --device cpu|cuda|auto, --threads N, --quiet\n\n"
            "Writes DIR/plan.json (waypoints [x,y,z,yaw] and score terms of every trajectory),\n"
            "map.pgm + map.yaml (Nav2 map_server), map.png (top-down map) and previews/.\n");
-}
-
-/* "a,b[,c]" -> n floats (n_min..n_max). */
-static int parse_floats(const char *flag, const char *s, float *out, int n_min, int n_max)
-{
-    int n = 0;
-    const char *p = s;
-    while (n < n_max) {
-        char *end;
-        double v = strtod(p, &end);
-        if (end == p) break;
-        out[n++] = (float)v;
-        p = end;
-        if (*p != ',') break;
-        p++;
-    }
-    if (*p || n < n_min) return cli_usage_error("plan", "%s: '%s' is not %d to %d numbers separated by commas", flag, s, n_min, n_max);
-    return 0;
 }
 
 static void print_plan(const sp_nav_plan *p)
@@ -77,11 +59,10 @@ int cmd_plan(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--from", &bad))) {
-            if (parse_floats("--from", v, from, 3, 3)) return 2;
+            if (nav_cli_floats("plan", "--from", v, from, 3, 3, NULL)) return 2;
             has_from = 1;
         } else if ((v = cli_flag_value(argc, argv, &i, "--goal", &bad))) {
-            if (parse_floats("--goal", v, goal, 2, 3)) return 2;
-            n_goal = strchr(strchr(v, ',') + 1, ',') ? 3 : 2;
+            if (nav_cli_floats("plan", "--goal", v, goal, 2, 3, &n_goal)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--k", &bad))) {
             if (cli_parse_int("plan", "--k", v, &k)) return 2;
             if (k < 1 || k > 64) return cli_usage_error("plan", "--k: %ld not in 1..64", k);
@@ -103,18 +84,11 @@ int cmd_plan(int argc, char **argv)
     }
     if (!model || !out) return cli_usage_error("plan", "--model DIR and --out DIR are required");
     if (!to == !n_goal) return cli_usage_error("plan", "give the goal as --to \"phrase\" or --goal X,Y[,YAW] (one of them)");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("plan", "--device: '%s' is not cpu, cuda or auto", device);
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
-    sp_device *dev = NULL;
-    sp_nav *nav = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("plan", &err);
-    if (sp_nav_open(&nav, model, &opts, dev, &log, &err)) {
-        sp_device_free(dev);
-        return cli_fail("plan", &err);
-    }
+    sp_device *dev;
+    sp_nav *nav;
+    int rc = nav_cli_open("plan", model, device, threads, quiet, &opts, &dev, &nav);
+    if (rc) return rc;
     sp_nav_request req = sp_nav_request_default();
     req.start = has_from ? from : NULL;
     req.to = to;
@@ -123,7 +97,6 @@ int cmd_plan(int argc, char **argv)
     req.previews = previews;
     if (n_goal) req.goal = n_goal == 3 ? sp_nav_goal_pose(goal[0], goal[1], goal[2]) : sp_nav_goal_point(goal[0], goal[1]);
     sp_nav_plan plan;
-    int rc = 0;
     if (sp_nav_plan_request(nav, &req, &plan, &err) || sp_nav_plan_write(nav, &plan, out, &err)) rc = cli_fail("plan", &err);
     else {
         print_plan(&plan);

@@ -126,6 +126,16 @@ static void gauss_normal(const sp_splat *s, size_t i, float *nz, float *flat)
     *flat = expf(ls[a] - mid);
 }
 
+/* An opaque, flat, horizontal Gaussian: a piece of floor or of a table top. */
+static int flat_horizontal(const sp_splat *s, size_t i, float *op)
+{
+    float nz, flat;
+    *op = sp_sigmoid(s->opacity_logits[i]);
+    if (*op < FLOOR_MIN_OPACITY) return 0;
+    gauss_normal(s, i, &nz, &flat);
+    return nz >= FLOOR_NZ && flat <= FLOOR_FLATNESS;
+}
+
 /* The floor: the heaviest 2 cm band of flat, horizontal, opaque Gaussians below the median
  * camera height, weighted by area x opacity; refined to the weighted mean z within the band. */
 static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, float *floor_z,
@@ -153,12 +163,8 @@ static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams,
     double *hist = calloc((size_t)nb, sizeof(double));
     if (!hist) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
     for (size_t i = 0; i < s->n; i++) {
-        float z = s->means[3 * i + 2];
-        if (!(z >= z_min && z < z_top)) continue;
-        float op = sp_sigmoid(s->opacity_logits[i]), nz, flat;
-        if (op < FLOOR_MIN_OPACITY) continue;
-        gauss_normal(s, i, &nz, &flat);
-        if (nz < FLOOR_NZ || flat > FLOOR_FLATNESS) continue;
+        float z = s->means[3 * i + 2], op;
+        if (!(z >= z_min && z < z_top) || !flat_horizontal(s, i, &op)) continue;
         const float *ls = s->log_scales + 3 * i;
         float area = expf(ls[0] + ls[1] + ls[2] - fminf(ls[0], fminf(ls[1], ls[2])));
         hist[(int)((z - z_min) / FLOOR_BIN_M)] += (double)op * area;
@@ -173,12 +179,8 @@ static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams,
     float lo = z_min + (best - 1) * FLOOR_BIN_M, hi = z_min + (best + 2) * FLOOR_BIN_M;
     double sw = 0, sz = 0;
     for (size_t i = 0; i < s->n; i++) {
-        float z = s->means[3 * i + 2];
-        if (!(z >= lo && z < hi)) continue;
-        float op = sp_sigmoid(s->opacity_logits[i]), nz, flat;
-        if (op < FLOOR_MIN_OPACITY) continue;
-        gauss_normal(s, i, &nz, &flat);
-        if (nz < FLOOR_NZ || flat > FLOOR_FLATNESS) continue;
+        float z = s->means[3 * i + 2], op;
+        if (!(z >= lo && z < hi) || !flat_horizontal(s, i, &op)) continue;
         sw += op;
         sz += (double)op * z;
     }

@@ -32,16 +32,22 @@ static int clip_z(const float (*in)[3], int n, float plane, int sign, float (*ou
     return m;
 }
 
+/* The cells of the grid that the box [lx, hx] x [ly, hy] touches. */
+static void cell_range(const plan_grid *g, float lx, float ly, float hx, float hy, int *x0, int *y0, int *x1, int *y1)
+{
+    *x0 = (int)floorf((lx - g->x0) / g->res), *x1 = (int)floorf((hx - g->x0) / g->res);
+    *y0 = (int)floorf((ly - g->y0) / g->res), *y1 = (int)floorf((hy - g->y0) / g->res);
+    if (*x0 < 0) *x0 = 0;
+    if (*y0 < 0) *y0 = 0;
+    if (*x1 >= g->nx) *x1 = g->nx - 1;
+    if (*y1 >= g->ny) *y1 = g->ny - 1;
+}
+
 /* Marks the cells whose slightly shrunk interior the segment a-b crosses. */
 static void mark_segment(plan_grid *g, const float *a, const float *b)
 {
-    float lx = fminf(a[0], b[0]), hx = fmaxf(a[0], b[0]), ly = fminf(a[1], b[1]), hy = fmaxf(a[1], b[1]);
-    int x0 = (int)floorf((lx - g->x0) / g->res), x1 = (int)floorf((hx - g->x0) / g->res);
-    int y0 = (int)floorf((ly - g->y0) / g->res), y1 = (int)floorf((hy - g->y0) / g->res);
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 >= g->nx) x1 = g->nx - 1;
-    if (y1 >= g->ny) y1 = g->ny - 1;
+    int x0, y0, x1, y1;
+    cell_range(g, fminf(a[0], b[0]), fminf(a[1], b[1]), fmaxf(a[0], b[0]), fmaxf(a[1], b[1]), &x0, &y0, &x1, &y1);
     float e = EDGE_SHRINK * g->res;
     for (int iy = y0; iy <= y1; iy++)
         for (int ix = x0; ix <= x1; ix++) {
@@ -82,12 +88,8 @@ static void mark_interior(plan_grid *g, const float (*p)[3], int n)
         lx = fminf(lx, p[i][0]), hx = fmaxf(hx, p[i][0]);
         ly = fminf(ly, p[i][1]), hy = fmaxf(hy, p[i][1]);
     }
-    int x0 = (int)floorf((lx - g->x0) / g->res), x1 = (int)floorf((hx - g->x0) / g->res);
-    int y0 = (int)floorf((ly - g->y0) / g->res), y1 = (int)floorf((hy - g->y0) / g->res);
-    if (x0 < 0) x0 = 0;
-    if (y0 < 0) y0 = 0;
-    if (x1 >= g->nx) x1 = g->nx - 1;
-    if (y1 >= g->ny) y1 = g->ny - 1;
+    int x0, y0, x1, y1;
+    cell_range(g, lx, ly, hx, hy, &x0, &y0, &x1, &y1);
     for (int iy = y0; iy <= y1; iy++)
         for (int ix = x0; ix <= x1; ix++) {
             float cx = g->x0 + (ix + 0.5f) * g->res, cy = g->y0 + (iy + 0.5f) * g->res;
