@@ -5,7 +5,8 @@
  *   bench_nav --ideal --world W.world [--views N]                 an ideal splat of the world's
  *                                                                 geometry (tests/nav/world_splat.h)
  * Options: --to NAME (a world object's name, default refrigerator) --k N (3) --threads N (2)
- *          --map OUT.yaml (writes the map and OUT.yaml.truth.pgm: agreement colour-coded). */
+ *          --map OUT.yaml (writes the map and OUT.yaml.truth.pgm: agreement colour-coded);
+ *          costmap settings --needs-floor 0|1 --evidence E --min-opacity O --despeckle N --fill M2. */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
@@ -96,6 +97,13 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--views")) views = atoi(v), i++;
         else if (!strcmp(argv[i], "--threads")) threads = atoi(v), i++;
         else if (!strcmp(argv[i], "--map")) map = v, i++;
+        /* costmap settings, to see how each one matters (the defaults are the library's) */
+        else if (!strcmp(argv[i], "--band-lo")) co.band_lo_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--needs-floor")) co.free_needs_floor = atoi(v), i++;
+        else if (!strcmp(argv[i], "--evidence")) co.occupied_evidence = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--min-opacity")) co.min_opacity = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--despeckle")) co.despeckle_cells = atoi(v), i++;
+        else if (!strcmp(argv[i], "--fill")) co.fill_max_area_m2 = (float)atof(v), i++;
         else {
             fprintf(stderr, "bench_nav: unknown argument '%s'\n", argv[i]);
             return 2;
@@ -137,8 +145,9 @@ int main(int argc, char **argv)
         sp_synth_load_opts lo = {model_path, 1, 0, NULL};
         if (sp_synth_load_world(world, &lo, &w, &err)) return fail(&err);
         uint8_t *truth = malloc((size_t)cm.nx * cm.ny);
-        /* the world's floor is z = 0; the same band above it */
-        if (sp_synth_floor_plan(&w, co.band_lo_m, co.band_hi_m, cm.res, cm.origin, cm.nx, cm.ny, truth, &err))
+        /* the world's floor is z = 0; the costmap's band above it */
+        if (sp_synth_floor_plan(&w, cm.band[0] - cm.floor_z, cm.band[1] - cm.floor_z, cm.res, cm.origin, cm.nx, cm.ny,
+                                truth, &err))
             return fail(&err);
         sp_costmap_agreement a;
         sp_costmap_compare(&cm, truth, &a);

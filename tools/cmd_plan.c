@@ -16,6 +16,7 @@ static void help(void)
            "  --k N              trajectories asked for (default 3; fewer when the map allows fewer)\n"
            "  --instance N       with --to: only instance N (default: any, the path picks)\n"
            "  --radius M         robot radius in metres (default 0.2)\n"
+           "  --band LO,HI       the robot's body in metres above the floor (default 0.05,1.0)\n"
            "  --approach M       end within this of the object's footprint (default 0.5)\n"
            "  --no-previews      skip the rendered views\n"
            "  --device cpu|cuda|auto, --threads N, --quiet\n\n"
@@ -74,6 +75,10 @@ int cmd_plan(int argc, char **argv)
             if (cli_parse_float("plan", "--radius", v, &d)) return 2;
             opts.costmap.robot_radius_m = (float)d;
             if (opts.costmap.inflation_radius_m < d) opts.costmap.inflation_radius_m = (float)d;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--band", &bad))) {
+            float band[2];
+            if (nav_cli_floats("plan", "--band", v, band, 2, 2, NULL)) return 2;
+            opts.costmap.band_lo_m = band[0], opts.costmap.band_hi_m = band[1];
         } else if ((v = cli_flag_value(argc, argv, &i, "--approach", &bad))) {
             if (cli_parse_float("plan", "--approach", v, &d)) return 2;
             opts.approach_m = (float)d;
