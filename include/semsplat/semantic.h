@@ -212,6 +212,189 @@ const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
  * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms. */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
 
+/* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *
+ *
+ * Matches free text against a scene's own class names ("refrigerator", "kitchen counter", ...)
+ * with WordNet 3.0 (Debian's wordnet-base, read directly from /usr/share/wordnet). It is
+ * matching against KNOWN class names: it cannot find anything the world's labels do not name.
+ *
+ * A query is split into target and anchor at a spatial relation where both sides match ("X near
+ * / next to / beside / by / in / on / to / above / under ... Y"), and each phrase into a head noun
+ * (the longest WordNet collocation ending at its last noun: "coffee table", "tv set"; closed
+ * compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers before it,
+ * and description words after a clause marker ("something TO sit on", "a seat FOR two").
+ * Per class c, the confidence in 0..1 is, from the head h (all its senses) and the class's head
+ * (its physical senses that the tagged corpora attest; when none, its physical senses closest to
+ * the other classes of the scene, after Resnik 1999):
+ *   T = 1                                   exact name (after plurals) or a shared synset
+ *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
+ *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 0.6                                 h (a commonly used sense) is a part of c
+ *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
+ * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
+ * cabinet") sits one level below its head, so the head alone is its hypernym and another kind of
+ * the head ("dresser") its sibling. T is multiplied by
+ *   (1 - BETA)                 per query modifier that names other classes and not this one (0.3)
+ *   (1 - EPS)                  per attribute its definitions do not mention (0.1; "red", "wooden":
+ *                              reported in `ignored`)
+ *   (1 - GAMMA + GAMMA G)      when a description stands beside the head (GAMMA 0.3).
+ * Without a head noun (or with a placeholder: "something", "a place") the confidence is G:
+ *   G = sum_d w_d m_d / sum_d w_d,  w_d = 1 / (1 + ln(1 + senses(d)))  (polysemy for frequency),
+ *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
+ *   hypernym's, DELTA^2 two levels up, and 0.8 for a lemma of d's commonest sense found in the
+ *   class's own definition (one weak step at most). Location words (room, area) describe nothing.
+ * A compound whose modifier is itself a class name ("tv monitor") also scores
+ * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
+ * "the area that looks like a kitchen") list the classes that define them: the region table's
+ * object phrases (data/semantic/regions.json, extendable), the nouns of the region's WordNet
+ * definition, classes named after it ("kitchen counter"); a room needs two kinds of them, one
+ * alone is scaled by MU. SP_LEX_THRESHOLD is the one threshold for every world.
+ * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (the database files
+ * are mapped read-only); any number of threads may match against them at once. Results are
+ * plain structs with fixed arrays (no ownership). */
+
+#define SP_LEX_THRESHOLD 0.5f           /* confidence at or above which a class matches */
+#define SP_LEX_DEFAULT_WORDNET "/usr/share/wordnet"
+#define SP_LEX_MAX_CLASSES 128
+#define SP_LEX_MAX_IGNORED 8
+
+typedef struct sp_lexicon sp_lexicon;
+typedef struct sp_lex_vocab sp_lex_vocab;
+
+/* Opens WordNet's database files in dir (NULL = SP_LEX_DEFAULT_WORDNET). Reads nothing else:
+ * start-up is a few file opens and one synset read. Fails with SP_E_NOTFOUND naming the file and
+ * the Debian package when the database is missing. */
+int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err);
+void sp_lexicon_free(sp_lexicon *lx);
+
+/* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES; each index keeps its name) against lx,
+ * which must outlive the vocabulary. regions_path: a region table (JSON object: region name ->
+ * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none). Resolves the
+ * table's regions once (house, 25 classes: about 60 ms). */
+int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
+                        int n, const char *regions_path, sp_error *err);
+void sp_lex_vocab_free(sp_lex_vocab *v);
+int sp_lex_vocab_size(const sp_lex_vocab *v);
+const char *sp_lex_vocab_class(const sp_lex_vocab *v, int i);
+
+/* How a class matched (strongest evidence). */
+typedef enum {
+    SP_LEX_NONE = 0,
+    SP_LEX_EXACT,     /* the class name itself (after plurals and inflections) */
+    SP_LEX_SYNONYM,   /* the query's head shares a WordNet synset with the class */
+    SP_LEX_HYPERNYM,  /* the query is more general ("appliance" -> refrigerator) */
+    SP_LEX_HYPONYM,   /* the query is more specific ("clock" -> timepiece) */
+    SP_LEX_PART,      /* the query names a part of the class */
+    SP_LEX_RELATED,   /* siblings or cousins in the taxonomy: always below the threshold */
+    SP_LEX_GLOSS,     /* description words found in the class's definitions */
+    SP_LEX_MODIFIER,  /* through a modifier that is itself a class ("tv monitor") */
+    SP_LEX_REGION     /* named after the region ("kitchen counter" in the kitchen) */
+} sp_lex_kind;
+
+const char *sp_lex_kind_name(int kind); /* "exact", "synonym", ... */
+
+typedef struct sp_lex_class_match {
+    int class_index;
+    float score;          /* confidence 0..1; >= SP_LEX_THRESHOLD = match */
+    int kind;             /* sp_lex_kind */
+    char query_sense[64]; /* the WordNet lemma of the query sense used ("" for gloss matches) */
+    char class_sense[64]; /* the lemma of the class sense used */
+    char path[256];       /* taxonomy path, "armchair > chair > seat" (class to query or LCS) */
+    char gloss_words[192];/* "sit (seat: furniture that is designed for sitting on)" */
+    char definition[192]; /* WordNet definition of the class sense used */
+} sp_lex_class_match;
+
+/* One resolved phrase: every class scored, best first. For a region (is_region) the matches are
+ * its member classes, each with how its member phrase matched. */
+typedef struct sp_lex_phrase {
+    char text[128];        /* the words of this phrase */
+    char head[64];         /* head noun or collocation used ("" = description only) */
+    int is_region;         /* the phrase names a region */
+    char region[64];       /* its name ("kitchen", or the phrase defining a generic area) */
+    int n_matches;         /* = number of classes */
+    sp_lex_class_match matches[SP_LEX_MAX_CLASSES];
+} sp_lex_phrase;
+
+typedef struct sp_lex_result {
+    char text[256];
+    sp_lex_phrase target;  /* what to find (X of "X near Y", or the whole query) */
+    char relation[24];     /* "" or "near", "next to", "in", "on", "to", "above", ... */
+    sp_lex_phrase anchor;  /* Y when relation[0] */
+    int n_ignored;
+    char ignored[SP_LEX_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
+    float confidence;      /* the target's best score (0 when nothing matched) */
+    int found;             /* confidence >= SP_LEX_THRESHOLD (and the anchor found, if any) */
+} sp_lex_result;
+
+/* Scores text against every class of v. The result is large (fixed arrays): allocate it on the
+ * heap. Fails on empty text; a text with no known words gives found = 0, not an error. */
+int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err);
+/* The result as JSON (malloc'd, caller frees): text, found, confidence, target {head, region,
+ * matches [{class, score, kind, query_sense, class_sense, path, gloss_words, definition}] above
+ * min_score}, relation, anchor, ignored. */
+char *sp_lex_result_json(const sp_lex_result *res, const sp_lex_vocab *v, float min_score);
+/* A human-readable explanation (--explain) into out. */
+void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, size_t cap);
+
+/* ---- lexical queries on a label-feature scene ------------------------------------------------- *
+ *
+ * The lexical encoder grounded through the query engine (label-feature scenes, whose classes'
+ * features are sp_label_embedding vectors): the engine localizes the matched classes' label
+ * embeddings, and the result's confidence is the lexical score (found = that score >=
+ * SP_LEX_THRESHOLD and an instance was localized). A region
+ * is each of its classes localized alone, their instances clustered in space (boxes within 2 m),
+ * and the cluster holding most of the region's kinds taken: its extent and centre. A target too
+ * is each matched class localized alone (the scene must show a cosine of 0.5 with the class's
+ * embedding, else the class is named but not seen), instances of the best-scoring class first.
+ * A relation then ranks them, within a class score, by their distance to the anchor's instances
+ * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
+ * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
+ * top (bottom), 0.3 m tolerance. */
+
+typedef struct sp_lex_extent {
+    float extent_min[3], extent_max[3]; /* world frame */
+    float centre[3];
+    int n_instances;
+} sp_lex_extent;
+
+typedef struct sp_lex_answer {
+    sp_lex_result lex;        /* what the text matched, and why */
+    sp_query_result result;   /* the target's instances (ranked by the relation when there is one;
+                               * a region's member instances); confidence = the lexical score;
+                               * position = the best instance, or the region's centre */
+    int is_region;
+    sp_lex_extent region;     /* is_region: the extent of the region's objects */
+    int has_anchor;
+    sp_lex_extent anchor;     /* relation: the anchor instance nearest the best target, or region */
+    int *instance_class;      /* [result.n_instances] the class (vocabulary index) of each */
+    float *relation_m;        /* [result.n_instances] each instance's relation cost in metres
+                               * (NULL without a relation or when the anchor is not found) */
+} sp_lex_answer;
+
+/* Answers text on engine e (a label-feature scene whose class names are v's). a is large: put it
+ * on the heap; free with sp_lex_answer_free. The engine's options are used as set, except that
+ * the lexical score decides what is found (min_confidence is not applied). */
+int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
+                 sp_error *err);
+void sp_lex_answer_free(sp_lex_answer *a);
+/* The lexical encoder as a text embedding for a label-feature scene: the target's classes
+ * matched at or above the threshold, sum of score * sp_label_embedding(class, dim), normalised
+ * (all zeros when nothing matches); *confidence (may be NULL) the lexical score. */
+int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
+                 sp_error *err);
+/* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
+ * sp_lex_result_json), region and anchor (extents, relation, instance_cost_m). */
+char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const char *heatmap_path);
+/* A vocabulary of the classes of a capture's labels.json (synth's format; "background" and
+ * repeats dropped). */
+int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
+                             const char *regions_path, sp_error *err);
+/* The vocabulary of a label-feature model folder (semantic.json: source "labels", label_embedding
+ * "hash"): the labels.json of the capture it names. Other models fail with SP_E_UNSUPPORTED (their
+ * features live beside CLIP's text tower, not label embeddings). */
+int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
+                           const char *regions_path, sp_error *err);
+
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
 /* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
