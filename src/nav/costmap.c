@@ -544,6 +544,16 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
         return sp_error_set(err, SP_E_ARG, "costmap: needs a splat with Gaussians, at least one "
                             "training camera and a raster (got %zu Gaussians, %zu cameras)",
                             s ? s->n : 0, n_cams);
+    if ((rc = sp_splat_check_finite(s, err))) return sp_error_prefix(err, "costmap: ");
+    for (size_t c = 0; c < n_cams; c++) {
+        const sp_camera *k = &cams[c];
+        int ok = k->width > 0 && k->height > 0 && k->fx > 0 && k->fy > 0 && isfinite(k->cx) && isfinite(k->cy);
+        for (int j = 0; j < 9; j++) ok &= isfinite(k->R[j]);
+        for (int j = 0; j < 3; j++) ok &= isfinite(k->t[j]);
+        if (!ok)
+            return sp_error_set(err, SP_E_ARG, "costmap: training camera %zu has a non-finite pose or bad "
+                                "intrinsics (%dx%d, fx %g)", c, k->width, k->height, k->fx);
+    }
     double t0 = sp_time_now();
     float floor_z = o.floor_z;
     if (isnan(floor_z) && (rc = detect_floor(s, cams, n_cams, &floor_z, err))) return rc;

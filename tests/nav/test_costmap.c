@@ -216,6 +216,24 @@ static void test_bad_build(void)
     o = sp_costmap_opts_default();
     o.robot_radius_m = 2.0f;
     CHECK_FAILS(sp_costmap_inflate(&g_cm, &o, &err), SP_E_ARG, &err, "radius");
+    /* a NaN in the splat, a camera with a broken pose */
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 1, &err), &err);
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    CHECK(ns_make_cams(&cams, &n, 32, 24) == 0);
+    o = sp_costmap_opts_default();
+    float keep = g_splat.means[7];
+    g_splat.means[7] = NAN;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, cams, n, &o, r, NULL, &err), SP_E_NUMERIC, &err, "costmap");
+    g_splat.means[7] = keep;
+    cams[3].t[1] = INFINITY;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, cams, n, &o, r, NULL, &err), SP_E_ARG, &err, "camera 3");
+    free(cams);
+    sp_raster_free(r);
+    sp_device_free(dev);
 }
 
 int main(void)
