@@ -8,9 +8,10 @@
  *     extent, not its centre), fused in voxels (cells x 10 cm slices of the robot's height band
  *     above the floor) with the rays of the carving below: a voxel is occupied when the
  *     footprints' evidence 1 - prod(1 - w_i) reaches a threshold and the cameras did not see
- *     through it, or when rendered surfaces end in it; a cell when one of its voxels is;
- *   - free: carved along the training cameras' rays to their rendered depth, where the ray passes
- *     through the height band (or ends on the floor), so space no camera saw stays UNKNOWN;
+ *     through it (a floater); a cell when one of its voxels is;
+ *   - free: carved along the training cameras' rays to their rendered depth, where its floor was
+ *     seen (a ray ended on it, or the splat has floor there) or rays crossed its whole height
+ *     band, so space no camera saw stays UNKNOWN; pockets enclosed by obstacles are filled;
  *   - costs: Nav2's inflation (LETHAL 254 on obstacles, INSCRIBED 253 within the robot radius,
  *     252 exp(-cost_scaling_factor (d - r)) out to the inflation radius, NO_INFORMATION 255 for
  *     unknown), from an exact Euclidean distance transform.
@@ -74,11 +75,13 @@ typedef struct sp_costmap_opts {
     int keep_clear_of_unknown; /* cells within the robot radius of unknown are INSCRIBED (0, as
                                 * Nav2's inflate_around_unknown: the path itself never enters unknown) */
     float min_opacity;         /* Gaussians fainter than this are ignored (0.15) */
-    int min_views;             /* ... and those fewer training views see (floaters) (3) */
+    int min_views;             /* ... and those fewer training views see (0: the count, from
+                                * low-resolution renders, misses too many real surfaces) */
     float footprint_sigmas;    /* footprints are evaluated out to this many std devs (3) */
     float occupied_evidence;   /* a voxel is occupied when 1 - prod(1 - w_i) >= this (0.5) */
-    int free_needs_floor;      /* a cell is free only when its floor was seen or rays crossed all
-                                * of its slices (1); 0: any ray through the band frees it */
+    int free_needs_floor;      /* a cell is free only when its floor was seen (and a ray crossed
+                                * it) or rays crossed all of its slices (1); 0: any ray through
+                                * the band frees it */
     int cameras_stand;         /* the robot radius under every training camera is free: the
                                 * capture stood there (1; 0 for cameras held above furniture) */
     int despeckle_cells;       /* occupied specks of at most this many cells amid free space are
@@ -114,7 +117,8 @@ typedef struct sp_costmap {
     uint8_t *cost;       /* SP_COST_*: 0..252 inflation, 253 inscribed, 254 lethal, 255 unknown */
     float *dist;         /* metres from the cell centre to the nearest occupied cell's centre
                           * (INFINITY when there is none) */
-    uint16_t *seen;      /* training-camera rays that carved the cell (NULL for maps read from
+    uint16_t *seen;      /* training-camera rays that crossed the cell's band, summed over its
+                          * slices, plus those that ended on its floor (NULL for maps read from
                           * files): how well the capture observed it */
     sp_costmap_opts opts;/* the settings it was built or inflated with */
 } sp_costmap;
