@@ -137,7 +137,7 @@ int main(int argc, char **argv)
     printf("costmap_build  %.0f ms  (%s; %zu Gaussians, %zu views at 1/%d, %dx%d cells of %.2f m, %s; %.0f ms of "
            "CPU time over all threads; load average %.1f)\n", 1e3 * t_build, ideal ? "ideal splat" : model, s.n, n,
            co.carve_downscale, cm.nx, cm.ny, cm.res, sp_device_name(dev), 1e3 * cpu, la);
-    printf("floor_z  %.3f m\n", cm.floor_z);
+    printf("floor_z  %.3f m  (band %.2f..%.2f m above it)\n", cm.floor_z, cm.band[0] - cm.floor_z, cm.band[1] - cm.floor_z);
     if (map && sp_costmap_write_map(&cm, map, &err)) return fail(&err);
     sp_nav_box goal_box = {{NAN, NAN}, {NAN, NAN}};
     if (world) {

@@ -67,7 +67,9 @@ enum {
 
 typedef struct sp_costmap_opts {
     float resolution_m;        /* cell edge (0.05) */
-    float band_lo_m, band_hi_m;/* the robot's body, metres above the floor (0.05, 1.0) */
+    float band_lo_m, band_hi_m;/* the robot's body, metres above the floor (0.05, 1.0); the
+                                * bottom rises to twice the floor's roughness in the splat when
+                                * that is higher (cm->band and cm->opts say what was used) */
     float floor_z;             /* world z of the floor; NAN = detect from the splat */
     float robot_radius_m;      /* inscribed radius (0.2) */
     float inflation_radius_m;  /* costs decay to 0 here (1.0) */

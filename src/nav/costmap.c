@@ -126,6 +126,12 @@ static void gauss_normal(const sp_splat *s, size_t i, float *nz, float *flat)
     *flat = expf(ls[a] - mid);
 }
 
+static int cmp_float(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
 /* An opaque, flat, horizontal Gaussian: a piece of floor or of a table top. */
 static int flat_horizontal(const sp_splat *s, size_t i, float *op)
 {
@@ -136,29 +142,26 @@ static int flat_horizontal(const sp_splat *s, size_t i, float *op)
     return nz >= FLOOR_NZ && flat <= FLOOR_FLATNESS;
 }
 
-/* The floor: the heaviest 2 cm band of flat, horizontal, opaque Gaussians below the median
- * camera height, weighted by area x opacity; refined to the weighted mean z within the band. */
+/* The floor: the heaviest 10 cm window of flat, horizontal, opaque Gaussians below the lowest
+ * cameras, weighted by area x opacity; refined to the opacity-weighted mean z within it, whose
+ * standard deviation is the floor's roughness in this splat. */
 static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, float *floor_z,
-                        sp_error *err)
+                        float *floor_sd, sp_error *err)
 {
     float *zc = malloc(sizeof(float) * n_cams);
     if (!zc) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
     for (size_t c = 0; c < n_cams; c++) zc[c] = sp_camera_center(&cams[c]).z;
-    /* median camera height by partial selection (n_cams is small) */
-    for (size_t a = 0; a <= n_cams / 2; a++)
-        for (size_t b = a + 1; b < n_cams; b++)
-            if (zc[b] < zc[a]) {
-                float t = zc[a];
-                zc[a] = zc[b], zc[b] = t;
-            }
-    float z_top = zc[n_cams / 2];
+    /* The floor lies below the cameras: below the lowest of them (the 5th percentile, so that one
+     * stray pose cannot decide), which keeps table and shelf tops out when cameras stood low. */
+    qsort(zc, n_cams, sizeof(float), cmp_float);
+    float z_top = zc[n_cams / 20] - 0.05f;
     free(zc);
     float z_min = INFINITY;
     for (size_t i = 0; i < s->n; i++)
         if (s->means[3 * i + 2] < z_min && s->means[3 * i + 2] > z_top - 20.0f) z_min = s->means[3 * i + 2];
     if (!(z_min < z_top))
-        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no Gaussians below the cameras (median "
-                            "camera height %.2f m): cannot find the floor", z_top);
+        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no Gaussians below the cameras (the lowest "
+                            "at %.2f m): cannot find the floor (give floor_z)", z_top + 0.05f);
     int nb = (int)ceilf((z_top - z_min) / FLOOR_BIN_M) + 1;
     double *hist = calloc((size_t)nb, sizeof(double));
     if (!hist) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
@@ -169,22 +172,29 @@ static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams,
         float area = expf(ls[0] + ls[1] + ls[2] - fminf(ls[0], fminf(ls[1], ls[2])));
         hist[(int)((z - z_min) / FLOOR_BIN_M)] += (double)op * area;
     }
+    /* the heaviest 10 cm window (a trained floor is often smeared over several bins) */
     int best = -1;
-    for (int b = 0; b < nb; b++)
-        if (hist[b] > 0 && (best < 0 || hist[b] > hist[best])) best = b;
+    double best_w = 0;
+    for (int b = 0; b < nb; b++) {
+        double w = 0;
+        for (int k = b - 2; k <= b + 2; k++) w += k >= 0 && k < nb ? hist[k] : 0;
+        if (w > best_w) best_w = w, best = b;
+    }
     free(hist);
     if (best < 0)
         return sp_error_set(err, SP_E_NOTFOUND, "costmap: no flat horizontal Gaussians below the "
                             "cameras: cannot find the floor (give floor_z)");
-    float lo = z_min + (best - 1) * FLOOR_BIN_M, hi = z_min + (best + 2) * FLOOR_BIN_M;
-    double sw = 0, sz = 0;
+    float lo = z_min + (best - 2) * FLOOR_BIN_M, hi = z_min + (best + 3) * FLOOR_BIN_M;
+    double sw = 0, sz = 0, szz = 0;
     for (size_t i = 0; i < s->n; i++) {
         float z = s->means[3 * i + 2], op;
         if (!(z >= lo && z < hi) || !flat_horizontal(s, i, &op)) continue;
         sw += op;
         sz += (double)op * z;
+        szz += (double)op * z * z;
     }
     *floor_z = (float)(sz / sw);
+    *floor_sd = (float)sqrt(fmax(0.0, szz / sw - (sz / sw) * (sz / sw)));
     return SP_OK;
 }
 
@@ -195,11 +205,6 @@ static float band_fraction(float m, float sd, float lo, float hi)
     return 0.5f * (erff((hi - m) * k) - erff((lo - m) * k));
 }
 
-static int cmp_float(const void *a, const void *b)
-{
-    float x = *(const float *)a, y = *(const float *)b;
-    return (x > y) - (x < y);
-}
 
 /* Bounds: the band Gaussians (robust quantiles) and the cameras, plus the margin. */
 static int map_bounds(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
@@ -555,8 +560,15 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
                                 "intrinsics (%dx%d, fx %g)", c, k->width, k->height, k->fx);
     }
     double t0 = sp_time_now();
-    float floor_z = o.floor_z;
-    if (isnan(floor_z) && (rc = detect_floor(s, cams, n_cams, &floor_z, err))) return rc;
+    float floor_z = o.floor_z, floor_sd = 0;
+    if (isnan(floor_z) && (rc = detect_floor(s, cams, n_cams, &floor_z, &floor_sd, err))) return rc;
+    /* Nothing lower than twice the floor's own roughness can be told from the floor: the band
+     * starts there when that is above band_lo_m (a trained floor is centimetres thick). */
+    if (o.band_lo_m < 2 * floor_sd && 2 * floor_sd < o.band_hi_m - o.slice_m) {
+        sp_logf(log, SP_LOG_INFO, "costmap: the floor's Gaussians spread %.3f m: the band starts at %.2f m, not %.2f",
+                floor_sd, 2 * floor_sd, o.band_lo_m);
+        o.band_lo_m = 2 * floor_sd;
+    }
     cm->floor_z = floor_z;
     cm->band[0] = floor_z + o.band_lo_m;
     cm->band[1] = floor_z + o.band_hi_m;
