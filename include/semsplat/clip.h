@@ -20,7 +20,7 @@
 #define SEMSPLAT_CLIP_H
 
 #include "semsplat/core.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 
 #ifdef __cplusplus
 extern "C" {

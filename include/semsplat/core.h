@@ -193,6 +193,19 @@ void sp_camera_look_at(sp_camera *cam, sp_vec3 eye, sp_vec3 target, sp_vec3 up);
 /* Scales intrinsics and size for an image downscaled by `factor` (>= 1). */
 void sp_camera_downscale(sp_camera *cam, int factor);
 
+/* Cameras from a pose, for previews and agents (render_view_from_splat). */
+/* Pinhole intrinsics from an image size and a horizontal field of view: square pixels
+ * (fx = fy = width / (2 tan(hfov / 2))), principal point at the image centre (width / 2,
+ * height / 2 in the pixel-centre convention), no distortion. The pose is left as it was. */
+void sp_camera_intrinsics_fov(sp_camera *cam, int width, int height, float hfov_rad);
+/* The pose of a camera at world position pos in a z-up world frame: yaw about +z from +x
+ * (yaw 0 looks along +x, pi/2 along +y), pitch up positive (pi/2 looks straight up), no roll;
+ * image x to the right, y down. Intrinsics are left as they were. */
+void sp_camera_from_pose(sp_camera *cam, const float pos[3], float yaw, float pitch);
+/* The pose from a rigid 4x4 row-major camera-to-world matrix whose camera axes are OpenCV's
+ * (x right, y down, z forward): R = rotation^T, t = -R translation. */
+void sp_camera_set_world_from_cam(sp_camera *cam, const float M[16]);
+
 /* ---- lens distortion ------------------------------------------------------------------------- */
 
 /* COLMAP's distortion of normalised image coordinates (u, v) = (x/z, y/z) for cam's model
@@ -238,8 +251,8 @@ typedef struct sp_splat {
 } sp_splat;
 
 /* The largest semantic feature dimension (feat_dim, the scene PCA's dim) any stage accepts:
- * the query engine's scorer keeps a text's projections as SP_FEATURE_DIM_MAX floats (in GPU
- * constant memory on CUDA) and a Gram matrix of its square. `features` refuses a larger --dim at
+ * the query engine's scorer keeps a text's projections as SP_FEATURE_DIM_MAX floats (one kernel
+ * argument on CUDA) and a Gram matrix of its square. `features` refuses a larger --dim at
  * once, feature folders and model folders that claim more are refused when opened, and lift
  * refuses it, so no stage makes a model that no query can open. */
 #define SP_FEATURE_DIM_MAX 64

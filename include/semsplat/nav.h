@@ -94,10 +94,11 @@ typedef struct sp_costmap_opts {
     float pass_veto;           /* ... unless rays passed through it more than this x (1 + rays
                                 * that ended in it) times: a floater the cameras saw through (3) */
     int carve_downscale;       /* training views rendered at 1/this size for carving (4) */
-    float carve_alpha;         /* rays with less accumulated alpha hit nothing: not carved (0.5) */
+    float carve_alpha;         /* rays with less accumulated alpha hit nothing: not carved; the
+                                * first-surface depth is taken at this alpha (0.5) */
     float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */
     float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (0.15:
-                                * expected depth composites Gaussian centres, several cm off on
+                                * rendered depth is that of Gaussian centres, several cm off on
                                 * a floor seen at a slant) */
     float max_range_m;         /* rays longer than this are cut (8) */
     float margin_m;            /* map bounds: observed space plus this (0.5) */

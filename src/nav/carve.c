@@ -1,8 +1,8 @@
-/* Free space from the training cameras: each view is rendered (depth and alpha) at reduced size,
- * and every ray that hits a surface marks the voxels (cell x height slice of the robot's band) it
- * crosses as passed, up to a little before the surface; the surface point itself is a hit (or a
- * floor sighting). Space no ray crossed stays unknown. The same renders count, per Gaussian, the
- * training views that see it (the coverage behind localizability). */
+/* Free space from the training cameras: each view is rendered (first-surface depth and alpha)
+ * at reduced size, and every ray that hits a surface marks the voxels (cell x height slice of
+ * the robot's band) it crosses as passed, up to a little before the surface; the surface point
+ * itself is a hit (or a floor sighting). Space no ray crossed stays unknown. The same renders
+ * count, per Gaussian, the training views that see it (the coverage behind localizability). */
 #include <stdlib.h>
 #include <string.h>
 
@@ -109,7 +109,7 @@ static void carve_rows(const view_job *j, int v0, int v1, carve_bufs *b)
         for (int u = 0; u < cam->width; u++) {
             long p = (long)v * cam->width + u;
             if (!(j->alpha[p] >= o->carve_alpha)) continue;
-            float d = j->depth[p]; /* expected depth along the optical axis */
+            float d = j->depth[p]; /* first-surface depth along the optical axis */
             if (!(d > 0)) continue;
             sp_vec3 dc = sp_v3((u + 0.5f - cam->cx) / cam->fx, (v + 0.5f - cam->cy) / cam->fy, 1.0f);
             sp_vec3 dw = sp_mat3_apply(Rt, dc);
@@ -179,19 +179,16 @@ static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
     }
 }
 
+#define CARVE_BATCH 16 /* views rendered per sp_render_views call */
+
 int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
               const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
               sp_error *err)
 {
-    /* The geometry alone with one zero feature channel: depth and alpha come from a feature pass,
-     * which skips evaluating every Gaussian's spherical harmonics for each view. */
-    sp_splat g;
-    int rc = sp_splat_alloc(&g, s->n, 0, 1, err);
-    if (rc) return rc;
-    memcpy(g.means, s->means, sizeof(float) * 3 * s->n);
-    memcpy(g.quats, s->quats, sizeof(float) * 4 * s->n);
-    memcpy(g.log_scales, s->log_scales, sizeof(float) * 3 * s->n);
-    memcpy(g.opacity_logits, s->opacity_logits, sizeof(float) * s->n);
+    /* geometry only: depth and alpha need no colours, so no SH is evaluated per view */
+    sp_scene *scene = NULL;
+    int rc = sp_scene_create(&scene, sp_raster_device(r), s, 0, err);
+    if (rc) return sp_error_prefix(err, "costmap: ");
     sp_pool *pool = sp_device_pool(sp_raster_device(r));
     int T = sp_pool_size(pool);
     size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
@@ -204,47 +201,53 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         if (!bufs[t].passes || !bufs[t].hits || !bufs[t].floor_seen)
             rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
     }
-    size_t cap = 0;
-    float *depth = NULL, *alpha = NULL, *feat = NULL;
+    sp_camera view[CARVE_BATCH];
+    sp_render_request req[CARVE_BATCH];
+    float *buf[CARVE_BATCH] = {NULL};
+    size_t cap[CARVE_BATCH] = {0};
     double t_render = 0, t_rays = 0, t_vis = 0;
     sp_progress pr;
     sp_progress_begin(&pr, log, "carve", (long)n_cams, "views");
-    for (size_t c = 0; c < n_cams && !rc; c++) {
-        sp_camera cam = cams[c];
-        cam.distortion = SP_DIST_NONE;
-        if (o->carve_downscale > 1) sp_camera_downscale(&cam, o->carve_downscale);
-        if (cam.width < 1 || cam.height < 1) continue;
-        size_t np = (size_t)cam.width * cam.height;
-        if (np > cap) {
-            free(depth), free(alpha), free(feat);
-            depth = malloc(sizeof(float) * np);
-            alpha = malloc(sizeof(float) * np);
-            feat = malloc(sizeof(float) * np);
-            cap = np;
-            if (!depth || !alpha || !feat) {
-                rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu-pixel renders", np);
-                break;
+    for (size_t c0 = 0; c0 < n_cams && !rc; c0 += CARVE_BATCH) {
+        size_t nb = n_cams - c0 < CARVE_BATCH ? n_cams - c0 : CARVE_BATCH;
+        for (size_t k = 0; k < nb && !rc; k++) {
+            view[k] = cams[c0 + k];
+            view[k].distortion = SP_DIST_NONE;
+            if (o->carve_downscale > 1) sp_camera_downscale(&view[k], o->carve_downscale);
+            size_t np = (size_t)(view[k].width > 0 ? view[k].width : 1) * (view[k].height > 0 ? view[k].height : 1);
+            if (np > cap[k]) {
+                free(buf[k]);
+                buf[k] = malloc(sizeof(float) * 2 * np);
+                cap[k] = np;
+                if (!buf[k]) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu-pixel renders", np);
             }
+            /* first-surface depth where the accumulated alpha reaches carve_alpha: expected depth
+             * blends a surface's edge with what lies behind it */
+            memset(&req[k], 0, sizeof req[k]);
+            req[k].depth = buf[k];
+            req[k].alpha = buf[k] ? buf[k] + np : NULL;
+            req[k].depth_mode = SP_DEPTH_SURFACE;
+            req[k].depth_alpha = o->carve_alpha;
         }
-        sp_render_request req;
-        memset(&req, 0, sizeof req);
-        req.depth = depth;
-        req.alpha = alpha;
-        req.features = feat;
         double t0 = sp_time_now();
-        if ((rc = sp_render_splat(r, &g, &cam, &req, err))) {
-            sp_error_prefix(err, "costmap: rendering training view %zu for carving: ", c);
+        if (!rc && (rc = sp_render_views(r, scene, view, nb, req, err))) {
+            sp_error_prefix(err, "costmap: rendering training views %zu..%zu for carving: ", c0, c0 + nb - 1);
             break;
         }
-        double t1 = sp_time_now();
-        view_job job = {cm, &cam, depth, alpha, o, &out->sl, bufs, 0, s, out->view_counts, 0};
-        job.rows_per_item = (cam.height + 4 * T - 1) / (4 * T);
-        sp_pool_for(pool, (cam.height + job.rows_per_item - 1) / job.rows_per_item, carve_item, &job);
-        double t2 = sp_time_now();
-        job.per_item = (s->n + 16 * T - 1) / (16 * T);
-        if (out->view_counts && s->n) sp_pool_for(pool, (long)((s->n + job.per_item - 1) / job.per_item), visible_item, &job);
-        t_render += t1 - t0, t_rays += t2 - t1, t_vis += sp_time_now() - t2;
-        sp_progress_update(&pr, (long)c + 1, NULL);
+        t_render += sp_time_now() - t0;
+        for (size_t k = 0; k < nb && !rc; k++) {
+            double t1 = sp_time_now();
+            view_job job = {cm, &view[k], req[k].depth, req[k].alpha, o, &out->sl, bufs, 0, s, out->view_counts, 0};
+            job.rows_per_item = (view[k].height + 4 * T - 1) / (4 * T);
+            if (job.rows_per_item > 0)
+                sp_pool_for(pool, (view[k].height + job.rows_per_item - 1) / job.rows_per_item, carve_item, &job);
+            double t2 = sp_time_now();
+            job.per_item = (s->n + 16 * T - 1) / (16 * T);
+            if (out->view_counts && s->n)
+                sp_pool_for(pool, (long)((s->n + job.per_item - 1) / job.per_item), visible_item, &job);
+            t_rays += t2 - t1, t_vis += sp_time_now() - t2;
+        }
+        sp_progress_update(&pr, (long)(c0 + nb), NULL);
     }
     sp_progress_end(&pr, NULL);
     sp_logf(log, SP_LOG_DEBUG, "carve: renders %.0f ms, rays %.0f ms, visibility %.0f ms", 1e3 * t_render,
@@ -256,8 +259,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         free(bufs[t].passes), free(bufs[t].hits), free(bufs[t].floor_seen);
     }
     free(bufs);
-    free(depth), free(alpha), free(feat);
-    sp_raster_forget(r); /* the copy goes away: the next render must not reuse its upload */
-    sp_splat_free(&g);
+    for (int k = 0; k < CARVE_BATCH; k++) free(buf[k]);
+    sp_scene_free(scene);
     return rc;
 }

@@ -24,8 +24,9 @@ struct sp_nav {
     size_t n_cams;
     sp_costmap cm;
     uint16_t *view_counts;    /* [n Gaussians] training views that see each */
-    sp_raster *raster;        /* previews (the splat's colours) */
-    sp_raster *raster_aux;    /* coverage and relevance channels */
+    sp_raster *raster;        /* renders (scratch) */
+    sp_scene *scene_rgb;      /* the splat's colours, for previews */
+    sp_scene *scene_aux;      /* coverage and relevance channels */
     sp_splat aux;             /* the splat's geometry with features [n][2]: coverage, relevance */
     int plan_seq;
     nav_issued *issued;
@@ -38,7 +39,7 @@ struct sp_nav {
 static inline const sp_log *nav_log(const sp_nav *nav) { return nav->has_log ? &nav->log : NULL; }
 
 /* A pinhole camera at pos (world) looking along yaw (about +z from +x) and pitch (up positive)
- * with a horizontal field of view; to be replaced by core's sp_camera_from_pose. */
+ * with a horizontal field of view (core's sp_camera_intrinsics_fov + sp_camera_from_pose). */
 void nav_pose_camera(sp_camera *cam, int width, int height, float hfov_rad, const float pos[3],
                      float yaw, float pitch);
 
@@ -49,7 +50,7 @@ int nav_view_scores(sp_nav *nav, const float pos[3], float yaw, float pitch, flo
 int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, sp_nav_preview *pv,
                        sp_error *err);
 /* Sets the aux relevance channel from the found instances of some targets (3D boxes). */
-void nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n);
+int nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n, sp_error *err);
 
 /* Word tables (vocab.c). */
 int nav_region_index(const char *text);       /* region named in text, -1 */

@@ -52,7 +52,7 @@ static int related(sp_nav *nav, sp_nav_plan *p, sp_error *err)
         rc = sp_nav_resolve(nav, p->related[i], &found[n_found], err);
         if (!rc && found[n_found].found) p->related_found[i] = 1, n_found++;
     }
-    if (!rc) nav_set_relevance(nav, found, n_found);
+    if (!rc) rc = nav_set_relevance(nav, found, n_found, err);
     free(found);
     return rc;
 }

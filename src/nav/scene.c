@@ -55,12 +55,8 @@ void nav_pose_camera(sp_camera *cam, int width, int height, float hfov_rad, cons
                      float yaw, float pitch)
 {
     memset(cam, 0, sizeof *cam);
-    cam->width = width, cam->height = height;
-    cam->fx = cam->fy = 0.5f * width / tanf(0.5f * hfov_rad);
-    cam->cx = 0.5f * width, cam->cy = 0.5f * height;
-    sp_vec3 eye = sp_v3(pos[0], pos[1], pos[2]);
-    sp_vec3 dir = sp_v3(cosf(pitch) * cosf(yaw), cosf(pitch) * sinf(yaw), sinf(pitch));
-    sp_camera_look_at(cam, eye, sp_v3_add(eye, dir), sp_v3(0, 0, 1));
+    sp_camera_intrinsics_fov(cam, width, height, hfov_rad);
+    sp_camera_from_pose(cam, pos, yaw, pitch);
 }
 
 static int check_nav_opts(const sp_nav_opts *o, sp_error *err)
@@ -103,7 +99,6 @@ static int finish(sp_nav *nav, sp_error *err)
 {
     const sp_splat *s = nav->splat;
     int rc = sp_raster_create(&nav->raster, nav->dev, err);
-    if (!rc) rc = sp_raster_create(&nav->raster_aux, nav->dev, err);
     if (rc) return rc;
     nav->view_counts = calloc(s->n ? s->n : 1, sizeof(uint16_t));
     if (!nav->view_counts) return sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
@@ -120,6 +115,9 @@ static int finish(sp_nav *nav, sp_error *err)
         nav->aux.features[2 * i] = c > 1 ? 1 : c;
         nav->aux.features[2 * i + 1] = 0;
     }
+    if ((rc = sp_scene_create(&nav->scene_rgb, nav->dev, s, SP_SCENE_RGB, err)) ||
+        (rc = sp_scene_create(&nav->scene_aux, nav->dev, &nav->aux, SP_SCENE_FEATURES, err)))
+        return sp_error_prefix(err, "nav: ");
     split_vocabulary(nav);
     return SP_OK;
 }
@@ -288,8 +286,9 @@ void sp_nav_free(sp_nav *nav)
     free(nav->cams);
     sp_costmap_free(&nav->cm);
     free(nav->view_counts);
+    sp_scene_free(nav->scene_rgb);
+    sp_scene_free(nav->scene_aux);
     sp_raster_free(nav->raster);
-    sp_raster_free(nav->raster_aux);
     for (int i = 0; i < nav->n_issued; i++) sp_path_free(&nav->issued[i].path);
     free(nav->issued);
     free(nav);
@@ -360,7 +359,7 @@ int nav_view_scores(sp_nav *nav, const float pos[3], float yaw, float pitch, flo
     sp_render_request req;
     memset(&req, 0, sizeof req);
     req.features = img;
-    int rc = sp_render_splat(nav->raster_aux, &nav->aux, &cam, &req, err);
+    int rc = sp_render_views(nav->raster, nav->scene_aux, &cam, 1, &req, err);
     if (!rc) {
         double a = 0, b = 0;
         for (size_t i = 0; i < np; i++) a += img[2 * i], b += img[2 * i + 1];
@@ -391,7 +390,7 @@ int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, 
     memset(&req, 0, sizeof req);
     req.rgb = rgb;
     req.background = background;
-    int rc = sp_render_splat(nav->raster, nav->splat, &cam, &req, err);
+    int rc = sp_render_views(nav->raster, nav->scene_rgb, &cam, 1, &req, err);
     for (size_t i = 0; !rc && i < 3 * np; i++) {
         float v = rgb[i] < 0 ? 0 : rgb[i] > 1 ? 1 : rgb[i];
         pv->rgb[i] = (uint8_t)(v * 255.0f + 0.5f);
@@ -407,7 +406,7 @@ int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, 
     return SP_OK;
 }
 
-void nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n)
+int nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n, sp_error *err)
 {
     const sp_splat *s = &nav->aux;
     for (size_t i = 0; i < s->n; i++) {
@@ -422,5 +421,5 @@ void nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n)
             }
         nav->aux.features[2 * i + 1] = r;
     }
-    sp_raster_forget(nav->raster_aux); /* the features changed in place */
+    return sp_scene_update(nav->scene_aux, &nav->aux, SP_SCENE_CHANGED_FEATURES, err);
 }

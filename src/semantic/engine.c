@@ -58,7 +58,8 @@ void sp_query_engine_free(sp_query_engine *e)
     free(e->rel);
     free(e->scores2);
     free(e->occ);
-    sp_raster_free(e->raster_aux);
+    sp_scene_free(e->scene);
+    sp_scene_free(e->scores_scene);
     free(e);
 }
 
@@ -80,10 +81,9 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
     for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
     rc = sp_raster_create(&e->raster, e->dev, err);
-    if (!rc) rc = sp_raster_create(&e->raster_aux, e->dev, err);
-#ifdef SP_HAVE_CUDA
     /* A GPU engine keeps the features on the GPU and scores them there. */
-    if (!rc && sp_device_kind_of(e->dev) == SP_DEVICE_CUDA && e->splat.n > 0) {
+    if (!rc && sp_device_kind_of(e->dev) == SP_DEVICE_CUDA &&
+        sp_device_supports(e->dev, SP_STAGE_SEM_SCORE, e->splat.feat_dim) && e->splat.n > 0) {
         size_t fb = sizeof(float) * e->splat.n * (size_t)e->splat.feat_dim;
         if (!(e->d_feat = sp_device_alloc(e->dev, fb, err)) ||
             !(e->d_raw = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)) ||
@@ -91,7 +91,6 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
             return err && err->code ? err->code : SP_E_NOMEM;
         rc = sp_device_upload(e->dev, e->d_feat, e->splat.features, fb, err);
     }
-#endif
     return rc;
 }
 
@@ -329,16 +328,14 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
         return rc;
     double t1 = sp_time_now();
     int on_gpu = 0;
-#ifdef SP_HAVE_CUDA
     if (e->d_feat && sc.orthonormal) {
         size_t nb = sizeof(float) * e->splat.n;
-        if ((rc = sem_cuda_score(&sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
+        if ((rc = sem_cuda_score(e->dev, &sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
             (rc = sp_device_download(e->dev, e->raw, e->d_raw, nb, err)) ||
             (rc = sp_device_download(e->dev, e->rel, e->d_rel, nb, err)))
             return rc;
         on_gpu = 1;
     }
-#endif
     if (!on_gpu) sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
     res->confidence = robust_max(e->raw, e->opacity, e->opts.min_opacity, e->splat.n);
     float rmax = 0;

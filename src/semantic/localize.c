@@ -291,6 +291,13 @@ int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *f
     return 0;
 }
 
+/* The engine's splat as a scene (RGB and features), uploaded once on first use. */
+static int ensure_scene(sp_query_engine *e, sp_error *err)
+{
+    if (e->scene) return 0;
+    return sp_scene_create(&e->scene, e->dev, &e->splat, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
+}
+
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err)
 {
@@ -302,15 +309,19 @@ int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, floa
         free(two), free(alpha);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering %dx%d", cam->width, cam->height);
     }
-    /* a view of the splat whose "features" are the scores; the aux raster's cache is dropped
-     * because the scores change with every query */
+    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and
+     * takes only the new scores with every query */
     sp_splat view = *s;
     view.features = e->scores2;
     view.feat_dim = 2;
-    sp_raster_forget(e->raster_aux);
-    sp_render_request req = {rgb, two, NULL, alpha, NULL};
-    int rc = sp_render_splat(e->raster_aux, &view, cam, &req, err);
-    sp_raster_forget(e->raster_aux);
+    int rc = e->scores_scene
+                 ? sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err)
+                 : sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_FEATURES, err);
+    sp_render_request req = {.features = two, .alpha = alpha};
+    if (!rc) rc = sp_render_views(e->raster, e->scores_scene, cam, 1, &req, err);
+    sp_render_request req_rgb = {.rgb = rgb};
+    if (!rc && rgb && !(rc = ensure_scene(e, err)))
+        rc = sp_render_views(e->raster, e->scene, cam, 1, &req_rgb, err);
     if (!rc)
         for (size_t p = 0; p < np; p++) {
             int ok = alpha[p] > 0.5f;
@@ -336,8 +347,10 @@ static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float 
     if (rgb) *rgb = malloc(sizeof(float) * np * 3);
     if (!*feat || !*alpha || (depth && !*depth) || (rgb && !*rgb))
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering view %d", v);
-    sp_render_request req = {rgb ? *rgb : NULL, *feat, depth ? *depth : NULL, *alpha, NULL};
-    return sp_render_splat(e->raster, &e->splat, cam, &req, err);
+    int rc = ensure_scene(e, err);
+    sp_render_request req = {.rgb = rgb ? *rgb : NULL, .features = *feat,
+                             .depth = depth ? *depth : NULL, .alpha = *alpha};
+    return rc ? rc : sp_render_views(e->raster, e->scene, cam, 1, &req, err);
 }
 
 /* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels: a cheap occlusion test for

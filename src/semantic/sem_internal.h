@@ -26,7 +26,9 @@ struct sp_query_engine {
     float *opacity;            /* [n] sigmoid(logit) */
     float *raw, *rel;          /* [n] scratch: per-Gaussian raw cosine and relevancy */
     float *scores2;            /* [n][2] (raw, rel) rendered as two channels */
-    sp_raster *raster_aux;     /* renders of scores2 (its own upload cache) */
+    sp_scene *scene;           /* the splat's RGB and features on the device (made on first render) */
+    sp_scene *scores_scene;    /* the same geometry with scores2 as 2-channel features, updated
+                                * per query (made on first use) */
     float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
     uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
     int occ_dim[3];

@@ -1,7 +1,8 @@
 /* The training loop: one view per step, SH -> colours (+ features) -> rasterize -> loss ->
  * backward -> Adam, with gsplat's density control every refine_every steps, held-out
  * evaluation, checkpoints and a NaN guard. Parameters, gradients and moments stay on the
- * sp_device; the per-element kernels dispatch to CUDA (train_cuda_api.h) or the CPU (loss.c). */
+ * sp_device; the per-element kernels come from the device's table (train_kernels.h: CUDA or
+ * the CPU's loss.c). */
 #include "semsplat/io.h"
 #include "train/train_internal.h"
 
@@ -17,7 +18,7 @@ enum { G_MEANS, G_QUATS, G_SCALES, G_OPAC, G_SH0, G_SHN, G_FEAT, N_GROUPS };
 typedef struct {
     sp_device *dev;
     sp_pool *pool;
-    int cuda;
+    const tr_kernels *k; /* the device's per-element kernels */
     size_t n;
     int K, F, D, rgb;            /* SH coeffs, feature dim, rendered channels, RGB rendered? */
     float *p[N_GROUPS], *g[N_GROUPS], *m[N_GROUPS], *v[N_GROUPS];
@@ -40,59 +41,39 @@ static size_t group_width(const tr_state *s, int g)
     }
 }
 
-/* ---- kernel dispatch --------------------------------------------------------------------------- */
+/* ---- kernel dispatch: the device's table of per-element kernels (train_kernels.h) -------------- */
 
 static int k_copy_columns(tr_state *s, float *dst, int ds, int doff, const float *src, int ss,
                           int soff, size_t rows, int cols, sp_error *err)
 {
     if (cols <= 0 || rows == 0) return SP_OK;
-#ifdef SP_HAVE_CUDA
-    if (s->cuda) return sp_cuda_copy_columns(dst, ds, doff, src, ss, soff, rows, cols, err);
-#endif
-    cpu_copy_columns(dst, ds, doff, src, ss, soff, rows, cols);
-    return SP_OK;
+    return s->k->copy_columns(s->dev, dst, ds, doff, src, ss, soff, rows, cols, err);
 }
 
 static int k_adam(tr_state *s, float *p, const float *g, float *m, float *v, size_t n, float lr,
                   const sp_train_options *o, int step, sp_error *err)
 {
     if (n == 0) return SP_OK;
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_adam_step(p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps, step, err);
-#endif
-    cpu_adam_step(s->pool, p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps, step);
-    return SP_OK;
+    return s->k->adam_step(s->dev, p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps,
+                           step, err);
 }
 
 static int k_rgb_loss(tr_state *s, const float *pred, int stride, const float *target, int H, int W,
                       float lambda, float *scratch, float *v_pred, double stats[4], sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_rgb_loss(pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
-#endif
-    return cpu_rgb_loss(s->pool, pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
+    return s->k->rgb_loss(s->dev, pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
 }
 
 static int k_feature_mse(tr_state *s, const float *pred, int stride, int off, const float *target,
                          int H, int W, float lambda, float *v_pred, double *mse, sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_feature_mse(pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
-#endif
-    return cpu_feature_mse(s->pool, pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
+    return s->k->feature_mse(s->dev, pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
 }
 
 static int k_accumulate(tr_state *s, const int32_t *radii, float sx, float sy, sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_densify_accumulate(s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count, err);
-#endif
-    cpu_densify_accumulate(s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count);
-    return SP_OK;
+    return s->k->densify_accumulate(s->dev, s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count,
+                                    err);
 }
 
 /* ---- device state ------------------------------------------------------------------------------ */
@@ -263,7 +244,7 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
         /* SH colours depend on the direction from this view's camera, as in training */
         if ((rc = prepare_colors(s, sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
         sp_raster_in in = raster_in(s, bg);
-        sp_raster_out out = {image_d, NULL, NULL};
+        sp_raster_out out = {image_d, NULL, NULL, NULL};
         sp_raster_cfg cfg = sp_raster_cfg_default();
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
         if ((rc = sp_device_download(s->dev, image_h, image_d, (size_t)W * H * D * sizeof(float), err)))
@@ -303,7 +284,7 @@ int sp_train_evaluate(sp_device *dev, const sp_train_data *data, const sp_splat 
     memset(&s, 0, sizeof s);
     s.dev = dev;
     s.pool = sp_device_pool(dev);
-    s.cuda = sp_device_kind_of(dev) == SP_DEVICE_CUDA;
+    s.k = tr_kernels_of(dev);
     s.K = sp_sh_coeffs(splat->sh_degree);
     s.F = 0;
     s.D = 3;
@@ -468,7 +449,7 @@ static int evaluate_features(tr_state *s, sp_raster *r, const sp_train_data *d,
         int W = v->cam.width, H = v->cam.height;
         if ((rc = prepare_colors(s, o->sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
         sp_raster_in in = raster_in(s, bg);
-        sp_raster_out out = {b->image, NULL, NULL};
+        sp_raster_out out = {b->image, NULL, NULL, NULL};
         sp_raster_cfg cfg = sp_raster_cfg_default();
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
         if ((rc = sp_device_download(s->dev, image_h, b->image, (size_t)W * H * s->D * sizeof(float), err)))
@@ -602,7 +583,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
     memset(&s, 0, sizeof s);
     s.dev = dev;
     s.pool = sp_device_pool(dev);
-    s.cuda = sp_device_kind_of(dev) == SP_DEVICE_CUDA;
+    s.k = tr_kernels_of(dev);
     s.K = sp_sh_coeffs(o->sh_degree);
     s.F = o->feature_dim;
     s.rgb = !o->freeze_geometry;
@@ -702,7 +683,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
             for (int c = 0; c < 3; c++)
                 bg[c] = o->random_background ? (float)tr_uniform(&rng) : o->background[c];
         sp_raster_in in = raster_in(&s, bg);
-        sp_raster_out out = {b.image, NULL, NULL};
+        sp_raster_out out = {b.image, NULL, NULL, NULL};
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) break;
         if ((rc = sp_device_zero(dev, b.v_image, px * s.D * sizeof(float), err))) break;
         double st[4] = {0, 0, 1, 0}, fmse = 0;

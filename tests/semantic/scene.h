@@ -242,7 +242,7 @@ static inline int sc_write_features(const char *dir, const sp_splat *s, const sp
         sp_camera c = sc_map_camera(&cams[v], lens), pin = c;
         pin.distortion = SP_DIST_NONE;
         if (lens) pin.width *= 2, pin.height *= 2, pin.cx += 0.5f * c.width, pin.cy += 0.5f * c.height;
-        sp_render_request req = {NULL, f, NULL, a, NULL};
+        sp_render_request req = {.features = f, .alpha = a};
         if ((rc = sp_render_splat(r, s, &pin, &req, err))) break;
         for (size_t p = 0; p < (size_t)pin.width * pin.height; p++)
             for (int k = 0; k < D; k++) f[p * D + k] = a[p] > 1e-3f ? f[p * D + k] / a[p] : 0.0f;

@@ -113,7 +113,7 @@ static void table_mask(int v, uint8_t *truth)
     float *f = malloc(sizeof(float) * big), *a = malloc(sizeof(float) * big), *m = malloc(sizeof(float) * W * H);
     sp_raster *r = NULL;
     CHECK_OK(sp_raster_create(&r, g_dev, &err), &err);
-    sp_render_request req = {NULL, f, NULL, a, NULL};
+    sp_render_request req = {.features = f, .alpha = a};
     CHECK_OK(sp_render_splat(r, &ind, &pin, &req, &err), &err);
     for (size_t p = 0; p < big; p++) f[p] = a[p] > 0.5f ? f[p] / a[p] : 0;
     CHECK_OK(sp_camera_remap_from_pinhole(&pin, f, 1, &lens, m, NULL, &err), &err);

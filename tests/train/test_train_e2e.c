@@ -74,7 +74,7 @@ static void write_capture(const char *dir, int model, const sp_splat *gt)
     float *rgb = malloc(IW * IH * 3 * sizeof(float));
     for (int k = 0; k < NV; k++) {
         sp_camera c = ring_camera(k);
-        sp_render_request req = {rgb, NULL, NULL, NULL, NULL};
+        sp_render_request req = {.rgb = rgb};
         CHECK_OK(sp_render_splat(r, gt, &c, &req, &err), &err);
         char name[64];
         snprintf(name, sizeof name, "%03d.png", k);
@@ -438,7 +438,7 @@ static void test_feature_mse_is_held_out(void)
         const sp_camera *c = &d.views[v].cam;
         size_t np = (size_t)c->width * c->height;
         float *feat = malloc(np * 3 * sizeof(float)), *tgt = malloc(np * 3 * sizeof(float));
-        sp_render_request req = {NULL, feat, NULL, NULL, NULL};
+        sp_render_request req = {.features = feat};
         CHECK_OK(sp_render_splat(r, &s, c, &req, &err), &err);
         CHECK_OK(offset_target(&d, v, c->width, c->height, 3, tgt, &err), &err);
         for (size_t k = 0; k < np * 3; k++) sse += ((double)feat[k] - tgt[k]) * ((double)feat[k] - tgt[k]);
