@@ -95,7 +95,7 @@ typedef struct view_job {
     size_t per_item;
 } view_job;
 
-/* Carves the rays of rows [v0, v1) of one rendered view (expected depth and alpha). */
+/* Carves the rays of rows [v0, v1) of one rendered view (first-surface depth and alpha). */
 static void carve_rows(const view_job *j, int v0, int v1, carve_bufs *b)
 {
     const sp_costmap *cm = j->cm;

@@ -329,7 +329,7 @@ static void splat_footprints(const sp_costmap *cm, const sp_splat *s, const sp_c
 /* Floor the splat reconstructed: opaque Gaussians at the floor's height that are thin vertically
  * (sigma_z within half the floor tolerance) mark the cells of their footprint (1.5 sigma) as
  * floor seen: a camera saw the floor there, past whatever stands around it. Denser than the
- * rays' floor hits, whose expected depth spreads a slanted floor over several centimetres. */
+ * rays' floor hits, whose rendered depth spreads a slanted floor over several centimetres. */
 static void mark_floor(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, uint16_t *floor_seen)
 {
     for (size_t i = 0; i < s->n; i++) {
@@ -379,7 +379,7 @@ static void mark_stands(const sp_costmap *cm, const sp_camera *cams, size_t n_ca
 /* Fuses the footprints with the rays, voxel by voxel: a voxel is occupied when its footprint
  * evidence 1 - prod(1 - w) reaches occupied_evidence and rays did not pass through it more than
  * pass_veto x (1 + the rays that ended there) times (a floater the cameras saw through). (Rays'
- * end points alone are no evidence: expected depth scatters a surface over neighbouring cells.)
+ * end points alone are no evidence: rendered depth scatters a surface over neighbouring cells.)
  * A column is
  * occupied when one of its voxels is; free when none is and its floor was seen (a ray ended on
  * it, or the splat has floor there) with some ray crossing it (floor Gaussians' footprints reach
