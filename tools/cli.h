@@ -24,6 +24,9 @@ int cmd_agent(int argc, char **argv);
 int cmd_sim_robot(int argc, char **argv);
 int cmd_ros_goal(int argc, char **argv);
 int cmd_lexical(int argc, char **argv);
+int cmd_plan(int argc, char **argv);
+int cmd_explore(int argc, char **argv);
+int cmd_describe(int argc, char **argv);
 int cmd_sfm(int argc, char **argv);
 int cmd_eval(int argc, char **argv);
 
