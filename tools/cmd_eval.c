@@ -10,13 +10,16 @@
 static const char *usage_text =
     "usage: semsplat eval --model DIR --world W.world --out DIR [--model-path DIR]\n"
     "                     [--queries Q.json] [--title TEXT] [--match-radius M] [--skip-missing]\n"
+    "                     [--trajectories-to PHRASE]\n"
     "                     [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
     "Scores the model against the world file's objects (ground truth from the world itself):\n"
     "  5.1 every object localized by both methods, matched one-to-one (fragments merged);\n"
     "  5.2 open vs closed vocabulary (the task's ten queries, or {\"vocabulary\": [...]} in\n"
     "      Q.json: text, coco, targets, region, near, near_m): the semantic splat against the\n"
     "      same map restricted to COCO's 80 class names;\n"
-    "  figures (per-object errors, per-query errors) and an analysis written from the numbers.\n"
+    "  5.4 nav's top 3 trajectories to the refrigerator (--trajectories-to), their length,\n"
+    "      clearance, localizability and a visual quality 1-5 measured on their previews;\n"
+    "  figures (per-object errors, per-query errors, the map) and an analysis from the numbers.\n"
     "Writes DIR/report.md, DIR/report.html (figures inline), DIR/report.json, figures/, heatmaps/.\n";
 
 int cmd_eval(int argc, char **argv)
@@ -36,6 +39,7 @@ int cmd_eval(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--model-path", &bad))) o.model_path = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--queries", &bad))) o.queries = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--title", &bad))) o.title = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--trajectories-to", &bad))) o.trajectory_target = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--match-radius", &bad))) {
             if (cli_parse_float("eval", "--match-radius", v, &x)) return 2;
             if (!(x > 0 && x < 100)) return cli_usage_error("eval", "--match-radius %g: expected metres > 0", x);

@@ -181,8 +181,11 @@ struct cJSON *sp_eval_report_json(const sp_eval_report *rep);
  *       by the COCO class WordNet matches best (or none) and that class is looked up. Either is
  *       "found" when its answer lies on an object the query means (its target classes; a region
  *       query anywhere in the box spanning them), grown by the match radius.
- *   5.3 / 5.4 (navigation commands through the agent and the simulated robot, trajectories to the
- *       refrigerator) are reported as not measured, with the reason, until navigation is built in.
+ *   5.4 trajectory quality: nav's top 3 trajectories to the refrigerator (length, clearances,
+ *       localizability, ranking score) with a visual quality 1-5 measured on their previews
+ *       (coverage and sharpness, sp_media_view_quality), the top-down map and contact sheets.
+ *   5.3 (navigation commands through the agent and the simulated robot) is reported as not
+ *       measured, with the reason, until the agent drives the robot from a model folder.
  *   A written analysis made from the numbers, headed by the feature source, the text encoder, the
  *   capture plan and the poses the model was trained on, and what they mean.
  * Queries come from a JSON file ({"vocabulary": [{"text", "coco": bool, "targets": [classes],
@@ -223,6 +226,19 @@ typedef struct sp_eval_vocab_row {
     char matched[160];        /* the classes the text matched (semantic splat), for the report */
 } sp_eval_vocab_row;
 
+typedef struct sp_eval_trajectory { /* 5.4: one of the top trajectories */
+    int rank;
+    float length_m, clearance_min_m, clearance_mean_m;
+    float localizability;     /* nav's: the least localizable waypoint, 0..1 */
+    float total;              /* nav's ranking score */
+    float share;              /* largest share of its length with a better route */
+    int n_previews;
+    float coverage, sharpness;/* means over its previews (sp_media_view_quality) */
+    float visual_score;       /* mean preview score, 1..5 */
+    int visual_grade;         /* rounded: the table's "visual quality (1-5)" */
+    char sheet[1100];         /* its contact sheet (PNG), "" when not drawn */
+} sp_eval_trajectory;
+
 typedef struct sp_eval_run_opts {
     const char *model_dir;
     const char *world;        /* the ground truth */
@@ -233,6 +249,7 @@ typedef struct sp_eval_run_opts {
     int skip_missing;         /* the world's missing assets skipped */
     sp_device *dev;           /* borrowed */
     float match_radius_m;     /* 0 = 0.5 */
+    const char *trajectory_target; /* 5.4's goal; NULL = "refrigerator" */
     const sp_log *log;
 } sp_eval_run_opts;
 
@@ -249,6 +266,12 @@ typedef struct sp_eval_run {
     size_t n_vocab;
     sp_eval_vocab_row *vocab; /* 5.2 */
     char vocab_encoder[32];   /* how 5.2 was answered: "lexical" or the engine's encoder */
+    char traj_target[128];
+    int traj_measured;        /* 5.4 ran (0: note says why) */
+    char traj_note[400];      /* nav's note (fewer than k and why), or why 5.4 did not run */
+    int n_traj;
+    sp_eval_trajectory traj[8];
+    char traj_map[1100];      /* the top-down map with the ranked paths (PNG) */
     char analysis[8192];      /* the written analysis (Markdown) */
     double seconds;
 } sp_eval_run;

@@ -140,8 +140,15 @@ static void sources_of_error(out *o, const sp_eval_run *r)
            "flat-coloured surfaces are common%s.\n\n",
         r->loc.source.ground_truth ? "; with label features this does not reach the labels, only the "
                                      "geometry" : ", which features computed from pixels feel directly");
-    put(o, "**Not measured here.** 5.3 (navigation commands through the agent and the simulated robot) and "
-           "5.4 (trajectory quality) need the navigation modules in this build.\n");
+    if (r->traj_measured && r->n_traj) {
+        const sp_eval_trajectory *b = &r->traj[0];
+        put(o, "**Trajectories.** %d to \"%s\"; the best is %.1f m long with %.2f m clearance at its "
+               "narrowest, localizability %.2f, and its previews grade %d of 5 (%.0f%% of each view "
+               "covered, sharpness %.2f).\n\n", r->n_traj, r->traj_target, b->length_m, b->clearance_min_m,
+            b->localizability, b->visual_grade, 100.0 * b->coverage, b->sharpness);
+    } else put(o, "**Trajectories.** Not measured: %s.\n\n", r->traj_note);
+    put(o, "**Not measured here.** 5.3 (navigation commands through the agent and the simulated robot) "
+           "needs the agent to drive the robot from a model folder, which this build does not do yet.\n");
 }
 
 void ev_analysis(sp_eval_run *r)

@@ -85,7 +85,15 @@ static const char *base_name(const char *p)
     return s ? s + 1 : p;
 }
 
-char *doc_markdown(const doc *d, const char *fig_prefix)
+/* A figure's link relative to the report's folder (its path without the folder's prefix). */
+static const char *relative(const char *path, const char *dir)
+{
+    size_t n = strlen(dir);
+    if (n && !strncmp(path, dir, n) && path[n] == '/') return path + n + 1;
+    return path;
+}
+
+char *doc_markdown(const doc *d, const char *out_dir)
 {
     sp_strbuf s = {0};
     for (int i = 0; i < d->n; i++) {
@@ -98,7 +106,7 @@ char *doc_markdown(const doc *d, const char *fig_prefix)
             sp_strbuf_printf(&s, "%s\n\n", b->text);
             break;
         case DOC_FIGURE:
-            sp_strbuf_printf(&s, "![%s](%s%s)\n\n", b->text, fig_prefix, base_name(b->cells[0]));
+            sp_strbuf_printf(&s, "![%s](%s)\n\n", b->text, relative(b->cells[0], out_dir));
             break;
         case DOC_TABLE:
             for (int c = 0; c < b->n_cells; c++) {

@@ -23,8 +23,9 @@ void doc_para(doc *d, const char *text);           /* **bold**, *italic*, `code`
 void doc_table(doc *d, int cols);                  /* then doc_cell, row by row */
 void doc_cell(doc *d, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 void doc_figure(doc *d, const char *png_path, const char *caption);
-/* Markdown with figures linked as fig_prefix + file name; HTML with them inline. malloc'd. */
-char *doc_markdown(const doc *d, const char *fig_prefix);
+/* Markdown with figures linked relative to out_dir (the report's folder); HTML with them inline.
+ * malloc'd. */
+char *doc_markdown(const doc *d, const char *out_dir);
 char *doc_html(const doc *d, const char *title);
 void doc_free(doc *d);
 

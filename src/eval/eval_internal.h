@@ -21,6 +21,10 @@ typedef struct ev_vocab_ctx {
 int ev_vocab_row(const ev_vocab_ctx *c, const sp_ground_truth *gt, const sp_eval_query_spec *q,
                  sp_eval_vocab_row *row, sp_error *err);
 
+/* 5.4 (traj.c): nav's top 3 to o->trajectory_target, written under out/trajectories/; a
+ * target the scene lacks or cannot reach is recorded in r->traj_note, not an error. */
+int ev_trajectories(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err);
+
 /* What the model was made from (run_info.c): the capture (semantic.json), its plan and poses
  * (capture.json), training figures (train.json). Missing files leave "unknown" / NaN. */
 void ev_model_info(const char *model_dir, sp_eval_run *r);

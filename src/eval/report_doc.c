@@ -124,6 +124,74 @@ static void vocabulary(doc *d, const sp_eval_run *r, char figs[][1100], int n_fi
             doc_figure(d, figs[f], "Position error when found, semantic splat against the COCO-80 baseline.");
 }
 
+static void trajectories(doc *d, const sp_eval_run *r)
+{
+    doc_heading(d, 2, "5.4 Trajectory quality");
+    if (!r->traj_measured) {
+        char t[600];
+        snprintf(t, sizeof t, "Not measured: %s.", r->traj_note[0] ? r->traj_note : "no plan");
+        doc_para(d, t);
+        return;
+    }
+    char t[700];
+    snprintf(t, sizeof t, "The top %d trajectories nav ranks to \"%s\". Visual quality (1-5) is measured on each "
+             "trajectory's previews: 1 + 4 x the share of the view the splat covers x its sharpness (the "
+             "no-reference blur of Crete et al. 2007, anchored on synth's camera images). %s",
+             r->n_traj, r->traj_target, r->traj_note);
+    doc_para(d, t);
+    doc_table(d, 8);
+    const char *h[8] = {"trajectory", "path length (m)", "min clearance (m)", "mean clearance (m)",
+                        "visual quality (1-5)", "localizability (0-1)", "ranking score", "notes"};
+    for (int i = 0; i < 8; i++) doc_cell(d, "%s", h[i]);
+    for (int i = 0; i < r->n_traj; i++) {
+        const sp_eval_trajectory *e = &r->traj[i];
+        doc_cell(d, "#%d", e->rank);
+        doc_cell(d, "%.2f", (double)e->length_m);
+        doc_cell(d, "%.2f", (double)e->clearance_min_m);
+        doc_cell(d, "%.2f", (double)e->clearance_mean_m);
+        doc_cell(d, "%d (%.2f)", e->visual_grade, (double)e->visual_score);
+        doc_cell(d, "%.2f", (double)e->localizability);
+        doc_cell(d, "%.3f", (double)e->total);
+        doc_cell(d, "%d previews: %.0f%% covered, sharpness %.2f%s", e->n_previews, 100.0 * e->coverage,
+                 (double)e->sharpness, i ? "" : "; the best ranked");
+    }
+    if (r->traj_map[0]) doc_figure(d, r->traj_map, "Top-down map: costmap, objects found, start and the ranked paths.");
+    for (int i = 0; i < r->n_traj; i++)
+        if (r->traj[i].sheet[0]) {
+            char cap[64];
+            snprintf(cap, sizeof cap, "Previews along trajectory #%d.", r->traj[i].rank);
+            doc_figure(d, r->traj[i].sheet, cap);
+        }
+}
+
+static cJSON *traj_json(const sp_eval_run *r)
+{
+    cJSON *tr = cJSON_CreateObject();
+    cJSON_AddBoolToObject(tr, "measured", r->traj_measured);
+    cJSON_AddStringToObject(tr, "target", r->traj_target);
+    cJSON_AddStringToObject(tr, "note", r->traj_note);
+    cJSON_AddStringToObject(tr, "map", r->traj_map);
+    cJSON *a = cJSON_AddArrayToObject(tr, "trajectories");
+    for (int i = 0; i < r->n_traj; i++) {
+        const sp_eval_trajectory *e = &r->traj[i];
+        cJSON *o = cJSON_CreateObject();
+        cJSON_AddNumberToObject(o, "rank", e->rank);
+        cJSON_AddNumberToObject(o, "length_m", e->length_m);
+        cJSON_AddNumberToObject(o, "clearance_min_m", e->clearance_min_m);
+        cJSON_AddNumberToObject(o, "clearance_mean_m", e->clearance_mean_m);
+        cJSON_AddNumberToObject(o, "visual_quality", e->visual_grade);
+        cJSON_AddNumberToObject(o, "visual_score", e->visual_score);
+        cJSON_AddNumberToObject(o, "preview_coverage", e->coverage);
+        cJSON_AddNumberToObject(o, "preview_sharpness", e->sharpness);
+        cJSON_AddNumberToObject(o, "localizability", e->localizability);
+        cJSON_AddNumberToObject(o, "score", e->total);
+        cJSON_AddNumberToObject(o, "share_with_better", e->share);
+        cJSON_AddStringToObject(o, "sheet", e->sheet);
+        cJSON_AddItemToArray(a, o);
+    }
+    return tr;
+}
+
 static cJSON *vocab_json(const sp_eval_run *r)
 {
     cJSON *a = cJSON_CreateArray();
@@ -167,9 +235,7 @@ static int write_json(const sp_eval_run *r, const char *path, const char *title,
     cJSON *nav = cJSON_AddObjectToObject(j, "query_success");
     cJSON_AddBoolToObject(nav, "measured", 0);
     cJSON_AddStringToObject(nav, "reason", "navigation (nav, agent over the simulated robot) not in this build");
-    cJSON *tr = cJSON_AddObjectToObject(j, "trajectories");
-    cJSON_AddBoolToObject(tr, "measured", 0);
-    cJSON_AddStringToObject(tr, "reason", "navigation (nav) not in this build");
+    cJSON_AddItemToObject(j, "trajectories", traj_json(r));
     cJSON_AddStringToObject(j, "analysis", r->analysis);
     cJSON *f = cJSON_AddArrayToObject(j, "figures");
     for (int i = 0; i < n; i++) cJSON_AddItemToArray(f, cJSON_CreateString(figs[i]));
@@ -206,10 +272,9 @@ int ev_write_docs(const sp_eval_run *r, const char *out_dir, char figs[][1100], 
     doc_heading(&d, 2, "5.3 Query success rate");
     doc_para(&d, "Not measured in this run: navigation commands go through the agent and the simulated "
                  "robot, which this build does not provide to eval yet.");
-    doc_heading(&d, 2, "5.4 Trajectory quality");
-    doc_para(&d, "Not measured in this run (needs the nav module's ranked trajectories).");
+    trajectories(&d, r);
     if (!n_figs) doc_para(&d, "(No figures: this build lacks Cairo.)");
-    int rc = write_text(out_dir, "report.md", doc_markdown(&d, "figures/"), err);
+    int rc = write_text(out_dir, "report.md", doc_markdown(&d, out_dir), err);
     if (!rc) rc = write_text(out_dir, "report.html", doc_html(&d, title), err);
     doc_free(&d);
     char path[1300];

@@ -82,6 +82,7 @@ int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err)
     }
     if (!rc) rc = run_vocab(o, e, r, err);
     sp_query_engine_free(e);
+    if (!rc) rc = ev_trajectories(o, r, err);
     char figs[8][1100];
     int n_figs = 0;
     if (!rc) n_figs = ev_figures(r, o->out_dir, figs, 8, err);
