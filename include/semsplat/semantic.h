@@ -116,9 +116,14 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
                               sp_device *dev, const sp_log *log, sp_error *err);
 
 /* Writes DIR/semantic.json and the PCA copies for a splat whose features came from
- * features_dir by `method` ("lift" or "distill"). */
+ * features_dir by `method` ("lift" or "distill"). The text encoder recorded is the default for
+ * the features: "lexical" for hashed label features (with their "classes"), else "clip". */
 int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
                               const char *colmap_dir, const char *method, sp_error *err);
+/* Records the text encoder of a model folder in DIR/semantic.json ("clip", "lexical" or "exact";
+ * see "Text encoders"). Refuses one that does not fit the folder's features (SP_E_UNSUPPORTED)
+ * and lexical without class names (SP_E_NOTFOUND). */
+int sp_semantic_set_encoder(const char *model_dir, const char *encoder, sp_error *err);
 
 /* ---- distillation (what `semsplat distill` does) --------------------------------------------- */
 
@@ -184,10 +189,40 @@ typedef struct sp_query_opts {
 
 sp_query_opts sp_query_opts_default(void);
 
+/* Text encoders: how an engine turns text into something its features can be compared with.
+ * One is chosen per model folder (semantic.json "encoder", written by lift: `semsplat lift
+ * --encoder`, sp_semantic_set_encoder) and may be overridden at open (sp_query_engine_open_with;
+ * `semsplat query --encoder`, Python encoder=). Every result names the one that produced it.
+ *   "clip"     CLIP's text tower (real weights). Features in CLIP's space (source clip, npy, or
+ *              labels embedded through CLIP). Open vocabulary; confidence = the robust largest
+ *              raw cosine, found at >= min_confidence.
+ *   "lexical"  WordNet 3.0 matching of the text against the scene's own class names (the
+ *              lexical section below), grounded in the scene: the matched classes are localized
+ *              by their label embeddings, regions and relations resolved as sp_lex_query does.
+ *              Needs hashed label features (source labels without weights), where it is the
+ *              default. Confidence = the calibrated lexical score, found at >= SP_LEX_THRESHOLD
+ *              (min_confidence is not applied). It is matching against KNOWN class names: it
+ *              cannot find what the world's labels do not name.
+ *   "exact"    the text's own hashed embedding (sp_label_embedding): only the exact class string
+ *              (case and spaces aside) matches. Hashed label features; for tests and comparisons.
+ * The class names of a label scene come from semantic.json "classes" (lift copies them from the
+ * features), else from the labels.json beside the capture it names. A folder that records no
+ * encoder gets lexical when its features are hashed labels and the classes and WordNet are there
+ * (else exact, with a warning), clip otherwise. A recorded lexical that cannot be prepared (no
+ * WordNet, no class names) falls back to exact with a warning; an encoder asked for at open
+ * that cannot be prepared, or that does not fit the features, is an error. */
+#define SP_ENCODER_CLIP "clip"
+#define SP_ENCODER_LEXICAL "lexical"
+#define SP_ENCODER_EXACT "exact"
+
+typedef struct sp_encoder_opts {
+    const char *encoder;      /* "clip", "lexical", "exact"; NULL or "" = the model folder's */
+    const char *wordnet_dir;  /* lexical: WordNet's database files (NULL = SP_LEX_DEFAULT_WORDNET) */
+    const char *regions_path; /* lexical: a region table (NULL = the bundled one, "" = none) */
+} sp_encoder_opts;
+
 /* What produced a result: the text encoder and the feature source, named (never a flag).
- *   encoder  "clip"   CLIP's text tower (real weights)
- *            "exact"  hashed class names (sp_label_embedding): only the exact class string can
- *                     match; for tests and label scenes without weights
+ *   encoder  "clip", "lexical" or "exact" (above)
  *   features "clip"   dense CLIP features of the images
  *            "npy"    imported maps (any extractor in the text space)
  *            "labels" ground-truth label images of a synthetic capture: results then measure
@@ -218,7 +253,36 @@ typedef struct sp_query_instance {
                           * multi-view, (relevancy - 0.5) * alpha * the pixel's area at its depth */
     float confidence;    /* largest raw cosine inside it */
     int n_points;        /* Gaussians (3D) or pixels (multi-view) */
+    char label[128];     /* the class it is an instance of, when the encoder knows ("" = unknown:
+                          * clip, or a precomputed embedding) */
+    float relation_m;    /* a relational query's cost of this instance to the anchor in metres
+                          * (the gap between boxes, see sp_lex_query), NaN without one */
 } sp_query_instance;
+
+/* Why a text matched a class (encoders that match class names: lexical, exact). */
+typedef struct sp_query_match {
+    char label[128];       /* the class */
+    char role[8];          /* "target", or "anchor" (the Y of "X near Y") */
+    float score;           /* the encoder's confidence in this class, 0..1 (>= threshold: a match) */
+    char kind[16];         /* "exact", "synonym", "hypernym", "hyponym", "part", "gloss",
+                            * "modifier", "region" (sp_lex_kind_name) */
+    char query_sense[64];  /* the WordNet lemma of the query sense used ("" for gloss matches) */
+    char class_sense[64];  /* the lemma of the class sense used */
+    char path[256];        /* taxonomy path, "armchair > chair > seat" */
+    char gloss_words[192]; /* description words found in definitions, with where */
+    char definition[192];  /* WordNet's definition of the class sense used */
+} sp_query_match;
+
+/* A region the text named ("the kitchen", "area with appliances"), or the anchor of a relation:
+ * the extent of the instances that make it up, in the result's frame. */
+typedef struct sp_query_region {
+    int valid;
+    char name[64];         /* "kitchen"; an anchor: its phrase */
+    float extent_min[3], extent_max[3], centre[3];
+    int n_instances;
+} sp_query_region;
+
+#define SP_QUERY_MAX_IGNORED 8
 
 typedef struct sp_query_result {
     char text[256];
@@ -240,6 +304,19 @@ typedef struct sp_query_result {
     double ms_embed, ms_relevancy, ms_localize, ms_heatmap, ms_total;
     sp_query_source source;      /* what produced it */
     sp_query_frame frame;        /* the frame of position and instances */
+    /* What the encoder understood (--explain, --json "matches", Python .explanation): */
+    float threshold;             /* confidence at or above which this encoder reports a match
+                                  * (clip, exact: min_confidence; lexical: SP_LEX_THRESHOLD) */
+    int n_matches;
+    sp_query_match *matches;     /* lexical: the target's classes at or above the threshold, then
+                                  * the anchor's (when none matched, the nearest one below);
+                                  * exact: the class named, if the engine knows it; clip: none */
+    char relation[24];           /* "" or "near", "next to", "in", "on", "to", "above", ... */
+    sp_query_region region;      /* valid: the text named a region; position is its centre */
+    sp_query_region anchor;      /* valid: the anchor of the relation, as found */
+    int n_ignored;
+    char ignored[SP_QUERY_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
+    char *explanation;           /* human-readable: which classes matched and why (NULL = none) */
 } sp_query_result;
 
 void sp_query_result_free(sp_query_result *res);
@@ -248,9 +325,16 @@ typedef struct sp_query_engine sp_query_engine;
 
 /* Opens a model folder (splat.ply with f_sem_*, semantic.json, PCA, frame.json, cameras from the
  * sidecar's COLMAP folder) once, and puts splat and cameras into the folder's frame; opts NULL =
- * defaults (kept as the engine's defaults). dev is borrowed (must outlive the engine). */
+ * defaults (kept as the engine's defaults). dev is borrowed (must outlive the engine). The text
+ * encoder is the folder's (see "Text encoders" above). */
 int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
                          sp_device *dev, const sp_log *log, sp_error *err);
+/* The same with the text encoder chosen here (enc NULL = as sp_query_engine_open). An encoder that
+ * does not fit the features (clip on hashed labels, lexical or exact on CLIP features) or cannot
+ * be prepared (no WordNet, no class names) fails with SP_E_UNSUPPORTED / SP_E_NOTFOUND. */
+int sp_query_engine_open_with(sp_query_engine **out, const char *model_dir, const sp_encoder_opts *enc,
+                              const sp_query_opts *opts, sp_device *dev, const sp_log *log,
+                              sp_error *err);
 
 /* An engine from memory (tests, tools): everything is copied. */
 typedef struct sp_query_model {
@@ -262,21 +346,31 @@ typedef struct sp_query_model {
     const sp_query_source *source; /* NULL = encoder "exact", features "labels" */
     const sp_frame *frame;        /* NULL = identity, source "colmap" */
     const char *clip_weights;     /* encoder "clip": the CLIP model.safetensors */
+    const char *const *classes;   /* label scenes: the class names ([n_classes]; required for
+                                   * encoder "lexical"; exact uses them to name its match) */
+    int n_classes;
+    const char *wordnet_dir;      /* lexical: NULL = SP_LEX_DEFAULT_WORDNET */
+    const char *regions_path;     /* lexical: NULL = the bundled region table, "" = none */
 } sp_query_model;
 
 int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const sp_query_opts *opts,
                            sp_device *dev, const sp_log *log, sp_error *err);
 void sp_query_engine_free(sp_query_engine *e);
 
-/* Embeds the text (the engine's text encoder) and localizes it with opts (NULL = the engine's
- * defaults). res is filled (free with sp_query_result_free) even when nothing is found; on an
- * error it is left empty (nothing to free). */
+/* Answers the text through the engine's text encoder with opts (NULL = the engine's defaults):
+ * clip and exact embed it and localize the embedding; lexical matches it against the scene's
+ * classes and localizes what matched, resolving regions and relations (sp_lex_query). res is
+ * filled (free with sp_query_result_free) even when nothing is found, with what the encoder
+ * understood (matches, explanation); on an error it is left empty (nothing to free). */
 int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *opts,
                           sp_query_result *res, sp_error *err);
 /* Same with a precomputed full_dim embedding (need not be unit length); label names the result. */
 int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
                                     const sp_query_opts *opts, sp_query_result *res, sp_error *err);
-/* Text -> full_dim unit embedding as the engine does it (out [full_dim]). */
+/* Text -> full_dim unit embedding as the engine does it (out [full_dim]): clip the text tower,
+ * exact the text's hash, lexical the score-weighted label embeddings of the classes it matches
+ * (sp_lex_embed; the text's own hash, which matches nothing, when no class does). Relevancy and
+ * heatmaps score this embedding. */
 int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err);
 /* Per-Gaussian calibrated relevancy [n] (0.5 = no preference .. 1) and, when raw_cos is not
  * NULL, raw cosine [n] of a text, with the engine's default negatives and temperature; n and the
@@ -306,19 +400,22 @@ const char *sp_query_engine_camera_name(const sp_query_engine *e, size_t i);
 const sp_frame *sp_query_engine_frame(const sp_query_engine *e);
 const sp_query_source *sp_query_engine_source(const sp_query_engine *e);
 
-/* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
- * position (array or null), confidence, relevancy_max, view, instances [{position, extent_min,
- * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms, source
- * {encoder, features, ground_truth, note}, frame {name, source, units, up}. */
+/* The result as JSON text (malloc'd, caller frees with free()): text, encoder, method, found
+ * (valid), position (array or null), confidence, threshold, relevancy_max, view, instances
+ * [{position, extent_min, extent_max, score, confidence, points, class (or null), relation_m (or
+ * null)}], heatmap (heatmap_path or null), timings_ms, source {encoder, features, ground_truth,
+ * note}, frame {name, source, units, up}, matches [{class, role, score, kind, query_sense,
+ * class_sense, path, gloss_words, definition}], relation (or null), region and anchor ({name,
+ * extent_min, extent_max, centre, instances} or null), ignored [words], explanation (or null). */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
 
 /* ---- ABI (for bindings: the Python module checks these before any call) ---------------------- */
 
-#define SP_SEMANTIC_ABI_VERSION 2
+#define SP_SEMANTIC_ABI_VERSION 3
 int sp_semantic_abi_version(void);
 /* sizeof of a public struct by name ("sp_query_opts", "sp_query_result", "sp_query_instance",
- * "sp_query_source", "sp_query_frame", "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when
- * unknown. */
+ * "sp_query_source", "sp_query_frame", "sp_query_match", "sp_query_region", "sp_encoder_opts",
+ * "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when unknown. */
 size_t sp_semantic_abi_sizeof(const char *type_name);
 
 /* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *

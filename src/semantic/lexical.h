@@ -211,4 +211,10 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
 /* Order of class matches: score, then kind (exact first), then class index. */
 int lex_match_cmp(const void *a, const void *b);
 
+/* ---- grounding (lex_ground.c) ----------------------------------------------------------------- */
+
+/* sp_lex_query with the call's options o; the caller holds the engine's lock. */
+int sem_lex_answer(sp_query_engine *e, const sp_lex_vocab *v, const char *text, const sp_query_opts *o,
+                   sp_lex_answer *a, sp_error *err);
+
 #endif
