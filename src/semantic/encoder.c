@@ -131,6 +131,6 @@ int sem_encoder_prepare(sp_query_engine *e, const char *name, const char *wordne
         }
     }
     e->enc = enc;
-    snprintf(e->source.encoder, sizeof e->source.encoder, "%s", name);
+    snprintf(e->source.encoder, sizeof e->source.encoder, "%s", enc->name); /* name may be this field */
     return 0;
 }

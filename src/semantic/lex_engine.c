@@ -9,7 +9,6 @@
 
 #include "lexical.h"
 #include "sem_internal.h"
-#include "semsplat/clip.h"
 
 #define EXPLAIN_CAP 32768
 
@@ -75,33 +74,27 @@ static void explain_grounding(const sp_lex_answer *a, const sp_query_result *res
         snprintf(out + o, cap - o, "in the scene: the matched classes are named but not seen enough to localize\n");
 }
 
-/* A region's heatmap: its member classes' label embeddings, weighted by their membership. */
-static int region_heatmap(sp_query_engine *e, const sp_lex_answer *a, const sp_query_opts *o,
-                          sp_query_result *res, sp_error *err)
+/* The heatmap of an answer that has none (a region, or nothing found): the lexical embedding of
+ * the text (its classes' label embeddings weighted by score; its own hash when none matches, so
+ * absent things get the faded heatmap of the other encoders). */
+static int text_heatmap(sp_query_engine *e, const sp_query_opts *o, sp_query_result *res, sp_error *err)
 {
-    int F = e->pca.full_dim;
-    float *q = calloc((size_t)F, sizeof(float)), *one = malloc(sizeof(float) * (size_t)F);
-    int rc = q && one ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");
-    double n2 = 0;
-    for (int i = 0; !rc && i < a->lex.target.n_matches; i++) {
-        const sp_lex_class_match *m = &a->lex.target.matches[i];
-        if (m->score < SP_LEX_THRESHOLD) continue;
-        sp_label_embedding(sp_lex_vocab_class(e->vocab, m->class_index), F, one);
-        for (int j = 0; j < F; j++) q[j] += m->score * one[j];
-    }
-    for (int j = 0; !rc && j < F; j++) n2 += (double)q[j] * q[j];
+    float *q = malloc(sizeof(float) * (size_t)e->pca.full_dim);
+    int rc = q ? e->enc->embed(e, res->text, q, err) : sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");
     sp_query_result h;
-    if (!rc && n2 > 0 && !(rc = sem_query_embedding(e, q, res->text, o, &h, err))) {
+    if (!rc && !(rc = sem_query_embedding(e, q, res->text, o, &h, err))) {
         res->relevancy_image = h.relevancy_image, res->relevancy = h.relevancy;
         h.relevancy_image = NULL, h.relevancy = NULL;
         res->width = h.width, res->height = h.height;
-        res->view_index = h.view_index;
-        snprintf(res->view_name, sizeof res->view_name, "%s", h.view_name);
+        if (res->view_index < 0) {
+            res->view_index = h.view_index;
+            snprintf(res->view_name, sizeof res->view_name, "%s", h.view_name);
+        }
         res->ms_heatmap = h.ms_total;
         res->ms_total += h.ms_total;
         sp_query_result_free(&h);
     }
-    free(q), free(one);
+    free(q);
     return rc;
 }
 
@@ -130,7 +123,8 @@ static int to_result(sp_query_engine *e, sp_lex_answer *a, const sp_query_opts *
         sp_lex_explain(&a->lex, e->vocab, res->explanation, EXPLAIN_CAP);
         explain_grounding(a, res, res->explanation, EXPLAIN_CAP);
     }
-    if (!rc && o->heatmap && a->is_region && !res->relevancy_image && res->valid) rc = region_heatmap(e, a, o, res, err);
+    res->method = o->method == SP_QUERY_MULTIVIEW && e->n_cams > 0 ? SP_QUERY_MULTIVIEW : SP_QUERY_3D;
+    if (!rc && o->heatmap && e->n_cams > 0 && !res->relevancy_image) rc = text_heatmap(e, o, res, err);
     return rc;
 }
 

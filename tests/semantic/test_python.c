@@ -1,7 +1,7 @@
 /* Runs tests/python/test_query.py (the Python module against `semsplat query --json`) and
  * tests/python/test_module.py (safety after close, ABI checks, error classes, threads, per-call
  * options) on a model folder built here from the tiny labelled scene: splat.ply with f_sem_*,
- * semantic.json, the PCA files, a COLMAP model of the cameras and a frame.json that moves the
+ * semantic.json (with the class names, so the default text encoder is lexical), the PCA files, a COLMAP model of the cameras and a frame.json that moves the
  * model into a "world" (rotation, translation, scale), with expect.json naming where the table
  * must come out. Skips when /usr/bin/python3 has no numpy. */
 #include <cjson/cJSON.h>
@@ -70,6 +70,8 @@ static int build_model(const char *dir, sp_error *err)
     cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
     cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
     cJSON_AddStringToObject(o, "label_embedding", "hash");
+    /* the class names, as lift records them: the folder answers through the lexical encoder */
+    cJSON_AddItemToObject(o, "classes", cJSON_CreateStringArray(sc_class_names, SC_CLASSES));
     cJSON_AddNullToObject(o, "model");
     cJSON_AddStringToObject(o, "method", "lift");
     cJSON_AddStringToObject(o, "colmap", "sparse/0");
