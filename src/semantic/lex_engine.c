@@ -12,8 +12,7 @@
 
 #define EXPLAIN_CAP 32768
 
-static void copy_match(sp_query_match *q, const sp_lex_class_match *m, const sp_lex_vocab *v,
-                       const char *role)
+void sem_lex_match_copy(sp_query_match *q, const sp_lex_class_match *m, const sp_lex_vocab *v, const char *role)
 {
     memset(q, 0, sizeof *q);
     snprintf(q->label, sizeof q->label, "%s", sp_lex_vocab_class(v, m->class_index));
@@ -42,8 +41,8 @@ static int add_matches(sp_query_result *res, const sp_lex_result *lex, const sp_
     if (nt + na == 0) return 0;
     res->matches = calloc((size_t)(nt + na), sizeof *res->matches);
     if (!res->matches) return sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");
-    for (int i = 0; i < nt; i++) copy_match(&res->matches[res->n_matches++], &lex->target.matches[i], v, "target");
-    for (int i = 0; i < na; i++) copy_match(&res->matches[res->n_matches++], &lex->anchor.matches[i], v, "anchor");
+    for (int i = 0; i < nt; i++) sem_lex_match_copy(&res->matches[res->n_matches++], &lex->target.matches[i], v, "target");
+    for (int i = 0; i < na; i++) sem_lex_match_copy(&res->matches[res->n_matches++], &lex->anchor.matches[i], v, "anchor");
     return 0;
 }
 

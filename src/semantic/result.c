@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sem_internal.h"
 #include "semsplat/semantic.h"
 
 const char *sp_query_source_note(const sp_query_source *s)
@@ -49,6 +50,22 @@ static void add_source_and_frame(cJSON *o, const sp_query_result *res)
     cJSON_AddStringToObject(f, "up", res->frame.up);
 }
 
+cJSON *sem_match_json(const sp_query_match *m, float threshold)
+{
+    cJSON *it = cJSON_CreateObject();
+    cJSON_AddStringToObject(it, "class", m->label);
+    cJSON_AddStringToObject(it, "role", m->role);
+    cJSON_AddNumberToObject(it, "score", m->score);
+    cJSON_AddBoolToObject(it, "match", m->score >= threshold);
+    cJSON_AddStringToObject(it, "kind", m->kind);
+    cJSON_AddStringToObject(it, "query_sense", m->query_sense);
+    cJSON_AddStringToObject(it, "class_sense", m->class_sense);
+    cJSON_AddStringToObject(it, "path", m->path);
+    cJSON_AddStringToObject(it, "gloss_words", m->gloss_words);
+    cJSON_AddStringToObject(it, "definition", m->definition);
+    return it;
+}
+
 static cJSON *str_or_null(const char *s) { return s && s[0] ? cJSON_CreateString(s) : cJSON_CreateNull(); }
 
 static cJSON *region_json(const sp_query_region *r)
@@ -67,21 +84,7 @@ static cJSON *region_json(const sp_query_region *r)
 static void add_understanding(cJSON *o, const sp_query_result *res)
 {
     cJSON *arr = cJSON_AddArrayToObject(o, "matches");
-    for (int i = 0; i < res->n_matches; i++) {
-        const sp_query_match *m = &res->matches[i];
-        cJSON *it = cJSON_CreateObject();
-        cJSON_AddStringToObject(it, "class", m->label);
-        cJSON_AddStringToObject(it, "role", m->role);
-        cJSON_AddNumberToObject(it, "score", m->score);
-        cJSON_AddBoolToObject(it, "match", m->score >= res->threshold);
-        cJSON_AddStringToObject(it, "kind", m->kind);
-        cJSON_AddStringToObject(it, "query_sense", m->query_sense);
-        cJSON_AddStringToObject(it, "class_sense", m->class_sense);
-        cJSON_AddStringToObject(it, "path", m->path);
-        cJSON_AddStringToObject(it, "gloss_words", m->gloss_words);
-        cJSON_AddStringToObject(it, "definition", m->definition);
-        cJSON_AddItemToArray(arr, it);
-    }
+    for (int i = 0; i < res->n_matches; i++) cJSON_AddItemToArray(arr, sem_match_json(&res->matches[i], res->threshold));
     cJSON_AddItemToObject(o, "relation", str_or_null(res->relation));
     cJSON_AddItemToObject(o, "region", region_json(&res->region));
     cJSON_AddItemToObject(o, "anchor", region_json(&res->anchor));

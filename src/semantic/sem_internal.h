@@ -84,6 +84,10 @@ int sem_lex_engine_query(sp_query_engine *e, const char *text, const sp_query_op
 int sem_model_classes(const char *model_dir, const struct cJSON *sidecar, char (**names)[128], int *n,
                       sp_error *err);
 
+/* One match as JSON (result.c): class, role, score, match (score >= threshold), kind, senses,
+ * path, gloss_words, definition. */
+struct cJSON *sem_match_json(const sp_query_match *m, float threshold);
+
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
  * heaviest first, lighter than min_fraction of the heaviest dropped; voxels whose points weigh
  * less than min_voxel_weight in total are ignored. conf [m] may be NULL. */
