@@ -14,7 +14,8 @@
  *
  * Relevancy (per Gaussian or per pixel, for a text embedding q in the full space):
  *   raw   s = cos(decode(f), q); a result's `confidence` is the largest raw cosine of the object
- *         (above ~0.25 a match, below ~0.15 noise);
+ *         (above ~0.25 a match, below ~0.15 noise) with the clip and exact text encoders, the
+ *         calibrated lexical score with the lexical one (see "Text encoders");
  *   rel   = min_k exp(s/T) / (exp(s/T) + exp(s_k/T)) over canonical negatives k ("object",
  *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
  *         no preference, used for thresholds and heatmaps.
@@ -287,10 +288,11 @@ typedef struct sp_query_region {
 typedef struct sp_query_result {
     char text[256];
     int method;          /* sp_query_method used */
-    int valid;           /* 1 when confidence >= min_confidence and an instance was found */
+    int valid;           /* 1 when confidence >= threshold and an instance was found */
     float position[3];   /* best instance (in `frame`); NaN when !valid */
-    float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
-                          * opacity >= min_opacity */
+    float confidence;    /* clip, exact: robust largest raw cosine, the 5th largest over Gaussians
+                          * with opacity >= min_opacity; lexical: the calibrated lexical score of
+                          * the text (0..1, found at >= threshold) */
     float relevancy_max; /* largest calibrated relevancy */
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];
@@ -447,8 +449,10 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * Without a head noun (or with a placeholder: "something", "a place") the confidence is G:
  *   G = sum_d w_d m_d / sum_d w_d,  w_d = 1 / (1 + ln(1 + senses(d)))  (polysemy for frequency),
  *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
- *   hypernym's, DELTA^2 two levels up, and 0.8 for a lemma of d's commonest sense found in the
- *   class's own definition (one weak step at most). Location words (room, area) describe nothing.
+ *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
+ *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
+ *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
+ *   step at most). Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
  * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
  * "the area that looks like a kitchen") list the classes that define them: the region table's
@@ -551,7 +555,9 @@ void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, 
  * is each of its classes localized alone, their instances clustered in space (boxes within 2 m),
  * and the cluster holding most of the region's kinds taken: its extent and centre. A target too
  * is each matched class localized alone (the scene must show a cosine of 0.5 with the class's
- * embedding, else the class is named but not seen), instances of the best-scoring class first.
+ * embedding, else the class is named but not seen), instances of the best-scoring class first;
+ * a text that is a class's own name (kind exact) means that class alone ("couch": not also the
+ * bed WordNet calls a couch; "dining chair": not the armchair).
  * A relation then ranks them, within a class score, by their distance to the anchor's instances
  * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
  * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
@@ -578,14 +584,17 @@ typedef struct sp_lex_answer {
 } sp_lex_answer;
 
 /* Answers text on engine e (a label-feature scene whose class names are v's). a is large: put it
- * on the heap; free with sp_lex_answer_free. The engine's options are used as set, except that
- * the lexical score decides what is found (min_confidence is not applied). */
+ * on the heap; free with sp_lex_answer_free. The engine's default options are used, except that
+ * the lexical score decides what is found (min_confidence is not applied). The engine's own
+ * lexical encoder (sp_query_engine_query) runs exactly this with the call's options and hands
+ * the answer back as a plain sp_query_result (matches, region, anchor, explanation). */
 int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
                  sp_error *err);
 void sp_lex_answer_free(sp_lex_answer *a);
 /* The lexical encoder as a text embedding for a label-feature scene: the target's classes
- * matched at or above the threshold, sum of score * sp_label_embedding(class, dim), normalised
- * (all zeros when nothing matches); *confidence (may be NULL) the lexical score. */
+ * matched at or above the threshold (only the exact ones when the text is a class's own name),
+ * sum of score * sp_label_embedding(class, dim), normalised (all zeros when nothing matches);
+ * *confidence (may be NULL) the lexical score. */
 int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
                  sp_error *err);
 /* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
@@ -596,8 +605,8 @@ char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const ch
 int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
                              const char *regions_path, sp_error *err);
 /* The vocabulary of a label-feature model folder (semantic.json: source "labels", label_embedding
- * "hash"): the labels.json of the capture it names. Other models fail with SP_E_UNSUPPORTED (their
- * features live beside CLIP's text tower, not label embeddings). */
+ * "hash"): its "classes", else the labels.json of the capture it names. Other models fail with
+ * SP_E_UNSUPPORTED (their features live beside CLIP's text tower, not label embeddings). */
 int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
                            const char *regions_path, sp_error *err);
 
