@@ -24,6 +24,9 @@ int cmd_agent(int argc, char **argv);
 int cmd_sim_robot(int argc, char **argv);
 int cmd_ros_goal(int argc, char **argv);
 int cmd_lexical(int argc, char **argv);
+int cmd_plan(int argc, char **argv);
+int cmd_explore(int argc, char **argv);
+int cmd_describe(int argc, char **argv);
 
 /* Returns the value after flag `name` ("--out") at argv[*i] (advancing *i), or NULL. Accepts
  * "--out=VALUE" too. Prints an error and sets *bad when the value is missing. */

@@ -27,6 +27,9 @@ static const command commands[] = {
     {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
     {"sim-robot", cmd_sim_robot, "a simulated robot serving Nav2 actions and /odom over ROS 2 DDS"},
     {"ros-goal", cmd_ros_goal, "send a Nav2 goal / ask for a path / read the pose of a ROS 2 robot"},
+    {"plan", cmd_plan, "k distinct ranked trajectories to an object, with previews and a map"},
+    {"explore", cmd_explore, "views covering a region in words, ordered into a short tour"},
+    {"describe", cmd_describe, "the objects near an anchor, with distances and relations"},
 };
 
 static void usage(FILE *f)
