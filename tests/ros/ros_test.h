@@ -18,7 +18,8 @@
 #include "semsplat/ros.h"
 
 /* An 8 m x 6 m room at 5 cm: walls 0.2 m thick around it, an inner wall at x = 4 with a door
- * at 4 < y < 5, and a block of unknown space at 6.5..7.5 x 0.5..1.5. */
+ * at 4 < y < 5, a block of unknown space at 6.5..7.5 x 0.5..1.5, and a closed closet (walls
+ * 0.1 m thick around 6.6..7.6 x 3.0..4.0) whose free inside nobody can reach. */
 #define ROOM_W 160
 #define ROOM_H 120
 #define ROOM_RES 0.05
@@ -28,6 +29,8 @@ static inline int8_t room_cell_at(double x, double y)
     if (x < 0.2 || x > 7.8 || y < 0.2 || y > 5.8) return 100;
     if (x > 3.9 && x < 4.1 && !(y > 4.0 && y < 5.0)) return 100;
     if (x > 6.5 && x < 7.5 && y > 0.5 && y < 1.5) return -1;
+    if (x > 6.6 && x < 7.6 && y > 3.0 && y < 4.0 && !(x > 6.7 && x < 7.5 && y > 3.1 && y < 3.9))
+        return 100;
     return 0;
 }
 
@@ -120,6 +123,21 @@ static inline void test_stop(pid_t pid)
         kill(pid, SIGKILL);
         test_wait_pid(pid, 3.0);
     }
+}
+
+/* Sends a NavigateToPose goal at (x, y) and returns the state it was answered with (REJECTED,
+ * ACCEPTED, ...), or UNKNOWN when sending failed (err says why). The goal is let go. */
+static inline sp_ros_goal_state test_goal_answer(sp_ros_bridge *b, double x, double y,
+                                                 sp_error *err)
+{
+    sp_ros_pose goal = {x, y, 0, 0};
+    sp_ros_goal *g = NULL;
+    sp_ros_goal_status st;
+    st.state = SP_ROS_GOAL_UNKNOWN;
+    if (sp_ros_navigate_to(b, &goal, NULL, &g, err) == 0 && sp_ros_goal_poll(g, &st, err))
+        st.state = SP_ROS_GOAL_UNKNOWN;
+    sp_ros_goal_free(g);
+    return st.state;
 }
 
 static inline int test_wait_file(const char *path, double timeout_s)

@@ -104,16 +104,9 @@ static void goal_succeeds(sp_ros_bridge *b, double gx, double gy, double gyaw)
 
 static void goal_rejected(sp_ros_bridge *b, double gx, double gy, const char *what)
 {
-    sp_ros_pose goal = {gx, gy, 0, 0};
-    sp_ros_goal *g = NULL;
-    sp_ros_goal_status st;
     sp_error err = {0};
-    CHECK_OK(sp_ros_navigate_to(b, &goal, NULL, &g, &err), &err);
-    if (!g) return;
-    sp_ros_goal_poll(g, &st, &err);
-    CHECK_MSG(st.state == SP_ROS_GOAL_REJECTED, "a goal %s was %s", what,
-              sp_ros_goal_state_name(st.state));
-    sp_ros_goal_free(g);
+    sp_ros_goal_state st = test_goal_answer(b, gx, gy, &err);
+    CHECK_MSG(st == SP_ROS_GOAL_REJECTED, "a goal %s was %s %s", what, sp_ros_goal_state_name(st), err.msg);
 }
 
 static void cancel_stops_robot(sp_ros_bridge *b)
@@ -192,8 +185,13 @@ static void compute_path(sp_ros_bridge *b)
     CHECK_OK(sp_ros_compute_path(b, &start, &goal, "GridBased", 10.0, &p, NULL, &err), &err);
     if (p.n) CHECK(fabs(p.poses[0].x - 2) < 1e-9 && fabs(p.poses[0].y - 2) < 1e-9);
     sp_ros_path_free(&p);
+    /* As Nav2's planner server: accepted, then aborted with the planner's error code */
     CHECK_FAILS(sp_ros_compute_path(b, NULL, &wall, NULL, 10.0, &p, NULL, &err), SP_E_NOTFOUND,
-                &err, "rejected");
+                &err, "error_code 206: goal occupied");
+    sp_ros_pose closet = {7.1, 3.5, 0, 0};
+    CHECK_FAILS(sp_ros_compute_path(b, NULL, &closet, NULL, 10.0, &p, NULL, &err), SP_E_NOTFOUND,
+                &err, "error_code 208: no valid path");
+    CHECK_MSG(strstr(err.msg, "aborted") && strstr(err.msg, "not reachable"), "%s", err.msg);
 }
 
 static void cli_goal(void)
@@ -237,6 +235,8 @@ static void test_jazzy_robot(void)
         CHECK(sp_ros_bridge_distro(b) == SP_ROS_DISTRO_JAZZY); /* detected from the robot */
         goal_rejected(b, 4.0, 2.0, "inside a wall");
         goal_rejected(b, 7.0, 1.0, "in unknown space");
+        goal_rejected(b, 3.75, 2.0, "closer to a wall than the robot's radius");
+        goal_rejected(b, 7.1, 3.5, "in a closet nobody can reach");
         cancel_stops_robot(b);
         preemption(b);
         compute_path(b);
