@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -74,7 +75,11 @@ static inline const char *room_write_yaml(const char *dir)
 }
 
 /* A domain id in 1..230 and a namespace unique to this run, so parallel runs (other tests,
- * other people on the machine) never see each other's robots. */
+ * other people on the machine) never see each other's robots. The domain is also reserved on
+ * this machine for as long as the process lives (an flock on /tmp/semsplat-ros-domain-<d>.lock,
+ * released by the kernel when it exits, however it exits): the namespace keeps topics apart,
+ * but ros_discovery_info and the peers' distro are domain-wide, and a test sharing its domain
+ * with another run saw that run's nodes (test_rmw failed so). */
 static inline int test_random_domain(char *ns, size_t cap)
 {
     struct timespec ts;
@@ -83,7 +88,16 @@ static inline int test_random_domain(char *ns, size_t cap)
     s ^= s >> 17;
     s *= 0x9e3779b97f4a7c15ull;
     snprintf(ns, cap, "/t%ld_%llu", (long)getpid(), (s >> 40) % 100000);
-    return 1 + (int)((s >> 32) % 230);
+    int first = (int)((s >> 32) % 230);
+    for (int k = 0; k < 230; k++) {
+        int d = 1 + (first + k) % 230;
+        char lock[64];
+        snprintf(lock, sizeof lock, "/tmp/semsplat-ros-domain-%d.lock", d);
+        int fd = open(lock, O_RDONLY | O_CREAT | O_CLOEXEC, 0666);
+        if (fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) == 0) return d; /* fd stays open: held */
+        if (fd >= 0) close(fd);
+    }
+    return 1 + first; /* every domain taken (or /tmp unwritable): share one */
 }
 
 /* Starts argv[0] with argv, stdout and stderr to log_path. Returns the pid (or -1). */

@@ -67,6 +67,14 @@ static void publish_status(sim *s, ros_action_kind k)
     ros_unfill_status_array(&m);
 }
 
+/* A lost reply leaves the client waiting out its timeout: say so in the robot's log. */
+static void reply(sim *s, ros_server *srv, dds_instance_handle_t writer, const void *m)
+{
+    if (ros_server_reply(srv, writer, m))
+        sp_logf(s->log, SP_LOG_WARN, "%s: reply dropped: the client is gone or its reply reader "
+                "was not discovered within %.1f s", srv->fq, ROS_REPLY_WAIT_S);
+}
+
 static void send_result(sim *s, const sim_goal *g, const sim_waiting *w)
 {
     sp_ros_result_response r = g->result;
@@ -76,20 +84,20 @@ static void send_result(sim *s, const sim_goal *g, const sim_waiting *w)
     if (g->kind == ROS_ACTION_NAV && jazzy) {
         jazzy_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
         ros_fill_nav_result_jazzy(&m, &r);
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
     } else if (g->kind == ROS_ACTION_NAV) {
         humble_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
         ros_fill_nav_result_humble(&m, &r);
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
     } else if (jazzy) {
         jazzy_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
         if (ros_fill_path_result_jazzy(&m, &r, ros_wall_time())) return;
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
         ros_unfill_path(&m.result.path);
     } else {
         humble_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
         if (ros_fill_path_result_humble(&m, &r, ros_wall_time())) return;
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
         ros_unfill_path(&m.result.path);
     }
 }
@@ -114,13 +122,12 @@ static void reply_goal(sim *s, ros_server *srv, const sp_ros_rpc_header *h,
 {
     /* NavigateToPose_ and ComputePathToPose_SendGoal_Response_ have the same layout. */
     nav2_msgs_action_dds__NavigateToPose_SendGoal_Response_ m;
-    (void)s;
     memset(&m, 0, sizeof m);
     m.guid = h->guid;
     m.seq = h->seq;
     m.accepted = accepted != 0;
     ros_fill_time(&m.stamp, ros_wall_time());
-    ros_server_reply(srv, writer, &m);
+    reply(s, srv, writer, &m);
 }
 
 /* Goals are in the map frame, which the simulator takes as its odom frame; others are refused. */
@@ -282,8 +289,8 @@ static void on_cancel_request(void *ctx, const uint8_t *bytes, size_t n,
     m.return_code = k ? 0 : found_terminal ? 3 : by_id ? 2 : 1;
     m.goals_canceling._buffer = canceling;
     m.goals_canceling._length = m.goals_canceling._maximum = k;
-    ros_server_reply(c->kind == ROS_ACTION_NAV ? &s->nav.cancel : &s->path.cancel,
-                     info->publication_handle, &m);
+    reply(s, c->kind == ROS_ACTION_NAV ? &s->nav.cancel : &s->path.cancel,
+          info->publication_handle, &m);
     if (k) {
         publish_status(s, c->kind);
         sp_logf(s->log, SP_LOG_INFO, "%s: canceling %u goal(s)", ros_action_type_name(c->kind), k);
