@@ -197,7 +197,12 @@ static const row held_out[] = {
 };
 
 /* Round 2 (a2-agent): forty phrasings written by someone who did not write the parser, without
- * reading its word lists, and run once before any change. First run: see test_fresh's comment. */
+ * reading its word lists, and run once before any change. First run: 36/40 (90.0 %; go 8/10,
+ * trajectories 10/10, describe 10/10, explore 8/10). The misses ("drive the robot to the
+ * wardrobe", "go find the microwave and stop next to it", "scout the hallway", "wander around
+ * the bathroom ...") were then fixed by general rules (a self-reference between the verb and
+ * its particle, "find"/"locate" after a go verb, four exploring verbs), so today's 40/40
+ * overstates the parser on unseen phrasings: 90 % is the honest figure. */
 static const row fresh[] = {
     {"could you please drive the robot to the wardrobe", G, "wardrobe"},
     {"I'd like you to roll over to the armchair", G, "armchair"},
