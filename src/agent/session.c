@@ -28,6 +28,8 @@ sp_agent_config sp_agent_config_default(void)
     c.goal_match_rad = 0.35;
     c.plan_start_m = 0.5;
     c.goal_timeout_s = 300;
+    sp_ros_options_default(&c.ros);
+    c.ros_wait_s = 10;
     return c;
 }
 
@@ -69,6 +71,7 @@ int agent_session_open_world(sp_agent_session **out, const sp_agent_config *cfg,
     s->cfg.out_dir = s->out_dir[0] ? s->out_dir : NULL;
     s->cfg.model_dir = s->model_dir[0] ? s->model_dir : NULL;
     s->cfg.llm.preset = s->cfg.llm.base_url = s->cfg.llm.model = s->cfg.llm.anthropic_version = NULL;
+    sp_ros_options_default(&s->cfg.ros); /* read by the robot at open; no caller strings kept */
     int rc = SP_OK;
     if (!world.ops || !robot.ops)
         rc = sp_error_set(err, SP_E_ARG, "agent: a world and a robot are needed");
@@ -95,7 +98,7 @@ int sp_agent_session_open_with_robot(sp_agent_session **out, const sp_agent_conf
         sp_agent_robot_close(&robot);
         return sp_error_set(err, SP_E_ARG, "agent: a model folder is needed (--model DIR)");
     }
-    int rc = agent_world_open_model(&w, cfg->model_dir, cfg->log, err);
+    int rc = agent_world_open_model(&w, cfg, err);
     if (rc) {
         sp_agent_robot_close(&robot);
         return rc;
