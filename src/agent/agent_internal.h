@@ -63,7 +63,7 @@ typedef struct agent_found {
     double min_confidence;/* the threshold the world used */
     int n;                /* instances, best first */
     agent_instance inst[AGENT_MAX_INSTANCES];
-    char source[160];     /* what produced it: encoder, feature source, ground-truth caveat */
+    char source[320];     /* what produced it: encoder, feature source, ground-truth caveat */
     char heatmap[AGENT_PATH_CAP]; /* image path or "" */
 } agent_found;
 
@@ -107,7 +107,7 @@ typedef struct agent_scene {
     int n;
     agent_scene_item items[AGENT_MAX_SCENE];
     char sentence[1024];  /* "" = the tool writes one */
-    char source[160];
+    char source[320];
 } agent_scene;
 
 typedef struct agent_tour {
@@ -141,6 +141,8 @@ typedef struct agent_world_ops {
     /* Up to max names the map holds that are closest to text (for "did you mean"). */
     int (*suggest)(void *ctx, const char *text, char (*names)[64], int max);
     void (*close)(void *ctx);
+    /* Where a robot starts when nobody says (the capture's first standpoint); may be NULL. */
+    int (*default_start)(void *ctx, sp_agent_pose *pose, sp_error *err);
 } agent_world_ops;
 
 typedef struct agent_world {

@@ -20,7 +20,8 @@
 /* Class names that are structure, not objects: never suggested, never described. */
 static int is_structure(const char *name)
 {
-    static const char *const s[] = {"wall", "floor", "ceiling", "background", "structure", NULL};
+    static const char *const s[] = {"wall", "walls", "floor", "floors", "ceiling", "ceilings",
+                                    "background", "structure", NULL};
     for (int i = 0; s[i]; i++)
         if (!strcasecmp(name, s[i])) return 1;
     return 0;
@@ -293,8 +294,17 @@ static void mw_close(void *ctx)
     free(w);
 }
 
+static int mw_default_start(void *ctx, sp_agent_pose *pose, sp_error *err)
+{
+    float s[3];
+    int rc = sp_nav_default_start(((model_world *)ctx)->nav, s, err);
+    if (!rc) *pose = (sp_agent_pose){s[0], s[1], 0, s[2]};
+    return rc;
+}
+
 static const agent_world_ops model_ops = {"model", mw_query, mw_plan, mw_render, mw_describe,
-                                          mw_explore, mw_cell, mw_region_of, mw_suggest, mw_close};
+                                          mw_explore, mw_cell, mw_region_of, mw_suggest, mw_close,
+                                          mw_default_start};
 
 /* nav's household terms and the scene's own classes (label scenes), for describe. */
 static void build_vocabulary(model_world *w)

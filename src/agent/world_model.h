@@ -37,7 +37,7 @@ typedef struct model_world {
     int n_outputs;           /* numbered output folders and images */
     mw_known known[MW_KNOWN];
     int n_known;             /* handed out so far (the ring holds the last MW_KNOWN) */
-    char source[160];        /* the engine's encoder and features, with the caveat */
+    char source[320];        /* the engine's encoder and features, with the caveat */
     char vocabulary[4096];   /* what describe asks for: nav's household terms + the scene's classes */
     sp_log log;
     int has_log;
