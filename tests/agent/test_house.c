@@ -12,7 +12,8 @@
  *   - "what objects are near the dining table?": its chairs among them;
  *   - "explore the area around the kitchen": waypoints in the kitchen;
  *   - "go to the chair": asks which (five chairs), and "the nearest one" then goes;
- *   - raw coordinates into a wall: refused by send_nav2_goal and by plan_path without tolerance. */
+ *   - raw coordinates into a wall: refused by send_nav2_goal and by plan_path without tolerance;
+ *   - render_view_from_splat writes a 640 x 480 view of the splat. */
 #include <cjson/cJSON.h>
 
 #include "agent/world_model.h"
@@ -197,6 +198,28 @@ static void test_raw_goal_into_wall(void)
     CHECK(agent_dist2d(before.x, before.y, after.x, after.y) < 1e-9);
 }
 
+static void test_render_view(void)
+{
+    int is_error;
+    char *r = run_tool(g_s, "render_view_from_splat", "{\"pose\": [1.5, 6.0, 0.8, 1.57]}", &is_error);
+    cJSON *j = cJSON_Parse(r);
+    const cJSON *img = cJSON_GetObjectItemCaseSensitive(data_of(j), "image");
+    CHECK_MSG(!is_error && cJSON_IsString(img), "%s", r);
+    sp_image im = {0};
+    sp_error err = {0};
+    if (cJSON_IsString(img)) {
+        CHECK_OK(sp_image_read(img->valuestring, &im, &err), &err);
+        CHECK(im.width == 640 && im.height == 480);
+        long lit = 0; /* the kitchen seen from its middle: mostly reconstructed, not background */
+        const uint8_t *px = im.data;
+        for (long i = 0; px && i < 640L * 480; i++) lit += px[3 * i] != 31 || px[3 * i + 1] != 31;
+        CHECK_MSG(lit > 640L * 480 * 9 / 10, "%ld of %ld pixels show the splat", lit, 640L * 480);
+        free(im.data);
+    }
+    cJSON_Delete(j);
+    free(r);
+}
+
 static void test_go_to_refrigerator(void)
 {
     float lo[3], hi[3];
@@ -218,6 +241,8 @@ static void test_go_to_refrigerator(void)
     fprintf(stderr, "  the robot stopped %.2f m from the refrigerator's true footprint\n", d);
     CHECK(d <= sp_nav_options(((model_world *)g_s->world.ctx)->nav)->approach_m + 0.1);
     CHECK(strstr(a.text, "Arrived") != NULL);
+    const cJSON *hm = cJSON_GetObjectItemCaseSensitive(data_of(q), "heatmap");
+    CHECK(cJSON_IsString(hm) && sp_file_exists(hm->valuestring));
     CHECK(a.json_path[0] && sp_file_exists(a.json_path));
     cJSON_Delete(q), cJSON_Delete(g);
     sp_agent_answer_free(&a);
@@ -236,6 +261,7 @@ int main(void)
     RUN(test_describe_dining_table);
     RUN(test_explore_kitchen);
     RUN(test_raw_goal_into_wall);
+    RUN(test_render_view);
     RUN(test_chair_asks_which);
     RUN(test_go_to_refrigerator);
     sp_agent_session_close(g_s);
