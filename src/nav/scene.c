@@ -302,6 +302,7 @@ void sp_nav_free(sp_nav *nav)
     free(nav->cams);
     sp_costmap_free(&nav->cm);
     free(nav->view_counts);
+    free(nav->region_label);
     sp_scene_free(nav->scene_rgb);
     sp_scene_free(nav->scene_aux);
     sp_raster_free(nav->raster);
