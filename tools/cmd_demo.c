@@ -12,18 +12,24 @@ static const char *usage_text =
     "usage: semsplat demo [--out DIR] [--world W.world] [--model-path DIR] [--capture DIR]\n"
     "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D] [--points N]\n"
     "                     [--match-radius M] [--device cpu|cuda|auto] [--threads N]\n"
-    "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n\n"
+    "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n"
+    "                     [--model DIR] [--no-video] [--offline-robot] [--time-scale S]\n"
+    "                     [--video-size WxH] [--fps N] [--drive-frames N] [--view-size WxH]\n\n"
     "Runs synth -> train -> features -> lift -> queries and writes DIR (default demo/):\n"
     "  capture/ (COLMAP model, images, depth, labels, ground_truth.json, frame.json), model/\n"
     "  (splat.ply with f_sem_* features, train.json, frame.json, semantic.json), features/,\n"
-    "  heatmaps/<class>.png, demo.json and report.md.\n"
+    "  heatmaps/<class>.png, demo.json, report.md, agent/ (answers, images) and demo.mp4: three\n"
+    "  navigation commands through the agent and the simulated robot (over loopback DDS when\n"
+    "  built with Cyclone DDS, else the offline robot, which the video then says).\n"
     "Scoring: returned instances are matched one-to-one to the objects of their class (an\n"
     "instance inside the object's box grown by --match-radius, default 0.5 m); recall,\n"
     "precision, mean and median error over matched objects, and the mean with misses counted.\n"
     "Defaults: the bundled house (data/worlds/house.world); on a GPU 150 views at 640x480 and\n"
     "7000 steps, on the CPU 48 views at 320x240 and 2000 steps. --capture DIR skips synth and\n"
     "uses an existing capture (features then need --clip unless it has labels/). --reuse skips\n"
-    "the stages whose outputs already exist in DIR (to re-run only the queries, say).\n";
+    "the stages whose outputs already exist in DIR (to re-run only the queries, say). --model DIR\n"
+    "makes only the video, on an existing model folder. Video defaults: 1280x720 at 10 fps, 60\n"
+    "rendered frames per drive, the splat view 480x360, the robot at 3x real time.\n";
 
 #define INT_OPT(flag, field)                                                                       \
     else if ((v = cli_flag_value(argc, argv, &i, flag, &bad))) {                                   \
@@ -52,6 +58,19 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
         INT_OPT("--dim", dim)
         INT_OPT("--downscale", downscale)
         INT_OPT("--points", points)
+        INT_OPT("--fps", fps)
+        INT_OPT("--drive-frames", drive_frames)
+        else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) o->model = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--video-size", &bad))) {
+            if (cli_parse_size("demo", "--video-size", v, &o->video_width, &o->video_height)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--view-size", &bad))) {
+            if (cli_parse_size("demo", "--view-size", v, &o->view_width, &o->view_height)) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--time-scale", &bad))) {
+            if (cli_parse_float("demo", "--time-scale", v, &x)) return 2;
+            if (!(x > 0 && x <= 20)) return cli_usage_error("demo", "--time-scale %g: expected 0 < S <= 20", x);
+            o->time_scale = x;
+        } else if (!strcmp(argv[i], "--no-video")) o->no_video = 1;
+        else if (!strcmp(argv[i], "--offline-robot")) o->robot = SP_DEMO_ROBOT_OFFLINE;
         else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--match-radius", &bad))) {
@@ -78,6 +97,13 @@ int cmd_demo(int argc, char **argv)
     sp_error err = {0};
     sp_demo_result r;
     if (sp_demo_run(&o, &r, &err)) return cli_fail("demo", &err);
+    if (r.have_video)
+        printf("video %s: %.1f s, %d of %d commands arrived, robot: %s (%.1f s)\n", r.video.path, r.video.seconds,
+               r.video.n_arrived, r.video.n_commands, r.video.robot, r.t_video);
+    if (o.model) {
+        sp_demo_result_free(&r);
+        return 0;
+    }
     if (!r.scored) {
         printf("%s has no ground_truth.json, so there is nothing to score; the model is ready:\n"
                "  semsplat query --model %s \"refrigerator\" --heatmap fridge.png\n", r.capture_dir, r.model_dir);

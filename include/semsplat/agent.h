@@ -300,6 +300,12 @@ typedef struct sp_agent_config {
 
 sp_agent_config sp_agent_config_default(void);
 
+/* The ROS 2 robot a session with use_ros makes (the bridge on cfg->ros, waiting up to
+ * cfg->ros_wait_s for the first pose), for callers that wrap it before
+ * sp_agent_session_open_with_robot (the demo records the poses it reports). SP_E_UNSUPPORTED
+ * without Cyclone DDS. */
+int sp_agent_robot_ros(sp_agent_robot *out, const sp_agent_config *cfg, sp_error *err);
+
 /* One entry of an answer's trace. Strings are owned by the answer. */
 typedef struct sp_agent_trace_item {
     char *tool;

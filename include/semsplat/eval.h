@@ -280,6 +280,89 @@ typedef struct sp_eval_run {
 int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err);
 void sp_eval_run_free(sp_eval_run *r);
 
+/* ---- navigation commands end to end, the demo video, 5.3 ------------------------------------------ */
+/* A command runs through the agent (the built-in parser brain) and a simulated robot: with Cyclone
+ * DDS the ros module's simulated robot (sp_ros_sim_run, in a thread of this process, on loopback,
+ * a domain reserved on this machine and a namespace of its own), reached through the agent's ROS
+ * robot exactly as `agent --ros` reaches it; without DDS (or with SP_DEMO_ROBOT_OFFLINE) the
+ * agent's offline robot, and everything that shows the run says so. */
+
+typedef enum { SP_DEMO_ROBOT_AUTO = 0, SP_DEMO_ROBOT_DDS, SP_DEMO_ROBOT_OFFLINE } sp_demo_robot;
+
+typedef struct sp_drive_opts {
+    const char *model_dir;   /* the model folder (splat with semantics, its capture) */
+    const char *out_dir;     /* the agent's answers and images go to <out_dir>/agent */
+    int robot;               /* sp_demo_robot; AUTO = DDS when this build has Cyclone */
+    double time_scale;       /* the simulated robot's seconds per wall second (0: 3) */
+    double max_speed_mps;    /* the simulated robot's top speed (0: 0.5) */
+    sp_device *dev;          /* borrowed */
+    const sp_log *log;
+} sp_drive_opts;
+
+/* One pose report of the robot while it follows a goal (t: seconds since the goal was sent, in
+ * the robot's time: wall time for DDS, simulated time offline). */
+typedef struct sp_drive_sample {
+    double t, x, y, yaw, remaining_m;
+    int status;              /* sp_agent_goal_status */
+} sp_drive_sample;
+
+typedef struct sp_demo_video_opts {
+    sp_drive_opts drive;
+    const char *out_path;    /* the MP4 (NULL: <drive.out_dir>/demo.mp4) */
+    const char *const *commands; /* "go to" commands; before each, the demo asks for the top 3
+                              * trajectories to its target (NULL: three commands on the house) */
+    int n_commands;
+    int width, height;       /* video size (0: 1280x720) */
+    int fps;                 /* (0: 10) */
+    int drive_frames;        /* most rendered frames per drive (0: 60) */
+    int view_width, view_height; /* the splat view rendered from the robot's pose (0: 480x360) */
+} sp_demo_video_opts;
+
+typedef struct sp_demo_video_result {
+    char path[1100];
+    char robot[300];         /* which robot drove, and why when it is the offline one */
+    int n_commands, n_arrived;
+    long frames;
+    double seconds;          /* length of the video */
+    double t_wall;           /* seconds it took */
+} sp_demo_video_result;
+
+sp_demo_video_opts sp_demo_video_opts_default(void);
+/* Runs the commands and writes the video: per command a title card with the commands as typed,
+ * the agent's tool calls, the query heatmap, the ranked trajectories on the map with previews,
+ * the drive (the splat from the robot's pose beside the top-down map with robot, path, distance
+ * remaining from the robot's feedback) and the arrival. */
+int sp_demo_video(const sp_demo_video_opts *o, sp_demo_video_result *res, sp_error *err);
+
+/* 5.3: navigation commands, each scored per stage. */
+typedef struct sp_nav_success_row {
+    char command[200];
+    char expect[64];         /* the ground-truth class the command means */
+    char intent[24];
+    int parsed;              /* the parser's intent is the expected one and it did not ask back */
+    int valid;               /* the located goal lies within match radius of an object of the class */
+    int reached;             /* the robot reported success within 0.3 m of the goal */
+    int useful;              /* mean view grade along the driven path >= 3 */
+    double grade;            /* that mean (sp_media_view_quality, 1..5; 0 when no view) */
+    double error_m;          /* located goal to the nearest object of the class (NAN: none) */
+    char views[1100];        /* a PNG with the graded views */
+    char note[300];
+} sp_nav_success_row;
+
+typedef struct sp_nav_success {
+    int n;
+    sp_nav_success_row rows[16];
+    int count[4];            /* parsed, valid, reached, useful */
+    char robot[300];
+    char plot[1100];         /* success per stage (PNG) */
+} sp_nav_success;
+
+/* Runs the ten commands of 5.3 (or cmds[n], n <= 16, each "command|class") on the model with
+ * ground truth gt (may be NULL: valid then means a path was planned) and writes
+ * <drive.out_dir>/nav_success.{json,png} and the graded views. */
+int sp_eval_nav_success(const sp_drive_opts *o, const sp_ground_truth *gt, const char *const *cmds,
+                        int n, float match_radius_m, sp_nav_success *out, sp_error *err);
+
 /* ---- the demo ------------------------------------------------------------------------------------- */
 
 typedef struct sp_demo_opts {
@@ -298,6 +381,12 @@ typedef struct sp_demo_opts {
     int skip_missing;        /* synth: render without missing assets */
     int reuse;               /* skip stages whose outputs exist in out_dir */
     float match_radius_m;    /* scoring (0: 0.5) */
+    const char *model;       /* an existing model folder: no pipeline, only the video */
+    int no_video;            /* skip the video */
+    int robot;               /* sp_demo_robot for the video */
+    double time_scale;       /* the simulated robot's (0: 3) */
+    int video_width, video_height, fps, drive_frames; /* 0: 1280x720, 10 fps, 60 frames a drive */
+    int view_width, view_height;                      /* the drive's splat view (0: 480x360) */
     const sp_log *log;
 } sp_demo_opts;
 
@@ -311,12 +400,15 @@ typedef struct sp_demo_result {
     sp_train_result train;
     int scored;              /* 0: the capture has no ground_truth.json; the model is ready */
     sp_eval_report report;
-    double t_synth, t_train, t_features, t_lift, t_queries, t_total;
+    int have_video;
+    sp_demo_video_result video;
+    double t_synth, t_train, t_features, t_lift, t_queries, t_video, t_total;
 } sp_demo_result;
 
 /* synth (unless o->capture) -> train -> features (labels, or CLIP with o->clip) -> lift ->
- * sp_eval_localization, each stage a library call; writes <out>/{capture,model,features,
- * heatmaps}/, <out>/demo.json and <out>/report.md (when scored). Progress goes to o->log. */
+ * sp_eval_localization -> the video (sp_demo_video: three commands driven end to end), each stage
+ * a library call; writes <out>/{capture,model,features,heatmaps,agent}/, <out>/demo.json,
+ * <out>/report.md (when scored) and <out>/demo.mp4. Progress goes to o->log. */
 int sp_demo_run(const sp_demo_opts *o, sp_demo_result *res, sp_error *err);
 void sp_demo_result_free(sp_demo_result *res);
 

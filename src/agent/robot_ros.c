@@ -163,3 +163,8 @@ int agent_robot_open_ros(sp_agent_robot *out, const sp_agent_config *cfg, sp_err
     out->ctx = r;
     return SP_OK;
 }
+
+int sp_agent_robot_ros(sp_agent_robot *out, const sp_agent_config *cfg, sp_error *err)
+{
+    return agent_robot_open_ros(out, cfg, err);
+}

@@ -138,6 +138,16 @@ static cJSON *demo_json(const sp_demo_result *r)
     cJSON_AddNumberToObject(t, "features", r->t_features);
     cJSON_AddNumberToObject(t, "lift", r->t_lift);
     cJSON_AddNumberToObject(t, "queries", r->t_queries);
+    cJSON_AddNumberToObject(t, "video", r->t_video);
+    if (r->have_video) {
+        cJSON *v = cJSON_AddObjectToObject(d, "video");
+        cJSON_AddStringToObject(v, "path", r->video.path);
+        cJSON_AddStringToObject(v, "robot", r->video.robot);
+        cJSON_AddNumberToObject(v, "commands", r->video.n_commands);
+        cJSON_AddNumberToObject(v, "arrived", r->video.n_arrived);
+        cJSON_AddNumberToObject(v, "frames", (double)r->video.frames);
+        cJSON_AddNumberToObject(v, "seconds", r->video.seconds);
+    }
     cJSON_AddNumberToObject(t, "total", r->t_total);
     return j;
 }
@@ -154,8 +164,12 @@ static int write_outputs(const sp_demo_opts *o, const sp_demo_result *r, sp_erro
                          r->width, r->height, r->steps, r->device);
         if (r->trained) sp_strbuf_printf(&b, "; held-out PSNR %.2f dB, %zu Gaussians", r->train.psnr, r->train.gaussians);
         sp_strbuf_printf(&b, ".\nSeconds: synth %.1f, train %.1f, features %.1f, lift %.1f, queries %.1f, "
-                         "total %.1f (0 = reused).\n", r->t_synth, r->t_train, r->t_features, r->t_lift,
-                         r->t_queries, r->t_total);
+                         "video %.1f, total %.1f (0 = reused).\n", r->t_synth, r->t_train, r->t_features, r->t_lift,
+                         r->t_queries, r->t_video, r->t_total);
+        if (r->have_video)
+            sp_strbuf_printf(&b, "\nVideo: %s, %.1f s (%ld frames), %d of %d commands arrived; robot: %s.\n",
+                             r->video.path, r->video.seconds, r->video.frames, r->video.n_arrived,
+                             r->video.n_commands, r->video.robot);
         if (b.failed) rc = sp_error_set(err, SP_E_NOMEM, "demo: out of memory writing the report");
     }
     snprintf(path, sizeof path, "%s/demo.json", o->out_dir);
@@ -188,6 +202,26 @@ static int score(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, sp_er
     return rc;
 }
 
+/* Three commands driven end to end through the agent and the simulated robot, as a video. */
+static int stage_video(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, sp_error *err)
+{
+    sp_demo_video_opts v = sp_demo_video_opts_default();
+    v.drive.model_dir = r->model_dir;
+    v.drive.out_dir = o->out_dir;
+    v.drive.robot = o->robot;
+    v.drive.time_scale = o->time_scale;
+    v.drive.dev = dev;
+    v.drive.log = o->log;
+    v.width = o->video_width, v.height = o->video_height, v.fps = o->fps, v.drive_frames = o->drive_frames;
+    v.view_width = o->view_width, v.view_height = o->view_height;
+    sp_logf(o->log, SP_LOG_INFO, "demo: video of three commands -> %s/demo.mp4", o->out_dir);
+    double t = sp_time_now();
+    int rc = sp_demo_video(&v, &r->video, err);
+    r->t_video = sp_time_now() - t;
+    r->have_video = rc == 0;
+    return rc;
+}
+
 int sp_demo_run(const sp_demo_opts *opts, sp_demo_result *r, sp_error *err)
 {
     memset(r, 0, sizeof *r);
@@ -206,8 +240,10 @@ int sp_demo_run(const sp_demo_opts *opts, sp_demo_result *r, sp_error *err)
     if (rc) return rc;
     settle(&o, dev, r);
     rc = sp_mkdirs(o.out_dir, err);
-    if (!rc) rc = run_stages(&o, dev, r, err);
-    if (!rc) rc = score(&o, dev, r, err);
+    if (o.model) snprintf(r->model_dir, sizeof r->model_dir, "%s", o.model);
+    if (!rc && !o.model) rc = run_stages(&o, dev, r, err);
+    if (!rc && !o.model) rc = score(&o, dev, r, err);
+    if (!rc && !o.no_video) rc = stage_video(&o, dev, r, err);
     r->t_total = sp_time_now() - t0;
     if (!rc && r->scored) rc = write_outputs(&o, r, err);
     sp_device_free(dev);
