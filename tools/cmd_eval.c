@@ -10,13 +10,16 @@
 static const char *usage_text =
     "usage: semsplat eval --model DIR --world W.world --out DIR [--model-path DIR]\n"
     "                     [--queries Q.json] [--title TEXT] [--match-radius M] [--skip-missing]\n"
-    "                     [--trajectories-to PHRASE]\n"
+    "                     [--trajectories-to PHRASE] [--no-navigation] [--offline-robot]\n"
     "                     [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
     "Scores the model against the world file's objects (ground truth from the world itself):\n"
     "  5.1 every object localized by both methods, matched one-to-one (fragments merged);\n"
     "  5.2 open vs closed vocabulary (the task's ten queries, or {\"vocabulary\": [...]} in\n"
     "      Q.json: text, coco, targets, region, near, near_m): the semantic splat against the\n"
     "      same map restricted to COCO's 80 class names;\n"
+    "  5.3 ten navigation commands through the agent and the simulated robot (over loopback DDS\n"
+    "      when built with Cyclone DDS; --offline-robot for the agent's offline robot): intent\n"
+    "      parsed, valid location, goal reached, views useful; skipped with --no-navigation;\n"
     "  5.4 nav's top 3 trajectories to the refrigerator (--trajectories-to), their length,\n"
     "      clearance, localizability and a visual quality 1-5 measured on their previews;\n"
     "  figures (per-object errors, per-query errors, the map) and an analysis from the numbers.\n"
@@ -45,6 +48,8 @@ int cmd_eval(int argc, char **argv)
             if (!(x > 0 && x < 100)) return cli_usage_error("eval", "--match-radius %g: expected metres > 0", x);
             o.match_radius_m = (float)x;
         } else if (!strcmp(argv[i], "--skip-missing")) o.skip_missing = 1;
+        else if (!strcmp(argv[i], "--no-navigation")) o.no_navigation = 1;
+        else if (!strcmp(argv[i], "--offline-robot")) o.robot = SP_DEMO_ROBOT_OFFLINE;
         else if (!bad) return cli_usage_error("eval", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
@@ -70,6 +75,11 @@ int cmd_eval(int argc, char **argv)
         int of = 0, cf = 0, n = 0;
         for (size_t k = 0; k < run.n_vocab; k++)
             if (run.vocab[k].n_targets) n++, of += run.vocab[k].open_found, cf += run.vocab[k].closed_found;
+        if (run.nav_measured)
+            printf("eval  navigation  parsed %d/%d  valid %d/%d  reached %d/%d  views useful %d/%d  (%s)\n",
+                   run.nav.count[0], run.nav.n, run.nav.count[1], run.nav.n, run.nav.count[2], run.nav.n,
+                   run.nav.count[3], run.nav.n, run.nav.robot);
+        else printf("eval  navigation  not measured: %s\n", run.nav_note);
         printf("eval  vocabulary  splat %d/%d  COCO baseline %d/%d  (%s)  -> %s/report.md\n", of, n, cf, n,
                run.vocab_encoder, o.out_dir);
     }

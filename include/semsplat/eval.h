@@ -169,6 +169,89 @@ char *sp_eval_report_text(const sp_eval_report *rep);
 char *sp_eval_report_markdown(const sp_eval_report *rep, const char *title);
 struct cJSON *sp_eval_report_json(const sp_eval_report *rep);
 
+/* ---- navigation commands end to end, the demo video, 5.3 ------------------------------------------ */
+/* A command runs through the agent (the built-in parser brain) and a simulated robot: with Cyclone
+ * DDS the ros module's simulated robot (sp_ros_sim_run, in a thread of this process, on loopback,
+ * a domain reserved on this machine and a namespace of its own), reached through the agent's ROS
+ * robot exactly as `agent --ros` reaches it; without DDS (or with SP_DEMO_ROBOT_OFFLINE) the
+ * agent's offline robot, and everything that shows the run says so. */
+
+typedef enum { SP_DEMO_ROBOT_AUTO = 0, SP_DEMO_ROBOT_DDS, SP_DEMO_ROBOT_OFFLINE } sp_demo_robot;
+
+typedef struct sp_drive_opts {
+    const char *model_dir;   /* the model folder (splat with semantics, its capture) */
+    const char *out_dir;     /* the agent's answers and images go to <out_dir>/agent */
+    int robot;               /* sp_demo_robot; AUTO = DDS when this build has Cyclone */
+    double time_scale;       /* the simulated robot's seconds per wall second (0: 3) */
+    double max_speed_mps;    /* the simulated robot's top speed (0: 0.5) */
+    sp_device *dev;          /* borrowed */
+    const sp_log *log;
+} sp_drive_opts;
+
+/* One pose report of the robot while it follows a goal (t: seconds since the goal was sent, in
+ * the robot's time: wall time for DDS, simulated time offline). */
+typedef struct sp_drive_sample {
+    double t, x, y, yaw, remaining_m;
+    int status;              /* sp_agent_goal_status */
+} sp_drive_sample;
+
+typedef struct sp_demo_video_opts {
+    sp_drive_opts drive;
+    const char *out_path;    /* the MP4 (NULL: <drive.out_dir>/demo.mp4) */
+    const char *const *commands; /* "go to" commands; before each, the demo asks for the top 3
+                              * trajectories to its target (NULL: three commands on the house) */
+    int n_commands;
+    int width, height;       /* video size (0: 1280x720) */
+    int fps;                 /* (0: 10) */
+    int drive_frames;        /* most rendered frames per drive (0: 60) */
+    int view_width, view_height; /* the splat view rendered from the robot's pose (0: 480x360) */
+} sp_demo_video_opts;
+
+typedef struct sp_demo_video_result {
+    char path[1100];
+    char robot[300];         /* which robot drove, and why when it is the offline one */
+    int n_commands, n_arrived;
+    long frames;
+    double seconds;          /* length of the video */
+    double t_wall;           /* seconds it took */
+} sp_demo_video_result;
+
+sp_demo_video_opts sp_demo_video_opts_default(void);
+/* Runs the commands and writes the video: per command a title card with the commands as typed,
+ * the agent's tool calls, the query heatmap, the ranked trajectories on the map with previews,
+ * the drive (the splat from the robot's pose beside the top-down map with robot, path, distance
+ * remaining from the robot's feedback) and the arrival. */
+int sp_demo_video(const sp_demo_video_opts *o, sp_demo_video_result *res, sp_error *err);
+
+/* 5.3: navigation commands, each scored per stage. */
+typedef struct sp_nav_success_row {
+    char command[200];
+    char expect[64];         /* the ground-truth class the command means */
+    char intent[24];
+    int parsed;              /* the parser's intent is the expected one and it did not ask back */
+    int valid;               /* the located goal lies within match radius of an object of the class */
+    int reached;             /* the robot reported success within 0.3 m of the goal */
+    int useful;              /* mean view score along the driven path >= 2.5 (grade 3 rounded) */
+    double grade;            /* that mean (sp_media_view_quality, 1..5; 0 when no view) */
+    double error_m;          /* located goal to the nearest object of the class (NAN: none) */
+    char views[1100];        /* a PNG with the graded views */
+    char note[300];
+} sp_nav_success_row;
+
+typedef struct sp_nav_success {
+    int n;
+    sp_nav_success_row rows[16];
+    int count[4];            /* parsed, valid, reached, useful */
+    char robot[300];
+    char plot[1100];         /* success per stage (PNG) */
+} sp_nav_success;
+
+/* Runs the ten commands of 5.3 (or cmds[n], n <= 16, each "command|class") on the model with
+ * ground truth gt (may be NULL: valid then means a path was planned) and writes
+ * <drive.out_dir>/nav_success.{json,png} and the graded views. */
+int sp_eval_nav_success(const sp_drive_opts *o, const sp_ground_truth *gt, const char *const *cmds,
+                        int n, float match_radius_m, sp_nav_success *out, sp_error *err);
+
 /* ---- semsplat eval: the whole evaluation (the users' task 5.1 - 5.4) --------------------------- *
  *
  * sp_eval_run scores a model folder against a world file and writes <out>/report.md,
@@ -184,8 +267,9 @@ struct cJSON *sp_eval_report_json(const sp_eval_report *rep);
  *   5.4 trajectory quality: nav's top 3 trajectories to the refrigerator (length, clearances,
  *       localizability, ranking score) with a visual quality 1-5 measured on their previews
  *       (coverage and sharpness, sp_media_view_quality), the top-down map and contact sheets.
- *   5.3 (navigation commands through the agent and the simulated robot) is reported as not
- *       measured, with the reason, until the agent drives the robot from a model folder.
+ *   5.3 query success rate: ten navigation commands through the agent and the simulated robot
+ *       (sp_eval_nav_success: over DDS when built with Cyclone), the rate of each stage, a plot
+ *       and the graded views; with no_navigation it is reported as not measured.
  *   A written analysis made from the numbers, headed by the feature source, the text encoder, the
  *   capture plan and the poses the model was trained on, and what they mean.
  * Queries come from a JSON file ({"vocabulary": [{"text", "coco": bool, "targets": [classes],
@@ -250,6 +334,8 @@ typedef struct sp_eval_run_opts {
     sp_device *dev;           /* borrowed */
     float match_radius_m;     /* 0 = 0.5 */
     const char *trajectory_target; /* 5.4's goal; NULL = "refrigerator" */
+    int no_navigation;        /* skip 5.3 */
+    int robot;                /* 5.3's robot: sp_demo_robot */
     const sp_log *log;
 } sp_eval_run_opts;
 
@@ -272,6 +358,9 @@ typedef struct sp_eval_run {
     int n_traj;
     sp_eval_trajectory traj[8];
     char traj_map[1100];      /* the top-down map with the ranked paths (PNG) */
+    int nav_measured;         /* 5.3 ran (0: nav_note says why) */
+    char nav_note[400];
+    sp_nav_success nav;       /* 5.3 */
     char analysis[8192];      /* the written analysis (Markdown) */
     double seconds;
 } sp_eval_run;
@@ -279,89 +368,6 @@ typedef struct sp_eval_run {
 /* Runs the evaluation and writes the report (see above). */
 int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err);
 void sp_eval_run_free(sp_eval_run *r);
-
-/* ---- navigation commands end to end, the demo video, 5.3 ------------------------------------------ */
-/* A command runs through the agent (the built-in parser brain) and a simulated robot: with Cyclone
- * DDS the ros module's simulated robot (sp_ros_sim_run, in a thread of this process, on loopback,
- * a domain reserved on this machine and a namespace of its own), reached through the agent's ROS
- * robot exactly as `agent --ros` reaches it; without DDS (or with SP_DEMO_ROBOT_OFFLINE) the
- * agent's offline robot, and everything that shows the run says so. */
-
-typedef enum { SP_DEMO_ROBOT_AUTO = 0, SP_DEMO_ROBOT_DDS, SP_DEMO_ROBOT_OFFLINE } sp_demo_robot;
-
-typedef struct sp_drive_opts {
-    const char *model_dir;   /* the model folder (splat with semantics, its capture) */
-    const char *out_dir;     /* the agent's answers and images go to <out_dir>/agent */
-    int robot;               /* sp_demo_robot; AUTO = DDS when this build has Cyclone */
-    double time_scale;       /* the simulated robot's seconds per wall second (0: 3) */
-    double max_speed_mps;    /* the simulated robot's top speed (0: 0.5) */
-    sp_device *dev;          /* borrowed */
-    const sp_log *log;
-} sp_drive_opts;
-
-/* One pose report of the robot while it follows a goal (t: seconds since the goal was sent, in
- * the robot's time: wall time for DDS, simulated time offline). */
-typedef struct sp_drive_sample {
-    double t, x, y, yaw, remaining_m;
-    int status;              /* sp_agent_goal_status */
-} sp_drive_sample;
-
-typedef struct sp_demo_video_opts {
-    sp_drive_opts drive;
-    const char *out_path;    /* the MP4 (NULL: <drive.out_dir>/demo.mp4) */
-    const char *const *commands; /* "go to" commands; before each, the demo asks for the top 3
-                              * trajectories to its target (NULL: three commands on the house) */
-    int n_commands;
-    int width, height;       /* video size (0: 1280x720) */
-    int fps;                 /* (0: 10) */
-    int drive_frames;        /* most rendered frames per drive (0: 60) */
-    int view_width, view_height; /* the splat view rendered from the robot's pose (0: 480x360) */
-} sp_demo_video_opts;
-
-typedef struct sp_demo_video_result {
-    char path[1100];
-    char robot[300];         /* which robot drove, and why when it is the offline one */
-    int n_commands, n_arrived;
-    long frames;
-    double seconds;          /* length of the video */
-    double t_wall;           /* seconds it took */
-} sp_demo_video_result;
-
-sp_demo_video_opts sp_demo_video_opts_default(void);
-/* Runs the commands and writes the video: per command a title card with the commands as typed,
- * the agent's tool calls, the query heatmap, the ranked trajectories on the map with previews,
- * the drive (the splat from the robot's pose beside the top-down map with robot, path, distance
- * remaining from the robot's feedback) and the arrival. */
-int sp_demo_video(const sp_demo_video_opts *o, sp_demo_video_result *res, sp_error *err);
-
-/* 5.3: navigation commands, each scored per stage. */
-typedef struct sp_nav_success_row {
-    char command[200];
-    char expect[64];         /* the ground-truth class the command means */
-    char intent[24];
-    int parsed;              /* the parser's intent is the expected one and it did not ask back */
-    int valid;               /* the located goal lies within match radius of an object of the class */
-    int reached;             /* the robot reported success within 0.3 m of the goal */
-    int useful;              /* mean view grade along the driven path >= 3 */
-    double grade;            /* that mean (sp_media_view_quality, 1..5; 0 when no view) */
-    double error_m;          /* located goal to the nearest object of the class (NAN: none) */
-    char views[1100];        /* a PNG with the graded views */
-    char note[300];
-} sp_nav_success_row;
-
-typedef struct sp_nav_success {
-    int n;
-    sp_nav_success_row rows[16];
-    int count[4];            /* parsed, valid, reached, useful */
-    char robot[300];
-    char plot[1100];         /* success per stage (PNG) */
-} sp_nav_success;
-
-/* Runs the ten commands of 5.3 (or cmds[n], n <= 16, each "command|class") on the model with
- * ground truth gt (may be NULL: valid then means a path was planned) and writes
- * <drive.out_dir>/nav_success.{json,png} and the graded views. */
-int sp_eval_nav_success(const sp_drive_opts *o, const sp_ground_truth *gt, const char *const *cmds,
-                        int n, float match_radius_m, sp_nav_success *out, sp_error *err);
 
 /* ---- the demo ------------------------------------------------------------------------------------- */
 

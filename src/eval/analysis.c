@@ -147,8 +147,12 @@ static void sources_of_error(out *o, const sp_eval_run *r)
                "covered, sharpness %.2f).\n\n", r->n_traj, r->traj_target, b->length_m, b->clearance_min_m,
             b->localizability, b->visual_grade, 100.0 * b->coverage, b->sharpness);
     } else put(o, "**Trajectories.** Not measured: %s.\n\n", r->traj_note);
-    put(o, "**Not measured here.** 5.3 (navigation commands through the agent and the simulated robot) "
-           "needs the agent to drive the robot from a model folder, which this build does not do yet.\n");
+    if (r->nav_measured) {
+        const sp_nav_success *n = &r->nav;
+        put(o, "**Navigation commands.** Of %d commands, %d were read as go-to, %d located a valid goal, "
+               "%d were driven to it and %d had useful views along the way (%s).\n", n->n, n->count[0],
+            n->count[1], n->count[2], n->count[3], n->robot);
+    } else put(o, "**Not measured here.** 5.3: %s.\n", r->nav_note);
 }
 
 void ev_analysis(sp_eval_run *r)

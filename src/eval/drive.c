@@ -254,7 +254,7 @@ int ev_drive_ask(ev_drive_env *env, const char *text, sp_agent_answer *a, sp_err
 {
     env->track.n = 0;
     env->track.goal_sent = 0;
-    sp_logf(env->log, SP_LOG_INFO, "demo: command \"%s\"", text);
+    sp_logf(env->log, SP_LOG_INFO, "agent: \"%s\"", text);
     return sp_agent_session_ask(env->session, text, a, err);
 }
 

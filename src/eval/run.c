@@ -59,6 +59,23 @@ static int run_vocab(const sp_eval_run_opts *o, sp_query_engine *e, sp_eval_run 
     return rc;
 }
 
+/* 5.3 through the agent and the simulated robot; a robot that cannot run is a note, not a failure. */
+static int run_navigation(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err)
+{
+    if (o->no_navigation) {
+        snprintf(r->nav_note, sizeof r->nav_note, "not asked for in this run (--no-navigation)");
+        return SP_OK;
+    }
+    sp_drive_opts d = {.model_dir = o->model_dir, .out_dir = o->out_dir, .robot = o->robot, .dev = o->dev,
+                       .log = o->log};
+    sp_error e = {0};
+    int rc = sp_eval_nav_success(&d, &r->gt, NULL, 0, o->match_radius_m, &r->nav, &e);
+    if (rc == SP_E_NOMEM) return *err = e, rc;
+    r->nav_measured = rc == 0;
+    if (rc) snprintf(r->nav_note, sizeof r->nav_note, "%.390s", e.msg);
+    return SP_OK;
+}
+
 int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err)
 {
     memset(r, 0, sizeof *r);
@@ -83,6 +100,7 @@ int sp_eval_run_report(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err)
     if (!rc) rc = run_vocab(o, e, r, err);
     sp_query_engine_free(e);
     if (!rc) rc = ev_trajectories(o, r, err);
+    if (!rc) rc = run_navigation(o, r, err);
     char figs[8][1100];
     int n_figs = 0;
     if (!rc) n_figs = ev_figures(r, o->out_dir, figs, 8, err);

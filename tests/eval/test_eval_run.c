@@ -97,7 +97,7 @@ static void test_eval_on_the_small_world(void)
     if (err.code) return;
     char out[1300], moved[1300], out2[1300];
     snprintf(out, sizeof out, "%s/report", g_dir);
-    sp_eval_run_opts o = {.model_dir = g_model, .world = g_world, .out_dir = out, .dev = g_dev};
+    sp_eval_run_opts o = {.model_dir = g_model, .world = g_world, .out_dir = out, .dev = g_dev, .no_navigation = 1};
     sp_eval_run r;
     CHECK_OK(sp_eval_run_report(&o, &r, &err), &err);
     if (err.code) return;
