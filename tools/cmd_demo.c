@@ -13,7 +13,7 @@ static const char *usage_text =
     "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D] [--points N]\n"
     "                     [--match-radius M] [--device cpu|cuda|auto] [--threads N]\n"
     "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n"
-    "                     [--model DIR] [--no-video] [--offline-robot] [--time-scale S]\n"
+    "                     [--model DIR] [--walk-only] [--no-video] [--offline-robot] [--time-scale S]\n"
     "                     [--video-size WxH] [--fps N] [--drive-frames N] [--view-size WxH]\n\n"
     "Runs synth -> train -> features -> lift -> queries and writes DIR (default demo/):\n"
     "  capture/ (COLMAP model, images, depth, labels, ground_truth.json, frame.json), model/\n"
@@ -70,6 +70,7 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
             if (!(x > 0 && x <= 20)) return cli_usage_error("demo", "--time-scale %g: expected 0 < S <= 20", x);
             o->time_scale = x;
         } else if (!strcmp(argv[i], "--no-video")) o->no_video = 1;
+        else if (!strcmp(argv[i], "--walk-only")) o->walk_only = 1;
         else if (!strcmp(argv[i], "--offline-robot")) o->robot = SP_DEMO_ROBOT_OFFLINE;
         else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;

@@ -385,6 +385,7 @@ typedef struct sp_demo_opts {
     int points;              /* synth's points3D (0: 30000) */
     int downscale;           /* training image downscale (0: 1) */
     int skip_missing;        /* synth: render without missing assets */
+    int walk_only;           /* synth's walk-only plan (no view aimed at a ground-truth object) */
     int reuse;               /* skip stages whose outputs exist in out_dir */
     float match_radius_m;    /* scoring (0: 0.5) */
     const char *model;       /* an existing model folder: no pipeline, only the video */

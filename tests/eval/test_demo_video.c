@@ -2,7 +2,7 @@
  * truth, tests/agent/house_model.h), one "go to" command through the agent and the simulated
  * robot (over loopback DDS when this build has Cyclone, else offline), written at 320x180 with a
  * handful of rendered drive frames. ffprobe must read H.264 and the duration the writer counted;
- * the robot must have arrived. */
+ * the robot must have arrived. Then 5.3 on two commands with the offline robot. */
 #include <unistd.h>
 
 #include "agent/house_model.h"
@@ -62,6 +62,19 @@ int main(void)
         CHECK(d != NULL);
         if (d) CHECK_NEAR(atof(d + 9), r.seconds, 0.3);
     }
+    /* 5.3 on two commands with the offline robot (no waiting in wall time): every stage passes on the
+     * ideal house, the graded views are on disk, and the robot is named as the offline one. */
+    sp_ground_truth gt = {0};
+    int have_gt = sp_ground_truth_from_world(world, NULL, 0, NULL, &gt, &err) == 0;
+    static const char *const nav_cmds[] = {"go to the refrigerator|refrigerator", "take me to the sofa|couch"};
+    sp_drive_opts d = {.model_dir = model, .out_dir = dir, .robot = SP_DEMO_ROBOT_OFFLINE, .dev = dev};
+    sp_nav_success ns;
+    CHECK_OK(sp_eval_nav_success(&d, have_gt ? &gt : NULL, nav_cmds, 2, 0.5f, &ns, &err), &err);
+    CHECK(ns.n == 2 && strstr(ns.robot, "OFFLINE"));
+    for (int k = 0; k < 4; k++) CHECK_MSG(ns.count[k] == 2, "stage %d: %d of 2", k, ns.count[k]);
+    CHECK(sp_file_exists(ns.rows[0].views) && sp_file_exists(ns.plot));
+    if (have_gt) CHECK(ns.rows[1].error_m < 0.5);
+    sp_ground_truth_free(&gt);
     sp_device_free(dev);
     return TEST_EXIT();
 }

@@ -11,7 +11,8 @@ int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int
     int rc = sp_synth_load_world(o->world, &lo, &w, err);
     if (rc) return rc;
     sp_synth_capture_opts co = {.n_views = views, .width = width, .height = height, .n_points = o->points, .seed = 1,
-                                .n_threads = o->threads, .log = o->log};
+                                .n_threads = o->threads, .log = o->log,
+                                .plan = o->walk_only ? SP_SYNTH_PLAN_WALK : SP_SYNTH_PLAN_MIXED};
     rc = sp_synth_capture(&w, capture_dir, &co, err);
     sp_world_free(&w);
     return rc;
