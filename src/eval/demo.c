@@ -243,9 +243,11 @@ int sp_demo_run(const sp_demo_opts *opts, sp_demo_result *r, sp_error *err)
     if (o.model) snprintf(r->model_dir, sizeof r->model_dir, "%s", o.model);
     if (!rc && !o.model) rc = run_stages(&o, dev, r, err);
     if (!rc && !o.model) rc = score(&o, dev, r, err);
+    r->t_total = sp_time_now() - t0;
+    if (!rc && r->scored) rc = write_outputs(&o, r, err); /* the report stands even if the video fails */
     if (!rc && !o.no_video) rc = stage_video(&o, dev, r, err);
     r->t_total = sp_time_now() - t0;
-    if (!rc && r->scored) rc = write_outputs(&o, r, err);
+    if (!rc && r->scored && r->have_video) rc = write_outputs(&o, r, err);
     sp_device_free(dev);
     if (rc) sp_eval_report_free(&r->report);
     return rc;

@@ -6,19 +6,9 @@
 #include <string.h>
 
 #include "drive.h"
+#include "eval_internal.h"
 #include "semsplat/io.h"
 
-static const char *str_of(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsString(v) ? v->valuestring : NULL;
-}
-
-static double num_of(const cJSON *o, const char *key)
-{
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
-}
 
 static int xy_of(const cJSON *p, double out[3])
 {
@@ -45,13 +35,13 @@ static void tool_line(const sp_agent_trace_item *t, const cJSON *res, char *line
         if (*p != '"' && *p != '{' && *p != '}') args[k++] = *p == ',' ? ' ' : *p == ':' ? '=' : *p;
     args[k] = 0;
     const cJSON *e = cJSON_GetObjectItemCaseSensitive(res, "error");
-    const char *code = str_of(e, "code");
+    const char *code = ev_json_str(e, "code");
     snprintf(line, cap, "%s(%s) -> %s", t->tool ? t->tool : "?", args, code ? code : "ok");
 }
 
 static void read_trajectories(const cJSON *d, ev_answer_info *o)
 {
-    copy(o->map_image, sizeof o->map_image, str_of(d, "map_image"));
+    copy(o->map_image, sizeof o->map_image, ev_json_str(d, "map_image"));
     const cJSON *tr;
     int i = 0;
     cJSON_ArrayForEach(tr, cJSON_GetObjectItemCaseSensitive(d, "trajectories"))
@@ -62,8 +52,8 @@ static void read_trajectories(const cJSON *d, ev_answer_info *o)
             if (cJSON_IsString(p) && o->n_previews < 12) copy(o->previews[o->n_previews++], sizeof o->previews[0], p->valuestring);
         }
         if (i >= 3) continue;
-        o->traj_len[i] = num_of(tr, "length_m");
-        o->traj_score[i] = num_of(cJSON_GetObjectItemCaseSensitive(tr, "score"), "total");
+        o->traj_len[i] = ev_json_num(tr, "length_m");
+        o->traj_score[i] = ev_json_num(cJSON_GetObjectItemCaseSensitive(tr, "score"), "total");
         int n = 0;
         cJSON_ArrayForEach(p, cJSON_GetObjectItemCaseSensitive(tr, "waypoints"))
         {
@@ -93,19 +83,19 @@ void ev_answer_read(const sp_agent_answer *a, ev_answer_info *o)
         const char *name = t->tool ? t->tool : "";
         if (!ok && !o->first_error[0]) {
             const cJSON *e = cJSON_GetObjectItemCaseSensitive(res, "error");
-            snprintf(o->first_error, sizeof o->first_error, "%s: %s", name, str_of(e, "message") ? str_of(e, "message") : "failed");
+            snprintf(o->first_error, sizeof o->first_error, "%s: %s", name, ev_json_str(e, "message") ? ev_json_str(e, "message") : "failed");
         }
         if (!strcmp(name, "query_object_location") && ok) {
             o->found = cJSON_IsTrue(cJSON_GetObjectItemCaseSensitive(d, "found"));
-            copy(o->heatmap, sizeof o->heatmap, str_of(d, "heatmap"));
+            copy(o->heatmap, sizeof o->heatmap, ev_json_str(d, "heatmap"));
             if (o->found) o->have_target = xy_of(cJSON_GetObjectItemCaseSensitive(d, "position"), o->target);
         } else if (!strcmp(name, "show_trajectories") && ok) {
             read_trajectories(d, o);
         } else if (!strcmp(name, "plan_path") && ok) {
             o->planned = 1;
         } else if (!strcmp(name, "send_nav2_goal")) {
-            copy(o->goal_status, sizeof o->goal_status, str_of(d, "status") ? str_of(d, "status") : ok ? "" : "failed");
-            o->distance_to_goal_m = num_of(d, "distance_to_goal_m");
+            copy(o->goal_status, sizeof o->goal_status, ev_json_str(d, "status") ? ev_json_str(d, "status") : ok ? "" : "failed");
+            o->distance_to_goal_m = ev_json_num(d, "distance_to_goal_m");
         }
         cJSON_Delete(res);
     }

@@ -28,6 +28,10 @@ int ev_trajectories(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *err);
 /* What the model was made from (run_info.c): the capture (semantic.json), its plan and poses
  * (capture.json), training figures (train.json). Missing files leave "unknown" / NaN. */
 void ev_model_info(const char *model_dir, sp_eval_run *r);
+/* A string / number member of a JSON object (NULL / NAN when absent or of another type). */
+struct cJSON;
+const char *ev_json_str(const struct cJSON *o, const char *key);
+double ev_json_num(const struct cJSON *o, const char *key);
 
 /* Figures (figures.c): per-object localization errors, per-query vocabulary errors; paths are
  * written into figs[] (NULL-terminated, "" when a figure could not be drawn). */

@@ -17,13 +17,13 @@ static cJSON *read_json(const char *dir, const char *name)
     return j;
 }
 
-static const char *str(const cJSON *o, const char *key)
+const char *ev_json_str(const cJSON *o, const char *key)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     return cJSON_IsString(v) ? v->valuestring : NULL;
 }
 
-static double num(const cJSON *o, const char *key)
+double ev_json_num(const cJSON *o, const char *key)
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     return cJSON_IsNumber(v) ? v->valuedouble : NAN;
@@ -35,7 +35,7 @@ void ev_model_info(const char *model_dir, sp_eval_run *r)
     snprintf(r->poses, sizeof r->poses, "unknown (no capture.json)");
     r->sfm_ate_rms_m = r->train_psnr = NAN;
     cJSON *sem = read_json(model_dir, "semantic.json"), *tr = read_json(model_dir, "train.json");
-    const char *cap = str(sem, "colmap");
+    const char *cap = ev_json_str(sem, "colmap");
     if (cap) {
         /* semantic.json names the model folder (sparse/0) or the capture root */
         snprintf(r->capture_dir, sizeof r->capture_dir, "%s", cap);
@@ -44,18 +44,18 @@ void ev_model_info(const char *model_dir, sp_eval_run *r)
     }
     cJSON *cj = r->capture_dir[0] ? read_json(r->capture_dir, "capture.json") : NULL;
     if (cj) {
-        const char *plan = str(cj, "plan"), *poses = str(cj, "poses");
+        const char *plan = ev_json_str(cj, "plan"), *poses = ev_json_str(cj, "poses");
         if (plan) snprintf(r->plan, sizeof r->plan, "%s", plan);
         if (poses) snprintf(r->poses, sizeof r->poses, "%s", poses);
         const cJSON *sfm = cJSON_GetObjectItemCaseSensitive(cj, "sfm");
         if (sfm) {
-            r->sfm_ate_rms_m = num(cJSON_GetObjectItemCaseSensitive(sfm, "alignment"), "ate_rms_m");
-            r->sfm_registered = (int)num(sfm, "registered");
-            r->sfm_images = (int)num(sfm, "images");
+            r->sfm_ate_rms_m = ev_json_num(cJSON_GetObjectItemCaseSensitive(sfm, "alignment"), "ate_rms_m");
+            r->sfm_registered = (int)ev_json_num(sfm, "registered");
+            r->sfm_images = (int)ev_json_num(sfm, "images");
         }
     }
-    r->train_psnr = num(tr, "psnr");
-    double g = num(tr, "gaussians");
+    r->train_psnr = ev_json_num(tr, "psnr");
+    double g = ev_json_num(tr, "gaussians");
     r->n_gaussians = isfinite(g) ? (long)g : -1;
     cJSON_Delete(sem);
     cJSON_Delete(tr);
