@@ -35,6 +35,8 @@
 extern "C" {
 #endif
 
+struct sp_nav_opts;
+
 typedef struct sp_agent_pose {
     double x, y, z, yaw;
 } sp_agent_pose;
@@ -291,6 +293,8 @@ typedef struct sp_agent_config {
                                * (odometry and the map -> odom transform) (10) */
     sp_agent_pose start;      /* the offline robot's start pose */
     int have_start;
+    const struct sp_nav_opts *nav; /* the world's navigation settings (nav.h; borrowed, read at
+                               * open; NULL = sp_nav_opts_default()) */
     sp_device *device;        /* where the map is queried and rendered (borrowed, outlives the
                                * session); NULL = a CPU device of the session's own */
     const sp_log *log;

@@ -176,6 +176,8 @@ struct cJSON *sp_eval_report_json(const sp_eval_report *rep);
  * robot exactly as `agent --ros` reaches it; without DDS (or with SP_DEMO_ROBOT_OFFLINE) the
  * agent's offline robot, and everything that shows the run says so. */
 
+struct sp_nav_opts;
+
 typedef enum { SP_DEMO_ROBOT_AUTO = 0, SP_DEMO_ROBOT_DDS, SP_DEMO_ROBOT_OFFLINE } sp_demo_robot;
 
 typedef struct sp_drive_opts {
@@ -184,9 +186,15 @@ typedef struct sp_drive_opts {
     int robot;               /* sp_demo_robot; AUTO = DDS when this build has Cyclone */
     double time_scale;       /* the simulated robot's seconds per wall second (0: 3) */
     double max_speed_mps;    /* the simulated robot's top speed (0: 0.5) */
+    const struct sp_nav_opts *nav; /* the map's settings for the agent and the robot (NULL: nav's
+                              * defaults) */
     sp_device *dev;          /* borrowed */
     const sp_log *log;
 } sp_drive_opts;
+
+/* The map settings the demo and 5.3 drive with (nav's defaults with more carving, specks dropped
+ * and the body band from 0.15 m: small CPU-trained splats otherwise leave the start cut off). */
+void sp_eval_drive_map_opts(struct sp_nav_opts *o);
 
 /* One pose report of the robot while it follows a goal (t: seconds since the goal was sent, in
  * the robot's time: wall time for DDS, simulated time offline). */

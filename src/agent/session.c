@@ -72,6 +72,7 @@ int agent_session_open_world(sp_agent_session **out, const sp_agent_config *cfg,
     s->cfg.model_dir = s->model_dir[0] ? s->model_dir : NULL;
     s->cfg.llm.preset = s->cfg.llm.base_url = s->cfg.llm.model = s->cfg.llm.anthropic_version = NULL;
     sp_ros_options_default(&s->cfg.ros); /* read by the robot at open; no caller strings kept */
+    s->cfg.nav = NULL;                   /* read by the world at open */
     int rc = SP_OK;
     if (!world.ops || !robot.ops)
         rc = sp_error_set(err, SP_E_ARG, "agent: a world and a robot are needed");

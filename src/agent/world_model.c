@@ -406,5 +406,5 @@ int agent_world_open_model(agent_world *out, const sp_agent_config *cfg, sp_erro
         if (sp_lex_vocab_for_model(&w->vocab, w->lexicon, cfg->model_dir, NULL, &e))
             sp_logf(mw_log(w), SP_LOG_WARN, "agent world: %s (only exact class names will be found)", e.msg);
     }
-    return mw_finish(w, NULL, out, err);
+    return mw_finish(w, cfg->nav, out, err);
 }

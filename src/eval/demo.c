@@ -8,6 +8,7 @@
 #include "eval_internal.h"
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
+#include "semsplat/nav.h"
 
 sp_demo_opts sp_demo_opts_default(void)
 {
@@ -206,6 +207,9 @@ static int score(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, sp_er
 static int stage_video(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, sp_error *err)
 {
     sp_demo_video_opts v = sp_demo_video_opts_default();
+    sp_nav_opts nav;
+    sp_eval_drive_map_opts(&nav);
+    v.drive.nav = &nav;
     v.drive.model_dir = r->model_dir;
     v.drive.out_dir = o->out_dir;
     v.drive.robot = o->robot;

@@ -7,6 +7,7 @@
 
 #include "eval/eval_internal.h"
 #include "semsplat/io.h"
+#include "semsplat/nav.h"
 
 void sp_eval_run_free(sp_eval_run *r)
 {
@@ -66,8 +67,10 @@ static int run_navigation(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *e
         snprintf(r->nav_note, sizeof r->nav_note, "not asked for in this run (--no-navigation)");
         return SP_OK;
     }
-    sp_drive_opts d = {.model_dir = o->model_dir, .out_dir = o->out_dir, .robot = o->robot, .dev = o->dev,
-                       .log = o->log};
+    sp_nav_opts nav;
+    sp_eval_drive_map_opts(&nav);
+    sp_drive_opts d = {.model_dir = o->model_dir, .out_dir = o->out_dir, .robot = o->robot, .nav = &nav,
+                       .dev = o->dev, .log = o->log};
     sp_error e = {0};
     int rc = sp_eval_nav_success(&d, &r->gt, NULL, 0, o->match_radius_m, &r->nav, &e);
     if (rc == SP_E_NOMEM) return *err = e, rc;
