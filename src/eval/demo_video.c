@@ -9,7 +9,7 @@
 #include "drive.h"
 
 static const char *const default_commands[] = {"go to the refrigerator", "take me to the couch",
-                                               "navigate to the bed"};
+                                               "navigate to the dining table"};
 
 sp_demo_video_opts sp_demo_video_opts_default(void)
 {
@@ -141,8 +141,12 @@ static int scene_drive(dv_ctx *x, const ev_answer_info *ai, const char *target, 
         double tk = F > 1 ? t_end * k / (F - 1) : t_end;
         while (j + 1 < t->n && t->s[j + 1].t <= tk) j++;
         char cap[300];
-        snprintf(cap, sizeof cap, "Driving (%s): %.2f m remaining (the robot's feedback), t = %.1f s", via,
-                 t->s[j].remaining_m, t->s[j].t);
+        if (t->s[j].remaining_m > 0 || t->s[j].status != SP_AGENT_GOAL_ACTIVE)
+            snprintf(cap, sizeof cap, "Driving (%s): %.2f m remaining (the robot's feedback), t = %.1f s", via,
+                     t->s[j].remaining_m, t->s[j].t);
+        else
+            snprintf(cap, sizeof cap, "Goal accepted (%s), waiting for the robot's first feedback, t = %.1f s", via,
+                     t->s[j].t);
         rc = drive_frame(x, t, j, ai, cap, err);
         if (!rc) rc = sp_video_frame_canvas(x->video, x->c, repeat < 1 ? 1 : repeat, err);
     }
