@@ -475,20 +475,44 @@ int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, 
     return SP_OK;
 }
 
+/* Relevance of Gaussian at m to the found targets from their instances' boxes (the bare splat:
+ * no field to score): the most confident instance containing it. */
+static float box_relevance(const float *m, const sp_nav_target *targets, int n)
+{
+    float r = 0;
+    for (int t = 0; t < n; t++)
+        for (int k = 0; targets[t].found && k < targets[t].n; k++) {
+            const sp_nav_instance *in = &targets[t].inst[k];
+            if (m[0] >= in->box.min[0] && m[0] <= in->box.max[0] && m[1] >= in->box.min[1] &&
+                m[1] <= in->box.max[1] && m[2] >= in->z_min && m[2] <= in->z_max)
+                r = fmaxf(r, fminf(1.0f, in->confidence));
+        }
+    return r;
+}
+
+/* Per Gaussian the most relevant of the found targets: with an engine its calibrated per-Gaussian
+ * relevancy of each target's text (0.5 = no preference .. 1, stretched to 0 .. 1), the field's own
+ * answer in the engine's frame; without one the instances' boxes. */
 int nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n, sp_error *err)
 {
     const sp_splat *s = &nav->aux;
-    for (size_t i = 0; i < s->n; i++) {
-        const float *m = s->means + 3 * i;
-        float r = 0;
-        for (int t = 0; t < n; t++)
-            for (int k = 0; t < n && targets[t].found && k < targets[t].n; k++) {
-                const sp_nav_instance *in = &targets[t].inst[k];
-                if (m[0] >= in->box.min[0] && m[0] <= in->box.max[0] && m[1] >= in->box.min[1] &&
-                    m[1] <= in->box.max[1] && m[2] >= in->z_min && m[2] <= in->z_max)
-                    r = fmaxf(r, fminf(1.0f, in->confidence));
-            }
-        nav->aux.features[2 * i + 1] = r;
+    float *rel = nav->engine && n > 0 ? malloc(sizeof(float) * s->n) : NULL;
+    if (nav->engine && n > 0 && !rel) return sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
+    for (size_t i = 0; i < s->n; i++)
+        nav->aux.features[2 * i + 1] = rel ? 0.0f : box_relevance(s->means + 3 * i, targets, n);
+    for (int t = 0; rel && t < n; t++) {
+        if (!targets[t].found) continue;
+        int rc = sp_query_engine_relevancy(nav->engine, targets[t].text, rel, NULL, err);
+        if (rc) {
+            free(rel);
+            return sp_error_prefix(err, "nav: relevance of '%s': ", targets[t].text);
+        }
+        for (size_t i = 0; i < s->n; i++) {
+            float v = 2.0f * (rel[i] - 0.5f);
+            v = v < 0 ? 0 : v > 1 ? 1 : v;
+            if (v > nav->aux.features[2 * i + 1]) nav->aux.features[2 * i + 1] = v;
+        }
     }
+    free(rel);
     return sp_scene_update(nav->scene_aux, &nav->aux, SP_SCENE_CHANGED_FEATURES, err);
 }

@@ -138,7 +138,10 @@ static void test_refrigerator_top3(void)
     const sp_path *paths[3];
     for (int i = 0; i < plan.n; i++) {
         paths[i] = &plan.traj[i].path;
-        fprintf(stderr, "  %s %.2f m score %.3f\n", plan.traj[i].id, paths[i]->length_m, plan.traj[i].score.total);
+        fprintf(stderr, "  %s %.2f m score %.3f, semantic %.3f\n", plan.traj[i].id, paths[i]->length_m,
+                plan.traj[i].score.total, plan.traj[i].score.semantic);
+        /* the kitchen's concepts, scored by the engine's per-Gaussian relevancy, seen on the way */
+        CHECK(plan.traj[i].score.semantic > 0 && plan.traj[i].score.semantic <= 1);
         CHECK(plan.traj[i].n_previews == sp_nav_options(g_nav)->n_previews);
         CHECK(sp_nav_lookup(g_nav, plan.traj[i].id) != NULL);
     }
