@@ -4,14 +4,15 @@
  * Costmap (sp_costmap): a grid in the world's xy plane (z up, metres; default 5 cm cells) built
  * from the splat alone:
  *   - the floor is detected (the heaviest band of flat, horizontal Gaussians below the cameras);
- *   - occupied: opacity-weighted Gaussian footprints (each Gaussian's xy marginal over its
- *     extent, not its centre), fused in voxels (cells x 10 cm slices of the robot's height band
- *     above the floor) with the rays of the carving below: a voxel is occupied when the
- *     footprints' evidence 1 - prod(1 - w_i) reaches a threshold and the cameras did not see
- *     through it (a floater); a cell when one of its voxels is;
- *   - free: carved along the training cameras' rays to their rendered depth, where its floor was
- *     seen (a ray ended on it, or the splat has floor there) or rays crossed its whole height
- *     band, so space no camera saw stays UNKNOWN; pockets enclosed by obstacles are filled;
+ *   - scans: every training view's rendered first-surface depth, views from one standpoint one
+ *     scan; per voxel (cells x 10 cm slices of the robot's height band above the floor) the
+ *     scans that hit it and that only saw through it;
+ *   - occupied (occupancy): by default opacity-weighted Gaussian footprints (each Gaussian's xy
+ *     marginal over its extent, not its centre) fused per voxel, evidence 1 - prod(1 - w_i) over
+ *     a threshold, unless the scans saw through it (a floater); or the scans alone as log-odds;
+ *     a cell when one of its voxels is;
+ *   - free: every voxel of the column observed by some scan and none occupied, so space no
+ *     camera saw stays UNKNOWN; pockets enclosed by obstacles are filled;
  *   - costs: Nav2's inflation (LETHAL 254 on obstacles, INSCRIBED 253 within the robot radius,
  *     252 exp(-cost_scaling_factor (d - r)) out to the inflation radius, NO_INFORMATION 255 for
  *     unknown), from an exact Euclidean distance transform.
