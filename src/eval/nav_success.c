@@ -68,7 +68,7 @@ static int grade_views(ev_drive_env *env, const ev_track *t, const char *png, do
         if (!rc) rc = sp_canvas_image_f32(c, rgb, VIEW_W, VIEW_H, (float)(k * VIEW_W), 0, VIEW_W, VIEW_H, NULL, err);
         if (rc) break;
         char label[64];
-        snprintf(label, sizeof label, "grade %d (cov %.2f, sharp %.2f)", q.grade, q.coverage, q.sharpness);
+        snprintf(label, sizeof label, "%d/5 cover %.2f sharp %.2f", q.grade, q.coverage, q.sharpness);
         sp_text_style st = {.size_px = 11, .color = sp_rgba_of(1, 1, 1, 1)};
         sp_canvas_text(c, (float)(k * VIEW_W) + 4, VIEW_H + 16, &st, label);
         *mean += q.score / 4;
