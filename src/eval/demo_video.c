@@ -8,8 +8,10 @@
 #include "demo_video.h"
 #include "drive.h"
 
-static const char *const default_commands[] = {"go to the refrigerator", "take me to the couch",
-                                               "navigate to the dining table"};
+/* Nav's default start is the training camera in the largest free region: on the CPU demo model of
+ * the house that stands beside the refrigerator, so it comes last (a drive across the house). */
+static const char *const default_commands[] = {"take me to the couch", "navigate to the dining table",
+                                               "go to the refrigerator"};
 
 sp_demo_video_opts sp_demo_video_opts_default(void)
 {
