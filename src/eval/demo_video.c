@@ -137,13 +137,14 @@ static int scene_drive(dv_ctx *x, const ev_answer_info *ai, const char *target, 
     int F = x->o->drive_frames > 0 ? x->o->drive_frames : 60;
     double t_end = t->s[t->n - 1].t;
     int repeat = (int)ceil(6.0 * x->fps / F);
-    int j = 0, rc = 0;
+    int j = 0, rc = 0, fed = 0;
     const char *via = x->env.dds ? "sim-robot over DDS" : "OFFLINE robot (no DDS)";
     for (int k = 0; k < F && !rc; k++) {
         double tk = F > 1 ? t_end * k / (F - 1) : t_end;
         while (j + 1 < t->n && t->s[j + 1].t <= tk) j++;
         char cap[300];
-        if (t->s[j].remaining_m > 0 || t->s[j].status != SP_AGENT_GOAL_ACTIVE)
+        for (int q = fed; q <= j && !fed; q++) fed = t->s[q].remaining_m > 0; /* a feedback message came */
+        if (fed || t->s[j].status != SP_AGENT_GOAL_ACTIVE)
             snprintf(cap, sizeof cap, "Driving (%s): %.2f m remaining (the robot's feedback), t = %.1f s", via,
                      t->s[j].remaining_m, t->s[j].t);
         else
