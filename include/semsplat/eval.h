@@ -423,7 +423,8 @@ typedef struct sp_demo_result {
 /* synth (unless o->capture) -> train -> features (labels, or CLIP with o->clip) -> lift ->
  * sp_eval_localization -> the video (sp_demo_video: three commands driven end to end), each stage
  * a library call; writes <out>/{capture,model,features,heatmaps,agent}/, <out>/demo.json,
- * <out>/report.md (when scored) and <out>/demo.mp4. Progress goes to o->log. */
+ * <out>/report.md and <out>/demo.mp4 (when scored: a capture without ground truth only makes the
+ * model; o->model makes only the video). Progress goes to o->log. */
 int sp_demo_run(const sp_demo_opts *o, sp_demo_result *res, sp_error *err);
 void sp_demo_result_free(sp_demo_result *res);
 

@@ -249,7 +249,7 @@ int sp_demo_run(const sp_demo_opts *opts, sp_demo_result *r, sp_error *err)
     if (!rc && !o.model) rc = score(&o, dev, r, err);
     r->t_total = sp_time_now() - t0;
     if (!rc && r->scored) rc = write_outputs(&o, r, err); /* the report stands even if the video fails */
-    if (!rc && !o.no_video) rc = stage_video(&o, dev, r, err);
+    if (!rc && !o.no_video && (r->scored || o.model)) rc = stage_video(&o, dev, r, err); /* a capture of ours */
     r->t_total = sp_time_now() - t0;
     if (!rc && r->scored && r->have_video) rc = write_outputs(&o, r, err);
     sp_device_free(dev);
