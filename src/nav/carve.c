@@ -26,39 +26,7 @@
 int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
                  void *ctx)
 {
-    double gx = (a[0] - cm->origin[0]) / cm->res, gy = (a[1] - cm->origin[1]) / cm->res;
-    double dx = (b[0] - cm->origin[0]) / cm->res - gx, dy = (b[1] - cm->origin[1]) / cm->res - gy;
-    int ix = (int)floor(gx), iy = (int)floor(gy);
-    int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-    double tdx = dx != 0 ? fabs(1.0 / dx) : INFINITY, tdy = dy != 0 ? fabs(1.0 / dy) : INFINITY;
-    double tmx = dx != 0 ? ((sx > 0 ? ix + 1 - gx : gx - ix) * tdx) : INFINITY;
-    double tmy = dy != 0 ? ((sy > 0 ? iy + 1 - gy : gy - iy) * tdy) : INFINITY;
-    double t = 0;
-    long steps = (long)(fabs(dx) + fabs(dy)) + 4;
-    for (long k = 0; k <= steps; k++) {
-        double tn = fmin(fmin(tmx, tmy), 1.0);
-        if (nav_inside(cm, ix, iy)) {
-            int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
-            if (rc) return rc;
-        }
-        if (tn >= 1.0) break;
-        t = tn;
-        if (fabs(tmx - tmy) < 1e-9) { /* through a corner: both side cells touch the segment */
-            int rc = 0;
-            if (nav_inside(cm, ix + sx, iy)) rc = fn(ctx, nav_idx(cm, ix + sx, iy), (float)t, (float)t);
-            if (!rc && nav_inside(cm, ix, iy + sy)) rc = fn(ctx, nav_idx(cm, ix, iy + sy), (float)t, (float)t);
-            if (rc) return rc;
-            ix += sx, iy += sy;
-            tmx += tdx, tmy += tdy;
-        } else if (tmx < tmy) {
-            ix += sx;
-            tmx += tdx;
-        } else {
-            iy += sy;
-            tmy += tdy;
-        }
-    }
-    return 0;
+    return nav_traverse_inline(cm, a, b, fn, ctx);
 }
 
 enum { FLAG_MISS = 1, FLAG_HIT = 2 };
@@ -71,7 +39,7 @@ typedef struct carve_thread {
     long n_touched;
     float *pts;            /* [pixels][4] a view's surface points */
     size_t cap_pts;
-    uint16_t *hit_scans, *miss_scans; /* [voxels] */
+    uint16_t *hit_scans, *miss_scans, *near_scans; /* [voxels] */
     uint16_t *floor_scans; /* [cells] */
     uint16_t *view_counts; /* [n Gaussians] or NULL */
     int failed;            /* out of memory */
@@ -108,47 +76,15 @@ typedef struct ray_ctx {
 } ray_ctx;
 
 /* Marks every slice of the cell the ray's stretch inside it overlaps as missed. */
-static inline int carve_cell(ray_ctx *c, long cell, float t0, float t1)
+static inline int carve_cell(void *vctx, long cell, float t0, float t1)
 {
+    ray_ctx *c = vctx;
     float za = c->z0 + t0 * c->dz, zb = c->z0 + t1 * c->dz;
     float lo = MAXF(MINF(za, zb), c->band_lo), hi = MINF(MAXF(za, zb), c->band_hi);
     if (hi < lo) return 0;
     int v0 = nav_slice_of(c->sl, lo), v1 = nav_slice_of(c->sl, hi);
     for (int v = v0; v <= v1; v++) set_flag(c->t, v * c->sl->cells + cell, FLAG_MISS);
     return 0;
-}
-
-/* nav_traverse with carve_cell inlined (the same arithmetic, so the same cells): the rays are
- * most of the carving's time, and a call per cell through a pointer is a good part of it. */
-static void traverse_carve(const sp_costmap *cm, const float a[2], const float b[2], ray_ctx *rc)
-{
-    double gx = (a[0] - cm->origin[0]) / cm->res, gy = (a[1] - cm->origin[1]) / cm->res;
-    double dx = (b[0] - cm->origin[0]) / cm->res - gx, dy = (b[1] - cm->origin[1]) / cm->res - gy;
-    int ix = (int)floor(gx), iy = (int)floor(gy);
-    int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-    double tdx = dx != 0 ? fabs(1.0 / dx) : INFINITY, tdy = dy != 0 ? fabs(1.0 / dy) : INFINITY;
-    double tmx = dx != 0 ? ((sx > 0 ? ix + 1 - gx : gx - ix) * tdx) : INFINITY;
-    double tmy = dy != 0 ? ((sy > 0 ? iy + 1 - gy : gy - iy) * tdy) : INFINITY;
-    double t = 0;
-    long steps = (long)(fabs(dx) + fabs(dy)) + 4;
-    for (long k = 0; k <= steps; k++) {
-        double tn = tmx < tmy ? (tmx < 1.0 ? tmx : 1.0) : (tmy < 1.0 ? tmy : 1.0);
-        if (nav_inside(cm, ix, iy)) carve_cell(rc, nav_idx(cm, ix, iy), (float)t, (float)tn);
-        if (tn >= 1.0) break;
-        t = tn;
-        if (fabs(tmx - tmy) < 1e-9) { /* through a corner: both side cells touch the segment */
-            if (nav_inside(cm, ix + sx, iy)) carve_cell(rc, nav_idx(cm, ix + sx, iy), (float)t, (float)t);
-            if (nav_inside(cm, ix, iy + sy)) carve_cell(rc, nav_idx(cm, ix, iy + sy), (float)t, (float)t);
-            ix += sx, iy += sy;
-            tmx += tdx, tmy += tdy;
-        } else if (tmx < tmy) {
-            ix += sx;
-            tmx += tdx;
-        } else {
-            iy += sy;
-            tmy += tdy;
-        }
-    }
 }
 
 /* Misses along C + s (E - C), s in [0, s_end], clipped to the band's heights first: most of a
@@ -166,7 +102,7 @@ static void carve_ray(const sp_costmap *cm, ray_ctx *rc, sp_vec3 C, sp_vec3 E, f
     float a[2] = {C.x + s0 * (E.x - C.x), C.y + s0 * (E.y - C.y)};
     float b[2] = {C.x + s1 * (E.x - C.x), C.y + s1 * (E.y - C.y)};
     rc->z0 = C.z + s0 * dz, rc->dz = (s1 - s0) * dz;
-    traverse_carve(cm, a, b, rc);
+    nav_traverse_inline(cm, a, b, carve_cell, rc); /* carve_cell inlined: the rays are most of the time */
 }
 
 /* Where a surface point counts: the flag index of its floor sighting (near the floor) or of its
@@ -260,18 +196,33 @@ static void trace_view(const carve_job *j, const sp_camera *cam, const float *de
         }
 }
 
-/* One scan's flags into the thread's counters (a voxel hit in this scan counts as a hit only),
- * clearing them for the next scan. */
-static void count_scan(const nav_slices *sl, carve_thread *t)
+/* Does the scan hit one of the 8 voxels beside voxel i (same slice)? */
+static int hit_beside(const sp_costmap *cm, const nav_slices *sl, const uint8_t *flag, long i)
+{
+    long cell = i % sl->cells, base = i - cell;
+    int cx = (int)(cell % cm->nx), cy = (int)(cell / cm->nx);
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++)
+            if ((dx || dy) && nav_inside(cm, cx + dx, cy + dy) && (flag[base + nav_idx(cm, cx + dx, cy + dy)] & FLAG_HIT))
+                return 1;
+    return 0;
+}
+
+/* One scan's flags into the thread's counters (a voxel hit in this scan counts as a hit only; a
+ * missed one beside a hit voxel counts as near too), then clears them for the next scan. */
+static void count_scan(const sp_costmap *cm, const nav_slices *sl, carve_thread *t)
 {
     long nv = (long)sl->n * sl->cells;
     for (long k = 0; k < t->n_touched; k++) {
         long i = t->touched[k];
         if (i >= nv) bump(&t->floor_scans[i - nv]);
         else if (t->flag[i] & FLAG_HIT) bump(&t->hit_scans[i]);
-        else bump(&t->miss_scans[i]);
-        t->flag[i] = 0;
+        else {
+            bump(&t->miss_scans[i]);
+            if (hit_beside(cm, sl, t->flag, i)) bump(&t->near_scans[i]);
+        }
     }
+    for (long k = 0; k < t->n_touched; k++) t->flag[t->touched[k]] = 0;
     t->n_touched = 0;
 }
 
@@ -316,7 +267,7 @@ static void carve_run(void *ctx, long r, int thread_id)
         trace_view(j, &j->views[k], j->req[k].depth, t);
         if (t->view_counts) count_visible(j, &j->views[k], j->req[k].depth, t->view_counts);
     }
-    count_scan(j->sl, t);
+    count_scan(j->cm, j->sl, t);
 }
 
 static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
@@ -332,7 +283,8 @@ static void threads_free(carve_thread *th, int T)
     for (int t = 0; th && t < T; t++) {
         free(th[t].flag), free(th[t].touched), free(th[t].pts);
         if (t == 0) continue; /* thread 0 counts into the outputs */
-        free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].floor_scans), free(th[t].view_counts);
+        free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].near_scans), free(th[t].floor_scans);
+        free(th[t].view_counts);
     }
     free(th);
 }
@@ -349,9 +301,10 @@ static carve_thread *threads_alloc(int T, const nav_carve_out *out, size_t n_gau
         c->touched = malloc(sizeof(int32_t) * (nv + nc));
         c->hit_scans = t ? calloc(nv, sizeof(uint16_t)) : out->hit_scans;
         c->miss_scans = t ? calloc(nv, sizeof(uint16_t)) : out->miss_scans;
+        c->near_scans = t ? calloc(nv, sizeof(uint16_t)) : out->near_scans;
         c->floor_scans = t ? calloc(nc, sizeof(uint16_t)) : out->floor_scans;
         c->view_counts = !out->view_counts ? NULL : t ? calloc(n_gauss + 1, sizeof(uint16_t)) : out->view_counts;
-        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->floor_scans &&
+        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->near_scans && c->floor_scans &&
              (c->view_counts || !out->view_counts);
     }
     if (!ok) threads_free(th, T), th = NULL;
@@ -578,6 +531,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     for (int t = 1; th && t < T; t++) {
         add_sat(out->hit_scans, th[t].hit_scans, nv);
         add_sat(out->miss_scans, th[t].miss_scans, nv);
+        add_sat(out->near_scans, th[t].near_scans, nv);
         add_sat(out->floor_scans, th[t].floor_scans, nc);
         if (out->view_counts) add_sat(out->view_counts, th[t].view_counts, s->n);
     }
