@@ -508,7 +508,12 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         double t0 = nav_cpu_now();
         /* one view at a time, each from the Gaussians it can show */
         for (int k = 0; k < nb && !rc; k++) {
-            drawn += cull_view(&host, sigma_max, &view[k], &sub);
+            size_t m = cull_view(&host, sigma_max, &view[k], &sub);
+            drawn += m;
+            if (m == 0) { /* nothing in view: no surface anywhere */
+                memset(req[k].depth, 0, sizeof(float) * (size_t)view[k].width * (size_t)view[k].height);
+                continue;
+            }
             if ((rc = sp_scene_update(scene, &sub, SP_SCENE_CHANGED_GEOMETRY, err)) ||
                 (rc = sp_render_views(r, scene, &view[k], 1, &req[k], err)))
                 sp_error_prefix(err, "costmap: rendering training views for carving: ");
