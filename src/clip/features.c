@@ -26,88 +26,13 @@ sp_features_opts sp_features_opts_default(void)
     return o;
 }
 
-/* label id -> class name, from labels.json ({"labels": {"1": {"class": ..}}} as synth writes it,
- * or {"labels": [{"id": 1, "class": ..}]}). */
-typedef struct label_table {
-    int n;                /* ids 0..n-1 */
-    char (*cls)[128];
-    int n_classes;
-    char (*class_names)[128];
-    int *class_of;        /* id -> class index */
-} label_table;
-
-static void label_table_free(label_table *t)
-{
-    free(t->cls);
-    free(t->class_names);
-    free(t->class_of);
-    memset(t, 0, sizeof *t);
-}
-
-static int label_table_read(const char *path, label_table *t, sp_error *err)
-{
-    memset(t, 0, sizeof *t);
-    cJSON *root = NULL;
-    int rc = sp_json_read_file(path, &root, err);
-    if (rc) return rc;
-    const cJSON *labs = cJSON_GetObjectItemCaseSensitive(root, "labels"), *it;
-    if (!cJSON_IsObject(labs) && !cJSON_IsArray(labs)) {
-        cJSON_Delete(root);
-        return sp_error_set(err, SP_E_FORMAT, "%s: missing \"labels\"", path);
-    }
-    int max_id = 0;
-    cJSON_ArrayForEach(it, labs) {
-        const cJSON *idv = cJSON_GetObjectItemCaseSensitive(it, "id");
-        long id = cJSON_IsNumber(idv) ? (long)idv->valuedouble : (it->string ? strtol(it->string, NULL, 10) : -1);
-        if (id < 1 || id > 65535) {
-            cJSON_Delete(root);
-            return sp_error_set(err, SP_E_FORMAT, "%s: label id %ld outside 1..65535", path, id);
-        }
-        if (id > max_id) max_id = (int)id;
-    }
-    t->n = max_id + 1;
-    t->cls = calloc((size_t)t->n, sizeof *t->cls);
-    t->class_names = calloc((size_t)t->n, sizeof *t->class_names);
-    t->class_of = calloc((size_t)t->n, sizeof *t->class_of);
-    if (!t->cls || !t->class_names || !t->class_of) {
-        cJSON_Delete(root);
-        label_table_free(t);
-        return sp_error_set(err, SP_E_NOMEM, "out of memory");
-    }
-    /* id 0 (background, sky) is its own class */
-    snprintf(t->cls[0], sizeof t->cls[0], "background");
-    cJSON_ArrayForEach(it, labs) {
-        const cJSON *idv = cJSON_GetObjectItemCaseSensitive(it, "id");
-        long id = cJSON_IsNumber(idv) ? (long)idv->valuedouble : strtol(it->string, NULL, 10);
-        const cJSON *c = cJSON_GetObjectItemCaseSensitive(it, "class");
-        const cJSON *nm = cJSON_GetObjectItemCaseSensitive(it, "name");
-        if (!cJSON_IsString(c)) c = cJSON_GetObjectItemCaseSensitive(it, "model");
-        const char *s = cJSON_IsString(c) ? c->valuestring : cJSON_IsString(nm) ? nm->valuestring : NULL;
-        if (!s) {
-            cJSON_Delete(root);
-            label_table_free(t);
-            return sp_error_set(err, SP_E_FORMAT, "%s: label %ld has no \"class\"", path, id);
-        }
-        snprintf(t->cls[id], sizeof t->cls[id], "%s", s);
-    }
-    cJSON_Delete(root);
-    for (int i = 0; i < t->n; i++) {
-        if (!t->cls[i][0]) snprintf(t->cls[i], sizeof t->cls[i], "background");
-        int k = 0;
-        while (k < t->n_classes && strcmp(t->class_names[k], t->cls[i])) k++;
-        if (k == t->n_classes) memcpy(t->class_names[t->n_classes++], t->cls[i], sizeof t->cls[i]);
-        t->class_of[i] = k;
-    }
-    return 0;
-}
-
 typedef struct extract_ctx {
     const sp_features_opts *o;
     sp_colmap_model model;
     char capture[1024], images_dir[1200], labels_dir[1200];
     sp_clip *clip;
     int full_dim;
-    label_table labels;
+    clip_label_table labels;
     float *class_emb; /* [n_classes][full_dim] */
 } extract_ctx;
 
@@ -288,7 +213,7 @@ static int setup(extract_ctx *x, sp_error *err)
         char lj[1300];
         sp_path_join(lj, sizeof lj, x->capture, "labels.json");
         if (!sp_file_exists(lj)) sp_path_join(lj, sizeof lj, x->labels_dir, "labels.json");
-        if ((rc = label_table_read(lj, &x->labels, err))) return rc;
+        if ((rc = clip_label_table_read(lj, &x->labels, err))) return rc;
         if (o->clip_weights) {
             if ((rc = sp_clip_load(&x->clip, o->clip_weights, o->clip_config, o->dev, err))) return rc;
             x->full_dim = sp_clip_embed_dim(x->clip);
@@ -481,7 +406,7 @@ done:
     free(mean);
     free(basis);
     free(x.class_emb);
-    label_table_free(&x.labels);
+    clip_label_table_free(&x.labels);
     sp_clip_free(x.clip);
     sp_colmap_free(&x.model);
     return rc;

@@ -133,6 +133,17 @@ int colmap_check_point(const char *file, size_t rec, const sp_colmap_point *p, s
     return SP_OK;
 }
 
+int colmap_check_part(sp_colmap_part part, const char *name, const sp_colmap_model *m, sp_error *err)
+{
+    if ((int)part < SP_COLMAP_CAMERAS || part > SP_COLMAP_POINTS)
+        return sp_error_set(err, SP_E_ARG, "%s: unknown COLMAP model part %d", name, (int)part);
+    const void *held[3] = {m->cameras, m->images, m->points};
+    if (held[part])
+        return sp_error_set(err, SP_E_ARG, "%s: the model already holds its %s", name,
+                            part == SP_COLMAP_CAMERAS ? "cameras" : part == SP_COLMAP_IMAGES ? "images" : "points");
+    return SP_OK;
+}
+
 static int cmp_u32(const void *a, const void *b)
 {
     uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;

@@ -268,11 +268,9 @@ int sp_image_write_jpeg(const char *path, const sp_image *img, int quality, sp_e
 
 /* ---- dispatch and conversions ----------------------------------------------------------------- */
 
-int sp_image_read(const char *path, sp_image *img, sp_error *err)
+/* PNG or JPEG by the first bytes of f; path names it in messages. */
+static int read_stream(FILE *f, const char *path, sp_image *img, sp_error *err)
 {
-    memset(img, 0, sizeof *img);
-    FILE *f = fopen(path, "rb");
-    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
     unsigned char magic[8] = {0};
     size_t got = fread(magic, 1, sizeof magic, f);
     rewind(f);
@@ -284,8 +282,28 @@ int sp_image_read(const char *path, sp_image *img, sp_error *err)
     else
         rc = sp_error_set(err, SP_E_FORMAT, "%s: neither a PNG nor a JPEG (first bytes %02x %02x %02x)",
                           path, magic[0], magic[1], magic[2]);
-    fclose(f);
     if (rc) memset(img, 0, sizeof *img);
+    return rc;
+}
+
+int sp_image_read(const char *path, sp_image *img, sp_error *err)
+{
+    memset(img, 0, sizeof *img);
+    FILE *f = fopen(path, "rb");
+    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    int rc = read_stream(f, path, img, err);
+    fclose(f);
+    return rc;
+}
+
+int sp_image_decode(const void *data, size_t size, const char *name, sp_image *img, sp_error *err)
+{
+    memset(img, 0, sizeof *img);
+    if (!size) return sp_error_set(err, SP_E_FORMAT, "%s: neither a PNG nor a JPEG (empty)", name);
+    FILE *f = fmemopen((void *)data, size, "rb");
+    if (!f) return sp_error_set(err, SP_E_NOMEM, "%s: cannot open a stream over %zu bytes", name, size);
+    int rc = read_stream(f, name, img, err);
+    fclose(f);
     return rc;
 }
 

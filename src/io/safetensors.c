@@ -57,6 +57,7 @@ static int json_size(const cJSON *v, size_t *out)
 static int parse_tensor(const char *path, const cJSON *item, sp_tensor_info *t, size_t offs[2], sp_error *err)
 {
     const char *name = item->string;
+    if (!name[0]) return sp_error_set(err, SP_E_FORMAT, "%s: a tensor has an empty name", path);
     if (strlen(name) >= sizeof t->name)
         return sp_error_set(err, SP_E_UNSUPPORTED, "%s: tensor name '%.60s...' is longer than %zu bytes", path, name,
                             sizeof t->name - 1);
@@ -109,27 +110,10 @@ static int cmp_span(const void *a, const void *b)
     return x->begin < y->begin ? -1 : x->begin > y->begin ? 1 : (x->end > y->end) - (x->end < y->end);
 }
 
-int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
+/* Parses the header of the bytes [u, u + size) into st->n / st->tensors (pointing into u). */
+static int parse(const unsigned char *u, size_t size, const char *path, sp_safetensors *st, sp_error *err)
 {
-    memset(st, 0, sizeof *st);
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
-    struct stat sb;
-    if (fstat(fd, &sb) != 0) {
-        close(fd);
-        return sp_error_set(err, SP_E_IO, "%s: cannot stat: %s", path, strerror(errno));
-    }
-    size_t size = (size_t)sb.st_size;
-    if (size < 8) {
-        close(fd);
-        return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
-    }
-    void *map = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
-    close(fd);
-    if (map == MAP_FAILED) return sp_error_set(err, SP_E_IO, "%s: cannot mmap: %s", path, strerror(errno));
-    st->map = map;
-    st->map_size = size;
-    const unsigned char *u = map;
+    if (size < 8) return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
     uint64_t hlen;
     memcpy(&hlen, u, 8);
     int rc = SP_OK;
@@ -209,6 +193,40 @@ int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
 out:
     free(spans);
     cJSON_Delete(json);
+    return rc;
+}
+
+int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
+{
+    memset(st, 0, sizeof *st);
+    int fd = open(path, O_RDONLY);
+    if (fd < 0) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    struct stat sb;
+    if (fstat(fd, &sb) != 0) {
+        int e = errno;
+        close(fd);
+        return sp_error_set(err, SP_E_IO, "%s: cannot stat: %s", path, strerror(e));
+    }
+    size_t size = (size_t)sb.st_size;
+    if (size < 8) {
+        close(fd);
+        return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
+    }
+    void *map = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    int e = errno;
+    close(fd);
+    if (map == MAP_FAILED) return sp_error_set(err, SP_E_IO, "%s: cannot mmap: %s", path, strerror(e));
+    st->map = map;
+    st->map_size = size;
+    int rc = parse(map, size, path, st, err);
+    if (rc) sp_safetensors_close(st);
+    return rc;
+}
+
+int sp_safetensors_parse(const void *data, size_t size, const char *name, sp_safetensors *st, sp_error *err)
+{
+    memset(st, 0, sizeof *st);
+    int rc = parse(data, size, name, st, err);
     if (rc) sp_safetensors_close(st);
     return rc;
 }

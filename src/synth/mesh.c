@@ -198,6 +198,11 @@ int geom_mesh(wbuild *b, const xform *T, const char *path, const double scale[3]
             }
             xf_apply(T, p, pw);
             xf_apply_dir(T, n, nw);
+            if (!isfinite(pw[0]) || !isfinite(pw[1]) || !isfinite(pw[2])) {
+                rc = sp_error_set(err, SP_E_NUMERIC, "mesh %s: vertex %u of mesh %u is not finite (%g %g %g)", path,
+                                  v, i, me->mVertices[v].x, me->mVertices[v].y, me->mVertices[v].z);
+                goto done;
+            }
             if (wb_vertex(b, pw, nw, uv, p) < 0) {
                 rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
                 goto done;
@@ -207,6 +212,13 @@ int geom_mesh(wbuild *b, const xform *T, const char *path, const double scale[3]
         for (unsigned f = 0; f < me->mNumFaces; f++) {
             const struct aiFace *fc = &me->mFaces[f];
             if (fc->mNumIndices != 3) continue;
+            /* assimp does not check indices unless asked to validate the whole scene */
+            for (int k = 0; k < 3; k++)
+                if (fc->mIndices[k] >= me->mNumVertices) {
+                    rc = sp_error_set(err, SP_E_FORMAT, "mesh %s: face %u of mesh %u uses vertex %u of %u", path, f,
+                                      i, fc->mIndices[k], me->mNumVertices);
+                    goto done;
+                }
             if (wb_triangle(b, (long)(base + fc->mIndices[0]), (long)(base + fc->mIndices[1]),
                             (long)(base + fc->mIndices[2]), mat, obj)) {
                 rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
