@@ -130,6 +130,9 @@ int colmap_check_point(const char *file, size_t rec, const sp_colmap_point *p, s
     if (!all_finite(p->xyz, 3))
         return sp_error_set(err, SP_E_NUMERIC, "%s: point3D %llu (record %zu) has a non-finite position (%g %g %g)",
                             file, (unsigned long long)p->id, rec, p->xyz[0], p->xyz[1], p->xyz[2]);
+    if (!isfinite(p->error))
+        return sp_error_set(err, SP_E_NUMERIC, "%s: point3D %llu (record %zu) has a non-finite error (%g)", file,
+                            (unsigned long long)p->id, rec, p->error);
     return SP_OK;
 }
 

@@ -17,18 +17,25 @@ FILE *io_tmp_open(const char *path, char *tmp, size_t cap, sp_error *err)
 
 int io_tmp_commit(FILE *f, const char *tmp, const char *path, int ok, sp_error *err)
 {
-    int bad = ferror(f) | (fflush(f) != 0);
-    bad |= fclose(f) != 0;
+    /* A full disk shows at a write (the stream's error flag), the flush or the close; the flush
+     * retries what is buffered, so its errno names the cause; an earlier failure's errno is gone. */
+    int bad = ferror(f), e = 0;
+    errno = 0;
+    if (fflush(f) != 0) e = errno, bad = 1;
+    if (fclose(f) != 0) {
+        if (!e) e = errno;
+        bad = 1;
+    }
     if (!ok) {
         remove(tmp);
         return err ? err->code : SP_E_IO;
     }
     if (bad) {
         remove(tmp);
-        return sp_error_set(err, SP_E_IO, "%s: write failed (disk full?)", path);
+        return sp_error_set(err, SP_E_IO, "%s: write failed: %s", path, e ? strerror(e) : "I/O error (disk full?)");
     }
     if (rename(tmp, path) != 0) {
-        int e = errno;
+        e = errno;
         remove(tmp);
         return sp_error_set(err, SP_E_IO, "%s: cannot rename into place: %s", path, strerror(e));
     }
