@@ -4,7 +4,7 @@
 #   scripts/fuzz.sh [-t SECONDS | -n RUNS] [-j JOBS] [-B BUILD] [-o OUT] [--merge] [--no-build] [HARNESS...]
 #
 #   -t SECONDS   run each harness this long (default 10)
-#   -n RUNS      run each harness for this many executions instead
+#   -n RUNS      stop a harness after this many executions (with -t: whichever comes first)
 #   -j JOBS      harnesses run at once (default 1; the machine is shared: 2 at most)
 #   -B BUILD     build folder (default build-fuzz: CC=clang, -DSP_FUZZ=ON, configured here)
 #   -o OUT       output folder (default /tmp/semsplat-fuzz): OUT/corpus/<h> new inputs (the
@@ -30,10 +30,11 @@ BUILD=build-fuzz
 OUT=/tmp/semsplat-fuzz
 MERGE=0
 DO_BUILD=1
+TIME_SET=0
 while [ $# -gt 0 ]; do
     case "$1" in
-    -t) SECONDS_EACH=$2; shift 2 ;;
-    -n) RUNS=$2; shift 2 ;;
+    -t) SECONDS_EACH=$2; TIME_SET=1; shift 2 ;;
+    -n) RUNS=$2; [ "$TIME_SET" = 1 ] || SECONDS_EACH=2147483; shift 2 ;;
     -j) JOBS=$2; shift 2 ;;
     -B) BUILD=$2; shift 2 ;;
     -o) OUT=$2; shift 2 ;;
@@ -78,7 +79,7 @@ run_one() {
     mkdir -p "$OUT/corpus/$h" "$OUT/crashes/$h"
     dict=$(dict_of "$h")
     limit="-max_total_time=$SECONDS_EACH"
-    [ -n "$RUNS" ] && limit="-runs=$RUNS"
+    [ -n "$RUNS" ] && limit="$limit -runs=$RUNS"
     log="$OUT/logs/$h.log"
     status=0
     # -timeout: an input taking 10 s is a hang; -rss_limit_mb: 2 GB is a memory blow-up.

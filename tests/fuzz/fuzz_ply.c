@@ -13,6 +13,7 @@ static void same_splat(const sp_splat *a, const sp_splat *b)
     FZ_ASSERT(a->n == b->n && a->sh_degree == b->sh_degree && a->feat_dim == b->feat_dim,
               "n/degree/dim changed in a round trip");
     size_t n = a->n, K = (size_t)sp_sh_coeffs(a->sh_degree), D = (size_t)a->feat_dim;
+    if (!n) return;
     FZ_ASSERT(!memcmp(a->means, b->means, n * 3 * sizeof(float)), "means changed");
     FZ_ASSERT(!memcmp(a->quats, b->quats, n * 4 * sizeof(float)), "quats changed");
     FZ_ASSERT(!memcmp(a->log_scales, b->log_scales, n * 3 * sizeof(float)), "scales changed");
