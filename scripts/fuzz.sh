@@ -102,18 +102,23 @@ run_one() {
     [ "$status" -eq 0 ] && [ "$faults" -eq 0 ]
 }
 
+# JOBS lanes, each running its share of the harnesses (round robin) one after another.
+lane() {
+    lane_fail=0
+    i=0
+    for h in "$@"; do
+        [ $((i % JOBS)) -eq "$LANE" ] && { run_one "$h" || lane_fail=1; }
+        i=$((i + 1))
+    done
+    return $lane_fail
+}
 fail=0
 pids=
-running=0
-for h in "$@"; do
-    ( run_one "$h" ) &
+LANE=0
+while [ "$LANE" -lt "$JOBS" ]; do
+    ( lane "$@" ) &
     pids="$pids $!"
-    running=$((running + 1))
-    if [ "$running" -ge "$JOBS" ]; then
-        for p in $pids; do wait "$p" || fail=1; done
-        pids=
-        running=0
-    fi
+    LANE=$((LANE + 1))
 done
 for p in $pids; do wait "$p" || fail=1; done
 [ "$fail" = 0 ] || echo "fuzz.sh: faults found; inputs in $OUT/crashes/, logs in $OUT/logs/" >&2
