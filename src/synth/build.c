@@ -79,6 +79,14 @@ int wb_init(wbuild *b, sp_world *w, sp_error *err)
     return 0;
 }
 
+void wb_release(wbuild *b)
+{
+    for (size_t i = 0; i < b->n_meshes; i++) mesh_data_free(&b->meshes[i].data);
+    free(b->meshes);
+    b->meshes = NULL;
+    b->n_meshes = b->cap_meshes = 0;
+}
+
 long wb_vertex(wbuild *b, const double pos[3], const double nrm[3], const double uv[2],
                const double pattern[3])
 {

@@ -687,6 +687,7 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
 fail_doc:
     xmlFreeDoc(doc);
 fail:
+    wb_release(&c->b);
     free(c);
     if (rc) sp_world_free(w);
     return rc;

@@ -1,8 +1,9 @@
 /* Mesh files through assimp and our mesh reader (geom_mesh, as an SDF <mesh> visual loads them):
  * the first byte picks the format ('o' OBJ, 's' STL, 'd' COLLADA .dae; others byte % 3), the
  * rest is the file. Never a crash, a clear error, and what loads is consistent (triangles index
- * existing vertices, finite positions). Assimp itself is not instrumented: its own faults show
- * as crashes, not as coverage. The scratch folder has m.mtl (map_Kd tex.png) and tex.png, so
+ * existing vertices, finite positions). Assimp runs in a child process (src/synth/mesh_import.c)
+ * since it crashes on some malformed files; it is not instrumented, so libFuzzer sees coverage of
+ * our side only (the flattened scene's checks and the world builder). The scratch folder has m.mtl (map_Kd tex.png) and tex.png, so
  * meshes that name them load a texture. */
 #include "fuzz_util.h"
 #include "semsplat/io.h"
@@ -54,6 +55,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FZ_ASSERT(w.tris[t] < w.n_vertices, "triangle %zu indexes vertex %u of %zu", t / 3, w.tris[t], w.n_vertices);
         for (size_t v = 0; v < w.n_vertices * 3; v++) FZ_ASSERT(isfinite(w.positions[v]), "vertex %zu", v / 3);
     }
+    wb_release(&b);
     sp_world_free(&w);
     return 0;
 }
