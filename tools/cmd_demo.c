@@ -159,6 +159,7 @@ static int parse(int argc, char **argv, demo_opts *o)
             if (cli_parse_int("demo", "--views", v, &o->views)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--steps", &bad))) {
             if (cli_parse_int("demo", "--steps", v, &o->steps)) return 2;
+            if (o->steps < 1) return cli_usage_error("demo", "--steps %ld: expected at least 1", o->steps);
         } else if ((v = cli_flag_value(argc, argv, &i, "--dim", &bad))) {
             if (cli_parse_int("demo", "--dim", v, &o->dim)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {

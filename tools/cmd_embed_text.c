@@ -40,6 +40,8 @@ int cmd_embed_text(int argc, char **argv)
     sp_clip *clip = NULL;
     int dim = 512, rc = 0;
     if (weights) {
+        if (strcmp(device, "cpu") && strcmp(device, "cuda") && strcmp(device, "auto"))
+            return free(texts), cli_usage_error("embed-text", "--device '%s': expected cpu, cuda or auto", device);
         sp_device_kind kind = !strcmp(device, "cuda") ? SP_DEVICE_CUDA : !strcmp(device, "auto") ? SP_DEVICE_AUTO : SP_DEVICE_CPU;
         if ((rc = sp_device_create(&dev, kind, 0, &err)) || (rc = sp_clip_load(&clip, weights, config, dev, &err))) {
             sp_device_free(dev);

@@ -247,6 +247,18 @@ static int info_safetensors(const char *path, int all, sp_error *err)
     return 0;
 }
 
+/* cameras.bin, images.txt, ...: a file of a COLMAP model folder. */
+static int is_model_file(const char *path)
+{
+    static const char *const names[] = {"cameras.bin", "images.bin", "points3D.bin",
+                                        "cameras.txt", "images.txt", "points3D.txt"};
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(base, names[i])) return 1;
+    return 0;
+}
+
 int cmd_info(int argc, char **argv)
 {
     const char *path = NULL;
@@ -292,8 +304,7 @@ int cmd_info(int argc, char **argv)
             rc = info_npy(path, &err);
         else if (got >= 9 && magic[8] == '{' && hlen > 1 && hlen < ((uint64_t)100 << 20))
             rc = info_safetensors(path, all, &err);
-        else if (!strcmp(path + (strlen(path) > 4 ? strlen(path) - 4 : 0), ".bin") ||
-                 !strcmp(path + (strlen(path) > 4 ? strlen(path) - 4 : 0), ".txt")) {
+        else if (is_model_file(path)) {
             /* cameras.bin / images.txt etc.: describe the model folder around it. */
             char dir[4096];
             snprintf(dir, sizeof dir, "%s", path);

@@ -79,6 +79,7 @@ int cmd_query(int argc, char **argv)
     if (!model) return cli_usage_error("query", "--model DIR is required");
     if (n_texts == 0) return cli_usage_error("query", "give the text to find, e.g. \"refrigerator\"");
     if (heatmap && n_texts > 1) return cli_usage_error("query", "--heatmap takes one query; use --heatmap-dir");
+    if (heatmap && heatmap_dir) return cli_usage_error("query", "--heatmap and --heatmap-dir exclude each other");
     opts.heatmap = heatmap || heatmap_dir;
     opts.heatmap_view = (int)view;
     sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU

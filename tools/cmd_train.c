@@ -1,6 +1,8 @@
 /* semsplat train: fits a Gaussian splat to a COLMAP capture (gsplat simple_trainer defaults) and
  * writes OUT/splat.ply (3DGS layout), OUT/train.json (settings + held-out psnr/ssim) and
  * checkpoints in OUT/checkpoints/. */
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,10 +53,13 @@ int cmd_train(int argc, char **argv)
 {
     const char *colmap = NULL, *images = NULL, *out = NULL, *device = "auto", *init = "points";
     const char *init_ply = NULL, *resume = NULL, *v;
-    long tmp, threads = 0, steps = 30000, downscale = 1, init_points = 100000, sh_degree = 3, sh_interval = 0;
+    /* UNSET: flags not given keep the schedule's defaults; any value given goes to the library's
+     * range checks (a bad one is an error naming it, never silently the default) */
+    const long UNSET = LONG_MIN;
+    long tmp, threads = 0, steps = 30000, downscale = 1, init_points = 100000, sh_degree = 3, sh_interval = UNSET;
     long max_g = 0, test_every = 8, eval_every = 0, ck_every = 1000, seed = 42;
-    long refine_start = -1, refine_stop = -1, refine_every = -1, reset_every = -1;
-    double grow = -1;
+    long refine_start = UNSET, refine_stop = UNSET, refine_every = UNSET, reset_every = UNSET;
+    double grow = NAN;
     int quiet = 0, verbose = 0, bad = 0, no_densify = 0, random_bg = 0, want_resume = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
@@ -96,7 +101,7 @@ int cmd_train(int argc, char **argv)
     if (steps < 1) return cli_usage_error("train", "--steps must be >= 1 (got %ld)", steps);
     if (downscale < 1) return cli_usage_error("train", "--downscale must be >= 1 (got %ld)", downscale);
     if (sh_degree < 0 || sh_degree > 3) return cli_usage_error("train", "--sh-degree must be 0..3");
-    if (sh_interval < 0) return cli_usage_error("train", "--sh-interval must be positive");
+    if (sh_interval != UNSET && sh_interval < 1) return cli_usage_error("train", "--sh-interval must be positive");
     if (max_g < 0) return cli_usage_error("train", "--max-gaussians must be >= 0");
     if (strcmp(init, "points") && strcmp(init, "random"))
         return cli_usage_error("train", "--init: '%s' is not points or random", init);
@@ -144,7 +149,7 @@ int cmd_train(int argc, char **argv)
     }
     sp_train_options o = sp_train_options_default((int)steps);
     o.sh_degree = (int)sh_degree;
-    if (sh_interval > 0) o.sh_degree_interval = (int)sh_interval;
+    if (sh_interval != UNSET) o.sh_degree_interval = (int)sh_interval;
     o.max_gaussians = (size_t)max_g;
     o.densify = !no_densify;
     o.random_background = random_bg;
@@ -153,11 +158,11 @@ int cmd_train(int argc, char **argv)
     o.checkpoint_every = (int)ck_every;
     o.checkpoint_dir = ckdir;
     o.resume = resume;
-    if (refine_start >= 0) o.refine_start = (int)refine_start;
-    if (refine_stop >= 0) o.refine_stop = (int)refine_stop;
-    if (refine_every > 0) o.refine_every = (int)refine_every;
-    if (reset_every > 0) o.reset_every = (int)reset_every;
-    if (grow > 0) o.grow_grad2d = (float)grow;
+    if (refine_start != UNSET) o.refine_start = (int)refine_start;
+    if (refine_stop != UNSET) o.refine_stop = (int)refine_stop;
+    if (refine_every != UNSET) o.refine_every = (int)refine_every;
+    if (reset_every != UNSET) o.reset_every = (int)reset_every;
+    if (!isnan(grow)) o.grow_grad2d = (float)grow;
     sp_train_result res;
     memset(&res, 0, sizeof res);
     if (!rc) rc = sp_train_run(dev, &d, &o, &s, &res, &log, &err);

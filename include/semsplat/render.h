@@ -37,7 +37,7 @@ typedef enum {
 
 typedef struct sp_device sp_device;
 
-/* n_threads: CPU worker threads (<= 0: all cores). CUDA: fails with SP_E_NODEVICE when the
+/* n_threads: CPU worker threads (0: all cores; see sp_pool_create for the limits). CUDA: fails with SP_E_NODEVICE when the
  * backend is not built or no GPU is present. */
 int sp_device_create(sp_device **out, sp_device_kind kind, int n_threads, sp_error *err);
 void sp_device_free(sp_device *dev);

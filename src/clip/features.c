@@ -284,6 +284,11 @@ static int write_json(extract_ctx *x, const int *mw, const int *mh, const char *
 int sp_features_extract(const sp_features_opts *opts, sp_error *err)
 {
     sp_features_opts o = *opts;
+    /* 0 picks the default; negative or absurd values are errors, not defaults */
+    if (o.map_factor < 0 || o.map_factor > 64)
+        return sp_error_set(err, SP_E_ARG, "features: map factor %d outside 1..64 (0: 4)", o.map_factor);
+    if (o.pca_samples < 0 || o.pca_samples > 100000000)
+        return sp_error_set(err, SP_E_ARG, "features: PCA samples %ld outside 1..100000000 (0: 50000)", o.pca_samples);
     if (o.dim == 0) o.dim = 32;
     if (o.map_factor <= 0) o.map_factor = 4;
     if (o.pca_samples <= 0) o.pca_samples = 50000;

@@ -17,11 +17,14 @@ FILE *io_tmp_open(const char *path, char *tmp, size_t cap, sp_error *err)
 
 int io_tmp_commit(FILE *f, const char *tmp, const char *path, int ok, sp_error *err)
 {
-    /* A full disk shows at a write (the stream's error flag), the flush or the close; the flush
-     * retries what is buffered, so its errno names the cause; an earlier failure's errno is gone. */
-    int bad = ferror(f), e = 0;
+    /* A full disk shows at a write (the stream's error flag, errno still set by the failed write:
+     * writers stop or only write more after it), at the flush, or at the close. */
+    int bad = ferror(f), e = bad ? errno : 0;
     errno = 0;
-    if (fflush(f) != 0) e = errno, bad = 1;
+    if (fflush(f) != 0) {
+        if (!e) e = errno;
+        bad = 1;
+    }
     if (fclose(f) != 0) {
         if (!e) e = errno;
         bad = 1;

@@ -320,7 +320,8 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
     res->position[0] = res->position[1] = res->position[2] = NAN;
     snprintf(res->text, sizeof res->text, "%s", label ? label : "");
     res->method = e->opts.method;
-    int rc = ensure_negatives(e, err);
+    int rc = sem_check_opts(&e->opts, err);
+    if (!rc) rc = ensure_negatives(e, err);
     if (rc) return rc;
     sp_sem_scorer sc;
     if ((rc = sp_sem_scorer_init(&sc, &e->pca, embedding, e->neg_emb, e->n_neg,

@@ -33,6 +33,9 @@ struct sp_query_engine {
     float occ_lo[3], occ_voxel;
 };
 
+/* Every numeric query option in its range (opts.c); SP_E_ARG naming the option otherwise. */
+int sem_check_opts(const sp_query_opts *o, sp_error *err);
+
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
  * heaviest first, lighter than min_fraction of the heaviest dropped; voxels whose points weigh
  * less than min_voxel_weight in total are ignored. conf [m] may be NULL. */
