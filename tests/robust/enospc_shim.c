@@ -3,7 +3,9 @@
  * $SP_ENOSPC_DIR returns a stream whose writes succeed until $SP_ENOSPC_BYTES bytes have been
  * written by the whole process, then write what still fits and fail with ENOSPC, as a full
  * disk does (including at a later fflush/fclose of buffered data). With $SP_ENOSPC_REPORT set,
- * the number of bytes asked for is written there at exit (the budget a run needs). Every writer
+ * the number of bytes asked for is written there at exit (the budget a run needs). With
+ * $SP_SLOW_WRITE_US, such streams are unbuffered and each write first sleeps that long, so that writing takes
+ * most of a run and a kill (tests/robust/test_kill.c) lands inside a write. Every writer
  * of the library opens its temporary file with fopen (io_tmp_open, sp_write_file_atomic), so this
  * reaches them all; libpng and libjpeg write through those streams. */
 #define _GNU_SOURCE
@@ -16,12 +18,14 @@
 #include <unistd.h>
 
 static long long budget = -1, asked, written;
+static long slow_us = -1;
 
 typedef struct { int fd; } cookie;
 
 static ssize_t c_write(void *p, const char *buf, size_t n)
 {
     cookie *c = p;
+    if (slow_us > 0) usleep((useconds_t)slow_us);
     __atomic_add_fetch(&asked, (long long)n, __ATOMIC_RELAXED);
     long long before = __atomic_fetch_add(&written, (long long)n, __ATOMIC_RELAXED);
     size_t fits = n;
@@ -58,6 +62,7 @@ static int targeted(const char *path, const char *mode)
     const char *dir = getenv("SP_ENOSPC_DIR");
     if (!dir || !*dir || !(strchr(mode, 'w') || strchr(mode, 'a'))) return 0;
     if (budget < 0 && getenv("SP_ENOSPC_BYTES")) budget = atoll(getenv("SP_ENOSPC_BYTES"));
+    if (slow_us < 0) slow_us = getenv("SP_SLOW_WRITE_US") ? atol(getenv("SP_SLOW_WRITE_US")) : 0;
     return !strncmp(path, dir, strlen(dir));
 }
 
@@ -77,6 +82,7 @@ static FILE *shim_open(const char *path, const char *mode, const char *real_name
     cookie_io_functions_t io = {.read = NULL, .write = c_write, .seek = c_seek, .close = c_close};
     FILE *f = fopencookie(c, mode, io);
     if (!f) c_close(c);
+    else if (slow_us > 0) setvbuf(f, NULL, _IONBF, 0); /* every fwrite is a (slow) write */
     return f;
 }
 

@@ -163,20 +163,21 @@ typedef struct rb_stage {
     const char *resume; /* appended for the second run after a kill ("--resume", "--reuse"), or NULL */
     const char *resume_if; /* ... only when OUT/<this> exists (NULL: always) */
     int kills;          /* kill points tried (they cost a run and a rerun each) */
+    int slow_write_us;  /* killed runs: each write sleeps this long, unbuffered (0: as is) */
 } rb_stage;
 
 /* Small enough to run many times, big enough to be killed in the middle of writing. */
 static const rb_stage rb_stages[] = {
     {"synth", "synth --world {FIX}/tiny.world --model-path {FIX}/models --out {OUT} --views 8 --size 48x36 --points 200 --threads 2 --quiet",
-     RB_FRESH, NULL, NULL, 5},
+     RB_FRESH, NULL, NULL, 5, 300},
     {"train", "train --colmap {CAP} --out {OUT} --steps 400 --sh-degree 1 --checkpoint-every 50 --device cpu --threads 2 --quiet",
-     RB_FRESH, "--resume", "checkpoints/checkpoint.bin", 5},
-    {"features", "features --colmap {CAP} --out {OUT} --source labels --dim 4 --quiet", RB_FRESH, NULL, NULL, 5},
-    {"lift", "lift --model {OUT} --features {FEAT} --device cpu --quiet", RB_MODEL_COPY, NULL, NULL, 4},
+     RB_FRESH, "--resume", "checkpoints/checkpoint.bin", 5, 300},
+    {"features", "features --colmap {CAP} --out {OUT} --source labels --dim 4 --quiet", RB_FRESH, NULL, NULL, 5, 3000},
+    {"lift", "lift --model {OUT} --features {FEAT} --device cpu --quiet", RB_MODEL_COPY, NULL, NULL, 4, 3000},
     {"distill", "distill --model {OUT} --features {FEAT} --colmap {CAP} --steps 60 --device cpu --threads 2 --quiet",
-     RB_MODEL_COPY, NULL, NULL, 4},
+     RB_MODEL_COPY, NULL, NULL, 4, 3000},
     {"demo", "demo --out {OUT} --world {FIX}/tiny.world --model-path {FIX}/models --views 6 --size 32x24 --steps 40 --dim 4 --device cpu --quiet",
-     RB_FRESH, "--reuse", NULL, 3},
+     RB_FRESH, "--reuse", NULL, 3, 0},
 };
 #define RB_N_STAGES (sizeof rb_stages / sizeof rb_stages[0])
 
