@@ -173,7 +173,10 @@ def main():
         run("train", "--colmap", "cap", "--out", "model", "--steps", "20", "--sh-degree", "1", "--device", "cpu")
         run("features", "--colmap", "cap", "--out", "feat", "--source", "labels", "--dim", "4")
         run("lift", "--model", "model", "--features", "feat")
+        run("train", "--colmap", "cap", "--out", "ck", "--steps", "2", "--init", "random", "--init-points", "3",
+            "--sh-degree", "1", "--checkpoint-every", "1", "--no-densify", "--device", "cpu")
         real = lambda p: read(os.path.join(tmp, p))
+        put("checkpoint", "real_3_gaussians", real("ck/checkpoints/checkpoint.bin"))
         # COLMAP (binary: the real capture and hand-made models; text: the same as text)
         for i, f in enumerate(["cameras", "images", "points3D"]):
             put("colmap_bin", "real_" + f, bytes([i]) + real("cap/sparse/0/%s.bin" % f))
