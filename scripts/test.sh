@@ -1,7 +1,21 @@
 #!/bin/sh
-# Installs dependencies, builds, and runs the whole test suite (what CI runs).
+# Installs dependencies, builds, and runs the whole test suite (what CI runs):
+#   1. build/ (Release) and its suite;
+#   2. build-asan/: the same suite under AddressSanitizer + UBSan (SP_SANITIZE=ON; no CUDA: CI has
+#      no GPU, and the GPU tests skip either way);
+#   3. build-fuzz/: every libFuzzer harness (tests/fuzz/) for SP_FUZZ_SECONDS (default 10) on its
+#      corpus, two at a time (scripts/fuzz.sh; a crash, hang or leak fails CI).
+# Extra arguments go to both ctest runs. SP_SKIP_SANITIZE=1 / SP_SKIP_FUZZ=1 leave out 2 / 3.
 set -e
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh
 ./scripts/build.sh
-cd build && ctest --output-on-failure -j"$(nproc)" "$@"
+(cd build && ctest --output-on-failure -j"$(nproc)" "$@")
+if [ "${SP_SKIP_SANITIZE:-0}" != 1 ]; then
+    SP_BUILD_DIR=build-asan ./scripts/build.sh -DSP_SANITIZE=ON -DSP_CUDA=OFF
+    (cd build-asan && ctest --output-on-failure -j"$(nproc)" "$@")
+fi
+if [ "${SP_FUZZ_SECONDS:-10}" -gt 0 ] && [ "${SP_SKIP_FUZZ:-0}" != 1 ]; then
+    rm -rf build-fuzz/ci
+    ./scripts/fuzz.sh -t "${SP_FUZZ_SECONDS:-10}" -j 2 -o build-fuzz/ci
+fi

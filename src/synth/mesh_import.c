@@ -108,6 +108,10 @@ static void write_scene(out_pipe *o, const struct aiScene *sc)
 
 static void child(const char *path, int fd)
 {
+    /* A crash must end this process by its signal, for the parent to report; sanitizer and
+     * libFuzzer handlers would turn it into an exit status (and a report of assimp's fault). */
+    static const int fatal[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+    for (size_t i = 0; i < sizeof fatal / sizeof fatal[0]; i++) signal(fatal[i], SIG_DFL);
     out_pipe o = {fd, 0};
     struct aiPropertyStore *props = aiCreatePropertyStore();
     aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, 1);
@@ -257,8 +261,8 @@ int mesh_import(const char *path, mesh_data *m, sp_error *err)
         in_buf b = {data, size};
         rc = parse(&b, path, m, err);
         if (rc == 1)
-            rc = sp_error_set(err, SP_E_FORMAT, "mesh %s: the importer's output is incomplete (exit status %d)", path,
-                              WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+            rc = sp_error_set(err, SP_E_FORMAT, "mesh %s: assimp failed reading it (importer exit status %d, output cut short)",
+                              path, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
     }
     free(data);
     if (rc) mesh_data_free(m);
