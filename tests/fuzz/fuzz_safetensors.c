@@ -71,7 +71,7 @@ static char *retile(const char *json, size_t len, size_t *total)
         double count = 1;
         cJSON *d;
         cJSON_ArrayForEach(d, sh) count *= cJSON_IsNumber(d) && d->valuedouble >= 0 ? d->valuedouble : 1;
-        if (count > 4096) count = 4096; /* keep files small: the shape check then fails, as it must */
+        if (!(count <= 4096)) count = 4096; /* small files (and NaN from inf * 0): the shape check then fails */
         size_t nb = (size_t)count * dtype_bytes(dt->valuestring);
         cJSON *offs = cJSON_CreateArray();
         cJSON_AddItemToArray(offs, cJSON_CreateNumber((double)off));
