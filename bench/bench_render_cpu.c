@@ -129,7 +129,7 @@ int main(int argc, char **argv)
         if (only_d && D != only_d) continue;
         sp_raster_cfg cfg = sp_raster_cfg_default();
         sp_raster_in in = {n, d_means, d_quats, d_ls, d_op, d_col, D, NULL};
-        sp_raster_out out = {d_img, NULL, NULL};
+        sp_raster_out out = {d_img, NULL, NULL, NULL};
         sp_raster_grad_in gin = {d_vimg, NULL, NULL};
         sp_raster_grads g = {d_grads, d_grads + 3 * n, d_grads + 7 * n, d_grads + 10 * n,
                              d_grads + 13 * n, d_grads + 11 * n};

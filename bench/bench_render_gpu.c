@@ -12,13 +12,17 @@
  *                   [feature columns packed beside RGB], forward, L1+SSIM loss and gradient,
  *                   [feature MSE], backward, SH backward, densification statistics, Adam on
  *                   every parameter group (the loop src/train runs, minus host bookkeeping)
+ *   views           inference renders of an uploaded scene (sp_scene, SH degree 1 + 16 features):
+ *                   V views (RGB, features, expected depth, downloaded to the host) as one
+ *                   sp_render_views batch and one view per call, in ms per view
  * Median of 20 runs after 5 warm-ups, synchronised. Peak memory is what semsplat allocated on
- * the GPU (sp_cuda_peak_bytes), measured per case in a child process so cases do not mix;
+ * the GPU (sp_device_peak_bytes of the CUDA device), measured per case in a child process so cases do not mix;
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
  *        bench_render_gpu raster N W H D  one rasterizer case
- *        bench_render_gpu step F          one training step case with F feature channels */
+ *        bench_render_gpu step F          one training step case with F feature channels
+ *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,14 +30,15 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "render/cuda_api.h"
 #include "semsplat/render.h"
-#include "train/train_cuda_api.h"
+#include "train/train_kernels.h"
 
 #define WARM 5
 #define REPS 20
 
 static sp_error g_err;
+static sp_device *g_dev;     /* the CUDA device */
+static const tr_kernels *K; /* its training kernels */
 #define OK(call)                                                                            \
     do {                                                                                    \
         if ((call) != 0) {                                                                  \
@@ -58,7 +63,7 @@ static float nrand(void)
 
 static void *dalloc(size_t bytes)
 {
-    void *p = sp_cuda_malloc(bytes, &g_err);
+    void *p = sp_device_alloc(g_dev, bytes, &g_err);
     if (!p) {
         fprintf(stderr, "bench_render_gpu: %s\n", g_err.msg);
         exit(1);
@@ -68,7 +73,7 @@ static void *dalloc(size_t bytes)
 static void *dup_host(const void *h, size_t bytes)
 {
     void *d = dalloc(bytes);
-    OK(sp_cuda_memcpy_h2d(d, h, bytes, &g_err));
+    OK(sp_device_upload(g_dev, d, h, bytes, &g_err));
     return d;
 }
 
@@ -123,11 +128,11 @@ static double time_ms(bench_fn fn, void *ctx)
 {
     double t[REPS];
     for (int i = 0; i < WARM; i++) fn(ctx);
-    OK(sp_cuda_sync(&g_err));
+    OK(sp_device_sync(g_dev, &g_err));
     for (int i = 0; i < REPS; i++) {
         double t0 = sp_time_now();
         fn(ctx);
-        OK(sp_cuda_sync(&g_err));
+        OK(sp_device_sync(g_dev, &g_err));
         t[i] = (sp_time_now() - t0) * 1e3;
     }
     qsort(t, REPS, sizeof(double), cmp_d);
@@ -138,7 +143,7 @@ static double time_ms(bench_fn fn, void *ctx)
 
 typedef struct {
     bscene *s;
-    sp_cuda_raster *r;
+    sp_raster *r;
     sp_raster_cfg cfg;
     sp_raster_in in;
     sp_raster_out out;
@@ -151,24 +156,24 @@ typedef struct {
 static void run_fwd(void *p)
 {
     rctx *c = p;
-    OK(sp_cuda_raster_forward(c->r, &c->s->cam, &c->cfg, &c->in, &c->out, &g_err));
+    OK(sp_raster_forward(c->r, &c->s->cam, &c->cfg, &c->in, &c->out, &g_err));
 }
 static void run_fwd_bwd(void *p)
 {
     rctx *c = p;
     run_fwd(p);
-    OK(sp_cuda_memset0(c->gbuf, c->gbytes, &g_err));
-    OK(sp_cuda_raster_backward(c->r, &c->gin, &c->g, &g_err));
+    OK(sp_device_zero(g_dev, c->gbuf, c->gbytes, &g_err));
+    OK(sp_raster_backward(c->r, &c->gin, &c->g, &g_err));
 }
 
 static void case_raster(size_t n, int W, int H, int D, const char *gpu)
 {
     bscene s = make_scene(n, W, H, D);
-    size_t params = sp_cuda_peak_bytes();
+    size_t params = sp_device_peak_bytes(g_dev);
     rctx c;
     memset(&c, 0, sizeof c);
     c.s = &s;
-    OK(sp_cuda_raster_create(&c.r, &g_err));
+    OK(sp_raster_create(&c.r, g_dev, &g_err));
     c.cfg = sp_raster_cfg_default();
     c.in = (sp_raster_in){n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, NULL};
     size_t npix = (size_t)W * H;
@@ -182,10 +187,10 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     c.g = (sp_raster_grads){c.gbuf, c.gbuf + 3 * n, c.gbuf + 7 * n, c.gbuf + 10 * n,
                             c.gbuf + 11 * n, c.gbuf + (11 + D) * n};
     double f = time_ms(run_fwd, &c);
-    size_t pairs = sp_cuda_raster_last_pairs(c.r);
+    size_t pairs = sp_raster_last_pairs(c.r);
     double fb = time_ms(run_fwd_bwd, &c);
-    double peak = sp_cuda_peak_bytes() / 1073741824.0;
-    double extra = (sp_cuda_peak_bytes() - params) / 1073741824.0;
+    double peak = sp_device_peak_bytes(g_dev) / 1073741824.0;
+    double extra = (sp_device_peak_bytes(g_dev) - params) / 1073741824.0;
     char set[160];
     snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu, %s)", n, W, H, D, pairs, gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
@@ -200,7 +205,7 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
 
 typedef struct {
     bscene *s;
-    sp_cuda_raster *r;
+    sp_raster *r;
     sp_raster_cfg cfg;
     int F, Dt, deg;
     float *sh, *feat;           /* params beside s's */
@@ -219,39 +224,39 @@ static void run_step(void *p)
     int W = c->s->W, H = c->s->H;
     sp_vec3 cc = {0, 0, 0};
     float *g = c->grad;
-    OK(sp_cuda_memset0(g, c->total * 4, &g_err));
-    OK(sp_cuda_sh_to_rgb(n, 3, c->deg, c->sh, c->s->means, cc, c->colors, c->Dt, &g_err));
-    if (c->F) OK(sp_cuda_copy_columns(c->colors, c->Dt, 3, c->feat, c->F, 0, n, c->F, &g_err));
+    OK(sp_device_zero(g_dev, g, c->total * 4, &g_err));
+    OK(sp_sh_to_rgb(g_dev, n, 3, c->deg, c->sh, c->s->means, cc, c->colors, c->Dt, &g_err));
+    if (c->F) OK(K->copy_columns(g_dev, c->colors, c->Dt, 3, c->feat, c->F, 0, n, c->F, &g_err));
     sp_raster_in in = {n, c->s->means, c->s->quats, c->s->log_scales, c->s->opac, c->colors,
                        c->Dt, NULL};
-    sp_raster_out out = {c->image, NULL, NULL};
-    OK(sp_cuda_raster_forward(c->r, &c->s->cam, &c->cfg, &in, &out, &g_err));
+    sp_raster_out out = {c->image, NULL, NULL, NULL};
+    OK(sp_raster_forward(c->r, &c->s->cam, &c->cfg, &in, &out, &g_err));
     double st[4], mse;
-    OK(sp_cuda_rgb_loss(c->image, c->Dt, c->target, H, W, 3, 0.2f, c->scratch, c->v_image, st,
+    OK(K->rgb_loss(g_dev, c->image, c->Dt, c->target, H, W, 3, 0.2f, c->scratch, c->v_image, st,
                         &g_err));
     if (c->F)
-        OK(sp_cuda_feature_mse(c->image, c->Dt, 3, c->ftarget, H, W, c->F, 1.f, c->v_image, &mse,
+        OK(K->feature_mse(g_dev, c->image, c->Dt, 3, c->ftarget, H, W, c->F, 1.f, c->v_image, &mse,
                                &g_err));
     /* v_colors lands in the scratch-free tail of the gradient block (see case_step) */
     float *v_colors = g + c->total;
     float *v_means2d = v_colors + n * (size_t)c->Dt;
-    OK(sp_cuda_memset0(v_colors, n * ((size_t)c->Dt + 2) * 4, &g_err));
+    OK(sp_device_zero(g_dev, v_colors, n * ((size_t)c->Dt + 2) * 4, &g_err));
     sp_raster_grads gr = {g + c->group_off[0], g + c->group_off[1], g + c->group_off[2],
                           g + c->group_off[3], v_colors, v_means2d};
     sp_raster_grad_in gin = {c->v_image, NULL, NULL};
-    OK(sp_cuda_raster_backward(c->r, &gin, &gr, &g_err));
-    OK(sp_cuda_sh_to_rgb_backward(n, 3, c->deg, c->sh, c->s->means, cc, c->colors, v_colors, c->Dt,
+    OK(sp_raster_backward(c->r, &gin, &gr, &g_err));
+    OK(sp_sh_to_rgb_backward(g_dev, n, 3, c->deg, c->sh, c->s->means, cc, c->colors, v_colors, c->Dt,
                                   g + c->group_off[4], g + c->group_off[0], &g_err));
     if (c->F)
-        OK(sp_cuda_copy_columns(g + c->group_off[5], c->F, 0, v_colors, c->Dt, 3, n, c->F, &g_err));
-    OK(sp_cuda_densify_accumulate(v_means2d, sp_cuda_raster_radii(c->r), n, W / 2.f, H / 2.f,
+        OK(K->copy_columns(g_dev, g + c->group_off[5], c->F, 0, v_colors, c->Dt, 3, n, c->F, &g_err));
+    OK(K->densify_accumulate(g_dev, v_means2d, sp_raster_radii(c->r), n, W / 2.f, H / 2.f,
                                   c->grad2d, c->count, &g_err));
     c->step++;
     static const float lr[6] = {1.6e-4f, 1e-3f, 5e-3f, 5e-2f, 2.5e-3f, 2.5e-3f};
     for (int k = 0; k < 6; k++) {
         size_t a = c->group_off[k], b = c->group_off[k + 1];
         if (b > a)
-            OK(sp_cuda_adam_step(c->params + a, g + a, c->m + a, c->v + a, b - a, lr[k], 0.9f,
+            OK(K->adam_step(g_dev, c->params + a, g + a, c->m + a, c->v + a, b - a, lr[k], 0.9f,
                                  0.999f, 1e-15f, c->step, &g_err));
     }
 }
@@ -271,23 +276,23 @@ static void case_step(int F, const char *gpu)
     for (int k = 0; k < 6; k++) c.group_off[k + 1] = c.group_off[k] + sz[k];
     c.total = c.group_off[6];
     c.params = dalloc(c.total * 4);
-    OK(sp_cuda_memcpy_d2d(c.params, s.means, sz[0] * 4, &g_err));
-    OK(sp_cuda_memcpy_d2d(c.params + c.group_off[1], s.quats, sz[1] * 4, &g_err));
-    OK(sp_cuda_memcpy_d2d(c.params + c.group_off[2], s.log_scales, sz[2] * 4, &g_err));
-    OK(sp_cuda_memcpy_d2d(c.params + c.group_off[3], s.opac, sz[3] * 4, &g_err));
+    OK(sp_device_copy(g_dev, c.params, s.means, sz[0] * 4, &g_err));
+    OK(sp_device_copy(g_dev, c.params + c.group_off[1], s.quats, sz[1] * 4, &g_err));
+    OK(sp_device_copy(g_dev, c.params + c.group_off[2], s.log_scales, sz[2] * 4, &g_err));
+    OK(sp_device_copy(g_dev, c.params + c.group_off[3], s.opac, sz[3] * 4, &g_err));
     float *h = malloc(((size_t)K * 3 + F) * n * 4);
     for (size_t i = 0; i < (size_t)K * 3 * n; i++) h[i] = (i % (K * 3) < 3) ? nrand() : 0.05f * nrand();
-    OK(sp_cuda_memcpy_h2d(c.params + c.group_off[4], h, sz[4] * 4, &g_err));
+    OK(sp_device_upload(g_dev, c.params + c.group_off[4], h, sz[4] * 4, &g_err));
     for (size_t i = 0; i < (size_t)F * n; i++) h[i] = frand();
-    if (F) OK(sp_cuda_memcpy_h2d(c.params + c.group_off[5], h, sz[5] * 4, &g_err));
+    if (F) OK(sp_device_upload(g_dev, c.params + c.group_off[5], h, sz[5] * 4, &g_err));
     free(h);
-    sp_cuda_free(s.means), sp_cuda_free(s.quats), sp_cuda_free(s.log_scales);
-    sp_cuda_free(s.opac), sp_cuda_free(s.colors);
+    sp_device_release(g_dev, s.means), sp_device_release(g_dev, s.quats), sp_device_release(g_dev, s.log_scales);
+    sp_device_release(g_dev, s.opac), sp_device_release(g_dev, s.colors);
     s.means = c.params, s.quats = c.params + c.group_off[1];
     s.log_scales = c.params + c.group_off[2], s.opac = c.params + c.group_off[3];
     c.sh = c.params + c.group_off[4], c.feat = c.params + c.group_off[5];
     size_t params = c.total * 4;
-    size_t base = sp_cuda_peak_bytes();
+    size_t base = sp_device_peak_bytes(g_dev);
 
     c.grad = dalloc((c.total + n * ((size_t)c.Dt + 2)) * 4);
     c.m = dalloc(c.total * 4), c.v = dalloc(c.total * 4);
@@ -301,19 +306,92 @@ static void case_step(int F, const char *gpu)
     free(t);
     c.scratch = dalloc(SP_LOSS_SCRATCH_FLOATS(H, W, 3) * 4);
     c.grad2d = dalloc(n * 4), c.count = dalloc(n * 4);
-    OK(sp_cuda_raster_create(&c.r, &g_err));
+    OK(sp_raster_create(&c.r, g_dev, &g_err));
     c.cfg = sp_raster_cfg_default();
     double ms = time_ms(run_step, &c);
-    double peak = sp_cuda_peak_bytes() / 1073741824.0;
+    double peak = sp_device_peak_bytes(g_dev) / 1073741824.0;
     char set[200];
     snprintf(set, sizeof set,
              "(n=1M 1920x1080 RGB from SH deg 3%s%s, L1+SSIM, Adam on all groups, pairs=%zu, %s)",
              F ? " + features packed, D=" : "", F ? (F == 32 ? "35" : "67") : "",
-             sp_cuda_raster_last_pairs(c.r), gpu);
+             sp_raster_last_pairs(c.r), gpu);
     printf("train_step_ms_F%-3d  %8.3f  ms   %s\n", F, ms, set);
     printf("train_step_peak_gib %8.3f  GiB  (F=%d; params %.3f GiB, everything else %.3f GiB)\n",
-           peak, F, params / 1073741824.0, (sp_cuda_peak_bytes() - base) / 1073741824.0);
+           peak, F, params / 1073741824.0, (sp_device_peak_bytes(g_dev) - base) / 1073741824.0);
     fflush(stdout);
+}
+
+/* ---- inference batches --------------------------------------------------------------------- */
+
+typedef struct {
+    sp_raster *r;
+    sp_scene *sc;
+    const sp_camera *cams;
+    const sp_render_request *reqs;
+    int nv, batch;
+} vctx;
+
+static void run_views(void *p)
+{
+    vctx *c = p;
+    if (c->batch) {
+        OK(sp_render_views(c->r, c->sc, c->cams, (size_t)c->nv, c->reqs, &g_err));
+        return;
+    }
+    for (int v = 0; v < c->nv; v++) OK(sp_render_views(c->r, c->sc, &c->cams[v], 1, &c->reqs[v], &g_err));
+}
+
+static void case_views(size_t n, int W, int H, int nv, const char *gpu)
+{
+    enum { F = 16 };
+    sp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    sp_camera_intrinsics_fov(&cam, W, H, 1.0f);
+    sp_splat s;
+    OK(sp_splat_alloc(&s, n, 1, F, &g_err));
+    for (size_t i = 0; i < n; i++) { /* the raster cases' distribution, before the camera */
+        float z = 2.f + 8.f * frand();
+        s.means[i * 3] = (frand() * 2 - 1) * z * (W / 2.f) / cam.fx;
+        s.means[i * 3 + 1] = (frand() * 2 - 1) * z * (H / 2.f) / cam.fy;
+        s.means[i * 3 + 2] = z;
+        for (int k = 0; k < 3; k++)
+            s.log_scales[i * 3 + k] = logf(expf(logf(0.5f) + frand() * (logf(8.f) - logf(0.5f))) * z / cam.fx);
+        for (int k = 0; k < 4; k++) s.quats[i * 4 + k] = nrand();
+    }
+    for (size_t i = 0; i < n * 12; i++) s.sh[i] = 0.3f * nrand();
+    for (size_t i = 0; i < n * F; i++) s.features[i] = frand();
+    sp_raster *r = NULL;
+    sp_scene *sc = NULL;
+    OK(sp_raster_create(&r, g_dev, &g_err));
+    OK(sp_scene_create(&sc, g_dev, &s, SP_SCENE_RGB | SP_SCENE_FEATURES, &g_err));
+    sp_camera *cams = malloc(sizeof *cams * nv);
+    sp_render_request *reqs = calloc(nv, sizeof *reqs);
+    size_t npix = (size_t)W * H;
+    for (int v = 0; v < nv; v++) { /* small turns about the image's y axis */
+        cams[v] = cam;
+        float a = 0.2f * (v - nv / 2) / (float)nv, ca = cosf(a), sa = sinf(a);
+        float R[9] = {ca, 0, -sa, 0, 1, 0, sa, 0, ca};
+        memcpy(cams[v].R, R, sizeof R);
+        reqs[v].rgb = malloc(npix * 3 * 4);
+        reqs[v].features = malloc(npix * F * 4);
+        reqs[v].depth = malloc(npix * 4);
+    }
+    vctx c = {r, sc, cams, reqs, nv, 1};
+    double batch = time_ms(run_views, &c);
+    c.batch = 0;
+    double single = time_ms(run_views, &c);
+    char set[200];
+    snprintf(set, sizeof set, "(n=%zu %dx%d, %d views, RGB + %d features + depth to the host, %s)", n,
+             W, H, nv, F, gpu);
+    printf("views_batch_ms      %8.3f  ms/view %s\n", batch / nv, set);
+    printf("views_single_ms     %8.3f  ms/view %s\n", single / nv, set);
+    fflush(stdout);
+    for (int v = 0; v < nv; v++)
+        free(reqs[v].rgb), free(reqs[v].features), free(reqs[v].depth);
+    free(reqs), free(cams);
+    sp_scene_free(sc);
+    sp_raster_free(r);
+    sp_splat_free(&s);
 }
 
 static int run_child(char *const argv[])
@@ -331,17 +409,22 @@ static int run_child(char *const argv[])
 
 int main(int argc, char **argv)
 {
-    char gpu[256] = "no GPU";
-    if (!sp_cuda_probe(gpu, sizeof gpu)) {
+    K = tr_cuda_kernels();
+    if (!K || !sp_cuda_available()) {
         printf("bench_render_gpu  skipped  (no CUDA GPU)\n");
         return 0;
     }
-    if (argc == 6 && !strcmp(argv[1], "raster")) {
-        case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
-        return 0;
-    }
-    if (argc == 3 && !strcmp(argv[1], "step")) {
-        case_step(atoi(argv[2]), gpu);
+    /* each case in its own process with its own device, so peak memory does not mix */
+    int is_raster = argc == 6 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
+    int is_views = argc == 6 && !strcmp(argv[1], "views");
+    if (is_raster || is_step || is_views) {
+        OK(sp_device_create(&g_dev, SP_DEVICE_CUDA, 0, &g_err));
+        char gpu[256];
+        snprintf(gpu, sizeof gpu, "%s", sp_device_name(g_dev));
+        if (is_raster) case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
+        else if (is_views) case_views((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
+        else case_step(atoi(argv[2]), gpu);
+        sp_device_free(g_dev);
         return 0;
     }
     static const char *cases[][4] = {{"100000", "640", "480", "3"},   {"100000", "1920", "1080", "3"},
@@ -352,6 +435,12 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char *a[] = {argv[0], "raster", (char *)cases[i][0], (char *)cases[i][1],
                      (char *)cases[i][2], (char *)cases[i][3], NULL};
+        fails += run_child(a) != 0;
+    }
+    static const char *views[][4] = {{"300000", "320", "240", "16"}, {"1000000", "640", "480", "8"}};
+    for (size_t i = 0; i < sizeof views / sizeof views[0]; i++) {
+        char *a[] = {argv[0], "views", (char *)views[i][0], (char *)views[i][1], (char *)views[i][2],
+                     (char *)views[i][3], NULL};
         fails += run_child(a) != 0;
     }
     static const char *feats[] = {"0", "32", "64"};

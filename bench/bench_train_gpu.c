@@ -93,7 +93,7 @@ int main(int argc, char **argv)
         sp_camera_look_at(&tv->cam, sp_v3(4.f * cosf(a), 4.f * sinf(a), h), sp_v3(0, 0, 0.3f),
                           sp_v3(0, 0, 1));
         tv->is_test = (v % 8) == 0;
-        sp_render_request req = {img, NULL, NULL, NULL, NULL};
+        sp_render_request req = {.rgb = img};
         if (sp_render_splat(r, &gt, &tv->cam, &req, &err)) DIE("%s", err.msg);
         tv->rgb = malloc((size_t)W * H * 3);
         for (size_t k = 0; k < (size_t)W * H * 3; k++) {

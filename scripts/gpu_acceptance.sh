@@ -29,7 +29,9 @@ rm -rf "$out/distilled"; cp -r "$out/demo/model" "$out/distilled"
 "$B/semsplat" distill --model "$out/distilled" --features "$out/demo/features" --colmap "$cap" \
   --steps 3000 --device cuda --quiet
 
-echo "== CPU vs CUDA on the trained splat"
+echo "== GPU tests (CPU vs CUDA on random scenes, a splat trained by the test, batches, depth modes)"
+(cd "$B" && ctest -R 'cuda|gpu' --output-on-failure 2>&1 | tail -40)
+echo "== CPU vs CUDA on the trained house"
 SP_TEST_SPLAT="$out/demo/model/splat.ply" SP_TEST_COLMAP="$cap" "$B/render_test_cuda_splat"
 
 echo "== query bench (300k Gaussians)"

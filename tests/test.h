@@ -1,6 +1,12 @@
 /* A minimal test harness: CHECK macros that count failures, SKIP for missing hardware.
  * Each test_*.c is one executable; main() calls RUN(test_fn) for each case and returns
- * TEST_EXIT(). Exit code 77 means skipped (CTest SKIP_RETURN_CODE). */
+ * TEST_EXIT(). Exit code 77 means skipped (CTest SKIP_RETURN_CODE).
+ *
+ * GPU cases inside a CPU test: main(argc, argv) calls TEST_ARGS(argc, argv) first and
+ * RUN_GPU(fn) for them. CMake registers such a file twice: as <mod>/<name> (plain run: the CPU
+ * cases; GPU cases are not run and not counted) and as <mod>/<name>:gpu (run with --gpu: only the
+ * GPU cases, exit 77 = skipped when no GPU answers), so a GPU case that did not run shows as
+ * skipped in CTest, never as passed. */
 #ifndef SEMSPLAT_TEST_H
 #define SEMSPLAT_TEST_H
 
@@ -8,8 +14,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
 
 __attribute__((unused)) static int t_failures = 0, t_checks = 0, t_cases = 0, t_case_failed = 0;
+__attribute__((unused)) static int t_gpu_mode = 0; /* --gpu: run only the RUN_GPU cases */
+
+int sp_cuda_available(void); /* semsplat/device.h: 1 when a GPU answers */
 
 #define CHECK(cond)                                                                    \
     do {                                                                               \
@@ -57,12 +67,34 @@ __attribute__((unused)) static int t_failures = 0, t_checks = 0, t_cases = 0, t_
                   "message '%s' does not mention '%s'", (errp)->msg, (needle));        \
     } while (0)
 
-#define RUN(fn)                                                                        \
+#define RUN_CASE(fn)                                                                   \
     do {                                                                               \
         t_case_failed = 0;                                                             \
         t_cases++;                                                                     \
         fn();                                                                          \
         fprintf(stderr, "%s %s\n", t_case_failed ? "FAIL" : "ok  ", #fn);              \
+    } while (0)
+
+#define RUN(fn)                                                                        \
+    do {                                                                               \
+        if (!t_gpu_mode) RUN_CASE(fn);                                                 \
+    } while (0)
+
+/* A case that needs the GPU: runs only under --gpu, where no GPU means the whole run is
+ * skipped (77). */
+#define RUN_GPU(fn)                                                                    \
+    do {                                                                               \
+        if (t_gpu_mode) {                                                              \
+            if (!sp_cuda_available()) TEST_SKIP("no GPU answers: GPU cases not run");  \
+            RUN_CASE(fn);                                                              \
+        }                                                                              \
+    } while (0)
+
+/* Reads --gpu; under it, no GPU skips at once (before any set-up). */
+#define TEST_ARGS(argc, argv)                                                          \
+    do {                                                                               \
+        t_gpu_mode = (argc) > 1 && strcmp((argv)[1], "--gpu") == 0;                    \
+        if (t_gpu_mode && !sp_cuda_available()) TEST_SKIP("no GPU answers: GPU cases not run"); \
     } while (0)
 
 #define TEST_EXIT()                                                                    \
@@ -85,6 +117,20 @@ static inline const char *test_tmpdir(const char *name)
     snprintf(cmd, sizeof cmd, "rm -rf '%s' && mkdir -p '%s'", buf, buf);
     if (system(cmd) != 0) fprintf(stderr, "cannot make %s\n", buf);
     return buf;
+}
+
+/* Runs `SP_BUILD_DIR/semsplat args` (stderr too) and returns its exit status (-1 when it did not
+ * exit), its output in out. */
+static inline int test_run_cli(const char *args, char *out, size_t cap)
+{
+    char cmd[8192];
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
+    FILE *p = popen(cmd, "r");
+    if (!p) return -1;
+    size_t n = fread(out, 1, cap - 1, p);
+    out[n] = 0;
+    int st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
 /* Deterministic random numbers (xorshift64*), independent of libc. */

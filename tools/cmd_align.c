@@ -1,6 +1,6 @@
 /* semsplat align: puts a COLMAP-frame splat into the world (odometry) frame, from known camera
- * positions (Umeyama similarity, >= 3 matches), a given 4x4 transform, or the detected floor
- * plane (z up, floor at z = 0), and writes the transformed splat. */
+ * positions (a robust similarity, >= 4 matches, the fit written as JSON), a given 4x4 transform,
+ * or the detected floor plane (z up, floor at z = 0), and writes the transformed splat. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,10 +14,15 @@ static void help(void)
 {
     printf("usage: semsplat align (--splat IN.ply | --model DIR) --out OUT.ply\n"
            "                      (--matches FILE --colmap DIR | --transform FILE | --floor [--colmap DIR])\n"
-           "                      [--no-scale]\n\n"
+           "                      [--no-scale] [--inlier-m D] [--report FILE]\n\n"
            "  --matches FILE   lines 'IMAGE_NAME x y z' (that camera's world position; needs\n"
            "                   --colmap) or 'x y z X Y Z' (a COLMAP-frame point and its world\n"
-           "                   position); at least 3. Fits a similarity (Umeyama).\n"
+           "                   position); at least 4. Fits a similarity robustly (least median\n"
+           "                   of squares over Umeyama fits of triples, refit on the inliers),\n"
+           "                   names the outlying images, and refuses when fewer than half agree.\n"
+           "  --inlier-m D     inlier bound in world units (default: 4.03 x the noise scale\n"
+           "                   estimated from the median residual)\n"
+           "  --report FILE    the fit as JSON (default: OUT with .ply replaced by .align.json)\n"
            "  --transform FILE 12 or 16 numbers: a row-major 3x4 / 4x4 similarity.\n"
            "  --floor          RANSAC floor plane on the lowest Gaussians: z up, floor at z=0\n"
            "                   (uses --colmap cameras for the rough up direction when given).\n");
@@ -36,65 +41,11 @@ static int read_transform(const char *path, double M[16], sp_error *err)
     return 0;
 }
 
-static int read_matches(const char *path, const sp_colmap_model *m, double **src, double **dst,
-                        size_t *n, sp_error *err)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open", path);
-    char line[1024];
-    size_t cap = 0, k = 0;
-    int lineno = 0, rc = 0;
-    *src = *dst = NULL;
-    while (fgets(line, sizeof line, f)) {
-        lineno++;
-        char *p = line;
-        while (*p == ' ' || *p == '\t') p++;
-        if (*p == '#' || *p == '\n' || !*p) continue;
-        double a[6];
-        char name[512];
-        int got = sscanf(p, "%lf %lf %lf %lf %lf %lf", &a[0], &a[1], &a[2], &a[3], &a[4], &a[5]);
-        if (got != 6) {
-            if (sscanf(p, "%511s %lf %lf %lf", name, &a[3], &a[4], &a[5]) != 4) {
-                rc = sp_error_set(err, SP_E_FORMAT, "%s:%d: expected 'IMAGE x y z' or 'x y z X Y Z'", path, lineno);
-                break;
-            }
-            size_t i;
-            for (i = 0; m && i < m->n_images; i++)
-                if (m->images[i].name && !strcmp(m->images[i].name, name)) break;
-            if (!m || i == m->n_images) {
-                rc = sp_error_set(err, SP_E_NOTFOUND, "%s:%d: image '%s' is not in the COLMAP model%s",
-                                  path, lineno, name, m ? "" : " (pass --colmap)");
-                break;
-            }
-            sp_camera cam;
-            if ((rc = sp_colmap_image_camera(m, i, &cam, err))) break;
-            sp_vec3 c = sp_camera_center(&cam);
-            a[0] = c.x, a[1] = c.y, a[2] = c.z;
-        }
-        if (k == cap) {
-            cap = cap ? cap * 2 : 16;
-            double *s2 = realloc(*src, sizeof(double) * 3 * cap);
-            if (s2) *src = s2;
-            double *d2 = s2 ? realloc(*dst, sizeof(double) * 3 * cap) : NULL;
-            if (d2) *dst = d2;
-            if (!s2 || !d2) {
-                rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
-                break;
-            }
-        }
-        memcpy(*src + 3 * k, a, sizeof(double) * 3);
-        memcpy(*dst + 3 * k, a + 3, sizeof(double) * 3);
-        k++;
-    }
-    fclose(f);
-    *n = k;
-    return rc;
-}
-
 int cmd_align(int argc, char **argv)
 {
     const char *splat = NULL, *model = NULL, *out = NULL, *matches = NULL, *tfile = NULL,
-               *colmap = NULL, *v;
+               *colmap = NULL, *report = NULL, *v;
+    double inlier_m = 0;
     int floor_ = 0, scale = 1, bad = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
@@ -104,6 +55,10 @@ int cmd_align(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--matches", &bad))) matches = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--transform", &bad))) tfile = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--report", &bad))) report = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--inlier-m", &bad))) {
+            if (cli_parse_float("align", "--inlier-m", v, &inlier_m)) return 2;
+        }
         else if (!strcmp(argv[i], "--floor")) floor_ = 1;
         else if (!strcmp(argv[i], "--no-scale")) scale = 0;
         else if (!bad) return cli_usage_error("align", "unknown argument '%s'", argv[i]);
@@ -120,18 +75,26 @@ int cmd_align(int argc, char **argv)
     sp_splat s = {0};
     sp_colmap_model m;
     memset(&m, 0, sizeof m);
-    double M[16], *src = NULL, *dst = NULL;
+    double M[16];
     sp_camera *cams = NULL;
     size_t nc = 0;
+    sp_align_matches mt = {0};
+    sp_align_fit fit = {0};
+    char *json = NULL, rpath[2100];
     int rc = sp_ply_read_splat(in, &s, &err);
     if (!rc && colmap) rc = sp_colmap_read(colmap, &m, &err);
     if (!rc && tfile) rc = read_transform(tfile, M, &err);
     if (!rc && matches) {
-        size_t n = 0;
-        double rms = 0;
-        rc = read_matches(matches, colmap ? &m : NULL, &src, &dst, &n, &err);
-        if (!rc) rc = sp_umeyama(src, dst, n, scale, M, &rms, &err);
-        if (!rc) printf("similarity from %zu matches: rms %.4f\n", n, rms);
+        rc = sp_align_read_matches(matches, colmap, &mt, &err);
+        if (!rc) rc = sp_align_fit_robust(mt.src, mt.dst, mt.n, scale, inlier_m, &fit, &err);
+        for (size_t i = 0; fit.inlier && i < fit.n; i++)
+            if (!fit.inlier[i])
+                printf("outlier  %s  residual %.4f\n", mt.name[i][0] ? mt.name[i] : "(point)", fit.residual[i]);
+        if (fit.inlier)
+            printf("similarity from %zu of %zu matches: rms %.4f on the inliers (bound %.4f; plain least squares "
+                   "over all: rms %.4f)\n", fit.n_inliers, fit.n, fit.rms_inliers, fit.threshold, fit.rms_all);
+        memcpy(M, fit.M, sizeof M);
+        if (!rc && !(json = sp_align_fit_json(&fit, &mt, scale))) rc = sp_error_set(&err, SP_E_NOMEM, "out of memory");
     }
     if (!rc && floor_) {
         cams = calloc(m.n_images ? m.n_images : 1, sizeof *cams);
@@ -142,13 +105,20 @@ int cmd_align(int argc, char **argv)
     }
     if (!rc) rc = sp_splat_transform(&s, M, &err);
     if (!rc) rc = sp_ply_write_splat(out, &s, &err);
+    size_t stem = strlen(out) > 4 && !strcmp(out + strlen(out) - 4, ".ply") ? strlen(out) - 4 : strlen(out);
+    snprintf(rpath, sizeof rpath, "%s", report ? report : "");
+    if (!report) snprintf(rpath, sizeof rpath, "%.*s.align.json", (int)stem, out);
+    if (!rc && json) rc = sp_write_file_atomic(rpath, json, strlen(json), &err);
     if (!rc) {
         printf("transform (row-major 4x4):\n");
         for (int r = 0; r < 4; r++)
             printf("  %12.6f %12.6f %12.6f %12.6f\n", M[r * 4], M[r * 4 + 1], M[r * 4 + 2], M[r * 4 + 3]);
         printf("wrote %s (%zu Gaussians)\n", out, s.n);
+        if (json) printf("wrote %s (the fit)\n", rpath);
     }
-    free(src), free(dst), free(cams);
+    free(cams), free(json);
+    sp_align_fit_free(&fit);
+    sp_align_matches_free(&mt);
     sp_colmap_free(&m);
     sp_splat_free(&s);
     return rc ? cli_fail("align", &err) : 0;

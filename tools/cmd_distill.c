@@ -101,6 +101,14 @@ int cmd_distill(int argc, char **argv)
     int rc = sp_device_create(&dev, kind, (int)threads, &err);
     if (!rc) rc = sp_features_open(features, &f, &err);
     if (!rc) rc = sp_train_data_load(&d, colmap, images, (int)downscale, 8, &err);
+    /* The trainer undistorts the images, not the feature maps: refuse rather than distil maps
+     * whose pixels sit where the lens put them (lift resamples them: use lift). */
+    if (!rc && d.n_undistorted)
+        rc = sp_error_set(&err, SP_E_UNSUPPORTED,
+                          "%s: %zu of %zu images have a distorted camera; distill does not resample "
+                          "feature maps through the lens yet: use `semsplat lift`, or run `colmap "
+                          "image_undistorter` and extract features from its output",
+                          colmap, d.n_undistorted, d.n_views);
     snprintf(path, sizeof path, "%s/splat.ply", model);
     if (!rc) rc = sp_ply_read_splat(path, &s, &err);
     sp_train_result before = {0}, after = {0};
@@ -135,7 +143,7 @@ int cmd_distill(int argc, char **argv)
         printf("distill  psnr_before  %.3f  dB  (%s)\n", before.psnr, before.eval_on_train ? "train views" : "held-out");
         printf("distill  psnr_after   %.3f  dB  (steps %ld, lambda %g%s)\n", after.psnr, steps, lambda,
                freeze ? ", geometry frozen" : "");
-        printf("distill  feature_mse  %.5f\n", after.feature_mse);
+        printf("distill  feature_mse  %.5f  (%s)\n", after.feature_mse, after.eval_on_train ? "train views" : "held-out");
         printf("distill  seconds      %.1f  s  (%s)\n", after.seconds, sp_device_name(dev));
     }
     sp_splat_free(&s);

@@ -16,8 +16,8 @@ static void help(void)
            "         labels: [--labels DIR] [--clip MODEL.safetensors] [--factor F]\n"
            "       [--images DIR] [--samples N] [--device cpu|cuda|auto] [--threads N] [--quiet]\n\n"
            "Writes DIR/features.json, pca_mean.npy [full_dim], pca_basis.npy [dim][full_dim] and\n"
-           "maps/<image stem>.npy [h][w][dim] float16. --dim is the PCA size (16..64 typical, default\n"
-           "32). clip: CLIP ViT dense features (ClearCLIP head) in the text space, one per\n"
+           "maps/<image stem>.npy [h][w][dim] float16. --dim is the PCA size (at most 64, 16..64 typical,\n"
+           "default 32). clip: CLIP ViT dense features (ClearCLIP head) in the text space, one per\n"
            "patch/scale pixels (8 px for ViT-B/16 at scale 2) from overlapping tiles. labels: each\n"
            "class's CLIP text embedding when --clip is given, else a fixed random unit vector per\n"
            "class (sp_label_embedding); maps at 1/F of the image (default 4). Real weights:\n"
@@ -89,7 +89,6 @@ int cmd_features(int argc, char **argv)
         if (bad) return 2;
     }
     if (!o.colmap_dir || !o.out_dir) return cli_usage_error("features", "--colmap and --out are required");
-    if (o.dim < 1 || o.dim > 512) return cli_usage_error("features", "--dim %d outside 1..512", o.dim);
     sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
                           : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
                           : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;

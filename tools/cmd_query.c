@@ -19,7 +19,8 @@ static void help(void)
            "  --heatmap-dir DIR     one PNG per query, named after the text\n"
            "  --method 3d|multiview localization (default 3d)\n"
            "  --view N              heatmap from camera N instead of the best view\n"
-           "  --views N             multi-view: views rendered and back-projected (default 4)\n"
+           "  --views N             multi-view: at least N views rendered and back-projected\n"
+           "                        (default 4; up to 3N while under 97%% of the relevant set is seen)\n"
            "  --negatives a,b,c     canonical negatives (default %s)\n"
            "  --min-confidence C    raw cosine below which nothing is found (default 0.2)\n"
            "  --device cpu|cuda|auto, --threads N, --quiet\n",

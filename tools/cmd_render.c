@@ -136,11 +136,13 @@ int cmd_render(int argc, char **argv)
     sp_colmap_model model = {0};
     sp_device *dev = NULL;
     sp_raster *r = NULL;
+    sp_scene *scene = NULL;
     float *buf = NULL, *aux = NULL, *rgb8 = NULL;
     int rc = 1;
     if (sp_ply_read_splat(splat_path, &splat, &err) || sp_colmap_read(colmap_dir, &model, &err) ||
         sp_mkdirs(out_dir, &err) || sp_device_create(&dev, kind, (int)threads, &err) ||
-        sp_raster_create(&r, dev, &err)) {
+        sp_raster_create(&r, dev, &err) ||
+        sp_scene_create(&scene, dev, &splat, mode == 0 ? SP_SCENE_RGB : 0, &err)) {
         cli_fail(cmd, &err);
         goto done;
     }
@@ -188,7 +190,7 @@ int cmd_render(int argc, char **argv)
         if (mode == 0) req.rgb = buf;
         if (mode == 1) req.depth = buf, req.alpha = aux, suffix = "_depth";
         if (mode == 2) req.alpha = buf, suffix = "_alpha";
-        if (sp_render_splat(r, &splat, &cam, &req, &err)) {
+        if (sp_render_views(r, scene, &cam, 1, &req, &err)) {
             sp_error_prefix(&err, "image '%s': ", model.images[k].name);
             cli_fail(cmd, &err);
             goto done;
@@ -213,6 +215,7 @@ int cmd_render(int argc, char **argv)
     rc = 0;
 done:
     free(buf), free(aux), free(rgb8);
+    sp_scene_free(scene);
     sp_raster_free(r);
     sp_device_free(dev);
     sp_colmap_free(&model);

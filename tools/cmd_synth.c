@@ -23,7 +23,8 @@ static void help(void)
            "  --supersample 4 (per axis)  --points 30000  --seed 1\n"
            "  --blur-px 0.5  the camera's blur (Gaussian sigma, pixels) over the colours;\n"
            "                 0 = none (sharp box-filtered pixels)\n"
-           "  --skip-missing warn about missing models, meshes and textures and go on\n");
+           "  --skip-missing warn about missing models and meshes and go on (a missing\n"
+           "                 texture is always a warning: the mesh keeps its colour)\n");
 }
 
 int cmd_synth(int argc, char **argv)
@@ -80,9 +81,10 @@ int cmd_synth(int argc, char **argv)
     }
     size_t n_obj = 0;
     for (size_t i = 0; i < wd.n_objects; i++) n_obj += !wd.objects[i].is_structure;
-    sp_logf(&log, SP_LOG_INFO, "%s: %zu models (%zu objects), %zu triangles, %zu textures, %zu lights%s, loaded in %.2f s",
+    sp_logf(&log, SP_LOG_INFO, "%s: %zu models (%zu objects), %zu triangles, %zu textures, %zu lights%s%s, loaded in %.2f s",
             wd.path, wd.n_objects, n_obj, wd.n_triangles, wd.n_textures, wd.n_lights,
-            wd.n_missing ? " (some assets missing, skipped)" : "", sp_time_now() - t0);
+            wd.n_missing ? " (some assets missing, skipped)" : "",
+            wd.n_missing_textures ? " (some textures missing: material colour)" : "", sp_time_now() - t0);
     sp_synth_capture_opts co = {.n_views = (int)views, .width = w, .height = h, .fov_deg = (float)fov,
                                 .min_height_m = (float)hmin, .max_height_m = (float)hmax,
                                 .supersample = (int)ss, .psf_px = psf > 0 ? (float)psf : -1.f, .n_points = (int)points, .seed = (unsigned)seed,

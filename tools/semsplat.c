@@ -9,7 +9,7 @@
 #define SP_CMD(name) int cmd_##name(int argc, char **argv) __attribute__((weak));
 #define SP_COMMANDS(X) \
     X(info) X(render) X(synth) X(train) X(features) X(embed_text) X(lift) X(distill) X(query) \
-    X(align) X(demo)
+    X(align) X(demo) X(agent) X(sim_robot) X(ros_goal) X(lexical)
 SP_COMMANDS(SP_CMD)
 #undef SP_CMD
 
@@ -29,8 +29,12 @@ static const command commands[] = {
     {"lift", cmd_lift, "lift 2D feature maps into the splat in one pass"},
     {"distill", cmd_distill, "learn per-Gaussian features by distillation"},
     {"query", cmd_query, "find a text query in the language-embedded splat"},
+    {"lexical", cmd_lexical, "match text to a scene's class names with WordNet (offline, --explain)"},
     {"align", cmd_align, "put a splat into the world frame (similarity / floor plane)"},
     {"demo", cmd_demo, "synth -> train -> features -> lift -> queries on the bundled house"},
+    {"agent", cmd_agent, "talk to the robot: go to, show trajectories, describe, explore"},
+    {"sim-robot", cmd_sim_robot, "a simulated robot serving Nav2 actions and /odom over ROS 2 DDS"},
+    {"ros-goal", cmd_ros_goal, "send a Nav2 goal / ask for a path / read the pose of a ROS 2 robot"},
 };
 
 static void usage(FILE *f)

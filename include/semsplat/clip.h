@@ -20,7 +20,7 @@
 #define SEMSPLAT_CLIP_H
 
 #include "semsplat/core.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -198,7 +198,7 @@ typedef struct sp_features_opts {
     const char *clip_config;  /* NULL: beside the weights */
     const char *maps_dir;     /* npy: folder of <stem>.npy, [H][W][C] or [C][H][W] */
     const char *labels_dir;   /* labels: NULL = <capture>/labels */
-    int dim;                  /* PCA dimension, 16..64 (0: 32) */
+    int dim;                  /* PCA dimension, 1..SP_FEATURE_DIM_MAX (64), 16..64 typical (0: 32) */
     int map_factor;           /* labels/npy: map = image / factor (0: 4) */
     long pca_samples;         /* pixel features sampled for the PCA (0: 50000) */
     sp_clip_dense_opts dense;

@@ -166,7 +166,8 @@ void sp_mat4_rigid_inverse(const float A[16], float Ainv[16]);
 
 /* ---- cameras --------------------------------------------------------------------------------- */
 
-/* Distortion models carried from COLMAP; the renderer itself is pinhole. */
+/* Distortion models carried from COLMAP; the renderer itself is pinhole (it ignores them), so
+ * images of a distorted camera are resampled (sp_camera_remap_*) before they meet renders. */
 typedef enum {
     SP_DIST_NONE = 0,
     SP_DIST_SIMPLE_RADIAL, /* k1 */
@@ -194,6 +195,39 @@ void sp_camera_look_at(sp_camera *cam, sp_vec3 eye, sp_vec3 target, sp_vec3 up);
 /* Scales intrinsics and size for an image downscaled by `factor` (>= 1). */
 void sp_camera_downscale(sp_camera *cam, int factor);
 
+/* Cameras from a pose, for previews and agents (render_view_from_splat). */
+/* Pinhole intrinsics from an image size and a horizontal field of view: square pixels
+ * (fx = fy = width / (2 tan(hfov / 2))), principal point at the image centre (width / 2,
+ * height / 2 in the pixel-centre convention), no distortion. The pose is left as it was. */
+void sp_camera_intrinsics_fov(sp_camera *cam, int width, int height, float hfov_rad);
+/* The pose of a camera at world position pos in a z-up world frame: yaw about +z from +x
+ * (yaw 0 looks along +x, pi/2 along +y), pitch up positive (pi/2 looks straight up), no roll;
+ * image x to the right, y down. Intrinsics are left as they were. */
+void sp_camera_from_pose(sp_camera *cam, const float pos[3], float yaw, float pitch);
+/* The pose from a rigid 4x4 row-major camera-to-world matrix whose camera axes are OpenCV's
+ * (x right, y down, z forward): R = rotation^T, t = -R translation. */
+void sp_camera_set_world_from_cam(sp_camera *cam, const float M[16]);
+
+/* ---- lens distortion ------------------------------------------------------------------------- */
+
+/* COLMAP's distortion of normalised image coordinates (u, v) = (x/z, y/z) for cam's model
+ * (SIMPLE_RADIAL k1; RADIAL k1 k2; OPENCV k1 k2 p1 p2; identity for SP_DIST_NONE). */
+void sp_camera_distort(const sp_camera *cam, double u, double v, double *ud, double *vd);
+/* Its inverse by Newton iteration on the 2x2 Jacobian: 0, or -1 (u, v = ud, vd) where it does not
+ * converge or the model folds back there (no ray has that image point). */
+int sp_camera_undistort(const sp_camera *cam, double ud, double vd, double *u, double *v);
+/* Resamples img [src.height][src.width][channels], as seen through the distorted camera src, into
+ * the pinhole camera dst (same pose; dst's size and intrinsics, its distortion ignored): each dst
+ * pixel centre's ray is distorted by src's model and src is sampled bilinearly there. Pixels
+ * whose ray falls outside src's image (or beyond the fold of its model) get zeros and mask 0;
+ * mask [dst.height][dst.width] may be NULL. */
+int sp_camera_remap_to_pinhole(const sp_camera *src, const float *img, int channels,
+                               const sp_camera *dst, float *out, uint8_t *mask, sp_error *err);
+/* The reverse: img from the pinhole camera src (its distortion ignored) into the pixels of the
+ * distorted camera dst, each dst pixel undistorted by Newton iteration. Same masking. */
+int sp_camera_remap_from_pinhole(const sp_camera *src, const float *img, int channels,
+                                 const sp_camera *dst, float *out, uint8_t *mask, sp_error *err);
+
 /* ---- Gaussians ------------------------------------------------------------------------------- */
 
 /* Number of SH coefficients per channel for degree d: (d+1)^2. */
@@ -217,6 +251,17 @@ typedef struct sp_splat {
     float *sh;
     float *features;
 } sp_splat;
+
+/* The largest semantic feature dimension (feat_dim, the scene PCA's dim) any stage accepts:
+ * the query engine's scorer keeps a text's projections as SP_FEATURE_DIM_MAX floats (one kernel
+ * argument on CUDA) and a Gram matrix of its square. `features` refuses a larger --dim at
+ * once, feature folders and model folders that claim more are refused when opened, and lift
+ * refuses it, so no stage makes a model that no query can open. */
+#define SP_FEATURE_DIM_MAX 64
+
+/* 0 when 1 <= dim <= SP_FEATURE_DIM_MAX, else `code` with a message "<what>: feature dim D is
+ * outside 1..64 (the limit of 64 ...)" naming the value and the limit. */
+int sp_feature_dim_check(int dim, int code, const char *what, sp_error *err);
 
 /* Allocates n Gaussians (contents zeroed, quats set to identity). */
 int sp_splat_alloc(sp_splat *s, size_t n, int sh_degree, int feat_dim, sp_error *err);

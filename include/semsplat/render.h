@@ -12,6 +12,13 @@
  * sp_device_alloc/upload/download to move data. An sp_raster keeps the forward pass's state
  * (projections, sorted lists, per-pixel final transmittance) for the backward of the same view.
  *
+ * Callers other than training (queries, previews, view selection) upload a host splat once as
+ * an sp_scene and render it from any number of cameras, one at a time or as a batch
+ * (sp_render_views); a scene is a snapshot: after the host splat changes, sp_scene_update says
+ * what changed. sp_render_splat is the one-off convenience that uploads on every call.
+ *
+ * Threads: an sp_raster or sp_scene is used by one thread at a time (like its device).
+ *
  * Conventions (same as gsplat / 3DGS): camera frame x right, y down, z forward; pixel (px, py)
  * has its centre at (px + 0.5, py + 0.5); covariance = R S S^T R^T with S = diag(exp(log_scales));
  * the 2D covariance gets eps2d (0.3 px^2) added to its diagonal; alpha = min(0.99, opacity *
@@ -22,39 +29,11 @@
 #define SEMSPLAT_RENDER_H
 
 #include "semsplat/core.h"
+#include "semsplat/device.h" /* sp_device (was declared here) */
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* ---- devices ---------------------------------------------------------------------------------- */
-
-typedef enum {
-    SP_DEVICE_CPU = 0,
-    SP_DEVICE_CUDA = 1,
-    SP_DEVICE_AUTO = 2 /* CUDA when a GPU is usable, else CPU */
-} sp_device_kind;
-
-typedef struct sp_device sp_device;
-
-/* n_threads: CPU worker threads (0: all cores; see sp_pool_create for the limits). CUDA: fails with SP_E_NODEVICE when the
- * backend is not built or no GPU is present. */
-int sp_device_create(sp_device **out, sp_device_kind kind, int n_threads, sp_error *err);
-void sp_device_free(sp_device *dev);
-sp_device_kind sp_device_kind_of(const sp_device *dev);
-const char *sp_device_name(const sp_device *dev); /* "CPU (2 threads)", "NVIDIA H100 ..." */
-sp_pool *sp_device_pool(sp_device *dev);          /* CPU worker pool (also used by CUDA for host work) */
-int sp_cuda_available(void);                       /* 1 when the CUDA backend is built and a GPU answers */
-
-void *sp_device_alloc(sp_device *dev, size_t bytes, sp_error *err); /* zeroed; NULL on error */
-void sp_device_release(sp_device *dev, void *ptr);
-int sp_device_upload(sp_device *dev, void *dst, const void *src_host, size_t bytes, sp_error *err);
-int sp_device_download(sp_device *dev, void *dst_host, const void *src, size_t bytes, sp_error *err);
-int sp_device_copy(sp_device *dev, void *dst, const void *src, size_t bytes, sp_error *err);
-int sp_device_zero(sp_device *dev, void *dst, size_t bytes, sp_error *err);
-int sp_device_sync(sp_device *dev, sp_error *err);
-/* Peak bytes allocated through sp_device_alloc plus the rasterizer's scratch, since creation. */
-size_t sp_device_peak_bytes(const sp_device *dev);
 
 /* ---- rasterization ---------------------------------------------------------------------------- */
 
@@ -64,11 +43,19 @@ size_t sp_device_peak_bytes(const sp_device *dev);
 #define SP_TRANSMITTANCE_MIN 1e-4f     /* 3DGS: stop compositing below this */
 #define SP_EPS2D 0.3f                  /* 3DGS/gsplat screen-space dilation, px^2 */
 
+#define SP_SURFACE_ALPHA 0.5f         /* default alpha threshold of first-surface depth */
+
 typedef struct sp_raster_cfg {
     float near_plane;   /* Gaussians with camera z below this are culled (default 0.01 m) */
     float far_plane;    /* and beyond this (default 1e10) */
     float eps2d;        /* default SP_EPS2D */
     int antialiased;    /* gsplat "antialiased" mode: opacity *= sqrt(det(S)/det(S + eps2d I)) */
+    float surface_alpha; /* sp_raster_out.surface_depth: the depth of the Gaussian at which the
+                          * accumulated alpha first reaches this, in (0, 1] (default 0.5) */
+    /* CUDA only, for tuning: the widest channel chunk one compositing pass handles, forward and
+     * backward; 0 (default) = SP_CHANNEL_CHUNK_MAX, the measured best; else one of
+     * SP_CHANNEL_WIDTHS. Results do not depend on it. */
+    int chunk_fwd, chunk_bwd;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);
@@ -88,6 +75,11 @@ typedef struct sp_raster_out {
     float *image; /* [H][W][D], required */
     float *depth; /* [H][W] sum_i w_i z_i (divide by alpha for the expected depth), or NULL */
     float *alpha; /* [H][W] sum_i w_i, or NULL */
+    /* [H][W] first-surface (median) depth, or NULL: camera z of the first Gaussian, front to
+     * back, after which the accumulated alpha 1 - T reaches cfg->surface_alpha; 0 where it never
+     * does. Unlike the expected depth it does not blend foreground and background at edges.
+     * Forward only (no gradient); costs one more pass over the sorted lists. */
+    float *surface_depth;
 } sp_raster_out;
 
 typedef struct sp_raster_grad_in {
@@ -143,26 +135,83 @@ int sp_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_activ
                           const float *v_rgb, int stride, float *v_sh, float *v_means,
                           sp_error *err);
 
-/* ---- convenience for host splats (CLI, queries, previews) ------------------------------------- */
+/* ---- uploaded scenes: rendering for callers other than training ------------------------------- */
 
-/* What to render from a host sp_splat. Any output pointer may be NULL. HOST buffers.
- *   rgb      [H][W][3]   from SH (active degree = splat degree)
- *   features [H][W][feat_dim]
- *   depth    [H][W]      expected depth (sum w z / alpha; 0 where alpha < 1e-6)
- *   alpha    [H][W] */
+/* An sp_scene is a host splat uploaded once to a device, holding what it was made to render:
+ * SP_SCENE_RGB (colour from SH) and/or SP_SCENE_FEATURES (the splat's features). It is a
+ * snapshot: edits to the host splat are seen only after sp_scene_update. It does not keep a
+ * pointer to the host splat. Free it before its device. */
+typedef struct sp_scene sp_scene;
+
+enum {
+    SP_SCENE_RGB = 1,      /* colour from SH (needs sh, 0 <= sh_degree <= 3) */
+    SP_SCENE_FEATURES = 2  /* the per-Gaussian features (needs feat_dim >= 1 and features) */
+};
+
+/* What changed in the host splat since the scene was made or last updated. */
+enum {
+    SP_SCENE_CHANGED_GEOMETRY = 1, /* means, quats, log_scales, opacity_logits */
+    SP_SCENE_CHANGED_SH = 2,
+    SP_SCENE_CHANGED_FEATURES = 4,
+    SP_SCENE_CHANGED_ALL = 7
+};
+
+/* Uploads s to dev. what: SP_SCENE_RGB and/or SP_SCENE_FEATURES, or 0 for geometry only (for
+ * sp_scene_raster_in). Fails with SP_E_ARG naming the missing field when s lacks what is asked,
+ * SP_E_NUMERIC when a value is not finite, SP_E_NOMEM / SP_E_DEVICE from the device. */
+int sp_scene_create(sp_scene **out, sp_device *dev, const sp_splat *s, unsigned what,
+                    sp_error *err);
+/* Re-uploads the parts of s named in `changed` (SP_SCENE_CHANGED_*). When s's count, SH degree
+ * or feature dim differ from the scene's, everything is uploaded again whatever `changed` says.
+ * On error the scene refuses to render until an update succeeds. */
+int sp_scene_update(sp_scene *sc, const sp_splat *s, unsigned changed, sp_error *err);
+void sp_scene_free(sp_scene *sc);
+size_t sp_scene_count(const sp_scene *sc);
+int sp_scene_feat_dim(const sp_scene *sc); /* 0 without SP_SCENE_FEATURES */
+sp_device *sp_scene_device(const sp_scene *sc);
+/* The scene's device geometry as a raster input (means, quats, log_scales, opacity_logits, n;
+ * colors NULL, D 0: the caller sets them) for sp_raster_forward / backward. Valid until the
+ * next sp_scene_update or sp_scene_free. */
+int sp_scene_raster_in(const sp_scene *sc, sp_raster_in *in, sp_error *err);
+/* The scene's features on its device ([n][feat_dim]), or NULL without SP_SCENE_FEATURES. */
+const float *sp_scene_device_features(const sp_scene *sc);
+
+typedef enum {
+    SP_DEPTH_EXPECTED = 0, /* sum w z / sum w: blends foreground and background at edges */
+    SP_DEPTH_SURFACE = 1   /* first-surface (median) depth at depth_alpha, see sp_raster_out */
+} sp_depth_mode;
+
+/* What to render of one view. Any output pointer may be NULL. HOST buffers.
+ *   rgb      [H][W][3]        from SH (active degree = the splat's degree); needs SP_SCENE_RGB
+ *   features [H][W][feat_dim] composited features (not divided by alpha); needs SP_SCENE_FEATURES
+ *   depth    [H][W]           depth_mode SP_DEPTH_EXPECTED: sum w z / alpha (0 where alpha < 1e-6);
+ *                             SP_DEPTH_SURFACE: first-surface depth (0 where alpha never reaches
+ *                             depth_alpha)
+ *   alpha    [H][W]           accumulated opacity sum w
+ * A zero-initialised request (plus outputs) asks for expected depth. */
 typedef struct sp_render_request {
     float *rgb;
     float *features;
     float *depth;
     float *alpha;
-    const float *background; /* [3] for rgb, NULL = black */
+    const float *background;  /* [3] for rgb, NULL = black */
+    sp_depth_mode depth_mode;
+    float depth_alpha;        /* SP_DEPTH_SURFACE threshold in (0, 1]; 0 = SP_SURFACE_ALPHA */
 } sp_render_request;
 
-/* Uploads the splat (cached inside r between calls with the same splat pointer and count;
- * call sp_raster_forget(r) after changing the splat) and renders one view. */
+/* Renders n views of a scene, view i through cams[i] into reqs[i] (views may differ in size and
+ * in what they ask). The scene is not uploaded again; on CUDA the views are rendered in batches
+ * with one wait for the GPU per batch (sizing the sort), not one per view. Uses r's scratch and
+ * leaves no forward for sp_raster_backward. Fails with SP_E_ARG naming the view and what is
+ * wrong (size, a request the scene cannot serve, a bad depth_alpha). */
+int sp_render_views(sp_raster *r, sp_scene *sc, const sp_camera *cams, size_t n,
+                    const sp_render_request *reqs, sp_error *err);
+
+/* Convenience for one-off renders of a host splat: makes a scene of what req asks for, renders
+ * one view and frees the scene, so the splat is uploaded on EVERY call (and edits in place are
+ * always seen). For repeated renders of the same splat make an sp_scene instead. */
 int sp_render_splat(sp_raster *r, const sp_splat *s, const sp_camera *cam,
                     const sp_render_request *req, sp_error *err);
-void sp_raster_forget(sp_raster *r);
 
 #ifdef __cplusplus
 }

@@ -1,6 +1,7 @@
 /* semsplat semantic: the language-embedded splat and the query engine.
  *
- * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64) that
+ * Semantic field: every Gaussian carries a d-dim feature (d = the scene PCA's dim, 16..64 in
+ * practice, at most SP_FEATURE_DIM_MAX = 64 in core.h) that
  * decodes to the full text space as  mean + basis^T f  (basis rows orthonormal). It is made by
  *   - lifting: one pass over the training views; each Gaussian's feature is the compositing-weight
  *     average of the target features of the pixels it contributes to,
@@ -18,8 +19,9 @@
  *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
  *         no preference, used for thresholds and heatmaps.
  * Localization: 3D-native (relevant Gaussians -> opacity-weighted voxel clustering of centres into
- * instances) or multi-view (views that see the relevant Gaussians -> rendered features and depth
- * -> relevant pixels back-projected -> the same clustering). Things that are not there give low
+ * instances, 26-connected voxels of voxel_m) or multi-view (views that see the relevant Gaussians
+ * unoccluded -> rendered features and expected depth at 1/render_downscale -> relevant pixels
+ * with alpha > 0.9, eroded by one pixel, back-projected -> the same clustering). Things that are not there give low
  * confidence, valid = 0 and no position (NaN), never a random point.
  *
  * Ownership: sp_query_engine owns the splat, PCA, cameras and its raster; results own their
@@ -58,15 +60,16 @@ typedef struct sp_sem_scorer {
     int dim;
     int n_neg;
     float temperature;
-    float q0, qb[64];                                   /* the query */
-    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][64]; /* the negatives */
-    float m2, mb[64];
-    float G[64 * 64];
+    float q0, qb[SP_FEATURE_DIM_MAX];                   /* the query */
+    float n0[SP_SEM_MAX_NEGATIVES], nb[SP_SEM_MAX_NEGATIVES][SP_FEATURE_DIM_MAX]; /* the negatives */
+    float m2, mb[SP_FEATURE_DIM_MAX];
+    float G[SP_FEATURE_DIM_MAX * SP_FEATURE_DIM_MAX];
     int orthonormal; /* G == I within 1e-4: |decode(f)|^2 = m2 + 2 mb.f + |f|^2 */
 } sp_sem_scorer;
 
 /* Prepares a scorer. query [full_dim] and negatives [n_neg][full_dim] need not be unit length.
- * Fails with SP_E_ARG when dim > 64, n_neg > SP_SEM_MAX_NEGATIVES or a vector is zero. */
+ * Fails with SP_E_ARG when dim > SP_FEATURE_DIM_MAX, n_neg > SP_SEM_MAX_NEGATIVES or a vector is
+ * zero. */
 int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *query,
                        const float *negatives, int n_neg, float temperature, sp_error *err);
 /* Raw cosine and calibrated relevancy of n features [n][dim] (either output may be NULL).
@@ -104,7 +107,9 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
                            sp_error *err);
 
 /* The same in memory: lifts the feature folder's maps (matched to the COLMAP images by name,
- * rendered at the maps' resolution) into s->features. */
+ * rendered at the maps' resolution) into s->features. Maps of images with a distorted camera
+ * (SIMPLE_RADIAL, RADIAL, OPENCV) are resampled into the pinhole camera the renderer uses
+ * (sp_camera_remap_to_pinhole), pixels the image did not see left out. */
 int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
                               sp_device *dev, const sp_log *log, sp_error *err);
 
@@ -122,13 +127,17 @@ typedef struct sp_query_opts {
     char negatives[256];   /* comma-separated canonical negatives ("" = SP_SEM_DEFAULT_NEGATIVES) */
     float temperature;     /* relevancy temperature (SP_SEM_DEFAULT_TEMPERATURE) */
     float min_confidence;  /* below this raw cosine the query is "not found" (0.2) */
-    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence (0.6) */
+    float keep_fraction;   /* relevant = raw cosine >= keep_fraction * confidence, and >= 0.1
+                            * (0.6) */
     float min_relevancy;   /* ... and calibrated relevancy >= this (0.55) */
     float min_opacity;     /* Gaussians fainter than this are ignored (0.1) */
     float voxel_m;         /* clustering voxel edge in world units (0.12) */
-    float min_instance_fraction; /* instances lighter than this share of the best are dropped (0.1) */
+    float min_instance_fraction; /* instances lighter than this share of the best are dropped
+                                  * (0.1; multi-view uses a third of it: an instance seen from
+                                  * few views sums fewer pixels) */
     int n_views;           /* multi-view: views rendered and back-projected, at least (4; up to
-                            * twice as many while under 90% of the relevant set is seen) */
+                            * three times as many while under 97% of the relevant set, by
+                            * opacity, is seen) */
     int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
     int heatmap;           /* render relevancy_image (1) */
     int heatmap_view;      /* -1 = best view, else an index into the cameras */
@@ -138,9 +147,10 @@ sp_query_opts sp_query_opts_default(void);
 
 typedef struct sp_query_instance {
     float position[3];   /* world frame */
-    float extent_min[3]; /* robust (2%..98%) bounds of the instance's points */
-    float extent_max[3];
-    float score;         /* summed weight of its points (opacity * relevancy excess) */
+    float extent_min[3]; /* robust bounds: the 5% and 95% weighted quantiles of its points per */
+    float extent_max[3]; /* axis; position is their middle */
+    float score;         /* summed weight of its points: 3D, opacity * (relevancy - 0.5);
+                          * multi-view, (relevancy - 0.5) * alpha * the pixel's area at its depth */
     float confidence;    /* largest raw cosine inside it */
     int n_points;        /* Gaussians (3D) or pixels (multi-view) */
 } sp_query_instance;
@@ -150,12 +160,15 @@ typedef struct sp_query_result {
     int method;          /* sp_query_method used */
     int valid;           /* 1 when confidence >= min_confidence and an instance was found */
     float position[3];   /* best instance (world frame); NaN when !valid */
-    float confidence;    /* largest raw cosine (robust max over Gaussians) */
+    float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
+                          * opacity >= min_opacity */
     float relevancy_max; /* largest calibrated relevancy */
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];
     int width, height;           /* of relevancy_image */
-    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made */
+    uint8_t *relevancy_image;    /* [height][width][3] turbo overlay on RGB, NULL when not made;
+                                  * in the pixels of image view_name: a distorted camera's
+                                  * pinhole render is resampled through its lens */
     float *relevancy;            /* [height][width] calibrated relevancy of that view, or NULL */
     int n_instances;
     sp_query_instance *instances; /* best first */
@@ -191,12 +204,196 @@ sp_query_opts *sp_query_engine_opts(sp_query_engine *e); /* change between queri
 int sp_query_engine_full_dim(const sp_query_engine *e);
 size_t sp_query_engine_n_cameras(const sp_query_engine *e);
 const sp_splat *sp_query_engine_splat(const sp_query_engine *e);
+/* Camera i as COLMAP has it, lens included (renders use its pinhole part). */
 const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
 
 /* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
  * position (array or null), confidence, relevancy_max, view, instances [{position, extent_min,
  * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms. */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
+
+/* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *
+ *
+ * Matches free text against a scene's own class names ("refrigerator", "kitchen counter", ...)
+ * with WordNet 3.0 (Debian's wordnet-base, read directly from /usr/share/wordnet). It is
+ * matching against KNOWN class names: it cannot find anything the world's labels do not name.
+ *
+ * A query is split into target and anchor at a spatial relation where both sides match ("X near
+ * / next to / beside / by / in / on / to / above / under ... Y"), and each phrase into a head noun
+ * (the longest WordNet collocation ending at its last noun: "coffee table", "tv set"; closed
+ * compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers before it,
+ * and description words after a clause marker ("something TO sit on", "a seat FOR two").
+ * Per class c, the confidence in 0..1 is, from the head h (all its senses) and the class's head
+ * (its physical senses that the tagged corpora attest; when none, its physical senses closest to
+ * the other classes of the scene, after Resnik 1999):
+ *   T = 1                                   exact name (after plurals) or a shared synset
+ *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
+ *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 0.6                                 h (a commonly used sense) is a part of c
+ *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
+ * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
+ * cabinet") sits one level below its head, so the head alone is its hypernym and another kind of
+ * the head ("dresser") its sibling. T is multiplied by
+ *   (1 - BETA)                 per query modifier that names other classes and not this one (0.3)
+ *   (1 - EPS)                  per attribute its definitions do not mention (0.1; "red", "wooden":
+ *                              reported in `ignored`)
+ *   (1 - GAMMA + GAMMA G)      when a description stands beside the head (GAMMA 0.3).
+ * Without a head noun (or with a placeholder: "something", "a place") the confidence is G:
+ *   G = sum_d w_d m_d / sum_d w_d,  w_d = 1 / (1 + ln(1 + senses(d)))  (polysemy for frequency),
+ *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
+ *   hypernym's, DELTA^2 two levels up, and 0.8 for a lemma of d's commonest sense found in the
+ *   class's own definition (one weak step at most). Location words (room, area) describe nothing.
+ * A compound whose modifier is itself a class name ("tv monitor") also scores
+ * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
+ * "the area that looks like a kitchen") list the classes that define them: the region table's
+ * object phrases (data/semantic/regions.json, extendable), the nouns of the region's WordNet
+ * definition, classes named after it ("kitchen counter"); a room needs two kinds of them, one
+ * alone is scaled by MU. SP_LEX_THRESHOLD is the one threshold for every world.
+ * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (the database files
+ * are mapped read-only); any number of threads may match against them at once. Results are
+ * plain structs with fixed arrays (no ownership). */
+
+#define SP_LEX_THRESHOLD 0.5f           /* confidence at or above which a class matches */
+#define SP_LEX_DEFAULT_WORDNET "/usr/share/wordnet"
+#define SP_LEX_MAX_CLASSES 128
+#define SP_LEX_MAX_IGNORED 8
+
+typedef struct sp_lexicon sp_lexicon;
+typedef struct sp_lex_vocab sp_lex_vocab;
+
+/* Opens WordNet's database files in dir (NULL = SP_LEX_DEFAULT_WORDNET). Reads nothing else:
+ * start-up is a few file opens and one synset read. Fails with SP_E_NOTFOUND naming the file and
+ * the Debian package when the database is missing. */
+int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err);
+void sp_lexicon_free(sp_lexicon *lx);
+
+/* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES; each index keeps its name) against lx,
+ * which must outlive the vocabulary. regions_path: a region table (JSON object: region name ->
+ * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none). Resolves the
+ * table's regions once (house, 25 classes: about 60 ms). */
+int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
+                        int n, const char *regions_path, sp_error *err);
+void sp_lex_vocab_free(sp_lex_vocab *v);
+int sp_lex_vocab_size(const sp_lex_vocab *v);
+const char *sp_lex_vocab_class(const sp_lex_vocab *v, int i);
+
+/* How a class matched (strongest evidence). */
+typedef enum {
+    SP_LEX_NONE = 0,
+    SP_LEX_EXACT,     /* the class name itself (after plurals and inflections) */
+    SP_LEX_SYNONYM,   /* the query's head shares a WordNet synset with the class */
+    SP_LEX_HYPERNYM,  /* the query is more general ("appliance" -> refrigerator) */
+    SP_LEX_HYPONYM,   /* the query is more specific ("clock" -> timepiece) */
+    SP_LEX_PART,      /* the query names a part of the class */
+    SP_LEX_RELATED,   /* siblings or cousins in the taxonomy: always below the threshold */
+    SP_LEX_GLOSS,     /* description words found in the class's definitions */
+    SP_LEX_MODIFIER,  /* through a modifier that is itself a class ("tv monitor") */
+    SP_LEX_REGION     /* named after the region ("kitchen counter" in the kitchen) */
+} sp_lex_kind;
+
+const char *sp_lex_kind_name(int kind); /* "exact", "synonym", ... */
+
+typedef struct sp_lex_class_match {
+    int class_index;
+    float score;          /* confidence 0..1; >= SP_LEX_THRESHOLD = match */
+    int kind;             /* sp_lex_kind */
+    char query_sense[64]; /* the WordNet lemma of the query sense used ("" for gloss matches) */
+    char class_sense[64]; /* the lemma of the class sense used */
+    char path[256];       /* taxonomy path, "armchair > chair > seat" (class to query or LCS) */
+    char gloss_words[192];/* "sit (seat: furniture that is designed for sitting on)" */
+    char definition[192]; /* WordNet definition of the class sense used */
+} sp_lex_class_match;
+
+/* One resolved phrase: every class scored, best first. For a region (is_region) the matches are
+ * its member classes, each with how its member phrase matched. */
+typedef struct sp_lex_phrase {
+    char text[128];        /* the words of this phrase */
+    char head[64];         /* head noun or collocation used ("" = description only) */
+    int is_region;         /* the phrase names a region */
+    char region[64];       /* its name ("kitchen", or the phrase defining a generic area) */
+    int n_matches;         /* = number of classes */
+    sp_lex_class_match matches[SP_LEX_MAX_CLASSES];
+} sp_lex_phrase;
+
+typedef struct sp_lex_result {
+    char text[256];
+    sp_lex_phrase target;  /* what to find (X of "X near Y", or the whole query) */
+    char relation[24];     /* "" or "near", "next to", "in", "on", "to", "above", ... */
+    sp_lex_phrase anchor;  /* Y when relation[0] */
+    int n_ignored;
+    char ignored[SP_LEX_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
+    float confidence;      /* the target's best score (0 when nothing matched) */
+    int found;             /* confidence >= SP_LEX_THRESHOLD (and the anchor found, if any) */
+} sp_lex_result;
+
+/* Scores text against every class of v. The result is large (fixed arrays): allocate it on the
+ * heap. Fails on empty text; a text with no known words gives found = 0, not an error. */
+int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err);
+/* The result as JSON (malloc'd, caller frees): text, found, confidence, target {head, region,
+ * matches [{class, score, kind, query_sense, class_sense, path, gloss_words, definition}] above
+ * min_score}, relation, anchor, ignored. */
+char *sp_lex_result_json(const sp_lex_result *res, const sp_lex_vocab *v, float min_score);
+/* A human-readable explanation (--explain) into out. */
+void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, size_t cap);
+
+/* ---- lexical queries on a label-feature scene ------------------------------------------------- *
+ *
+ * The lexical encoder grounded through the query engine (label-feature scenes, whose classes'
+ * features are sp_label_embedding vectors): the engine localizes the matched classes' label
+ * embeddings, and the result's confidence is the lexical score (found = that score >=
+ * SP_LEX_THRESHOLD and an instance was localized). A region
+ * is each of its classes localized alone, their instances clustered in space (boxes within 2 m),
+ * and the cluster holding most of the region's kinds taken: its extent and centre. A target too
+ * is each matched class localized alone (the scene must show a cosine of 0.5 with the class's
+ * embedding, else the class is named but not seen), instances of the best-scoring class first.
+ * A relation then ranks them, within a class score, by their distance to the anchor's instances
+ * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
+ * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
+ * top (bottom), 0.3 m tolerance. */
+
+typedef struct sp_lex_extent {
+    float extent_min[3], extent_max[3]; /* world frame */
+    float centre[3];
+    int n_instances;
+} sp_lex_extent;
+
+typedef struct sp_lex_answer {
+    sp_lex_result lex;        /* what the text matched, and why */
+    sp_query_result result;   /* the target's instances (ranked by the relation when there is one;
+                               * a region's member instances); confidence = the lexical score;
+                               * position = the best instance, or the region's centre */
+    int is_region;
+    sp_lex_extent region;     /* is_region: the extent of the region's objects */
+    int has_anchor;
+    sp_lex_extent anchor;     /* relation: the anchor instance nearest the best target, or region */
+    int *instance_class;      /* [result.n_instances] the class (vocabulary index) of each */
+    float *relation_m;        /* [result.n_instances] each instance's relation cost in metres
+                               * (NULL without a relation or when the anchor is not found) */
+} sp_lex_answer;
+
+/* Answers text on engine e (a label-feature scene whose class names are v's). a is large: put it
+ * on the heap; free with sp_lex_answer_free. The engine's options are used as set, except that
+ * the lexical score decides what is found (min_confidence is not applied). */
+int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
+                 sp_error *err);
+void sp_lex_answer_free(sp_lex_answer *a);
+/* The lexical encoder as a text embedding for a label-feature scene: the target's classes
+ * matched at or above the threshold, sum of score * sp_label_embedding(class, dim), normalised
+ * (all zeros when nothing matches); *confidence (may be NULL) the lexical score. */
+int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
+                 sp_error *err);
+/* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
+ * sp_lex_result_json), region and anchor (extents, relation, instance_cost_m). */
+char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const char *heatmap_path);
+/* A vocabulary of the classes of a capture's labels.json (synth's format; "background" and
+ * repeats dropped). */
+int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
+                             const char *regions_path, sp_error *err);
+/* The vocabulary of a label-feature model folder (semantic.json: source "labels", label_embedding
+ * "hash"): the labels.json of the capture it names. Other models fail with SP_E_UNSUPPORTED (their
+ * features live beside CLIP's text tower, not label embeddings). */
+int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
+                           const char *regions_path, sp_error *err);
 
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
@@ -213,6 +410,61 @@ void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int
  * 4x4 row-major transform [sR t; 0 1]. Fails on degenerate (collinear) input. */
 int sp_umeyama(const double *src, const double *dst, size_t n, int with_scale, double M[16],
                double *rms, sp_error *err);
+/* Matches between the COLMAP frame and the world (semsplat align --matches): src [n][3] a
+ * COLMAP-frame point (a camera centre for image lines), dst [n][3] its world position, name [n]
+ * the image ("" for a point match). Owns its arrays (sp_align_matches_free). */
+typedef struct sp_align_matches {
+    size_t n;
+    double *src, *dst;
+    char (*name)[256];
+} sp_align_matches;
+
+/* Reads lines 'IMAGE_NAME x y z' (that image's camera centre in colmap_dir's model -> the world
+ * point) or 'x y z X Y Z'; '#' comments. colmap_dir may be NULL when no line names an image.
+ * Errors name the file and line (bad numbers, an image the model does not have). */
+int sp_align_read_matches(const char *path, const char *colmap_dir, sp_align_matches *out,
+                          sp_error *err);
+void sp_align_matches_free(sp_align_matches *m);
+
+/* The robust frame fit refuses unless at least this many matches, and at least half of them,
+ * agree: 3 matches fix a similarity, the 4th is the first that can contradict it; least median
+ * of squares (the fit most matches agree with) has a breakdown point of one half, so with fewer
+ * than half agreeing it cannot tell the right fit from one made by the wrong matches. */
+#define SP_ALIGN_MIN_INLIERS 4
+/* ... and, with the automatic bound, unless that bound is at most this fraction of the spread of
+ * the matched world points (RMS distance from their mean): when more than half the matches are
+ * wrong the median residual is a wrong match's and the bound grows with it; a frame whose
+ * errors are a tenth of the scene is no frame. An explicit bound skips this test. */
+#define SP_ALIGN_MAX_BOUND_FRACTION 0.1
+
+/* A robust similarity fit. Owns inlier and residual (sp_align_fit_free). */
+typedef struct sp_align_fit {
+    double M[16];           /* world_from_colmap, row-major [sR t; 0 1], refitted on the inliers */
+    size_t n, n_inliers;
+    uint8_t *inlier;        /* [n] 1 = agrees with the fit */
+    double *residual;       /* [n] |M src - dst| in world units */
+    double rms_inliers;     /* RMS residual of the inliers */
+    double rms_all;         /* RMS of plain least squares over all matches (for comparison) */
+    double median_residual; /* the least median (of the best minimal-sample fit) */
+    double threshold;       /* the inlier bound used (world units) */
+} sp_align_fit;
+
+/* Least median of squares over Umeyama fits of minimal samples (all triples up to 20000, else
+ * 20000 random ones, deterministic), then inliers = residual <= threshold and a refit on them
+ * (three rounds). threshold <= 0: automatic, 4.03 sigma (the 99.9% bound of the length of an
+ * isotropic 3D Gaussian error) with sigma from the median residual (median / 1.538, times
+ * Rousseeuw's 1 + 5/(n-3)), then from the inliers' RMS. Fails with SP_E_ARG below SP_ALIGN_MIN_INLIERS
+ * matches or when all are collinear, and with SP_E_FORMAT (fit filled, so the outliers can be
+ * reported) when fewer than max(SP_ALIGN_MIN_INLIERS, ceil(n/2)) agree or the automatic bound
+ * exceeds SP_ALIGN_MAX_BOUND_FRACTION of the world points' spread. */
+int sp_align_fit_robust(const double *src, const double *dst, size_t n, int with_scale,
+                        double threshold, sp_align_fit *fit, sp_error *err);
+void sp_align_fit_free(sp_align_fit *f);
+/* The fit as JSON text (malloc'd, free()): method, with_scale, world_from_colmap (4x4), matches,
+ * inliers, rms_inliers, rms_all_least_squares, median_residual, inlier_threshold, outliers
+ * [{image (or match index), residual}]. m may be NULL (outliers by index). */
+char *sp_align_fit_json(const sp_align_fit *fit, const sp_align_matches *m, int with_scale);
+
 /* Applies a similarity [sR t] to a splat: means, quats, log_scales and SH (rotated per band). */
 int sp_splat_transform(sp_splat *s, const double M[16], sp_error *err);
 /* RANSAC floor plane on the lowest Gaussians (along the cameras' mean "up" = -y_cam) and a

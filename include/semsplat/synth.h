@@ -72,7 +72,8 @@ typedef struct sp_synth_object {
     char name[128];       /* model name in the world, e.g. "dining_chair_2" */
     char source[256];     /* model it was included from ("dining_chair"), else its own name */
     char class_name[128]; /* "dining chair" */
-    int is_structure;     /* wall*, floor*, ground*, ceiling*: labelled, not an object */
+    int is_structure;     /* walls, floors, ceilings, ground (sp_synth_is_structure): labelled,
+                           * listed under "structure" in ground_truth.json, not an object */
     float pose[16];       /* model frame in world, row-major 4x4 */
     float aabb_min[3], aabb_max[3]; /* world-frame box of its visual triangles */
     size_t n_triangles;
@@ -109,12 +110,15 @@ typedef struct sp_world {
     float ambient[3];       /* <scene><ambient> */
     float background[3];    /* <scene><background> */
     float exposure;         /* scales lighting so a typical surface is well exposed (set at load) */
-    size_t n_missing;       /* assets skipped under skip_missing */
+    size_t n_missing;       /* models and meshes skipped under skip_missing */
+    size_t n_missing_textures; /* textures not found: their meshes are drawn in the material
+                                * colour with a warning, as Gazebo does (never an error) */
 } sp_world;
 
 typedef struct sp_synth_load_opts {
     const char *model_path; /* extra model dirs, ':'-separated (may be NULL) */
-    int skip_missing;       /* warn and continue on a missing model, mesh or texture */
+    int skip_missing;       /* warn and continue on a missing model or mesh (a missing texture
+                             * is always a warning) */
     int no_env;             /* ignore GAZEBO_MODEL_PATH / GZ_SIM_RESOURCE_PATH (tests) */
     const sp_log *log;
 } sp_synth_load_opts;
@@ -122,7 +126,7 @@ typedef struct sp_synth_load_opts {
 /* Loads an SDF world (or a single-model .sdf). The model path is <dir>/<stem>_models (the world's
  * own models, e.g. house_models beside house.world), opts->model_path, GAZEBO_MODEL_PATH,
  * GZ_SIM_RESOURCE_PATH and IGN_GAZEBO_RESOURCE_PATH, then <dir>/models and <dir>/../models. Errors name the file and line (malformed
- * XML, bad numbers), the missing model:// and the dirs searched, or the missing mesh/texture. */
+ * XML, bad numbers), the missing model:// and the dirs searched, or the missing mesh. */
 int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_world *w,
                         sp_error *err);
 void sp_world_free(sp_world *w);
@@ -132,8 +136,11 @@ void sp_world_free(sp_world *w);
  * lower case: "aws_robomaker_retail_BookshelfB_01" -> "bookshelf", "dining_chair_2" -> "dining
  * chair". */
 void sp_synth_class_name(const char *model_name, char *out, size_t cap);
-/* 1 when a top-level model with this name (or class) is structure: wall*, floor*, ground*,
- * ceiling*. */
+/* 1 when a top-level model is structure (walls, floors, ceilings, the ground): the last word of
+ * its class, or of the class read from its instance name, is wall(s), floor(s), flooring,
+ * ceiling(s) or ground, or the class ends in "ground plane" / "floor plane". Words before the
+ * last only modify it: "shop wall" is structure, "floor lamp", "wall clock" and "ceiling fan" are
+ * objects. */
 int sp_synth_is_structure(const char *model_name, const char *class_name);
 
 /* ---- rendering ------------------------------------------------------------------------------- */
@@ -188,7 +195,8 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *opts, sp
  *   sparse/0/{cameras,images,points3D}.bin  PINHOLE, exact poses, points on visible surfaces
  *   images/NNNNN.png  depth/NNNNN.npy (float32 metres [h][w])  labels/NNNNN.png (16-bit ids)
  *   labels.json  (id -> model name, class, is_structure)
- *   ground_truth.json  (world path; each object's name, class, world pose and AABB) */
+ *   ground_truth.json  (world path; each object's name, class, world pose and AABB under
+ *                       "objects", walls, floors, ceilings and the ground under "structure") */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);
 

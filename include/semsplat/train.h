@@ -91,8 +91,9 @@ int sp_train_init_random(sp_splat *s, const sp_train_data *d, size_t n, float ex
 
 /* Called for training view `view` (index into data->views): fill dst [H][W][F] (HOST, H/W of
  * that view's camera, F = feature_dim) with the target feature map. Return 0 or a negative
- * SP_E_* code with err filled. Called once per view and cached on the device when
- * cache_feature_targets is set, else every time the view is drawn. */
+ * SP_E_* code with err filled. Called once per training view and cached on the device when
+ * cache_feature_targets is set, else every time the view is drawn; and once per held-out view
+ * at the end for res->feature_mse (so it serves every view index). */
 typedef int (*sp_feature_target_fn)(void *user, size_t view, int width, int height, int F,
                                     float *dst, sp_error *err);
 
@@ -149,7 +150,9 @@ typedef struct sp_train_result {
     double psnr, ssim, l1; /* mean over held-out views (or training views when none held out) */
     int n_eval_views;
     int eval_on_train;     /* 1 when metrics are on training views (no held-out views) */
-    double feature_mse;    /* mean over eval views when feature_dim > 0 */
+    double feature_mse;    /* feature_dim > 0: mean squared error of the features rendered at the
+                            * held-out views (training views when none held out, eval_on_train)
+                            * against get_feature_target's maps, over every pixel and channel */
     double last_loss;
     char device[128];
 } sp_train_result;

@@ -295,7 +295,8 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
     if (o.dense.n_scales <= 0) o.dense = sp_clip_dense_opts_default();
     if (!o.source) o.source = "clip";
     if (!o.colmap_dir || !o.out_dir) return sp_error_set(err, SP_E_ARG, "features: need a COLMAP folder and an output folder");
-    if (o.dim < 1 || o.dim > 512) return sp_error_set(err, SP_E_ARG, "features: --dim %d outside 1..512", o.dim);
+    int rc0;
+    if ((rc0 = sp_feature_dim_check(o.dim, SP_E_ARG, "features: --dim", err))) return rc0;
     extract_ctx x;
     memset(&x, 0, sizeof x);
     x.o = &o;

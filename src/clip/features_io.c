@@ -79,6 +79,7 @@ int sp_features_open(const char *dir, sp_features *f, sp_error *err)
                           path, f->dim, f->full_dim);
         goto fail;
     }
+    if ((rc = sp_feature_dim_check(f->dim, SP_E_FORMAT, path, err))) goto fail;
     const cJSON *imgs = cJSON_GetObjectItemCaseSensitive(root, "images");
     if (!cJSON_IsArray(imgs)) {
         rc = sp_error_set(err, SP_E_FORMAT, "%s: missing \"images\" array", path);

@@ -91,3 +91,35 @@ void sp_camera_downscale(sp_camera *cam, int factor)
     cam->width = w; cam->height = h;
     (void)f;
 }
+
+void sp_camera_intrinsics_fov(sp_camera *cam, int width, int height, float hfov_rad)
+{
+    cam->width = width;
+    cam->height = height;
+    cam->fx = cam->fy = 0.5f * (float)width / tanf(0.5f * hfov_rad);
+    cam->cx = 0.5f * (float)width;
+    cam->cy = 0.5f * (float)height;
+    cam->distortion = SP_DIST_NONE;
+    memset(cam->dist, 0, sizeof cam->dist);
+}
+
+void sp_camera_from_pose(sp_camera *cam, const float pos[3], float yaw, float pitch)
+{
+    float cy = cosf(yaw), sy = sinf(yaw), cp = cosf(pitch), sp = sinf(pitch);
+    /* forward f = (cp cy, cp sy, sp); right = f x up normalised = (sy, -cy, 0), which stays
+     * defined looking straight up or down; down = forward x right */
+    sp_vec3 z = sp_v3(cp * cy, cp * sy, sp), x = sp_v3(sy, -cy, 0.f);
+    sp_vec3 y = sp_v3_cross(z, x);
+    float R[9] = {x.x, x.y, x.z, y.x, y.y, y.z, z.x, z.y, z.z};
+    memcpy(cam->R, R, sizeof R);
+    sp_vec3 t = sp_v3_scale(sp_mat3_apply(R, sp_v3(pos[0], pos[1], pos[2])), -1.0f);
+    cam->t[0] = t.x; cam->t[1] = t.y; cam->t[2] = t.z;
+}
+
+void sp_camera_set_world_from_cam(sp_camera *cam, const float M[16])
+{
+    float Rwc[9] = {M[0], M[1], M[2], M[4], M[5], M[6], M[8], M[9], M[10]};
+    sp_mat3_transpose(Rwc, cam->R);
+    sp_vec3 t = sp_v3_scale(sp_mat3_apply(cam->R, sp_v3(M[3], M[7], M[11])), -1.0f);
+    cam->t[0] = t.x; cam->t[1] = t.y; cam->t[2] = t.z;
+}

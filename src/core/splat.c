@@ -3,6 +3,15 @@
 
 #include <string.h>
 
+int sp_feature_dim_check(int dim, int code, const char *what, sp_error *err)
+{
+    if (dim >= 1 && dim <= SP_FEATURE_DIM_MAX) return 0;
+    return sp_error_set(err, code,
+                        "%s: feature dim %d is outside 1..%d (the limit of %d, SP_FEATURE_DIM_MAX, is "
+                        "what the query engine scores; choose --dim %d or less)",
+                        what, dim, SP_FEATURE_DIM_MAX, SP_FEATURE_DIM_MAX, SP_FEATURE_DIM_MAX);
+}
+
 int sp_splat_alloc(sp_splat *s, size_t n, int sh_degree, int feat_dim, sp_error *err)
 {
     memset(s, 0, sizeof *s);

@@ -26,10 +26,9 @@ typedef struct {
 static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp_raster_out *out,
                                                                long tile, float *scratch, const int D)
 {
-    const int W = r->W, H = r->H;
-    const int tx0 = (int)(tile % r->tiles_x) * SP_TILE_SIZE, ty0 = (int)(tile / r->tiles_x) * SP_TILE_SIZE;
-    const int tx1 = tx0 + SP_TILE_SIZE - 1 < W - 1 ? tx0 + SP_TILE_SIZE - 1 : W - 1;
-    const int ty1 = ty0 + SP_TILE_SIZE - 1 < H - 1 ? ty0 + SP_TILE_SIZE - 1 : H - 1;
+    const int W = r->W;
+    const cpu_rect tr = cpu_tile_rect(r, tile);
+    const int tx0 = tr.x0, tx1 = tr.x1, ty0 = tr.y0, ty1 = tr.y1;
     const int npix = (tx1 - tx0 + 1) * (ty1 - ty0 + 1);
 
     float *T = scratch;                          /* [TILE_STRIDE] */
@@ -51,9 +50,8 @@ static inline __attribute__((always_inline)) void tile_forward(cpu_raster *r, sp
     for (uint32_t j = start; j < end && ndone < npix; j++) {
         const cpu_gauss *rec = r->tile_rec + j;
         const int32_t g = rec->g;
-        const int32_t *b = rec->box;
-        const int x0 = b[0] > tx0 ? b[0] : tx0, x1 = b[1] < tx1 ? b[1] : tx1;
-        const int y0 = b[2] > ty0 ? b[2] : ty0, y1 = b[3] < ty1 ? b[3] : ty1;
+        const cpu_rect bx = cpu_box_in_tile(rec, tr);
+        const int x0 = bx.x0, x1 = bx.x1, y0 = bx.y0, y1 = bx.y1;
         const float mx = rec->mx, my = rec->my;
         const float con[3] = {rec->con[0], rec->con[1], rec->con[2]};
         const float op = rec->op, z = rec->z, cut = rec->cut, det_con = rec->det_con;
@@ -116,13 +114,10 @@ static void forward_item(void *vctx, long tile, int thread_id)
     fwd_ctx *c = vctx;
     cpu_raster *r = c->r;
     float *scratch = r->scratch[thread_id].buf;
-    switch (r->D) {
-    case 1: tile_forward(r, c->out, tile, scratch, 1); break;
-    case 3: tile_forward(r, c->out, tile, scratch, 3); break;
-    case 4: tile_forward(r, c->out, tile, scratch, 4); break;
-    case 8: tile_forward(r, c->out, tile, scratch, 8); break;
-    case 16: tile_forward(r, c->out, tile, scratch, 16); break;
-    case 32: tile_forward(r, c->out, tile, scratch, 32); break;
+    switch (r->D) { /* a constant D for each specialised width (device.h), so loops unroll */
+#define SP_WIDTH_CASE(w) case w: tile_forward(r, c->out, tile, scratch, w); break;
+    SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
+#undef SP_WIDTH_CASE
     default: tile_forward(r, c->out, tile, scratch, r->D); break;
     }
 }

@@ -1,6 +1,6 @@
-/* Private to src/render: the device struct, the CPU rasterizer's per-view state, and the CPU
- * pipeline stages (one per file: project.c, tiles.c, rasterize_fwd.c, rasterize_bwd.c, sh.c).
- * raster.c dispatches between these and the CUDA backend (cuda_api.h). */
+/* Private to src/render: the CPU rasterizer's per-view state and the CPU pipeline stages (one per
+ * file: project.c, tiles.c, rasterize_fwd.c, rasterize_bwd.c, rasterize_surface.c, sh.c), which
+ * cpu_backend.c puts behind the render backend table (backend.h). */
 #ifndef SP_RENDER_INTERNAL_H
 #define SP_RENDER_INTERNAL_H
 
@@ -8,18 +8,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "device/device_impl.h"
 #include "semsplat/render.h"
-
-struct sp_device {
-    sp_device_kind kind; /* CPU or CUDA, never AUTO after creation */
-    sp_pool *pool;
-    char name[160];
-    size_t cur_bytes;  /* CPU: live sp_device_alloc bytes + rasterizer scratch */
-    size_t peak_bytes;
-};
-
-/* Records scratch growth (delta > 0) or release (delta < 0) for sp_device_peak_bytes. */
-void sp_device_account(sp_device *dev, long long delta);
 
 /* Grows a host scratch buffer to at least `bytes` (contents not kept), accounting the change
  * to dev. Returns 0 or SP_E_NOMEM. */
@@ -100,6 +90,30 @@ typedef struct cpu_raster {
 /* Slot layout: v_mean2d x, y; v_conic (element convention, in the conic's principal frame:
  * sp_gm_conic_frame) 00, 01, 11; v_opacity; v_depth; then D colour gradients. */
 #define SP_SLOT_FIXED 7
+
+/* Pixel bounds (inclusive) of a tile, clipped to the image; and the part of a Gaussian's pixel
+ * box inside it (empty when x0 > x1 or y0 > y1). Shared by the compositing passes. */
+typedef struct cpu_rect {
+    int x0, x1, y0, y1;
+} cpu_rect;
+
+static inline cpu_rect cpu_tile_rect(const cpu_raster *r, long tile)
+{
+    cpu_rect t;
+    t.x0 = (int)(tile % r->tiles_x) * SP_TILE_SIZE;
+    t.y0 = (int)(tile / r->tiles_x) * SP_TILE_SIZE;
+    t.x1 = t.x0 + SP_TILE_SIZE - 1 < r->W - 1 ? t.x0 + SP_TILE_SIZE - 1 : r->W - 1;
+    t.y1 = t.y0 + SP_TILE_SIZE - 1 < r->H - 1 ? t.y0 + SP_TILE_SIZE - 1 : r->H - 1;
+    return t;
+}
+
+static inline cpu_rect cpu_box_in_tile(const cpu_gauss *rec, cpu_rect t)
+{
+    const int32_t *b = rec->box;
+    cpu_rect o = {b[0] > t.x0 ? b[0] : t.x0, b[1] < t.x1 ? b[1] : t.x1,
+                  b[2] > t.y0 ? b[2] : t.y0, b[3] < t.y1 ? b[3] : t.y1};
+    return o;
+}
 
 /* project.c */
 int cpu_project(cpu_raster *r, sp_error *err);
@@ -234,5 +248,14 @@ _Static_assert(sizeof(cpu_gauss) == 64, "cpu_gauss is one cache line");
 int cpu_reserve_thread_scratch(cpu_raster *r, sp_error *err);
 int cpu_rasterize_forward(cpu_raster *r, sp_raster_out *out, sp_error *err);
 int cpu_rasterize_backward(cpu_raster *r, const sp_raster_grad_in *gin, sp_error *err);
+/* rasterize_surface.c: first-surface depth of the last projection and binning (out [H][W]). */
+int cpu_rasterize_surface(cpu_raster *r, float surface_alpha, float *out, sp_error *err);
+/* sh.c: the CPU SH kernels for the backend table. */
+int cpu_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active, const float *sh,
+                  const float *means, sp_vec3 cam_center, float *rgb, int out_stride, sp_error *err);
+int cpu_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_active,
+                           const float *sh, const float *means, sp_vec3 cam_center,
+                           const float *rgb, const float *v_rgb, int stride, float *v_sh,
+                           float *v_means, sp_error *err);
 
 #endif

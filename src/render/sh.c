@@ -1,12 +1,11 @@
 /* Spherical harmonics -> RGB per Gaussian (degree 0-3, 3DGS basis and +0.5 offset, clamped at
- * 0), forward and backward, on the CPU pool or through the CUDA backend. The per-Gaussian math
- * is sp_gm_sh_to_rgb / sp_gm_sh_to_rgb_vjp in gauss_math.h. Each Gaussian writes only its own
+ * 0), forward and backward: the public calls check their arguments and dispatch through the
+ * render backend table; the CPU kernels here run on the device's pool. The per-Gaussian math is
+ * sp_gm_sh_to_rgb / sp_gm_sh_to_rgb_vjp in gauss_math.h. Each Gaussian writes only its own
  * outputs, so the result is the same for any thread count. */
+#include "render/backend.h"
 #include "render/gauss_math.h"
 #include "render/render_internal.h"
-#ifdef SP_HAVE_CUDA
-#include "render/cuda_api.h"
-#endif
 
 #define CHUNK 4096
 
@@ -48,10 +47,14 @@ int sp_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active, const 
     int rc = check_args("sp_sh_to_rgb", n, degree, degree_active, sh, means, out_stride, err);
     if (rc) return rc;
     if (n > 0 && !rgb) return sp_error_set(err, SP_E_ARG, "sp_sh_to_rgb: NULL rgb");
-#ifdef SP_HAVE_CUDA
-    if (dev->kind == SP_DEVICE_CUDA)
-        return sp_cuda_sh_to_rgb(n, degree, degree_active, sh, means, cam_center, rgb, out_stride, err);
-#endif
+    if (n == 0) return 0;
+    return sp_render_backend_of(dev)->sh_to_rgb(dev, n, degree, degree_active, sh, means,
+                                                cam_center, rgb, out_stride, err);
+}
+
+int cpu_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active, const float *sh,
+                  const float *means, sp_vec3 cam_center, float *rgb, int out_stride, sp_error *err)
+{
     sh_ctx c = {n, sp_sh_coeffs(degree), degree_active, sh, means, NULL, NULL,
                 {cam_center.x, cam_center.y, cam_center.z}, rgb, NULL, NULL, out_stride};
     sp_pool_for(dev->pool, (long)((n + CHUNK - 1) / CHUNK), forward_chunk, &c);
@@ -80,11 +83,17 @@ int sp_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_activ
     if (rc) return rc;
     if (n > 0 && (!rgb || !v_rgb || !v_sh))
         return sp_error_set(err, SP_E_ARG, "sp_sh_to_rgb_backward: NULL rgb, v_rgb or v_sh");
-#ifdef SP_HAVE_CUDA
-    if (dev->kind == SP_DEVICE_CUDA)
-        return sp_cuda_sh_to_rgb_backward(n, degree, degree_active, sh, means, cam_center, rgb,
-                                          v_rgb, stride, v_sh, v_means, err);
-#endif
+    if (n == 0) return 0;
+    return sp_render_backend_of(dev)->sh_to_rgb_backward(dev, n, degree, degree_active, sh, means,
+                                                         cam_center, rgb, v_rgb, stride, v_sh,
+                                                         v_means, err);
+}
+
+int cpu_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_active,
+                           const float *sh, const float *means, sp_vec3 cam_center,
+                           const float *rgb, const float *v_rgb, int stride, float *v_sh,
+                           float *v_means, sp_error *err)
+{
     sh_ctx c = {n, sp_sh_coeffs(degree), degree_active, sh, means, rgb, v_rgb,
                 {cam_center.x, cam_center.y, cam_center.z}, NULL, v_sh, v_means, stride};
     sp_pool_for(dev->pool, (long)((n + CHUNK - 1) / CHUNK), backward_chunk, &c);

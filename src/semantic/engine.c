@@ -58,7 +58,8 @@ void sp_query_engine_free(sp_query_engine *e)
     free(e->rel);
     free(e->scores2);
     free(e->occ);
-    sp_raster_free(e->raster_aux);
+    sp_scene_free(e->scene);
+    sp_scene_free(e->scores_scene);
     free(e);
 }
 
@@ -69,8 +70,8 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
         return sp_error_set(err, SP_E_FORMAT,
                             "query engine: the splat has %d f_sem_* features but the PCA has dim %d",
                             e->splat.feat_dim, e->pca.dim);
-    if (e->pca.dim < 1 || e->pca.dim > 64)
-        return sp_error_set(err, SP_E_FORMAT, "query engine: feature dim %d not in 1..64", e->pca.dim);
+    int rc = sp_feature_dim_check(e->pca.dim, SP_E_FORMAT, "query engine", err);
+    if (rc) return rc;
     size_t n = e->splat.n ? e->splat.n : 1;
     e->opacity = malloc(sizeof(float) * n);
     e->raw = malloc(sizeof(float) * n);
@@ -79,11 +80,10 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
     if (!e->opacity || !e->raw || !e->rel || !e->scores2)
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for %zu Gaussians", n);
     for (size_t i = 0; i < e->splat.n; i++) e->opacity[i] = sp_sigmoid(e->splat.opacity_logits[i]);
-    int rc = sp_raster_create(&e->raster, e->dev, err);
-    if (!rc) rc = sp_raster_create(&e->raster_aux, e->dev, err);
-#ifdef SP_HAVE_CUDA
+    rc = sp_raster_create(&e->raster, e->dev, err);
     /* A GPU engine keeps the features on the GPU and scores them there. */
-    if (!rc && sp_device_kind_of(e->dev) == SP_DEVICE_CUDA && e->splat.n > 0) {
+    if (!rc && sp_device_kind_of(e->dev) == SP_DEVICE_CUDA &&
+        sp_device_supports(e->dev, SP_STAGE_SEM_SCORE, e->splat.feat_dim) && e->splat.n > 0) {
         size_t fb = sizeof(float) * e->splat.n * (size_t)e->splat.feat_dim;
         if (!(e->d_feat = sp_device_alloc(e->dev, fb, err)) ||
             !(e->d_raw = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)) ||
@@ -91,7 +91,6 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
             return err && err->code ? err->code : SP_E_NOMEM;
         rc = sp_device_upload(e->dev, e->d_feat, e->splat.features, fb, err);
     }
-#endif
     return rc;
 }
 
@@ -158,8 +157,9 @@ static int load_cameras(sp_query_engine *e, const char *colmap_dir, sp_error *er
         return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory for cameras");
     }
     for (size_t i = 0; i < m.n_images; i++) {
+        /* The lens is kept: renders use the pinhole part (the renderer ignores distortion) and
+         * heatmaps are resampled into the photo's own pixels (sem_heatmap). */
         if ((rc = sp_colmap_image_camera(&m, i, &e->cams[e->n_cams], err))) break;
-        e->cams[e->n_cams].distortion = SP_DIST_NONE; /* heatmaps are pinhole renders */
         snprintf(e->cam_names[e->n_cams], 256, "%s", m.images[i].name ? m.images[i].name : "");
         e->n_cams++;
     }
@@ -329,16 +329,14 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
         return rc;
     double t1 = sp_time_now();
     int on_gpu = 0;
-#ifdef SP_HAVE_CUDA
     if (e->d_feat && sc.orthonormal) {
         size_t nb = sizeof(float) * e->splat.n;
-        if ((rc = sem_cuda_score(&sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
+        if ((rc = sem_cuda_score(e->dev, &sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
             (rc = sp_device_download(e->dev, e->raw, e->d_raw, nb, err)) ||
             (rc = sp_device_download(e->dev, e->rel, e->d_rel, nb, err)))
             return rc;
         on_gpu = 1;
     }
-#endif
     if (!on_gpu) sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
     res->confidence = robust_max(e->raw, e->opacity, e->opts.min_opacity, e->splat.n);
     float rmax = 0;

@@ -50,6 +50,29 @@ void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int
     }
 }
 
+/* Renders are pinhole; a distorted view's heatmap is resampled into the photo's own pixels (each
+ * undistorted by Newton iteration), so pixel (x, y) of the heatmap is pixel (x, y) of the image
+ * it names. Photo pixels the pinhole render does not cover are black and neutral (0.5). */
+static int to_photo_pixels(const sp_camera *cam, float *rgb, float *rel, sp_error *err)
+{
+    size_t np = (size_t)cam->width * cam->height;
+    sp_camera pin = *cam;
+    pin.distortion = SP_DIST_NONE;
+    float *tmp = malloc(sizeof(float) * np * 3);
+    uint8_t *mask = malloc(np);
+    int rc = 0;
+    if (!tmp || !mask) rc = sp_error_set(err, SP_E_NOMEM, "heatmap: out of memory resampling %dx%d", cam->width, cam->height);
+    if (!rc) rc = sp_camera_remap_from_pinhole(&pin, rgb, 3, cam, tmp, NULL, err);
+    if (!rc) {
+        memcpy(rgb, tmp, sizeof(float) * np * 3);
+        rc = sp_camera_remap_from_pinhole(&pin, rel, 1, cam, tmp, mask, err);
+    }
+    if (!rc)
+        for (size_t p = 0; p < np; p++) rel[p] = mask[p] ? tmp[p] : 0.5f;
+    free(tmp), free(mask);
+    return rc;
+}
+
 int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
                 sp_error *err)
 {
@@ -69,6 +92,7 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
     }
     /* The per-Gaussian relevancy composited like a colour (2 channels, not D), over the RGB. */
     if ((rc = sem_render_scores(e, cam, raw, rel, rgb, err))) goto done;
+    if (cam->distortion != SP_DIST_NONE && (rc = to_photo_pixels(cam, rgb, rel, err))) goto done;
     /* Stretch the visible relevancy to the full colour range when the query was found, so a
      * weak-but-real CLIP match still reads; a query that was not found is faded (cold). */
     float rmax = 0.5f;

@@ -18,13 +18,15 @@ sp_lift_opts sp_lift_opts_default(void)
 
 typedef struct {
     sp_device *dev;
-    void *means, *quats, *scales, *opac, *colors, *image, *v_image, *v_colors;
+    sp_scene *scene; /* the splat's geometry on the device */
+    void *colors, *image, *v_image, *v_colors;
 } lift_bufs;
 
 static void bufs_free(lift_bufs *b)
 {
-    void **p[] = {&b->means, &b->quats, &b->scales, &b->opac, &b->colors, &b->image, &b->v_image,
-                  &b->v_colors};
+    sp_scene_free(b->scene);
+    b->scene = NULL;
+    void **p[] = {&b->colors, &b->image, &b->v_image, &b->v_colors};
     for (size_t i = 0; i < sizeof p / sizeof p[0]; i++) {
         if (*p[i]) sp_device_release(b->dev, *p[i]);
         *p[i] = NULL;
@@ -37,7 +39,8 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
 {
     sp_lift_opts o = opts ? *opts : sp_lift_opts_default();
     if (!r || !s || !cams || !target) return sp_error_set(err, SP_E_ARG, "lift: missing argument");
-    if (dim < 1 || dim > 512) return sp_error_set(err, SP_E_ARG, "lift: feature dim %d not in 1..512", dim);
+    int rc = sp_feature_dim_check(dim, SP_E_ARG, "lift", err);
+    if (rc) return rc;
     if (n_views == 0) return sp_error_set(err, SP_E_ARG, "lift: no views");
     if (s->n == 0) return sp_error_set(err, SP_E_ARG, "lift: the splat has no Gaussians");
     int maxw = 0, maxh = 0;
@@ -56,15 +59,14 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
     b.dev = dev;
     float *target_buf = NULL, *vimg = NULL, *acc = NULL;
     uint8_t *mask = NULL;
-    int rc = 0;
     sp_progress bar;
     int bar_on = 0;
 
-    if (!(b.means = sp_device_alloc(dev, n * 3 * sizeof(float), err)) ||
-        !(b.quats = sp_device_alloc(dev, n * 4 * sizeof(float), err)) ||
-        !(b.scales = sp_device_alloc(dev, n * 3 * sizeof(float), err)) ||
-        !(b.opac = sp_device_alloc(dev, n * sizeof(float), err)) ||
-        !(b.colors = sp_device_alloc(dev, n * C * sizeof(float), err)) ||
+    sp_raster_in in;
+    if ((rc = sp_scene_create(&b.scene, dev, s, 0, err)) ||
+        (rc = sp_scene_raster_in(b.scene, &in, err)))
+        goto done;
+    if (!(b.colors = sp_device_alloc(dev, n * C * sizeof(float), err)) ||
         !(b.v_colors = sp_device_alloc(dev, n * C * sizeof(float), err)) ||
         !(b.image = sp_device_alloc(dev, npix * C * sizeof(float), err)) ||
         !(b.v_image = sp_device_alloc(dev, npix * C * sizeof(float), err))) {
@@ -72,11 +74,6 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
         if (rc == 0) rc = SP_E_NOMEM;
         goto done;
     }
-    if ((rc = sp_device_upload(dev, b.means, s->means, n * 3 * sizeof(float), err)) ||
-        (rc = sp_device_upload(dev, b.quats, s->quats, n * 4 * sizeof(float), err)) ||
-        (rc = sp_device_upload(dev, b.scales, s->log_scales, n * 3 * sizeof(float), err)) ||
-        (rc = sp_device_upload(dev, b.opac, s->opacity_logits, n * sizeof(float), err)))
-        goto done;
     target_buf = malloc(npix * (size_t)dim * sizeof(float));
     vimg = malloc(npix * (size_t)C * sizeof(float));
     acc = malloc(n * (size_t)C * sizeof(float));
@@ -107,8 +104,9 @@ int sp_semantic_lift(sp_raster *r, sp_splat *s, int dim, const sp_camera *cams, 
             o_[dim] = 1.0f;
         }
         if ((rc = sp_device_upload(dev, b.v_image, vimg, np * C * sizeof(float), err))) goto done;
-        sp_raster_in in = {n, b.means, b.quats, b.scales, b.opac, b.colors, C, NULL};
-        sp_raster_out out = {b.image, NULL, NULL};
+        in.colors = b.colors;
+        in.D = C;
+        sp_raster_out out = {b.image, NULL, NULL, NULL};
         if ((rc = sp_raster_forward(r, cam, &cfg, &in, &out, err))) {
             sp_error_prefix(err, "lift: view %zu: ", v);
             goto done;

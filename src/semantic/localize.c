@@ -267,15 +267,16 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
 
 /* ---- views ---------------------------------------------------------------------------------------- */
 
-void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
-                      const float *alpha, size_t npix, float *raw, float *rel)
+int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                     const float *alpha, size_t npix, float *raw, float *rel, sp_error *err)
 {
     int D = sc->dim;
+    /* Scoring the un-normalised composite instead would be another computation (decode(f)
+     * includes the PCA mean, so scaling f by alpha changes the cosine): fail instead. */
     float *norm = malloc(sizeof(float) * npix * (size_t)D);
-    if (!norm) { /* degrade to un-normalised features rather than failing a heatmap */
-        sp_sem_score(sc, sp_device_pool(e->dev), npix, feat, raw, rel);
-        return;
-    }
+    if (!norm)
+        return sp_error_set(err, SP_E_NOMEM, "query: out of memory scoring %zu pixels x %d features",
+                            npix, D);
     for (size_t p = 0; p < npix; p++) {
         float a = alpha[p] > 1e-6f ? alpha[p] : 1.0f;
         for (int c = 0; c < D; c++) norm[p * D + c] = feat[p * D + c] / a;
@@ -287,6 +288,14 @@ void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *
             if (rel) rel[p] = 0.5f;
         }
     free(norm);
+    return 0;
+}
+
+/* The engine's splat as a scene (RGB and features), uploaded once on first use. */
+static int ensure_scene(sp_query_engine *e, sp_error *err)
+{
+    if (e->scene) return 0;
+    return sp_scene_create(&e->scene, e->dev, &e->splat, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
 }
 
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
@@ -300,15 +309,19 @@ int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, floa
         free(two), free(alpha);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering %dx%d", cam->width, cam->height);
     }
-    /* a view of the splat whose "features" are the scores; the aux raster's cache is dropped
-     * because the scores change with every query */
+    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and
+     * takes only the new scores with every query */
     sp_splat view = *s;
     view.features = e->scores2;
     view.feat_dim = 2;
-    sp_raster_forget(e->raster_aux);
-    sp_render_request req = {rgb, two, NULL, alpha, NULL};
-    int rc = sp_render_splat(e->raster_aux, &view, cam, &req, err);
-    sp_raster_forget(e->raster_aux);
+    int rc = e->scores_scene
+                 ? sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err)
+                 : sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_FEATURES, err);
+    sp_render_request req = {.features = two, .alpha = alpha};
+    if (!rc) rc = sp_render_views(e->raster, e->scores_scene, cam, 1, &req, err);
+    sp_render_request req_rgb = {.rgb = rgb};
+    if (!rc && rgb && !(rc = ensure_scene(e, err)))
+        rc = sp_render_views(e->raster, e->scene, cam, 1, &req_rgb, err);
     if (!rc)
         for (size_t p = 0; p < np; p++) {
             int ok = alpha[p] > 0.5f;
@@ -334,8 +347,10 @@ static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float 
     if (rgb) *rgb = malloc(sizeof(float) * np * 3);
     if (!*feat || !*alpha || (depth && !*depth) || (rgb && !*rgb))
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering view %d", v);
-    sp_render_request req = {rgb ? *rgb : NULL, *feat, depth ? *depth : NULL, *alpha, NULL};
-    return sp_render_splat(e->raster, &e->splat, cam, &req, err);
+    int rc = ensure_scene(e, err);
+    sp_render_request req = {.rgb = rgb ? *rgb : NULL, .features = *feat,
+                             .depth = depth ? *depth : NULL, .alpha = *alpha};
+    return rc ? rc : sp_render_views(e->raster, e->scene, cam, 1, &req, err);
 }
 
 /* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels: a cheap occlusion test for
@@ -455,7 +470,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
      * around the house) all get views; near-duplicate directions (< 25 degrees) count half. */
     int got = 0;
     while (got < k) {
-        if (got >= k_min) { /* past the minimum, stop once 90% of the relevant set is seen */
+        if (got >= k_min) { /* past the minimum, stop once 97% of the relevant set is seen */
             double seen = 0;
             for (size_t j = 0; j < n_smp; j++) seen += covered[j] ? wsmp[j] : 0;
             if (seen >= 0.97 * tot) break;
@@ -525,8 +540,8 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
             rel = malloc(sizeof(float) * np);
             if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
         }
+        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
         if (!rc) {
-            sem_score_pixels(e, sc, feat, alpha, np, raw, rel);
             /* relevant pixels, eroded by one pixel: at object borders the expected depth blends
              * the object with what is behind it and would back-project into the gap */
             uint8_t *keep = calloc(np, 1);

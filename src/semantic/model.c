@@ -90,12 +90,14 @@ done:
 typedef struct {
     sp_features *f;
     const long *map_of_view;
-    const sp_camera *cams;
+    const sp_camera *cams;     /* pinhole, as rendered */
+    const sp_camera *map_cams; /* the lens each map was computed through (at the map's size) */
 } lift_ctx;
 
+/* A map of a distorted image sees each ray at the distorted pixel: it is resampled into the
+ * pinhole camera the renderer uses, and pixels the image did not see are masked out. */
 static int lift_target(void *user, size_t view, float *target, uint8_t *mask, sp_error *err)
 {
-    (void)mask;
     lift_ctx *c = user;
     size_t i = (size_t)c->map_of_view[view];
     sp_features_image *im = &c->f->images[i];
@@ -105,10 +107,14 @@ static int lift_target(void *user, size_t view, float *target, uint8_t *mask, sp
         return sp_error_set(err, SP_E_FORMAT, "%s: map is %dx%d, the camera %dx%d", im->map_file,
                             im->w, im->h, c->cams[view].width, c->cams[view].height);
     }
-    memcpy(target, im->map, sizeof(float) * (size_t)im->w * im->h * c->f->dim);
+    if (c->map_cams[view].distortion != SP_DIST_NONE)
+        rc = sp_camera_remap_to_pinhole(&c->map_cams[view], im->map, c->f->dim, &c->cams[view], target,
+                                        mask, err);
+    else
+        memcpy(target, im->map, sizeof(float) * (size_t)im->w * im->h * c->f->dim);
     free(im->map); /* one map at a time: the house has 150 of them */
     im->map = NULL;
-    return 0;
+    return rc;
 }
 
 int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char *colmap_dir,
@@ -119,14 +125,15 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
     sp_raster *r = NULL;
     memset(&f, 0, sizeof f);
     memset(&m, 0, sizeof m);
-    sp_camera *cams = NULL;
+    sp_camera *cams = NULL, *map_cams = NULL;
     long *map_of_view = NULL;
-    int rc;
+    int rc, any_distorted = 0;
     if ((rc = sp_features_open(features_dir, &f, err))) return rc;
     if ((rc = sp_colmap_read(colmap_dir, &m, err))) goto done;
     cams = calloc(m.n_images ? m.n_images : 1, sizeof *cams);
+    map_cams = calloc(m.n_images ? m.n_images : 1, sizeof *map_cams);
     map_of_view = calloc(m.n_images ? m.n_images : 1, sizeof *map_of_view);
-    if (!cams || !map_of_view) {
+    if (!cams || !map_cams || !map_of_view) {
         rc = sp_error_set(err, SP_E_NOMEM, "lift: out of memory");
         goto done;
     }
@@ -141,6 +148,8 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
         float sx = (float)im->w / (float)cam.width, sy = (float)im->h / (float)cam.height;
         cam.fx *= sx, cam.cx *= sx, cam.fy *= sy, cam.cy *= sy;
         cam.width = im->w, cam.height = im->h;
+        map_cams[nv] = cam; /* distortion acts on normalised coordinates: unchanged by scaling */
+        any_distorted |= cam.distortion != SP_DIST_NONE;
         cam.distortion = SP_DIST_NONE;
         cams[nv] = cam;
         map_of_view[nv] = k;
@@ -152,9 +161,11 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
         goto done;
     }
     if ((rc = sp_raster_create(&r, dev, err))) goto done;
-    lift_ctx ctx = {&f, map_of_view, cams};
+    lift_ctx ctx = {&f, map_of_view, cams, map_cams};
+    sp_lift_opts lo = sp_lift_opts_default();
+    lo.mask = any_distorted;
     double t0 = sp_time_now();
-    rc = sp_semantic_lift(r, s, f.dim, cams, nv, lift_target, &ctx, NULL, NULL, log, err);
+    rc = sp_semantic_lift(r, s, f.dim, cams, nv, lift_target, &ctx, &lo, NULL, log, err);
     if (!rc)
         sp_logf(log, SP_LOG_INFO, "lifted %d-dim %s features from %zu views into %zu Gaussians in %.2f s",
                 f.dim, f.source, nv, s->n, sp_time_now() - t0);
@@ -163,6 +174,7 @@ done:
     sp_colmap_free(&m);
     sp_features_free(&f);
     free(cams);
+    free(map_cams);
     free(map_of_view);
     return rc;
 }

@@ -25,11 +25,14 @@ int sp_sem_pca_read(const char *mean_path, const char *basis_path, sp_sem_pca *p
     if (rc) return rc;
     rc = sp_npy_read(basis_path, &b, err);
     if (rc) goto done;
-    if (b.ndim != 2 || b.shape[0] < 1 || b.shape[0] > 64 || b.shape[1] < 1) {
-        rc = sp_error_set(err, SP_E_FORMAT, "%s: PCA basis must be [dim<=64][full_dim], got ndim %d",
+    if (b.ndim != 2 || b.shape[1] < 1) {
+        rc = sp_error_set(err, SP_E_FORMAT, "%s: PCA basis must be [dim][full_dim], got %d dimensions",
                           basis_path, b.ndim);
         goto done;
     }
+    if ((rc = sp_feature_dim_check(b.shape[0] > INT32_MAX ? INT32_MAX : (int)b.shape[0], SP_E_FORMAT,
+                                   basis_path, err)))
+        goto done;
     if (sp_npy_count(&m) != b.shape[1]) {
         rc = sp_error_set(err, SP_E_FORMAT, "%s: PCA mean has %zu values but the basis has full_dim %zu",
                           mean_path, sp_npy_count(&m), b.shape[1]);
@@ -82,9 +85,9 @@ static int unit_copy(const float *v, int n, float *out)
 int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *query,
                        const float *negatives, int n_neg, float temperature, sp_error *err)
 {
-    if (!pca || !pca->basis || pca->dim < 1 || pca->dim > 64)
-        return sp_error_set(err, SP_E_ARG, "semantic scorer: feature dim %d not in 1..64",
-                            pca ? pca->dim : 0);
+    if (!pca || !pca->basis) return sp_error_set(err, SP_E_ARG, "semantic scorer: no PCA");
+    int rc = sp_feature_dim_check(pca->dim, SP_E_ARG, "semantic scorer", err);
+    if (rc) return rc;
     if (n_neg < 0 || n_neg > SP_SEM_MAX_NEGATIVES)
         return sp_error_set(err, SP_E_ARG, "semantic scorer: %d negatives (at most %d)", n_neg,
                             SP_SEM_MAX_NEGATIVES);
@@ -157,7 +160,7 @@ static void score_chunk(void *ctx, long chunk, int tid)
     const int D = sc->dim, NN = sc->n_neg;
     size_t i0 = (size_t)chunk * SCORE_CHUNK, i1 = i0 + SCORE_CHUNK;
     if (i1 > j->n) i1 = j->n;
-    float ft[64][LANES]; /* a block of features, transposed */
+    float ft[SP_FEATURE_DIM_MAX][LANES]; /* a block of features, transposed */
     for (size_t b0 = i0; b0 < i1; b0 += LANES) {
         int L = (int)(i1 - b0 < LANES ? i1 - b0 : LANES);
         for (int g = 0; g < LANES; g++)

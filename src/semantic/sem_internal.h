@@ -26,7 +26,9 @@ struct sp_query_engine {
     float *opacity;            /* [n] sigmoid(logit) */
     float *raw, *rel;          /* [n] scratch: per-Gaussian raw cosine and relevancy */
     float *scores2;            /* [n][2] (raw, rel) rendered as two channels */
-    sp_raster *raster_aux;     /* renders of scores2 (its own upload cache) */
+    sp_scene *scene;           /* the splat's RGB and features on the device (made on first render) */
+    sp_scene *scores_scene;    /* the same geometry with scores2 as 2-channel features, updated
+                                * per query (made on first use) */
     float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
     uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
     int occ_dim[3];
@@ -56,7 +58,8 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
                            sp_query_result *res, sp_error *err);
 /* Chooses cameras that see the relevant set (mask [n], or the thresholds when mask is NULL)
  * unoccluded (occupancy-grid test) and well framed, greedily covering what earlier picks did not
- * see: at least k_min views (when they add anything), then more up to k until 90% is covered.
+ * see: at least k_min views (when they add anything), then more up to k until 97% of the
+ * relevant set (weighted by opacity) is covered.
  * Writes indices best first; returns the count or a negative error. */
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                    const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err);
@@ -68,8 +71,9 @@ int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_res
  * 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err);
-/* Per-pixel raw cosine / relevancy of a rendered feature image where alpha > 0.5 (else -1 / 0.5). */
-void sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
-                      const float *alpha, size_t npix, float *raw, float *rel);
+/* Per-pixel raw cosine / relevancy of a rendered feature image (feat [npix][dim], alpha [npix])
+ * where alpha > 0.5 (else -1 / 0.5). SP_E_NOMEM when the normalised copy cannot be made. */
+int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,
+                     const float *alpha, size_t npix, float *raw, float *rel, sp_error *err);
 
 #endif

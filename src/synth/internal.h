@@ -84,7 +84,7 @@ int geom_sphere(wbuild *b, const xform *to_world, double radius, int mat, int ob
 int geom_plane(wbuild *b, const xform *to_world, const double normal[3], const double size[2],
                int mat, int obj);
 /* Loads a mesh file through assimp; `fallback` is the SDF material (used where the mesh has no
- * texture and sdf_material_set). Missing textures fail unless b->skip_missing. */
+ * texture and sdf_material_set). A missing texture is a warning (the material colour is used). */
 int geom_mesh(wbuild *b, const xform *to_world, const char *path, const double scale[3],
               const sp_synth_material *fallback, int sdf_material_set, int obj, sp_error *err);
 

@@ -125,10 +125,11 @@ static int mesh_material_index(wbuild *b, const char *path, const mesh_material 
     if (mm->texture[0] && mm->texture[0] != '*') {
         char tpath[PATH_MAX * 2];
         if (find_texture(path, mm->texture, tpath, sizeof tpath)) {
-            if (!b->skip_missing)
-                return sp_error_set(err, SP_E_NOTFOUND, "missing texture %s (used by mesh %s)", tpath, path);
-            sp_logf(b->log, SP_LOG_WARN, "missing texture %s (used by mesh %s), using its colour", tpath, path);
-            b->w->n_missing++;
+            /* As Gazebo: the mesh is drawn in its material colour, with a warning (a texture
+             * changes how a thing looks, not where it is; missing meshes stay errors). */
+            sp_logf(b->log, SP_LOG_WARN, "missing texture %s (used by mesh %s): drawn in its material colour", tpath,
+                    path);
+            b->w->n_missing_textures++;
         } else {
             int ti = wb_texture(b, tpath, err);
             if (ti < 0) return sp_error_prefix(err, "texture of mesh %s: ", path);

@@ -96,24 +96,38 @@ void sp_synth_class_name(const char *model_name, char *out, size_t cap)
     out[o] = 0;
 }
 
-static int starts_with_structure(const char *s)
+/* Structure is what a building is made of: walls, floors, ceilings and the ground. In English
+ * compounds the last word is the head and the words before it modify it, so "shop wall" and
+ * "kitchen floor" are structure while a "floor lamp", "wall clock" or "ceiling fan" is furniture
+ * named after where it stands or hangs. A plane is structure when it is the ground or a floor
+ * ("ground plane", Gazebo's usual name). */
+static int is_structure_class(const char *cls)
 {
-    static const char *const words[] = {"wall", "floor", "ground", "ceiling", NULL};
-    for (int i = 0; words[i]; i++)
-        if (!strncasecmp(s, words[i], strlen(words[i]))) return 1;
+    static const char *const heads[] = {"wall", "walls", "floor", "floors", "flooring", "ground",
+                                        "ceiling", "ceilings", NULL};
+    static const char *const plane_of[] = {"ground", "floor", NULL};
+    if (!cls || !*cls) return 0;
+    const char *sp = strrchr(cls, ' ');
+    const char *head = sp ? sp + 1 : cls;
+    for (int i = 0; heads[i]; i++)
+        if (!strcasecmp(head, heads[i])) return 1;
+    if (sp && !strcasecmp(head, "plane")) {
+        const char *b = sp; /* the word before "plane" */
+        while (b > cls && b[-1] != ' ') b--;
+        for (int i = 0; plane_of[i]; i++)
+            if ((size_t)(sp - b) == strlen(plane_of[i]) && !strncasecmp(b, plane_of[i], (size_t)(sp - b)))
+                return 1;
+    }
     return 0;
 }
 
 int sp_synth_is_structure(const char *model_name, const char *class_name)
 {
-    static const char *const words[] = {"wall", "walls", "floor", "floors", "ground", "ceiling",
-                                        "ceilings", NULL};
-    if (model_name && starts_with_structure(model_name)) return 1;
-    if (!class_name || !*class_name) return 0;
-    /* "shop wall", "retail floor": the last word says what it is ("floor lamp" is not a floor). */
-    const char *sp = strrchr(class_name, ' ');
-    const char *lastw = sp ? sp + 1 : class_name;
-    for (int i = 0; words[i]; i++)
-        if (!strcasecmp(lastw, words[i])) return 1;
-    return 0;
+    /* The class comes from the model a world includes; the instance name can still say what it
+     * is (a box included as "north_wall"), read the same way. */
+    if (is_structure_class(class_name)) return 1;
+    if (!model_name || !*model_name) return 0;
+    char own[128];
+    sp_synth_class_name(model_name, own, sizeof own);
+    return is_structure_class(own);
 }

@@ -50,23 +50,12 @@ static uint8_t *downscale_rgb(const uint8_t *src, int W, int H, int f, int *ow, 
     return dst;
 }
 
-/* COLMAP's distortion on normalised image coordinates (SIMPLE_RADIAL, RADIAL, OPENCV). */
-static void distort(const sp_camera *c, double u, double v, double *du, double *dv)
-{
-    double k1 = c->dist[0], k2 = c->distortion == SP_DIST_SIMPLE_RADIAL ? 0 : c->dist[1];
-    double p1 = c->distortion == SP_DIST_OPENCV ? c->dist[2] : 0;
-    double p2 = c->distortion == SP_DIST_OPENCV ? c->dist[3] : 0;
-    double r2 = u * u + v * v, radial = k1 * r2 + k2 * r2 * r2;
-    *du = u + u * radial + 2 * p1 * u * v + p2 * (r2 + 2 * u * u);
-    *dv = v + v * radial + 2 * p2 * u * v + p1 * (r2 + 2 * v * v);
-}
-
 /* Where output pixel (x, y) of the pinhole camera with focal lengths (fx', fy') = s * (fx, fy)
  * samples the distorted image. */
 static void undistort_source(const sp_camera *c, double s, double x, double y, double *sx, double *sy)
 {
     double u = (x + 0.5 - c->cx) / (s * c->fx), v = (y + 0.5 - c->cy) / (s * c->fy), du, dv;
-    distort(c, u, v, &du, &dv);
+    sp_camera_distort(c, u, v, &du, &dv);
     *sx = du * c->fx + c->cx - 0.5;
     *sy = dv * c->fy + c->cy - 0.5;
 }

@@ -1,7 +1,8 @@
 /* The training loop: one view per step, SH -> colours (+ features) -> rasterize -> loss ->
  * backward -> Adam, with gsplat's density control every refine_every steps, held-out
  * evaluation, checkpoints and a NaN guard. Parameters, gradients and moments stay on the
- * sp_device; the per-element kernels dispatch to CUDA (train_cuda_api.h) or the CPU (loss.c). */
+ * sp_device; the per-element kernels come from the device's table (train_kernels.h: CUDA or
+ * the CPU's loss.c). */
 #include "semsplat/io.h"
 #include "train/train_internal.h"
 
@@ -17,7 +18,7 @@ enum { G_MEANS, G_QUATS, G_SCALES, G_OPAC, G_SH0, G_SHN, G_FEAT, N_GROUPS };
 typedef struct {
     sp_device *dev;
     sp_pool *pool;
-    int cuda;
+    const tr_kernels *k; /* the device's per-element kernels */
     size_t n;
     int K, F, D, rgb;            /* SH coeffs, feature dim, rendered channels, RGB rendered? */
     float *p[N_GROUPS], *g[N_GROUPS], *m[N_GROUPS], *v[N_GROUPS];
@@ -40,59 +41,39 @@ static size_t group_width(const tr_state *s, int g)
     }
 }
 
-/* ---- kernel dispatch --------------------------------------------------------------------------- */
+/* ---- kernel dispatch: the device's table of per-element kernels (train_kernels.h) -------------- */
 
 static int k_copy_columns(tr_state *s, float *dst, int ds, int doff, const float *src, int ss,
                           int soff, size_t rows, int cols, sp_error *err)
 {
     if (cols <= 0 || rows == 0) return SP_OK;
-#ifdef SP_HAVE_CUDA
-    if (s->cuda) return sp_cuda_copy_columns(dst, ds, doff, src, ss, soff, rows, cols, err);
-#endif
-    cpu_copy_columns(dst, ds, doff, src, ss, soff, rows, cols);
-    return SP_OK;
+    return s->k->copy_columns(s->dev, dst, ds, doff, src, ss, soff, rows, cols, err);
 }
 
 static int k_adam(tr_state *s, float *p, const float *g, float *m, float *v, size_t n, float lr,
                   const sp_train_options *o, int step, sp_error *err)
 {
     if (n == 0) return SP_OK;
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_adam_step(p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps, step, err);
-#endif
-    cpu_adam_step(s->pool, p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps, step);
-    return SP_OK;
+    return s->k->adam_step(s->dev, p, g, m, v, n, lr, o->adam_beta1, o->adam_beta2, o->adam_eps,
+                           step, err);
 }
 
 static int k_rgb_loss(tr_state *s, const float *pred, int stride, const float *target, int H, int W,
                       float lambda, float *scratch, float *v_pred, double stats[4], sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_rgb_loss(pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
-#endif
-    return cpu_rgb_loss(s->pool, pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
+    return s->k->rgb_loss(s->dev, pred, stride, target, H, W, 3, lambda, scratch, v_pred, stats, err);
 }
 
 static int k_feature_mse(tr_state *s, const float *pred, int stride, int off, const float *target,
                          int H, int W, float lambda, float *v_pred, double *mse, sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_feature_mse(pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
-#endif
-    return cpu_feature_mse(s->pool, pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
+    return s->k->feature_mse(s->dev, pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
 }
 
 static int k_accumulate(tr_state *s, const int32_t *radii, float sx, float sy, sp_error *err)
 {
-#ifdef SP_HAVE_CUDA
-    if (s->cuda)
-        return sp_cuda_densify_accumulate(s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count, err);
-#endif
-    cpu_densify_accumulate(s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count);
-    return SP_OK;
+    return s->k->densify_accumulate(s->dev, s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count,
+                                    err);
 }
 
 /* ---- device state ------------------------------------------------------------------------------ */
@@ -263,7 +244,7 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
         /* SH colours depend on the direction from this view's camera, as in training */
         if ((rc = prepare_colors(s, sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
         sp_raster_in in = raster_in(s, bg);
-        sp_raster_out out = {image_d, NULL, NULL};
+        sp_raster_out out = {image_d, NULL, NULL, NULL};
         sp_raster_cfg cfg = sp_raster_cfg_default();
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
         if ((rc = sp_device_download(s->dev, image_h, image_d, (size_t)W * H * D * sizeof(float), err)))
@@ -303,7 +284,7 @@ int sp_train_evaluate(sp_device *dev, const sp_train_data *data, const sp_splat 
     memset(&s, 0, sizeof s);
     s.dev = dev;
     s.pool = sp_device_pool(dev);
-    s.cuda = sp_device_kind_of(dev) == SP_DEVICE_CUDA;
+    s.k = tr_kernels_of(dev);
     s.K = sp_sh_coeffs(splat->sh_degree);
     s.F = 0;
     s.D = 3;
@@ -442,6 +423,58 @@ static int bufs_init(tr_state *s, const sp_train_data *d, const sp_train_options
     return SP_OK;
 }
 
+/* Held-out feature error: the features rendered at each held-out view (every view when none is
+ * held out, res->eval_on_train) against that view's target from get_feature_target, as one mean
+ * of squared differences over all pixels and channels of those views. */
+static int evaluate_features(tr_state *s, sp_raster *r, const sp_train_data *d,
+                             const sp_train_options *o, step_bufs *b, int active,
+                             sp_train_result *res, sp_error *err)
+{
+    int any_test = 0;
+    for (size_t i = 0; i < d->n_views; i++) any_test |= d->views[i].is_test;
+    float *image_h = malloc(b->maxpx * (size_t)s->D * sizeof(float));
+    float *bg = calloc((size_t)s->D, sizeof(float));
+    int rc = SP_OK;
+    if (!image_h || !bg) {
+        rc = sp_error_set(err, SP_E_NOMEM, "feature evaluation: out of memory");
+        goto done;
+    }
+    if (s->rgb)
+        for (int c = 0; c < 3; c++) bg[c] = o->background[c];
+    double sse = 0, count = 0;
+    int nv = 0;
+    for (size_t i = 0; i < d->n_views; i++) {
+        const sp_train_view *v = &d->views[i];
+        if (any_test && !v->is_test) continue;
+        int W = v->cam.width, H = v->cam.height;
+        if ((rc = prepare_colors(s, o->sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
+        sp_raster_in in = raster_in(s, bg);
+        sp_raster_out out = {b->image, NULL, NULL, NULL};
+        sp_raster_cfg cfg = sp_raster_cfg_default();
+        if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
+        if ((rc = sp_device_download(s->dev, image_h, b->image, (size_t)W * H * s->D * sizeof(float), err)))
+            goto done;
+        if ((rc = o->get_feature_target(o->feature_user, i, W, H, s->F, b->ftmp_h, err))) {
+            sp_error_prefix(err, "feature target of view '%s': ", v->name);
+            goto done;
+        }
+        double mse = 0;
+        if ((rc = cpu_feature_mse(s->pool, image_h, s->D, s->rgb ? 3 : 0, b->ftmp_h, H, W, s->F, 0.0f,
+                                  NULL, &mse, err)))
+            goto done;
+        sse += mse * W * H * s->F;
+        count += (double)W * H * s->F;
+        nv++;
+    }
+    res->feature_mse = count > 0 ? sse / count : 0;
+    res->n_eval_views = nv;
+    res->eval_on_train = !any_test;
+done:
+    free(image_h);
+    free(bg);
+    return rc;
+}
+
 static int check_options(const sp_train_data *d, const sp_train_options *o, const sp_splat *sp,
                          sp_error *err)
 {
@@ -549,7 +582,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
     memset(&s, 0, sizeof s);
     s.dev = dev;
     s.pool = sp_device_pool(dev);
-    s.cuda = sp_device_kind_of(dev) == SP_DEVICE_CUDA;
+    s.k = tr_kernels_of(dev);
     s.K = sp_sh_coeffs(o->sh_degree);
     s.F = o->feature_dim;
     s.rgb = !o->freeze_geometry;
@@ -623,7 +656,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
 
     sp_progress prog;
     sp_progress_begin(&prog, log, "train", o->steps, "steps");
-    double loss_ema = 0, mse_ema = 0, fmse_ema = 0;
+    double loss_ema = 0, mse_ema = 0;
     float *bg = malloc((size_t)s.D * sizeof(float));
     if (!bg) {
         rc = sp_error_set(err, SP_E_NOMEM, "train: out of memory");
@@ -649,7 +682,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
             for (int c = 0; c < 3; c++)
                 bg[c] = o->random_background ? (float)tr_uniform(&rng) : o->background[c];
         sp_raster_in in = raster_in(&s, bg);
-        sp_raster_out out = {b.image, NULL, NULL};
+        sp_raster_out out = {b.image, NULL, NULL, NULL};
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) break;
         if ((rc = sp_device_zero(dev, b.v_image, px * s.D * sizeof(float), err))) break;
         double st[4] = {0, 0, 1, 0}, fmse = 0;
@@ -750,7 +783,6 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
 
         loss_ema = step == start_step ? loss : 0.9 * loss_ema + 0.1 * loss;
         mse_ema = step == start_step ? st[3] : 0.9 * mse_ema + 0.1 * st[3];
-        fmse_ema = step == start_step ? fmse : 0.9 * fmse_ema + 0.1 * fmse;
         res->last_loss = loss;
         int done = step + 1;
         if (o->checkpoint_every > 0 && done % o->checkpoint_every == 0 && done < o->steps) {
@@ -778,18 +810,14 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         }
     }
     sp_progress_end(&prog, rc ? "stopped" : NULL);
-    if (!rc && s.rgb) {
-        int active = o->sh_degree_interval > 0 ? (step - 1) / o->sh_degree_interval : o->sh_degree;
-        if (active < init_degree) active = init_degree;
-        if (active > o->sh_degree) active = o->sh_degree;
-        if (active < 0) active = 0;
-        /* The saved splat is rendered by viewers at its full degree; evaluate it that way only
-         * when training reached it, else at the degree trained. */
-        rc = evaluate_state(&s, r, d, o->sh_degree, active, o->background, res, err);
-    }
-    /* Feature error: running mean over the last training steps (the caller evaluates held-out
-     * feature maps itself, it owns their targets). */
-    res->feature_mse = fmse_ema;
+    int active = o->sh_degree_interval > 0 ? (step - 1) / o->sh_degree_interval : o->sh_degree;
+    if (active < init_degree) active = init_degree;
+    if (active > o->sh_degree) active = o->sh_degree;
+    if (active < 0) active = 0;
+    /* The saved splat is rendered by viewers at its full degree; evaluate it that way only
+     * when training reached it, else at the degree trained. */
+    if (!rc && s.rgb) rc = evaluate_state(&s, r, d, o->sh_degree, active, o->background, res, err);
+    if (!rc && s.F) rc = evaluate_features(&s, r, d, o, &b, active, res, err);
     res->steps = step;
     res->gaussians = last_good.n;
     res->seconds = sp_time_now() - t0;

@@ -1,11 +1,11 @@
 /* Private to the train module: CPU versions of the per-element kernels declared for CUDA in
- * train_cuda_api.h (same semantics, host pointers, a thread pool), the checkpoint format, and a
+ * train_kernels.h (same semantics, host pointers, a thread pool), the checkpoint format, and a
  * small deterministic RNG. */
 #ifndef SP_TRAIN_INTERNAL_H
 #define SP_TRAIN_INTERNAL_H
 
 #include "semsplat/train.h"
-#include "train/train_cuda_api.h"
+#include "train/train_kernels.h"
 
 int cpu_rgb_loss(sp_pool *pool, const float *pred, int pred_stride, const float *target, int H,
                  int W, int C, float ssim_lambda, float *scratch, float *v_pred, double stats[4],

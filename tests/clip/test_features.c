@@ -3,6 +3,8 @@
  * sp_features_open / load_map / decode must give back each pixel's class embedding. */
 #include <stdint.h>
 
+#include <cjson/cJSON.h>
+
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "test.h"
@@ -144,6 +146,43 @@ static void test_npy(void)
     CHECK(strstr(err.msg, "00000.npy") != NULL);
 }
 
+/* The feature dimension has one limit for every stage (the query engine scores at most 64
+ * dims): `features` refuses more at once, naming the value and the limit, and a folder that
+ * claims more (made elsewhere) is refused when opened, so lift and distill never see it. */
+static void test_dim_limit(void)
+{
+    char out[1400], p[1600];
+    snprintf(out, sizeof out, "%s/feat_dim", cap);
+    sp_features_opts o = sp_features_opts_default();
+    o.colmap_dir = cap;
+    o.out_dir = out;
+    o.source = "labels";
+    sp_error err = {0};
+    o.dim = 65;
+    CHECK_FAILS(sp_features_extract(&o, &err), SP_E_ARG, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL, "message '%s' does not name the limit", err.msg);
+    CHECK(!sp_file_exists(out)); /* refused before anything is written */
+    o.dim = 64;
+    CHECK_OK(sp_features_extract(&o, &err), &err);
+    /* the same folder claiming 65 dims (features.json and a 65-row basis) */
+    static float basis[65 * 512];
+    for (int k = 0; k < 65; k++) basis[k * 512 + k] = 1.0f;
+    size_t shape[2] = {65, 512};
+    snprintf(p, sizeof p, "%s/pca_basis.npy", out);
+    CHECK_OK(sp_npy_write(p, SP_DTYPE_F32, 2, shape, basis, &err), &err);
+    cJSON *js = NULL;
+    snprintf(p, sizeof p, "%s/features.json", out);
+    CHECK_OK(sp_json_read_file(p, &js, &err), &err);
+    cJSON_ReplaceItemInObject(js, "dim", cJSON_CreateNumber(65));
+    CHECK_OK(sp_json_write_file(p, js, &err), &err);
+    cJSON_Delete(js);
+    sp_features f;
+    memset(&f, 0, sizeof f);
+    CHECK_FAILS(sp_features_open(out, &f, &err), SP_E_FORMAT, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL, "message '%s' does not name the limit", err.msg);
+    sp_features_free(&f);
+}
+
 static void test_open_errors(void)
 {
     sp_features f;
@@ -158,5 +197,6 @@ int main(void)
     RUN(test_labels);
     RUN(test_npy);
     RUN(test_open_errors);
+    RUN(test_dim_limit);
     return TEST_EXIT();
 }

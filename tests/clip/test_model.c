@@ -6,7 +6,7 @@
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 #include "test.h"
 
 enum { TW = 32, TH = 2, TL = 2, TM = 64, VOCAB = 49408, CTX = 77,
@@ -383,10 +383,6 @@ static void test_half_files(void)
 /* The GPU path (fp32 and fp16) against the CPU path on the same model. */
 static void test_gpu(void)
 {
-    if (!sp_cuda_available()) {
-        fprintf(stderr, "no GPU: GPU comparison skipped\n");
-        return;
-    }
     sp_error err = {0};
     sp_device *dev = NULL;
     sp_clip *cpu = NULL, *gpu = NULL;
@@ -473,9 +469,10 @@ static void test_errors(void)
     sp_clip_free(c);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
-    snprintf(dir, sizeof dir, "%s", test_tmpdir("clip_model"));
+    TEST_ARGS(argc, argv);
+    snprintf(dir, sizeof dir, "%s", test_tmpdir(t_gpu_mode ? "clip_model_gpu" : "clip_model"));
     snprintf(wpath, sizeof wpath, "%s/model.safetensors", dir);
     make_model();
     if (save(wpath, -1, 0)) return 1;
@@ -492,7 +489,7 @@ int main(void)
     RUN(test_text);
     RUN(test_vision);
     RUN(test_half_files);
-    RUN(test_gpu);
+    RUN_GPU(test_gpu);
     RUN(test_errors);
     for (int i = 0; i < n_w; i++) free(W[i].data);
     return TEST_EXIT();

@@ -9,7 +9,7 @@
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
-#include "semsplat/render.h"
+#include "semsplat/device.h"
 #include "test.h"
 
 static char dir[1024];
@@ -110,10 +110,6 @@ static void test_cpu(void)
 
 static void test_gpu(void)
 {
-    if (!sp_cuda_available()) {
-        fprintf(stderr, "no GPU: GPU parity skipped\n");
-        return;
-    }
     sp_clip *c = NULL;
     sp_device *dev = NULL;
     sp_error err = {0};
@@ -130,8 +126,9 @@ static void test_gpu(void)
     sp_device_free(dev);
 }
 
-int main(void)
+int main(int argc, char **argv)
 {
+    TEST_ARGS(argc, argv);
     const char *env = getenv("SP_CLIP_REF_DIR");
     if (env && *env) snprintf(dir, sizeof dir, "%s", env);
     else snprintf(dir, sizeof dir, "%s/tests/fixtures/clip/tiny", SP_SOURCE_DIR);
@@ -139,6 +136,6 @@ int main(void)
     snprintf(w, sizeof w, "%s/model.safetensors", dir);
     if (!sp_file_exists(w)) TEST_SKIP("no reference model (scripts/clip_reference.py makes one)");
     RUN(test_cpu);
-    RUN(test_gpu);
+    RUN_GPU(test_gpu);
     return TEST_EXIT();
 }

@@ -3,22 +3,11 @@
  * skipped with --reuse over stub outputs, so no training runs here. */
 #include "test.h"
 
-#include <sys/wait.h>
 
 #include "semsplat/core.h"
 
 /* Runs the CLI with args, returns its exit status and its combined output in out. */
-static int run_cli(const char *args, char *out, size_t cap)
-{
-    char cmd[4096];
-    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
-    FILE *p = popen(cmd, "r");
-    if (!p) return -1;
-    size_t n = fread(out, 1, cap - 1, p);
-    out[n] = 0;
-    int st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-}
+static int run_cli(const char *args, char *out, size_t cap) { return test_run_cli(args, out, cap); }
 
 static void touch(const char *dir, const char *file, const char *text)
 {

@@ -212,4 +212,55 @@ static inline void ref_render(const ref_scene *s, const sp_camera *cam, const sp
     free(order);
 }
 
+/* First-surface depth in double: per pixel, walking the Gaussians front to back with the rules
+ * above, the depth of the first contributor after which 1 - T >= thr (0 when none). margin[pix]
+ * gets how close the pixel came to a decision float could make differently: the transmittance
+ * before and after the crossing (or at the end) against 1 - thr, an alpha against 1/255, the
+ * transmittance against the stop (the latter two scaled by 10). Callers skip tiny margins. */
+static inline void ref_surface_depth(const ref_scene *s, const sp_camera *cam, const sp_raster_cfg *cfg,
+                                     double thr, double *out, double *margin)
+{
+    int W = cam->width, H = cam->height;
+    ref_proj *pr = calloc(s->n ? s->n : 1, sizeof *pr);
+    size_t *order = calloc(s->n ? s->n : 1, sizeof *order);
+    size_t m = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        ref_project(s, i, cam, cfg, &pr[i]);
+        if (pr[i].visible) order[m++] = i;
+    }
+    ref_sort_proj = pr;
+    qsort(order, m, sizeof *order, ref_cmp_depth);
+    double t_stop = 1.0 - thr;
+    for (int py = 0; py < H; py++)
+        for (int px = 0; px < W; px++) {
+            size_t pix = (size_t)py * W + px;
+            double T = 1, mg = 1, z = 0;
+            int crossed = 0;
+            for (size_t k = 0; k < m; k++) {
+                const ref_proj *p = &pr[order[k]];
+                double dx = px + 0.5 - p->mean2d[0], dy = py + 0.5 - p->mean2d[1];
+                double sigma = 0.5 * (p->conic[0] * dx * dx + p->conic[2] * dy * dy) + p->conic[1] * dx * dy;
+                if (sigma < 0) continue;
+                double a = fmin(SP_ALPHA_MAX, p->opacity * exp(-sigma));
+                mg = fmin(mg, 10 * fabs(a - SP_ALPHA_MIN));
+                if (a < SP_ALPHA_MIN) continue;
+                double next = T * (1 - a);
+                mg = fmin(mg, 10 * fabs(next - SP_TRANSMITTANCE_MIN));
+                if (next < SP_TRANSMITTANCE_MIN) break;
+                if (next <= t_stop) {
+                    mg = fmin(mg, fmin(T - t_stop, t_stop - next));
+                    z = p->depth;
+                    crossed = 1;
+                    break;
+                }
+                T = next;
+            }
+            if (!crossed) mg = fmin(mg, T - t_stop);
+            out[pix] = z;
+            margin[pix] = mg;
+        }
+    free(pr);
+    free(order);
+}
+
 #endif

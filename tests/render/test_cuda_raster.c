@@ -1,21 +1,18 @@
 /* CUDA rasterizer vs the CPU backend (itself tested against a naive double reference and finite
  * differences): forward within 1e-4, every gradient group within 1e-3 relative, on random scenes
- * with Gaussians behind the camera, across the border and degenerate, for D in {1, 3, 5, 32, 67},
- * with and without background, depth/alpha gradients and the antialiased mode. Also: repeat
- * runs (forward bit-identical, backward equal to float-atomic reordering), SH on both devices,
- * bad input. Skips (77) without a GPU. The GPU side is driven through cuda_api.h directly so a
- * failure points at the backend, not at the dispatch. */
+ * with Gaussians behind the camera, across the border and degenerate, for D in {1, 3, 5, 32, 67}
+ * and every specialised width (SP_CHANNEL_WIDTHS), with and without background, depth/alpha
+ * gradients and the antialiased mode. Also: repeat runs (forward bit-identical, backward equal to
+ * float-atomic reordering), the chunk-width option (same bits), first-surface depth (the same
+ * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
+ * the CPU), SH on both devices, bad input. Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
-
-#ifndef SP_HAVE_CUDA
-/* Built without the CUDA backend: nothing to compare. */
-int main(void) { TEST_SKIP("built without CUDA"); }
-#else
 
 #include <stdint.h>
 
-#include "render/cuda_api.h"
 #include "semsplat/render.h"
+
+static sp_device *g_gpu; /* the CUDA device every case uses */
 
 static uint64_t rng_state = 88172645463325252ull;
 static float frand(void) /* [0, 1) */
@@ -74,10 +71,17 @@ static sp_camera make_cam(int W, int H)
 
 static void *up(const void *h, size_t bytes, sp_error *err)
 {
-    void *d = sp_cuda_malloc(bytes, err);
-    if (d && h) sp_cuda_memcpy_h2d(d, h, bytes, err);
+    void *d = sp_device_alloc(g_gpu, bytes, err);
+    if (d && h) sp_device_upload(g_gpu, d, h, bytes, err);
     return d;
 }
+
+static int down(void *h, const void *d, size_t bytes, sp_error *err)
+{
+    return sp_device_download(g_gpu, h, d, bytes, err);
+}
+
+static void dfree(const void *d) { sp_device_release(g_gpu, (void *)d); }
 
 /* max |a - b| / max(|b|_inf, floor) over the array: a relative error against the array's scale,
  * so near-zero entries (whose error is all rounding) do not dominate. */
@@ -134,7 +138,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     CHECK_OK(sp_raster_create(&rc, cpu, &err), &err);
     sp_raster_in in = {n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, bg};
     float *img = calloc(npix * D, 4), *dep = calloc(npix, 4), *alp = calloc(npix, 4);
-    sp_raster_out out = {img, dep, alp};
+    sp_raster_out out = {img, dep, alp, NULL};
     CHECK_OK(sp_raster_forward(rc, &cam, &cfg, &in, &out, &err), &err);
 
     /* upstream gradients */
@@ -148,23 +152,23 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     CHECK_OK(sp_raster_backward(rc, &gin, &gc, &err), &err);
 
     /* CUDA */
-    sp_cuda_raster *rg = NULL;
-    CHECK_OK(sp_cuda_raster_create(&rg, &err), &err);
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
     sp_raster_in ind = {n, up(s.means, n * 12, &err), up(s.quats, n * 16, &err),
                         up(s.log_scales, n * 12, &err), up(s.opac, n * 4, &err),
                         up(s.colors, n * D * 4, &err), D, bg};
     sp_raster_out outd = {up(NULL, npix * D * 4, &err), up(NULL, npix * 4, &err),
-                          up(NULL, npix * 4, &err)};
-    CHECK_OK(sp_cuda_raster_forward(rg, &cam, &cfg, &ind, &outd, &err), &err);
+                          up(NULL, npix * 4, &err), NULL};
+    CHECK_OK(sp_raster_forward(rg, &cam, &cfg, &ind, &outd, &err), &err);
     float *img_g = malloc(npix * D * 4), *dep_g = malloc(npix * 4), *alp_g = malloc(npix * 4);
-    CHECK_OK(sp_cuda_memcpy_d2h(img_g, outd.image, npix * D * 4, &err), &err);
-    CHECK_OK(sp_cuda_memcpy_d2h(dep_g, outd.depth, npix * 4, &err), &err);
-    CHECK_OK(sp_cuda_memcpy_d2h(alp_g, outd.alpha, npix * 4, &err), &err);
+    CHECK_OK(down(img_g, outd.image, npix * D * 4, &err), &err);
+    CHECK_OK(down(dep_g, outd.depth, npix * 4, &err), &err);
+    CHECK_OK(down(alp_g, outd.alpha, npix * 4, &err), &err);
     double e_img = rel_err(img_g, img, npix * D, 1.0), e_dep = rel_err(dep_g, dep, npix, 1.0),
            e_alp = rel_err(alp_g, alp, npix, 1.0);
     fprintf(stderr, "  %dx%d n=%zu D=%d bg=%d aa=%d pairs cpu %zu cuda %zu: fwd err img %.2g "
             "depth %.2g alpha %.2g\n", W, H, n, D, with_bg, aa, sp_raster_last_pairs(rc),
-            sp_cuda_raster_last_pairs(rg), e_img, e_dep, e_alp);
+            sp_raster_last_pairs(rg), e_img, e_dep, e_alp);
     CHECK(e_img <= 1e-4);
     CHECK(e_dep <= 1e-4);
     CHECK(e_alp <= 1e-4);
@@ -172,16 +176,16 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     /* radii: same culling (a ceil at a rounding boundary may differ by one pixel) */
     int32_t *rad_g = malloc(n * 4);
     const int32_t *rad_c = sp_raster_radii(rc);
-    CHECK_OK(sp_cuda_memcpy_d2h(rad_g, sp_cuda_raster_radii(rg), n * 4, &err), &err);
+    CHECK_OK(down(rad_g, sp_raster_radii(rg), n * 4, &err), &err);
     size_t rad_bad = 0;
     for (size_t i = 0; i < n; i++)
         if (abs(rad_g[i] - rad_c[i]) > 1 || ((rad_g[i] > 0) != (rad_c[i] > 0))) rad_bad++;
     CHECK_MSG(rad_bad <= n / 1000, "%zu radii differ", rad_bad);
 
     /* forward determinism: bit-identical */
-    CHECK_OK(sp_cuda_raster_forward(rg, &cam, &cfg, &ind, &outd, &err), &err);
+    CHECK_OK(sp_raster_forward(rg, &cam, &cfg, &ind, &outd, &err), &err);
     float *img_g2 = malloc(npix * D * 4);
-    CHECK_OK(sp_cuda_memcpy_d2h(img_g2, outd.image, npix * D * 4, &err), &err);
+    CHECK_OK(down(img_g2, outd.image, npix * D * 4, &err), &err);
     CHECK(memcmp(img_g2, img_g, npix * D * 4) == 0);
 
     /* backward */
@@ -191,9 +195,9 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
                           g_dev + (11 + D) * n};
     sp_raster_grad_in gind = {up(vi, npix * D * 4, &err), up(vd, npix * 4, &err),
                               up(va, npix * 4, &err)};
-    CHECK_OK(sp_cuda_raster_backward(rg, &gind, &gd, &err), &err);
+    CHECK_OK(sp_raster_backward(rg, &gind, &gd, &err), &err);
     float *g_gpu = malloc(ng * 4);
-    CHECK_OK(sp_cuda_memcpy_d2h(g_gpu, g_dev, ng * 4, &err), &err);
+    CHECK_OK(down(g_gpu, g_dev, ng * 4, &err), &err);
     static const char *names[] = {"v_means", "v_quats", "v_log_scales", "v_opacity_logits",
                                   "v_colors", "v_means2d"};
     size_t off[7] = {0, 3 * n, 7 * n, 10 * n, 11 * n, (11 + D) * n, ng};
@@ -210,18 +214,18 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     }
 
     /* backward accumulates (+=) and is repeatable up to atomic ordering */
-    CHECK_OK(sp_cuda_raster_backward(rg, &gind, &gd, &err), &err);
+    CHECK_OK(sp_raster_backward(rg, &gind, &gd, &err), &err);
     float *g_gpu2 = malloc(ng * 4);
-    CHECK_OK(sp_cuda_memcpy_d2h(g_gpu2, g_dev, ng * 4, &err), &err);
+    CHECK_OK(down(g_gpu2, g_dev, ng * 4, &err), &err);
     for (size_t i = 0; i < ng; i++) g_gpu2[i] *= 0.5f;
     CHECK(rel_err(g_gpu2, g_gpu, ng, 1e-6) <= 1e-5);
 
-    sp_cuda_free((void *)ind.means), sp_cuda_free((void *)ind.quats);
-    sp_cuda_free((void *)ind.log_scales), sp_cuda_free((void *)ind.opacity_logits);
-    sp_cuda_free((void *)ind.colors), sp_cuda_free(outd.image), sp_cuda_free(outd.depth);
-    sp_cuda_free(outd.alpha), sp_cuda_free(g_dev), sp_cuda_free((void *)gind.v_image);
-    sp_cuda_free((void *)gind.v_depth), sp_cuda_free((void *)gind.v_alpha);
-    sp_cuda_raster_free(rg);
+    dfree((void *)ind.means), dfree((void *)ind.quats);
+    dfree((void *)ind.log_scales), dfree((void *)ind.opacity_logits);
+    dfree((void *)ind.colors), dfree(outd.image), dfree(outd.depth);
+    dfree(outd.alpha), dfree(g_dev), dfree((void *)gind.v_image);
+    dfree((void *)gind.v_depth), dfree((void *)gind.v_alpha);
+    sp_raster_free(rg);
     sp_raster_free(rc);
     sp_device_free(cpu);
     free(img), free(dep), free(alp), free(vi), free(vd), free(va), free(g_cpu), free(img_g);
@@ -259,19 +263,19 @@ static void test_sh(void)
         float *d_sh = up(sh, n * K * 12, &err), *d_m = up(means, n * 12, &err);
         float *d_rgb = up(NULL, n * 16, &err), *d_vr = up(vr, n * 16, &err);
         float *d_vsh = up(NULL, n * K * 12, &err), *d_vm = up(NULL, n * 12, &err);
-        CHECK_OK(sp_cuda_sh_to_rgb(n, 3, deg, d_sh, d_m, cc, d_rgb, 4, &err), &err);
-        CHECK_OK(sp_cuda_sh_to_rgb_backward(n, 3, deg, d_sh, d_m, cc, d_rgb, d_vr, 4, d_vsh, d_vm,
+        CHECK_OK(sp_sh_to_rgb(g_gpu, n, 3, deg, d_sh, d_m, cc, d_rgb, 4, &err), &err);
+        CHECK_OK(sp_sh_to_rgb_backward(g_gpu, n, 3, deg, d_sh, d_m, cc, d_rgb, d_vr, 4, d_vsh, d_vm,
                                             &err),
                  &err);
-        sp_cuda_memcpy_d2h(rgb_g, d_rgb, n * 16, &err);
-        sp_cuda_memcpy_d2h(vsh_g, d_vsh, n * K * 12, &err);
-        sp_cuda_memcpy_d2h(vm_g, d_vm, n * 12, &err);
+        down(rgb_g, d_rgb, n * 16, &err);
+        down(vsh_g, d_vsh, n * K * 12, &err);
+        down(vm_g, d_vm, n * 12, &err);
         for (size_t i = 0; i < n; i++) /* channel 3 of the stride is untouched (zero) */
             for (int c = 0; c < 3; c++) CHECK_NEAR(rgb_g[i * 4 + c], rgb[i * 4 + c], 1e-5);
         CHECK(count_bad(vsh_g, vsh, n * K * 3, 1e-4, "v_sh", NULL) == 0);
         CHECK(count_bad(vm_g, vm, n * 3, 1e-3, "v_means", NULL) == 0);
-        sp_cuda_free(d_sh), sp_cuda_free(d_m), sp_cuda_free(d_rgb), sp_cuda_free(d_vr);
-        sp_cuda_free(d_vsh), sp_cuda_free(d_vm);
+        dfree(d_sh), dfree(d_m), dfree(d_rgb), dfree(d_vr);
+        dfree(d_vsh), dfree(d_vm);
         sp_device_free(cpu);
         free(sh), free(means), free(rgb), free(rgb_g), free(vr), free(vsh), free(vm);
         free(vsh_g), free(vm_g);
@@ -281,42 +285,235 @@ static void test_sh(void)
 static void test_bad_input(void)
 {
     sp_error err = {0};
-    sp_cuda_raster *rg = NULL;
-    CHECK_OK(sp_cuda_raster_create(&rg, &err), &err);
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
     sp_raster_grads gd = {0};
     float dummy = 0;
     sp_raster_grad_in gin = {&dummy, NULL, NULL};
-    CHECK_FAILS(sp_cuda_raster_backward(rg, &gin, &gd, &err), SP_E_ARG, &err, "no forward");
+    CHECK_FAILS(sp_raster_backward(rg, &gin, &gd, &err), SP_E_ARG, &err, "no forward");
     sp_camera cam = make_cam(32, 32);
     sp_raster_in in = {0};
     in.D = 0;
-    sp_raster_out out = {&dummy, NULL, NULL};
-    CHECK_FAILS(sp_cuda_raster_forward(rg, &cam, NULL, &in, &out, &err), SP_E_ARG, &err, "D = 0");
+    sp_raster_out out = {&dummy, NULL, NULL, NULL};
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "D=0");
     in.D = 3;
     in.n = 10; /* buffers missing */
-    CHECK_FAILS(sp_cuda_raster_forward(rg, &cam, NULL, &in, &out, &err), SP_E_ARG, &err, "NULL");
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "NULL");
     cam.width = 0;
     in.n = 0;
-    CHECK_FAILS(sp_cuda_raster_forward(rg, &cam, NULL, &in, &out, &err), SP_E_ARG, &err, "0x32");
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "0x32");
     /* an empty scene renders the background */
     cam.width = 32;
     float bg[3] = {0.25f, 0.5f, 1.f};
     in.background = bg;
-    float *img = sp_cuda_malloc(32 * 32 * 12, &err);
+    float *img = up(NULL, 32 * 32 * 12, &err);
     out.image = img;
-    CHECK_OK(sp_cuda_raster_forward(rg, &cam, NULL, &in, &out, &err), &err);
+    CHECK_OK(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), &err);
     float h[32 * 32 * 3];
-    CHECK_OK(sp_cuda_memcpy_d2h(h, img, sizeof h, &err), &err);
+    CHECK_OK(down(h, img, sizeof h, &err), &err);
     CHECK(h[0] == 0.25f && h[1] == 0.5f && h[2] == 1.f && h[sizeof h / 4 - 1] == 1.f);
-    sp_cuda_free(img);
-    CHECK_FAILS(sp_cuda_sh_to_rgb(1, 2, 3, NULL, NULL, sp_v3(0, 0, 0), NULL, 3, &err), SP_E_ARG,
+    dfree(img);
+    CHECK_FAILS(sp_sh_to_rgb(g_gpu, 1, 2, 3, NULL, NULL, sp_v3(0, 0, 0), NULL, 3, &err), SP_E_ARG,
                 &err, "active SH degree 3");
-    sp_cuda_raster_free(rg);
+    sp_raster_free(rg);
+}
+
+static void test_all_widths(void)
+{
+#define SP_WIDTH_CASE(w) compare_case(40, 36, 150, w, (w) % 2, 0);
+    SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
+#undef SP_WIDTH_CASE
+}
+
+/* Renders a random scene on the GPU with cfg; returns host image [npix][D] and surface depth. */
+static void gpu_render(const scene *s, const sp_camera *cam, const sp_raster_cfg *cfg, float *img,
+                       float *surf)
+{
+    sp_error err = {0};
+    size_t npix = (size_t)cam->width * cam->height, n = s->n;
+    int D = s->D;
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_raster_in in = {n, up(s->means, n * 12, &err), up(s->quats, n * 16, &err),
+                       up(s->log_scales, n * 12, &err), up(s->opac, n * 4, &err),
+                       up(s->colors, n * D * 4, &err), D, NULL};
+    sp_raster_out out = {up(NULL, npix * D * 4, &err), NULL, NULL, surf ? up(NULL, npix * 4, &err) : NULL};
+    CHECK_OK(sp_raster_forward(rg, cam, cfg, &in, &out, &err), &err);
+    CHECK_OK(down(img, out.image, npix * D * 4, &err), &err);
+    if (surf) CHECK_OK(down(surf, out.surface_depth, npix * 4, &err), &err);
+    const void *all[] = {in.means, in.quats, in.log_scales, in.opacity_logits, in.colors, out.image,
+                         out.surface_depth};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) dfree(all[i]);
+    sp_raster_free(rg);
+}
+
+/* The chunk width is a tuning knob only: every width gives the same bits. */
+static void test_chunk_option(void)
+{
+    sp_camera cam = make_cam(64, 48);
+    scene s = make_scene(400, 35, &cam);
+    size_t npix = 64 * 48;
+    float *a = malloc(npix * 35 * 4), *b = malloc(npix * 35 * 4);
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    gpu_render(&s, &cam, &cfg, a, NULL);
+    static const int chunks[] = {8, 16, 32, 12};
+    for (size_t k = 0; k < sizeof chunks / sizeof chunks[0]; k++) {
+        cfg.chunk_fwd = chunks[k];
+        gpu_render(&s, &cam, &cfg, b, NULL);
+        CHECK_MSG(memcmp(a, b, npix * 35 * 4) == 0, "chunk %d changes the image", chunks[k]);
+    }
+    cfg.chunk_fwd = 5; /* not a specialised width */
+    sp_raster *rg = NULL;
+    sp_error err = {0};
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_raster_in in = {0};
+    in.D = 3;
+    sp_raster_out out = {a, NULL, NULL, NULL};
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "chunk");
+    sp_raster_free(rg);
+    free(a), free(b);
+    scene_free(&s);
+}
+
+/* First-surface depth: both backends walk the same lists with the same alpha and transmittance
+ * arithmetic, so every pixel has the same bits (no tolerance). */
+static void test_surface_depth(void)
+{
+    sp_error err = {0};
+    sp_camera cam = make_cam(120, 90);
+    scene s = make_scene(3000, 1, &cam);
+    size_t npix = 120 * 90, n = s.n;
+    sp_device *cpu = NULL;
+    sp_raster *rc = NULL;
+    CHECK_OK(sp_device_create(&cpu, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_raster_create(&rc, cpu, &err), &err);
+    float *img = malloc(npix * 4), *sc = malloc(npix * 4), *sg = malloc(npix * 4);
+    static const float thr[] = {0.5f, 0.2f, 0.95f, 1.0f};
+    for (size_t k = 0; k < sizeof thr / sizeof thr[0]; k++) {
+        sp_raster_cfg cfg = sp_raster_cfg_default();
+        cfg.surface_alpha = thr[k];
+        sp_raster_in in = {n, s.means, s.quats, s.log_scales, s.opac, s.colors, 1, NULL};
+        sp_raster_out out = {img, NULL, NULL, sc};
+        CHECK_OK(sp_raster_forward(rc, &cam, &cfg, &in, &out, &err), &err);
+        gpu_render(&s, &cam, &cfg, img, sg);
+        size_t diff = 0, hit = 0;
+        for (size_t p = 0; p < npix; p++) diff += memcmp(&sc[p], &sg[p], 4) != 0, hit += sc[p] > 0;
+        fprintf(stderr, "  surface depth at alpha %.2f: %zu of %zu pixels reach it, %zu differ\n",
+                thr[k], hit, npix, diff);
+        CHECK_MSG(diff == 0, "%zu pixels' surface depth differs at alpha %g", diff, thr[k]);
+        CHECK(thr[k] == 1.0f || hit > npix / 10);
+    }
+    sp_raster_free(rc);
+    sp_device_free(cpu);
+    free(img), free(sc), free(sg);
+    scene_free(&s);
+}
+
+/* A host splat of a random scene: SH degree 1 (view-dependent colour) and F features. */
+static void make_splat(const scene *s, int F, sp_splat *out)
+{
+    sp_error err = {0};
+    CHECK_OK(sp_splat_alloc(out, s->n, 1, F, &err), &err);
+    memcpy(out->means, s->means, s->n * 12);
+    memcpy(out->quats, s->quats, s->n * 16);
+    memcpy(out->log_scales, s->log_scales, s->n * 12);
+    memcpy(out->opacity_logits, s->opac, s->n * 4);
+    for (size_t i = 0; i < s->n * 4 * 3; i++) out->sh[i] = frange(-0.8f, 0.8f);
+    for (size_t i = 0; i < s->n * (size_t)F; i++) out->features[i] = frange(-1.f, 1.f);
+}
+
+typedef struct {
+    float *rgb, *feat, *depth, *alpha;
+} host_out;
+
+static void render_all(sp_device *dev, const sp_splat *sp, const sp_camera *cams, size_t nv,
+                       const sp_render_request *shape, int one_by_one, host_out *o)
+{
+    sp_error err = {0};
+    sp_raster *r = NULL;
+    sp_scene *sc = NULL;
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    CHECK_OK(sp_scene_create(&sc, dev, sp, SP_SCENE_RGB | SP_SCENE_FEATURES, &err), &err);
+    sp_render_request *q = calloc(nv, sizeof *q);
+    for (size_t v = 0; v < nv; v++) {
+        size_t np = (size_t)cams[v].width * cams[v].height;
+        q[v] = shape[v];
+        o[v].rgb = q[v].rgb = shape[v].rgb ? calloc(np * 3, 4) : NULL;
+        o[v].feat = q[v].features = shape[v].features ? calloc(np * (size_t)sp->feat_dim, 4) : NULL;
+        o[v].depth = q[v].depth = shape[v].depth ? calloc(np, 4) : NULL;
+        o[v].alpha = q[v].alpha = shape[v].alpha ? calloc(np, 4) : NULL;
+    }
+    if (one_by_one)
+        for (size_t v = 0; v < nv; v++) CHECK_OK(sp_render_views(r, sc, &cams[v], 1, &q[v], &err), &err);
+    else
+        CHECK_OK(sp_render_views(r, sc, cams, nv, q, &err), &err);
+    free(q);
+    sp_scene_free(sc);
+    sp_raster_free(r);
+}
+
+static double max_diff(const float *a, const float *b, size_t n)
+{
+    double m = 0;
+    for (size_t i = 0; a && b && i < n; i++) m = fmax(m, fabs((double)a[i] - b[i]));
+    return m;
+}
+
+/* A batch of views of different sizes and requests: the same bits as one view at a time on the
+ * GPU, and the CPU's renders within 1e-4 (surface depth: the same bits). */
+static void test_views_batch(void)
+{
+    sp_error err = {0};
+    sp_camera base = make_cam(96, 72);
+    scene s = make_scene(2500, 1, &base);
+    sp_splat sp;
+    make_splat(&s, 7, &sp);
+    sp_camera cams[4] = {base, make_cam(64, 40), make_cam(33, 50), base};
+    sp_vec3 eye = {0.3f, -0.2f, -0.5f}, at = {0.f, 0.f, 4.f}, upv = {0.f, -1.f, 0.f};
+    sp_camera_look_at(&cams[3], eye, at, upv);
+    float bg[3] = {0.2f, 0.4f, 0.9f};
+    sp_render_request shape[4] = {
+        {.rgb = (float *)1, .features = (float *)1, .depth = (float *)1, .alpha = (float *)1, .background = bg},
+        {.rgb = (float *)1, .depth = (float *)1, .depth_mode = SP_DEPTH_SURFACE},
+        {.alpha = (float *)1, .depth = (float *)1, .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = 0.8f},
+        {.features = (float *)1, .depth = (float *)1}};
+    host_out batch[4], single[4], cpu[4];
+    render_all(g_gpu, &sp, cams, 4, shape, 0, batch);
+    render_all(g_gpu, &sp, cams, 4, shape, 1, single);
+    sp_device *cd = NULL;
+    CHECK_OK(sp_device_create(&cd, SP_DEVICE_CPU, 2, &err), &err);
+    render_all(cd, &sp, cams, 4, shape, 0, cpu);
+    for (int v = 0; v < 4; v++) {
+        size_t np = (size_t)cams[v].width * cams[v].height, F = 7;
+        float *b[4] = {batch[v].rgb, batch[v].feat, batch[v].depth, batch[v].alpha};
+        float *o[4] = {single[v].rgb, single[v].feat, single[v].depth, single[v].alpha};
+        float *c[4] = {cpu[v].rgb, cpu[v].feat, cpu[v].depth, cpu[v].alpha};
+        size_t len[4] = {np * 3, np * F, np, np};
+        for (int k = 0; k < 4; k++) {
+            if (!b[k]) continue;
+            CHECK_MSG(memcmp(b[k], o[k], len[k] * 4) == 0, "view %d output %d: batch != single", v, k);
+            double d = max_diff(b[k], c[k], len[k]);
+            int exact = k == 2 && shape[v].depth_mode == SP_DEPTH_SURFACE;
+            CHECK_MSG(exact ? memcmp(b[k], c[k], len[k] * 4) == 0 : d <= 1e-4,
+                      "view %d output %d: GPU vs CPU %g", v, k, d);
+            fprintf(stderr, "  view %d output %d: |GPU - CPU| %.2g\n", v, k, d);
+        }
+        for (int k = 0; k < 4; k++) free(b[k]), free(o[k]), free(c[k]);
+    }
+    sp_device_free(cd);
+    sp_splat_free(&sp);
+    scene_free(&s);
 }
 
 int main(void)
 {
-    if (!sp_cuda_available()) TEST_SKIP("no CUDA GPU");
+    sp_error err = {0};
+    if (!sp_cuda_available()) TEST_SKIP("no CUDA GPU (or a build without CUDA)");
+    if (sp_device_create(&g_gpu, SP_DEVICE_CUDA, 2, &err)) {
+        fprintf(stderr, "CUDA device: %s\n", err.msg);
+        return 1;
+    }
     RUN(test_bad_input);
     RUN(test_rgb);
     RUN(test_one_channel);
@@ -325,7 +522,11 @@ int main(void)
     RUN(test_features67);
     RUN(test_antialiased);
     RUN(test_many);
+    RUN(test_all_widths);
+    RUN(test_chunk_option);
+    RUN(test_surface_depth);
+    RUN(test_views_batch);
     RUN(test_sh);
+    sp_device_free(g_gpu);
     return TEST_EXIT();
 }
-#endif /* SP_HAVE_CUDA */

@@ -1,19 +1,16 @@
-/* The trainer's GPU kernels (src/train/cuda/, train_cuda_api.h) against their CPU references in
- * src/train/loss.c (which have their own finite-difference tests): L1+SSIM loss and gradient,
- * feature MSE, Adam, densification statistics, column copy, the NaN guard, bad sizes. Skips (77)
- * without a GPU. */
+/* The trainer's GPU kernels (src/train/cuda/, the CUDA table of train_kernels.h) against their CPU
+ * references in src/train/loss.c (which have their own finite-difference tests): L1+SSIM loss and
+ * gradient, feature MSE, Adam, densification statistics, column copy, the NaN guard, bad sizes.
+ * Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
-
-#ifndef SP_HAVE_CUDA
-/* Built without the CUDA backend: nothing to compare. */
-int main(void) { TEST_SKIP("built without CUDA"); }
-#else
 
 #include <stdint.h>
 
-#include "render/cuda_api.h"
 #include "semsplat/render.h"
 #include "train/train_internal.h"
+
+static sp_device *g_gpu;
+static const tr_kernels *K; /* the CUDA table */
 
 static uint64_t rs = 0x9E3779B97F4A7C15ull;
 static float frand(void)
@@ -26,11 +23,12 @@ static float frand(void)
 
 static float *up(const float *h, size_t n, sp_error *err)
 {
-    float *d = sp_cuda_malloc(n * 4, err);
-    if (d && h) sp_cuda_memcpy_h2d(d, h, n * 4, err);
+    float *d = sp_device_alloc(g_gpu, n * 4, err);
+    if (d && h) sp_device_upload(g_gpu, d, h, n * 4, err);
     return d;
 }
-static void down(float *h, const float *d, size_t n, sp_error *err) { sp_cuda_memcpy_d2h(h, d, n * 4, err); }
+static void down(float *h, const float *d, size_t n, sp_error *err) { sp_device_download(g_gpu, h, d, n * 4, err); }
+static void dfree(void *d) { sp_device_release(g_gpu, d); }
 
 static double max_rel(const float *a, const float *b, size_t n)
 {
@@ -54,18 +52,18 @@ static void test_rgb_loss(void)
     CHECK_OK(cpu_rgb_loss(NULL, pred, S, tgt, H, W, C, 0.2f, scr, v, st, &err), &err);
     float *dp = up(pred, np * S, &err), *dt = up(tgt, np * C, &err);
     float *ds = up(NULL, SP_LOSS_SCRATCH_FLOATS(H, W, C), &err), *dv = up(NULL, np * S, &err);
-    CHECK_OK(sp_cuda_rgb_loss(dp, S, dt, H, W, C, 0.2f, ds, dv, stg, &err), &err);
+    CHECK_OK(K->rgb_loss(g_gpu, dp, S, dt, H, W, C, 0.2f, ds, dv, stg, &err), &err);
     down(vg, dv, np * S, &err);
     for (int k = 0; k < 4; k++) CHECK_NEAR(stg[k], st[k], 1e-5 * fmax(1.0, fabs(st[k])));
     CHECK(max_rel(vg, v, np * S) < 1e-4);
     /* channels beyond C of the stride stay untouched */
     CHECK(vg[3] == 0.f && vg[4] == 0.f);
     /* evaluation only */
-    CHECK_OK(sp_cuda_rgb_loss(dp, S, dt, H, W, C, 0.2f, ds, NULL, stg, &err), &err);
+    CHECK_OK(K->rgb_loss(g_gpu, dp, S, dt, H, W, C, 0.2f, ds, NULL, stg, &err), &err);
     CHECK_NEAR(stg[2], st[2], 1e-5);
-    CHECK_FAILS(sp_cuda_rgb_loss(dp, S, dt, 10, W, C, 0.2f, ds, dv, stg, &err), SP_E_ARG, &err,
+    CHECK_FAILS(K->rgb_loss(g_gpu, dp, S, dt, 10, W, C, 0.2f, ds, dv, stg, &err), SP_E_ARG, &err,
                 "needs >= 11x11");
-    sp_cuda_free(dp), sp_cuda_free(dt), sp_cuda_free(ds), sp_cuda_free(dv);
+    dfree(dp), dfree(dt), dfree(ds), dfree(dv);
     free(pred), free(tgt), free(scr), free(v), free(vg);
 }
 
@@ -81,13 +79,13 @@ static void test_feature_mse(void)
     double m, mg;
     CHECK_OK(cpu_feature_mse(NULL, pred, S, off, tgt, H, W, F, 0.5f, v, &m, &err), &err);
     float *dp = up(pred, np * S, &err), *dt = up(tgt, np * F, &err), *dv = up(NULL, np * S, &err);
-    CHECK_OK(sp_cuda_feature_mse(dp, S, off, dt, H, W, F, 0.5f, dv, &mg, &err), &err);
+    CHECK_OK(K->feature_mse(g_gpu, dp, S, off, dt, H, W, F, 0.5f, dv, &mg, &err), &err);
     down(vg, dv, np * S, &err);
     CHECK_NEAR(mg, m, 1e-6);
     CHECK(max_rel(vg, v, np * S) < 1e-5);
-    CHECK_FAILS(sp_cuda_feature_mse(dp, S, 4, dt, H, W, F, 0.5f, dv, &mg, &err), SP_E_ARG, &err,
+    CHECK_FAILS(K->feature_mse(g_gpu, dp, S, 4, dt, H, W, F, 0.5f, dv, &mg, &err), SP_E_ARG, &err,
                 "stride 19");
-    sp_cuda_free(dp), sp_cuda_free(dt), sp_cuda_free(dv);
+    dfree(dp), dfree(dt), dfree(dv);
     free(pred), free(tgt), free(v), free(vg);
 }
 
@@ -100,14 +98,14 @@ static void test_adam_and_stats(void)
     float *dp = up(p, n, &err), *dg = up(g, n, &err), *dm = up(NULL, n, &err), *dv = up(NULL, n, &err);
     for (int step = 1; step <= 3; step++) {
         cpu_adam_step(NULL, p, g, m, v, n, 1e-3f, 0.9f, 0.999f, 1e-15f, step);
-        CHECK_OK(sp_cuda_adam_step(dp, dg, dm, dv, n, 1e-3f, 0.9f, 0.999f, 1e-15f, step, &err), &err);
+        CHECK_OK(K->adam_step(g_gpu, dp, dg, dm, dv, n, 1e-3f, 0.9f, 0.999f, 1e-15f, step, &err), &err);
     }
     float *pg = malloc(n * 4), *mg = malloc(n * 4);
     down(pg, dp, n, &err);
     down(mg, dm, n, &err);
     CHECK(max_rel(pg, p, n) < 1e-5);
     CHECK(max_rel(mg, m, n) < 1e-5);
-    CHECK_FAILS(sp_cuda_adam_step(dp, dg, dm, dv, n, 1e-3f, 0.9f, 0.999f, 1e-15f, 0, &err),
+    CHECK_FAILS(K->adam_step(g_gpu, dp, dg, dm, dv, n, 1e-3f, 0.9f, 0.999f, 1e-15f, 0, &err),
                 SP_E_ARG, &err, "step 0");
 
     /* densification statistics */
@@ -115,12 +113,11 @@ static void test_adam_and_stats(void)
     float *v2 = malloc(n * 8), *gs = calloc(n, 4), *cnt = calloc(n, 4);
     for (size_t i = 0; i < n; i++) radii[i] = (i % 3) ? (int32_t)(i % 7) : 0;
     for (size_t i = 0; i < 2 * n; i++) v2[i] = frand() - 0.5f;
-    int32_t *dr = sp_cuda_malloc(n * 4, &err);
-    sp_cuda_memcpy_h2d(dr, radii, n * 4, &err);
+    int32_t *dr = (int32_t *)up((const float *)radii, n, &err);
     float *dv2 = up(v2, 2 * n, &err), *dgs = up(NULL, n, &err), *dc = up(NULL, n, &err);
     for (int rep = 0; rep < 2; rep++) {
         cpu_densify_accumulate(v2, radii, n, 320.f, 240.f, gs, cnt);
-        CHECK_OK(sp_cuda_densify_accumulate(dv2, dr, n, 320.f, 240.f, dgs, dc, &err), &err);
+        CHECK_OK(K->densify_accumulate(g_gpu, dv2, dr, n, 320.f, 240.f, dgs, dc, &err), &err);
     }
     float *gsg = malloc(n * 4), *cg = malloc(n * 4);
     down(gsg, dgs, n, &err);
@@ -129,32 +126,38 @@ static void test_adam_and_stats(void)
     CHECK(memcmp(cg, cnt, n * 4) == 0);
 
     /* column copy and NaN guard */
-    CHECK_OK(sp_cuda_copy_columns(dp, 10, 2, dg, 7, 1, n / 10, 5, &err), &err);
+    CHECK_OK(K->copy_columns(g_gpu, dp, 10, 2, dg, 7, 1, n / 10, 5, &err), &err);
     cpu_copy_columns(p, 10, 2, g, 7, 1, n / 10, 5);
     down(pg, dp, n, &err);
     for (size_t r = 0; r < n / 10; r++)
         for (int c = 0; c < 5; c++) CHECK(pg[r * 10 + 2 + c] == p[r * 10 + 2 + c]);
-    CHECK_FAILS(sp_cuda_copy_columns(dp, 10, 6, dg, 7, 1, 4, 5, &err), SP_E_ARG, &err, "fit");
+    CHECK_FAILS(K->copy_columns(g_gpu, dp, 10, 6, dg, 7, 1, 4, 5, &err), SP_E_ARG, &err, "fit");
     int bad = -1;
-    CHECK_OK(sp_cuda_any_nonfinite(dp, n, &bad, &err), &err);
+    CHECK_OK(K->any_nonfinite(g_gpu, dp, n, &bad, &err), &err);
     CHECK(bad == 0);
     float nan = NAN;
-    sp_cuda_memcpy_h2d(dp + n - 1, &nan, 4, &err);
-    CHECK_OK(sp_cuda_any_nonfinite(dp, n, &bad, &err), &err);
+    sp_device_upload(g_gpu, dp + n - 1, &nan, 4, &err);
+    CHECK_OK(K->any_nonfinite(g_gpu, dp, n, &bad, &err), &err);
     CHECK(bad == 1);
 
-    sp_cuda_free(dp), sp_cuda_free(dg), sp_cuda_free(dm), sp_cuda_free(dv), sp_cuda_free(dr);
-    sp_cuda_free(dv2), sp_cuda_free(dgs), sp_cuda_free(dc);
+    dfree(dp), dfree(dg), dfree(dm), dfree(dv), dfree(dr);
+    dfree(dv2), dfree(dgs), dfree(dc);
     free(p), free(g), free(m), free(v), free(pg), free(mg), free(radii), free(v2), free(gs);
     free(cnt), free(gsg), free(cg);
 }
 
 int main(void)
 {
-    if (!sp_cuda_available()) TEST_SKIP("no CUDA GPU");
+    sp_error err = {0};
+    K = tr_cuda_kernels();
+    if (!K || !sp_cuda_available()) TEST_SKIP("no CUDA GPU (or a build without CUDA)");
+    if (sp_device_create(&g_gpu, SP_DEVICE_CUDA, 2, &err)) {
+        fprintf(stderr, "CUDA device: %s\n", err.msg);
+        return 1;
+    }
     RUN(test_rgb_loss);
     RUN(test_feature_mse);
     RUN(test_adam_and_stats);
+    sp_device_free(g_gpu);
     return TEST_EXIT();
 }
-#endif /* SP_HAVE_CUDA */

@@ -96,7 +96,7 @@ static void run_case(const fd_case *fc)
     float *img = malloc(npix * D * sizeof(float)), *dep = malloc(npix * sizeof(float)),
           *alp = malloc(npix * sizeof(float));
     sp_raster_in in = scene_input(&s, fc->bg);
-    sp_raster_out out = {img, dep, alp};
+    sp_raster_out out = {img, dep, alp, NULL};
     CHECK_OK(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), &err);
     float *g_means = calloc(n * 3, sizeof(float)), *g_quats = calloc(n * 4, sizeof(float)),
           *g_ls = calloc(n * 3, sizeof(float)), *g_op = calloc(n, sizeof(float)),
@@ -184,7 +184,7 @@ static void test_accumulates_and_deterministic(void)
         CHECK_OK(sp_raster_create(&r, dev, &err), &err);
         float *img = malloc(npix * 4 * sizeof(float)), *dep = malloc(npix * sizeof(float));
         sp_raster_in in = scene_input(&s, 1);
-        sp_raster_out out = {img, dep, NULL};
+        sp_raster_out out = {img, dep, NULL, NULL};
         sp_raster_cfg cfg = sp_raster_cfg_default();
         CHECK_OK(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), &err);
         float *all = calloc(total, sizeof(float));

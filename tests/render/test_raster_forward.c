@@ -37,7 +37,7 @@ static void compare_scene(unsigned long long seed, int W, int H, size_t n, int D
     sp_error err = {0};
     CHECK_OK(sp_raster_create(&r, dev, &err), &err);
     sp_raster_in in = scene_input(&s, with_bg);
-    sp_raster_out out = {img, dep, alp};
+    sp_raster_out out = {img, dep, alp, NULL};
     CHECK_OK(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), &err);
     *pairs = sp_raster_last_pairs(r);
 
@@ -115,7 +115,7 @@ static void test_deterministic(void)
             CHECK_OK(sp_raster_create(&r, dev, &err), &err);
             float *img = malloc(npix * 5 * sizeof(float));
             sp_raster_in in = scene_input(&s, 1);
-            sp_raster_out out = {img, NULL, NULL};
+            sp_raster_out out = {img, NULL, NULL, NULL};
             sp_raster_cfg cfg = sp_raster_cfg_default();
             CHECK_OK(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), &err);
             if (!ref_img)
@@ -150,7 +150,7 @@ static void test_culling_and_empty(void)
     float op[3] = {2, 2, 2}, col[3] = {1, 1, 1}, bg[1] = {0.25f};
     float img[32 * 24];
     sp_raster_in in = {3, means, quats, ls, op, col, 1, bg};
-    sp_raster_out out = {img, NULL, NULL};
+    sp_raster_out out = {img, NULL, NULL, NULL};
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.far_plane = 10.f;
     CHECK_OK(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), &err);
@@ -179,7 +179,7 @@ static void test_bad_args(void)
     float means[3] = {0, 0, 2}, quats[4] = {1, 0, 0, 0}, ls[3] = {-2, -2, -2}, op[1] = {0}, col[3] = {1, 1, 1};
     float img[8 * 8 * 3];
     sp_raster_in in = {1, means, quats, ls, op, col, 3, NULL};
-    sp_raster_out out = {img, NULL, NULL};
+    sp_raster_out out = {img, NULL, NULL, NULL};
     sp_raster_cfg cfg = sp_raster_cfg_default();
     sp_raster_grad_in gin = {img, NULL, NULL};
     sp_raster_grads g = {0};

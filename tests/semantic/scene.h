@@ -4,12 +4,14 @@
 #ifndef SP_TEST_SEM_SCENE_H
 #define SP_TEST_SEM_SCENE_H
 
+#include <cjson/cJSON.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
+#include "semsplat/render.h"
 #include "semsplat/semantic.h"
 #include "test.h"
 
@@ -142,18 +144,42 @@ static inline void sc_make_cams(sp_camera *cams, int n, int w, int h)
     }
 }
 
-/* Writes the cameras as a binary COLMAP model into model_dir (one PINHOLE camera, the intrinsics
- * of cams[0]; image i named by name_fmt, e.g. "%05d.png"). At most 64 cameras. */
-static inline int sc_write_colmap(const char *model_dir, const sp_camera *cams, int n, int w, int h,
-                                  const char *name_fmt, sp_error *err)
+/* The query engine on the tiny scene with a ring of n_cams w x h cameras on a new CPU device of
+ * n_threads (emb may be NULL). Exits on failure: this is a test's setup. */
+static inline void sc_make_engine(int n_cams, int w, int h, int n_threads, float emb[SC_CLASSES][SC_FULL],
+                                  sp_device **dev, sp_query_engine **eng)
+{
+    static float own[SC_CLASSES][SC_FULL];
+    sp_sem_pca pca;
+    sc_make_pca(&pca, emb ? emb : own);
+    sp_splat s;
+    int *cls;
+    sc_make_splat(&s, &cls, &pca, emb ? emb : own);
+    sp_camera *cams = malloc(sizeof(sp_camera) * (size_t)n_cams);
+    sc_make_cams(cams, n_cams, w, h);
+    sp_error err = {0};
+    if (sp_device_create(dev, SP_DEVICE_CPU, n_threads, &err) ||
+        sp_query_engine_create(eng, &s, &pca, cams, (size_t)n_cams, 1, NULL, *dev, NULL, &err)) {
+        fprintf(stderr, "setup: %s\n", err.msg);
+        exit(1);
+    }
+    free(cams);
+    sp_splat_free(&s);
+    sp_sem_pca_free(&pca);
+    free(cls);
+}
+
+/* Writes the cameras' poses as a binary COLMAP model into model_dir with the one camera `cam`
+ * (image i named by name_fmt, e.g. "%05d.png"). At most 64 cameras. */
+static inline int sc_write_colmap_camera(const char *model_dir, const sp_colmap_camera *cam_in,
+                                         const sp_camera *cams, int n, const char *name_fmt, sp_error *err)
 {
     if (n > 64) return sp_error_set(err, SP_E_ARG, "sc_write_colmap: %d cameras, at most 64", n);
     int rc = sp_mkdirs(model_dir, err);
     if (rc) return rc;
     sp_colmap_model m;
     memset(&m, 0, sizeof m);
-    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, (uint64_t)w, (uint64_t)h, 4,
-                            {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
+    sp_colmap_camera cam = *cam_in;
     sp_colmap_image ims[64];
     char names[64][32];
     memset(ims, 0, sizeof ims);
@@ -166,6 +192,97 @@ static inline int sc_write_colmap(const char *model_dir, const sp_camera *cams, 
     }
     m.n_cameras = 1, m.cameras = &cam, m.n_images = (size_t)n, m.images = ims;
     return sp_colmap_write_bin(model_dir, &m, err);
+}
+
+/* The same with one PINHOLE camera of cams[0]'s intrinsics and size w x h. */
+static inline int sc_write_colmap(const char *model_dir, const sp_camera *cams, int n, int w, int h,
+                                  const char *name_fmt, sp_error *err)
+{
+    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, (uint64_t)w, (uint64_t)h, 4,
+                            {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
+    return sc_write_colmap_camera(model_dir, &cam, cams, n, name_fmt, err);
+}
+
+/* The view of a capture's maps: cams[v] downscaled by 2, through `lens` (a camera whose
+ * distortion and dist[] are used, NULL = pinhole). */
+static inline sp_camera sc_map_camera(const sp_camera *cam, const sp_camera *lens)
+{
+    sp_camera c = *cam;
+    sp_camera_downscale(&c, 2);
+    if (lens) {
+        c.distortion = lens->distortion;
+        memcpy(c.dist, lens->dist, sizeof c.dist);
+    }
+    return c;
+}
+
+/* A feature folder as `semsplat features` writes it (features.json, PCA, f16 maps at half the
+ * cameras' resolution) with the scene's true features: each map is rendered pinhole and, with a
+ * lens, resampled into that lens's pixels (from a render twice as wide and high, so the whole
+ * distorted image sees content). Images are named %05d.png. */
+static inline int sc_write_features(const char *dir, const sp_splat *s, const sp_sem_pca *pca,
+                                    const sp_camera *cams, int n, const sp_camera *lens, sp_error *err)
+{
+    char path[1400];
+    snprintf(path, sizeof path, "%s/maps", dir);
+    int rc = sp_mkdirs(path, err);
+    if (rc) return rc;
+    const int D = pca->dim;
+    sp_camera mc = sc_map_camera(&cams[0], lens);
+    const int MW = mc.width, MH = mc.height, W = cams[0].width, H = cams[0].height;
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    size_t big = (size_t)4 * MW * MH;
+    float *f = malloc(sizeof(float) * big * D), *a = malloc(sizeof(float) * big);
+    float *m = malloc(sizeof(float) * MW * MH * D);
+    uint16_t *h = malloc(sizeof(uint16_t) * MW * MH * D);
+    cJSON *o = cJSON_CreateObject(), *arr = cJSON_AddArrayToObject(o, "images");
+    if ((rc = sp_device_create(&dev, SP_DEVICE_CPU, 2, err)) || (rc = sp_raster_create(&r, dev, err))) goto done;
+    for (int v = 0; v < n && !rc; v++) {
+        sp_camera c = sc_map_camera(&cams[v], lens), pin = c;
+        pin.distortion = SP_DIST_NONE;
+        if (lens) pin.width *= 2, pin.height *= 2, pin.cx += 0.5f * c.width, pin.cy += 0.5f * c.height;
+        sp_render_request req = {.features = f, .alpha = a};
+        if ((rc = sp_render_splat(r, s, &pin, &req, err))) break;
+        for (size_t p = 0; p < (size_t)pin.width * pin.height; p++)
+            for (int k = 0; k < D; k++) f[p * D + k] = a[p] > 1e-3f ? f[p * D + k] / a[p] : 0.0f;
+        if (lens) rc = sp_camera_remap_from_pinhole(&pin, f, D, &c, m, NULL, err);
+        else memcpy(m, f, sizeof(float) * MW * MH * D);
+        for (int p = 0; p < MW * MH * D; p++) h[p] = sp_float_to_half(m[p]);
+        size_t shape[3] = {(size_t)MH, (size_t)MW, (size_t)D};
+        snprintf(path, sizeof path, "%s/maps/%05d.npy", dir, v);
+        if (rc || (rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err))) break;
+        cJSON *it = cJSON_CreateObject();
+        snprintf(path, sizeof path, "%05d.png", v);
+        cJSON_AddStringToObject(it, "name", path);
+        snprintf(path, sizeof path, "maps/%05d.npy", v);
+        cJSON_AddStringToObject(it, "map", path);
+        cJSON_AddNumberToObject(it, "height", MH);
+        cJSON_AddNumberToObject(it, "width", MW);
+        cJSON_AddNumberToObject(it, "image_height", H);
+        cJSON_AddNumberToObject(it, "image_width", W);
+        cJSON_AddItemToArray(arr, it);
+    }
+    if (rc) goto done;
+    cJSON_AddStringToObject(o, "format", "semsplat-features-1");
+    cJSON_AddStringToObject(o, "source", "labels");
+    cJSON_AddNumberToObject(o, "dim", D);
+    cJSON_AddNumberToObject(o, "full_dim", pca->full_dim);
+    cJSON_AddNullToObject(o, "model");
+    cJSON_AddStringToObject(o, "label_embedding", "hash");
+    snprintf(path, sizeof path, "%s/features.json", dir);
+    if ((rc = sp_json_write_file(path, o, err))) goto done;
+    size_t s1[1] = {(size_t)pca->full_dim}, s2[2] = {(size_t)D, (size_t)pca->full_dim};
+    snprintf(path, sizeof path, "%s/pca_mean.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, pca->mean, err))) goto done;
+    snprintf(path, sizeof path, "%s/pca_basis.npy", dir);
+    rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, pca->basis, err);
+done:
+    cJSON_Delete(o);
+    sp_raster_free(r);
+    sp_device_free(dev);
+    free(f), free(a), free(m), free(h);
+    return rc;
 }
 
 #endif

@@ -3,8 +3,10 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "semsplat/io.h"
 #include "semsplat/semantic.h"
 #include "test.h"
+#include "semantic/matches.h"
 
 /* The 3DGS real SH (degree 3) evaluated in double: an independent reference for band rotation. */
 static double sh_eval(const float *sh, int ch, const double d[3])
@@ -25,25 +27,6 @@ static double sh_eval(const float *sh, int ch, const double d[3])
     double v = 0;
     for (int k = 0; k < 16; k++) v += b[k] * sh[k * 3 + ch];
     return v;
-}
-
-static void random_similarity(test_rng *r, double M[16], double *scale)
-{
-    float q[4], R[9];
-    for (int k = 0; k < 4; k++) q[k] = (float)test_range(r, -1, 1);
-    sp_quat_to_mat3(q, R);
-    double s = test_range(r, 0.5, 2.0);
-    for (int a = 0; a < 3; a++) {
-        for (int b = 0; b < 3; b++) M[a * 4 + b] = s * R[a * 3 + b];
-        M[a * 4 + 3] = test_range(r, -5, 5);
-    }
-    M[12] = M[13] = M[14] = 0, M[15] = 1;
-    *scale = s;
-}
-
-static void apply(const double M[16], const double *p, double *o)
-{
-    for (int a = 0; a < 3; a++) o[a] = M[a * 4] * p[0] + M[a * 4 + 1] * p[1] + M[a * 4 + 2] * p[2] + M[a * 4 + 3];
 }
 
 static void test_umeyama_recovers_similarity(void)
@@ -134,6 +117,121 @@ static void test_transform_splat_and_sh(void)
     sp_splat_free(&o);
 }
 
+/* The robust fit names exactly the planted misregistrations (5 of 49, as the reviewed COLMAP run
+ * had) and recovers the similarity from the rest, where plain least squares is pulled off by
+ * metres; over many seeds and outlier sets. */
+static void test_robust_fit_names_outliers(void)
+{
+    sp_error err = {0};
+    double worst_rms = 0, worst_M = 0, min_ls = 1e9;
+    for (int trial = 0; trial < 20; trial++) {
+        test_rng r = {1000 + (unsigned long long)trial};
+        enum { N = 49, NB = 5 };
+        int bad[NB];
+        for (int k = 0; k < NB; k++) {
+            int dup;
+            do {
+                bad[k] = (int)(test_uniform(&r) * N);
+                dup = 0;
+                for (int q = 0; q < k; q++) dup |= bad[q] == bad[k];
+            } while (dup);
+        }
+        double src[N * 3], dst[N * 3], M[16];
+        planted_matches(&r, N, bad, NB, 0.03, src, dst, M);
+        sp_align_fit fit;
+        CHECK_OK(sp_align_fit_robust(src, dst, N, 1, 0, &fit, &err), &err);
+        if (!fit.inlier) continue;
+        int wrong = 0;
+        for (int i = 0; i < N; i++) {
+            int is_bad = 0;
+            for (int k = 0; k < NB; k++) is_bad |= bad[k] == i;
+            wrong += fit.inlier[i] == is_bad;
+        }
+        CHECK_MSG(wrong == 0 && fit.n_inliers == N - NB, "trial %d: %d matches misjudged (%zu inliers)", trial,
+                  wrong, fit.n_inliers);
+        /* the fit: world positions of the inliers within the noise; the transform near the truth */
+        double dm = 0;
+        for (int k = 0; k < 12; k++) dm = fmax(dm, fabs(fit.M[k] - M[k]) / (k % 4 == 3 ? 1.0 : 1.0));
+        worst_M = fmax(worst_M, dm);
+        worst_rms = fmax(worst_rms, fit.rms_inliers);
+        min_ls = fmin(min_ls, fit.rms_all);
+        sp_align_fit_free(&fit);
+    }
+    fprintf(stderr, "  5 of 49 misregistered: inlier rms <= %.4f m, |M - M_true| <= %.4f; plain least squares "
+                    "rms >= %.3f m\n", worst_rms, worst_M, min_ls);
+    CHECK(worst_rms < 0.035);     /* uniform +-0.03 per axis: rms 0.03 m */
+    CHECK(worst_M < 0.05);
+    CHECK(min_ls > 0.2);          /* what the old plain fit would have reported */
+}
+
+/* Too few agreeing matches is a refusal naming the counts; fewer than 4 matches cannot be fit
+ * robustly at all; an explicit bound is used as given. */
+static void test_robust_fit_refuses(void)
+{
+    sp_error err = {0};
+    test_rng r = {77};
+    enum { N = 20 };
+    int bad[11] = {0, 2, 4, 6, 8, 10, 12, 14, 16, 18, 19};
+    double src[N * 3], dst[N * 3], M[16];
+    planted_matches(&r, N, bad, 11, 0.01, src, dst, M);
+    sp_align_fit fit;
+    CHECK_FAILS(sp_align_fit_robust(src, dst, N, 1, 0, &fit, &err), SP_E_FORMAT, &err, "do not agree");
+    CHECK(fit.inlier != NULL);
+    sp_align_fit_free(&fit);
+    /* with an explicit bound, the majority rule */
+    CHECK_FAILS(sp_align_fit_robust(src, dst, N, 1, 0.05, &fit, &err), SP_E_FORMAT, &err, "of 20 matches agree");
+    CHECK(strstr(err.msg, "need at least 10") != NULL);
+    CHECK(fit.inlier != NULL && fit.n_inliers < 10);
+    sp_align_fit_free(&fit);
+    CHECK_FAILS(sp_align_fit_robust(src, dst, 3, 1, 0, &fit, &err), SP_E_ARG, &err, "at least 4");
+    /* 9 bad of 20: accepted, the 9 named */
+    planted_matches(&r, N, bad, 9, 0.01, src, dst, M);
+    CHECK_OK(sp_align_fit_robust(src, dst, N, 1, 0, &fit, &err), &err);
+    CHECK(fit.n_inliers == N - 9);
+    for (int k = 0; k < 9 && fit.inlier; k++) CHECK(!fit.inlier[bad[k]]);
+    sp_align_fit_free(&fit);
+    /* a given bound: 10 m takes everything in */
+    CHECK_OK(sp_align_fit_robust(src, dst, N, 1, 10.0, &fit, &err), &err);
+    CHECK(fit.n_inliers == N && fit.threshold == 10.0);
+    sp_align_fit_free(&fit);
+}
+
+/* Image-name matches read against a COLMAP model; the JSON names the outlying images. */
+static void test_matches_file_and_json(void)
+{
+    const char *dir = test_tmpdir("align_matches");
+    test_rng r = {9};
+    enum { N = 12 };
+    int bad[1] = {7};
+    double src[N * 3], dst[N * 3], M[16];
+    planted_matches(&r, N, bad, 1, 0.005, src, dst, M);
+    char model[1200], path[1300];
+    snprintf(model, sizeof model, "%s/sparse", dir);
+    snprintf(path, sizeof path, "%s/matches.txt", dir);
+    sp_error err = {0};
+    CHECK_OK(write_centres(model, path, src, dst, N, &err), &err);
+    sp_align_matches mt;
+    CHECK_OK(sp_align_read_matches(path, model, &mt, &err), &err);
+    CHECK(mt.n == N && !strcmp(mt.name[3], "img_03.png"));
+    CHECK_NEAR(mt.src[3 * 5 + 1], src[3 * 5 + 1], 1e-5);
+    sp_align_fit fit;
+    CHECK_OK(sp_align_fit_robust(mt.src, mt.dst, mt.n, 1, 0, &fit, &err), &err);
+    char *js = sp_align_fit_json(&fit, &mt, 1);
+    CHECK(js != NULL);
+    if (js) {
+        CHECK_MSG(strstr(js, "\"img_07.png\"") != NULL && !strstr(js, "\"img_06.png\""), "%s", js);
+        CHECK(strstr(js, "\"inliers\":\t11") != NULL);
+        free(js);
+    }
+    sp_align_fit_free(&fit);
+    sp_align_matches_free(&mt);
+    /* an unknown image is named with its line */
+    FILE *f = fopen(path, "a");
+    fprintf(f, "nope.png 1 2 3\n");
+    fclose(f);
+    CHECK_FAILS(sp_align_read_matches(path, model, &mt, &err), SP_E_NOTFOUND, &err, "matches.txt:14: image 'nope.png'");
+}
+
 static void test_floor_detection(void)
 {
     /* a y-down (COLMAP-like) scene: floor on the plane y = 1.2 tilted by 10 degrees about x,
@@ -185,5 +283,8 @@ int main(void)
     RUN(test_umeyama_bad_input);
     RUN(test_transform_splat_and_sh);
     RUN(test_floor_detection);
+    RUN(test_robust_fit_names_outliers);
+    RUN(test_robust_fit_refuses);
+    RUN(test_matches_file_and_json);
     return TEST_EXIT();
 }

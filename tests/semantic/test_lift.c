@@ -179,7 +179,7 @@ static void test_lift_label_maps_roundtrip(void)
     CHECK_OK(sp_raster_create(&rast, dev, &err), &err);
     float *maps = malloc(sizeof(float) * V * W * H * SC_DIM), *alpha = malloc(sizeof(float) * W * H);
     for (int v = 0; v < V; v++) {
-        sp_render_request req = {NULL, maps + (size_t)v * W * H * SC_DIM, NULL, alpha, NULL};
+        sp_render_request req = {.features = maps + (size_t)v * W * H * SC_DIM, .alpha = alpha};
         CHECK_OK(sp_render_splat(rast, &s, &cams[v], &req, &err), &err);
         for (int p = 0; p < W * H; p++) /* normalise by coverage like a label image would be */
             if (alpha[p] > 1e-3f)
@@ -188,7 +188,6 @@ static void test_lift_label_maps_roundtrip(void)
     float *truth = malloc(sizeof(float) * s.n * SC_DIM);
     memcpy(truth, s.features, sizeof(float) * s.n * SC_DIM);
     memset(s.features, 0, sizeof(float) * s.n * SC_DIM);
-    sp_raster_forget(rast);
     map_ctx ctx = {maps, (size_t)W * H * SC_DIM};
     float *wsum = malloc(sizeof(float) * s.n);
     CHECK_OK(sp_semantic_lift(rast, &s, SC_DIM, cams, V, give_map, &ctx, NULL, wsum, NULL, &err), &err);

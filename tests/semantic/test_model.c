@@ -20,61 +20,27 @@ static int write_capture(const char *dir, const sp_camera *cams, sp_error *err)
     return sc_write_colmap(path, cams, N, W, H, "%05d.png", err);
 }
 
-/* Label maps rendered from the scene's true features at half resolution, as f16 .npy. */
-static int write_features(const char *dir, const sp_splat *s, const sp_sem_pca *pca, const sp_camera *cams,
-                          sp_error *err)
+/* A model folder's semantic part as made elsewhere: DIR/semantic.json naming the PCA files,
+ * semantic_pca_mean.npy [F] and semantic_pca_basis.npy [D][F]; model NULL = label embedding. */
+static int write_sidecar(const char *dir, int D, int F, const float *mean, const float *basis,
+                         const char *model, sp_error *err)
 {
     char path[1400];
-    snprintf(path, sizeof path, "%s/maps", dir);
-    int rc = sp_mkdirs(path, err);
+    size_t s1[1] = {(size_t)F}, s2[2] = {(size_t)D, (size_t)F};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    int rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, err);
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    if (!rc) rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, err);
     if (rc) return rc;
-    sp_device *dev = NULL;
-    sp_raster *r = NULL;
-    float *f = malloc(sizeof(float) * MW * MH * SC_DIM), *a = malloc(sizeof(float) * MW * MH);
-    uint16_t *h = malloc(sizeof(uint16_t) * MW * MH * SC_DIM);
-    cJSON *o = cJSON_CreateObject(), *arr = cJSON_AddArrayToObject(o, "images");
-    if ((rc = sp_device_create(&dev, SP_DEVICE_CPU, 2, err)) || (rc = sp_raster_create(&r, dev, err))) goto done;
-    for (int v = 0; v < N && !rc; v++) {
-        sp_camera c = cams[v];
-        sp_camera_downscale(&c, 2);
-        sp_render_request req = {NULL, f, NULL, a, NULL};
-        if ((rc = sp_render_splat(r, s, &c, &req, err))) break;
-        for (int p = 0; p < MW * MH; p++)
-            for (int k = 0; k < SC_DIM; k++)
-                h[p * SC_DIM + k] = sp_float_to_half(a[p] > 1e-3f ? f[p * SC_DIM + k] / a[p] : 0.0f);
-        size_t shape[3] = {MH, MW, SC_DIM};
-        snprintf(path, sizeof path, "%s/maps/%05d.npy", dir, v);
-        if ((rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err))) break;
-        cJSON *it = cJSON_CreateObject();
-        snprintf(path, sizeof path, "%05d.png", v);
-        cJSON_AddStringToObject(it, "name", path);
-        snprintf(path, sizeof path, "maps/%05d.npy", v);
-        cJSON_AddStringToObject(it, "map", path);
-        cJSON_AddNumberToObject(it, "height", MH);
-        cJSON_AddNumberToObject(it, "width", MW);
-        cJSON_AddNumberToObject(it, "image_height", H);
-        cJSON_AddNumberToObject(it, "image_width", W);
-        cJSON_AddItemToArray(arr, it);
-    }
-    if (rc) goto done;
-    cJSON_AddStringToObject(o, "format", "semsplat-features-1");
-    cJSON_AddStringToObject(o, "source", "labels");
-    cJSON_AddNumberToObject(o, "dim", SC_DIM);
-    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
-    cJSON_AddNullToObject(o, "model");
-    cJSON_AddStringToObject(o, "label_embedding", "hash");
-    snprintf(path, sizeof path, "%s/features.json", dir);
-    if ((rc = sp_json_write_file(path, o, err))) goto done;
-    size_t s1[1] = {SC_FULL}, s2[2] = {SC_DIM, SC_FULL};
-    snprintf(path, sizeof path, "%s/pca_mean.npy", dir);
-    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, s1, pca->mean, err))) goto done;
-    snprintf(path, sizeof path, "%s/pca_basis.npy", dir);
-    rc = sp_npy_write(path, SP_DTYPE_F32, 2, s2, pca->basis, err);
-done:
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", model ? "clip" : "labels");
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", model ? "clip" : "hash");
+    if (model) cJSON_AddStringToObject(o, "model", model);
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    rc = sp_json_write_file(path, o, err);
     cJSON_Delete(o);
-    sp_raster_free(r);
-    sp_device_free(dev);
-    free(f), free(a), free(h);
     return rc;
 }
 
@@ -95,7 +61,7 @@ static void test_lift_model_folder_then_query(void)
     sc_make_cams(cams, N, W, H);
     sp_error err = {0};
     CHECK_OK(write_capture(cap, cams, &err), &err);
-    CHECK_OK(write_features(feat, &s, &pca, cams, &err), &err);
+    CHECK_OK(sc_write_features(feat, &s, &pca, cams, N, NULL, &err), &err);
     /* the trained model: geometry only, and train.json naming the capture */
     sp_splat geo;
     CHECK_OK(sp_splat_copy(&geo, &s, &err), &err);
@@ -194,20 +160,7 @@ static void test_clip_text_tower_sidecar(void)
     for (size_t i = 0; i < NG * D; i++) s.features[i] = (float)test_range(&r, -1, 1);
     snprintf(path, sizeof path, "%s/splat.ply", dir);
     CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
-    size_t s1[1] = {F}, s2[2] = {D, F};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, s1, mean, &err), &err);
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, s2, basis, &err), &err);
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "source", "clip");
-    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
-    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
-    cJSON_AddStringToObject(o, "label_embedding", "clip");
-    cJSON_AddStringToObject(o, "model", model);
-    snprintf(path, sizeof path, "%s/semantic.json", dir);
-    CHECK_OK(sp_json_write_file(path, o, &err), &err);
-    cJSON_Delete(o);
+    CHECK_OK(write_sidecar(dir, D, F, mean, basis, model, &err), &err);
     sp_device *dev = NULL;
     sp_query_engine *e = NULL;
     CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
@@ -236,11 +189,7 @@ static void test_clip_text_tower_sidecar(void)
     float mean2[64] = {0}, basis2[D * 64];
     memset(basis2, 0, sizeof basis2);
     for (int k = 0; k < D; k++) basis2[k * 64 + k] = 1.0f;
-    size_t t1[1] = {64}, t2[2] = {D, 64};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 1, t1, mean2, &err), &err);
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, t2, basis2, &err), &err);
+    CHECK_OK(write_sidecar(dir, D, 64, mean2, basis2, model, &err), &err);
     CHECK_OK(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), &err);
     if (e) {
         sp_query_result res;
@@ -250,9 +199,57 @@ static void test_clip_text_tower_sidecar(void)
     sp_device_free(dev);
 }
 
+static int lift_zero(void *user, size_t view, float *target, uint8_t *mask, sp_error *err)
+{
+    (void)user, (void)view, (void)mask, (void)err, (void)target;
+    return 0;
+}
+
+/* One limit on the feature dimension for every stage (64, what the query engine scores):
+ * lifting refuses more, and a model folder with more is refused by the engine with a message
+ * that names the value and the limit (it used to say "got ndim 2"). */
+static void test_feature_dim_limit(void)
+{
+    const char *dir = test_tmpdir("semantic_dim_limit");
+    enum { D = 65, F = 512, NG = 50 };
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    sp_splat s;
+    test_rng rng = {5};
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    CHECK_OK(sp_splat_alloc(&s, NG, 0, 0, &err), &err);
+    for (size_t i = 0; i < NG * 3; i++) s.means[i] = (float)test_range(&rng, -1, 1);
+    for (size_t i = 0; i < NG * 3; i++) s.log_scales[i] = -3.0f;
+    sp_camera cam;
+    sc_make_cams(&cam, 1, 32, 24);
+    CHECK_FAILS(sp_semantic_lift(r, &s, D, &cam, 1, lift_zero, NULL, NULL, NULL, NULL, &err), SP_E_ARG, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL, "message '%s' does not name the limit", err.msg);
+    sp_splat_free(&s);
+    /* a model folder made elsewhere with 65-dim features */
+    CHECK_OK(sp_splat_alloc(&s, NG, 0, D, &err), &err);
+    for (size_t i = 0; i < NG * 3; i++) s.means[i] = (float)test_range(&rng, -1, 1);
+    char path[1400];
+    snprintf(path, sizeof path, "%s/splat.ply", dir);
+    CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
+    static float mean[F], basis[D * F];
+    for (int k = 0; k < D; k++) basis[k * F + k] = 1.0f;
+    CHECK_OK(write_sidecar(dir, D, F, mean, basis, NULL, &err), &err);
+    sp_query_engine *e = NULL;
+    CHECK_FAILS(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), SP_E_FORMAT, &err, "65");
+    CHECK_MSG(strstr(err.msg, "limit of 64") != NULL && !strstr(err.msg, "ndim"),
+              "message '%s' does not name the value and the limit", err.msg);
+    CHECK(e == NULL);
+    sp_splat_free(&s);
+    sp_raster_free(r);
+    sp_device_free(dev);
+}
+
 int main(void)
 {
     RUN(test_lift_model_folder_then_query);
     RUN(test_clip_text_tower_sidecar);
+    RUN(test_feature_dim_limit);
     return TEST_EXIT();
 }

@@ -23,25 +23,7 @@ static double dist3(const float *a, const float *b)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-static void setup(void)
-{
-    sp_sem_pca pca;
-    sc_make_pca(&pca, g_emb);
-    sp_splat s;
-    int *cls;
-    sc_make_splat(&s, &cls, &pca, g_emb);
-    sp_camera cams[NCAM];
-    sc_make_cams(cams, NCAM, CW, CH);
-    sp_error err = {0};
-    if (sp_device_create(&g_dev, SP_DEVICE_CPU, 2, &err) ||
-        sp_query_engine_create(&g_eng, &s, &pca, cams, NCAM, 1, NULL, g_dev, NULL, &err)) {
-        fprintf(stderr, "setup: %s\n", err.msg);
-        exit(1);
-    }
-    sp_splat_free(&s);
-    sp_sem_pca_free(&pca);
-    free(cls);
-}
+static void setup(void) { sc_make_engine(NCAM, CW, CH, 2, g_emb, &g_dev, &g_eng); }
 
 static void test_3d_finds_table_and_chairs(void)
 {

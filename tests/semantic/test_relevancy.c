@@ -151,6 +151,29 @@ static void test_cluster_instances(void)
     CHECK_FAILS(sem_cluster(pts, w, cf, M, 0.0f, 0.2f, 0.0f, &inst, &n, &err), SP_E_ARG, &err, "voxel");
 }
 
+/* An instance's bounds are the 5% and 95% weighted quantiles of its points per axis (what
+ * semantic.h says; it used to say 2%..98%), its position their middle. */
+static void test_cluster_extent_quantiles(void)
+{
+    enum { M = 101 };
+    float pts[M * 3], w[M], cf[M];
+    for (int i = 0; i < M; i++) {
+        pts[3 * i] = 0.01f * i, pts[3 * i + 1] = 0, pts[3 * i + 2] = 0;
+        w[i] = 1, cf[i] = 0.5f;
+    }
+    sp_query_instance *inst = NULL;
+    int n = 0;
+    sp_error err = {0};
+    CHECK_OK(sem_cluster(pts, w, cf, M, 0.12f, 0.1f, 0.0f, &inst, &n, &err), &err);
+    CHECK(n == 1);
+    if (n == 1) {
+        CHECK_NEAR(inst[0].extent_min[0], 0.05, 1e-6);
+        CHECK_NEAR(inst[0].extent_max[0], 0.95, 1e-6);
+        CHECK_NEAR(inst[0].position[0], 0.5, 1e-6);
+    }
+    free(inst);
+}
+
 static void test_turbo_and_overlay(void)
 {
     float lo[3], hi[3], mid[3];
@@ -177,6 +200,7 @@ int main(void)
     RUN(test_scorer_bad_input);
     RUN(test_pca_read_errors);
     RUN(test_cluster_instances);
+    RUN(test_cluster_extent_quantiles);
     RUN(test_turbo_and_overlay);
     return TEST_EXIT();
 }

@@ -195,6 +195,96 @@ static void test_capture(void)
     sp_world_free(&w);
 }
 
+/* Furniture named after the structure it stands on or hangs from is an object, not structure:
+ * a floor lamp, a wall clock, a ceiling fan (as model names, CamelCase, and through an include of
+ * a model so named) must be in ground_truth.json's objects, and walls, floors, ceilings and the
+ * ground plane in its structure. The old rule tested whether the model name *started* with
+ * wall/floor/ground/ceiling and dropped all four from the objects. */
+static const char *furniture_world =
+    "<sdf version='1.6'><world name='furniture'>\n"
+    "<model name='ground_plane'><link name='l'><visual name='v'><geometry><plane><normal>0 0 1</normal>"
+    "<size>6 6</size></plane></geometry></visual></link></model>\n"
+    "<model name='kitchen_floor'><link name='l'><visual name='v'><pose>2 1.5 -0.01 0 0 0</pose><geometry><box><size>4 3 0.02</size></box></geometry>"
+    "</visual></link></model>\n"
+    "<model name='Wall_3'><link name='l'><visual name='s'><pose>2 0 1.2 0 0 0</pose><geometry><box><size>4 0.1 2.4</size></box></geometry></visual></link></model>\n"
+    "<model name='walls'><link name='l'><visual name='n'><pose>2 3 1.2 0 0 0</pose><geometry><box><size>4 0.1 2.4</size></box></geometry></visual>\n"
+    "<visual name='w'><pose>0 1.5 1.2 0 0 0</pose><geometry><box><size>0.1 3 2.4</size></box></geometry></visual>\n"
+    "<visual name='e'><pose>4 1.5 1.2 0 0 0</pose><geometry><box><size>0.1 3 2.4</size></box></geometry></visual></link></model>\n"
+    "<model name='ceiling'><link name='l'><visual name='v'><pose>2 1.5 2.41 0 0 0</pose><geometry><box><size>4 3 0.02</size></box></geometry></visual></link></model>\n"
+    "<model name='floor_lamp'><pose>0.5 0.5 0 0 0 0</pose><link name='l'><visual name='v'><pose>0 0 0.8 0 0 0</pose>"
+    "<geometry><cylinder><radius>0.1</radius><length>1.6</length></cylinder></geometry></visual></link></model>\n"
+    "<model name='FloorLamp_01'><pose>3.5 0.5 0 0 0 0</pose><link name='l'><visual name='v'><pose>0 0 0.8 0 0 0</pose>"
+    "<geometry><cylinder><radius>0.1</radius><length>1.6</length></cylinder></geometry></visual></link></model>\n"
+    "<model name='wall_clock'><pose>2 2.9 1.8 0 0 0</pose><link name='l'><visual name='v'>"
+    "<geometry><box><size>0.3 0.05 0.3</size></box></geometry></visual></link></model>\n"
+    "<model name='ceiling_fan'><pose>2 1.5 2.2 0 0 0</pose><link name='l'><visual name='v'>"
+    "<geometry><box><size>0.8 0.8 0.05</size></box></geometry></visual></link></model>\n"
+    "<include><uri>model://wall_shelf</uri><name>wall_shelf_2</name><pose>0.2 2 1.2 0 0 0</pose></include>\n"
+    "<include><uri>model://aws_robomaker_retail_RetailShopFloor_01</uri><name>RetailShopFloor_01_001</name></include>\n"
+    "</world></sdf>\n";
+
+static void put_model(const char *dir, const char *name, const char *box)
+{
+    char p[1400], cmd[1500];
+    snprintf(p, sizeof p, "%s/models/%s", dir, name);
+    snprintf(cmd, sizeof cmd, "mkdir -p '%s'", p);
+    if (system(cmd) != 0) fprintf(stderr, "mkdir failed\n");
+    snprintf(p, sizeof p, "%s/models/%s/model.sdf", dir, name);
+    FILE *f = fopen(p, "w");
+    fprintf(f, "<sdf version='1.6'><model name='%s'><link name='l'><visual name='v'><geometry><box><size>%s</size>"
+               "</box></geometry></visual></link></model></sdf>\n", name, box);
+    fclose(f);
+}
+
+static int in_list(const cJSON *arr, const char *name)
+{
+    const cJSON *it;
+    cJSON_ArrayForEach(it, arr)
+    {
+        const cJSON *n = cJSON_GetObjectItem(it, "name");
+        if (cJSON_IsString(n) && !strcmp(n->valuestring, name)) return 1;
+    }
+    return 0;
+}
+
+static void test_structure_names(void)
+{
+    const char *d = test_tmpdir("synth_capture_furniture");
+    char path[1400], mp[1400], out[1400];
+    snprintf(path, sizeof path, "%s/furniture.world", d);
+    FILE *f = fopen(path, "w");
+    fputs(furniture_world, f);
+    fclose(f);
+    put_model(d, "wall_shelf", "0.3 0.8 0.05");
+    put_model(d, "aws_robomaker_retail_RetailShopFloor_01", "4 3 0.01");
+    snprintf(mp, sizeof mp, "%s/models", d);
+    sp_world w;
+    sp_error err = {0};
+    sp_synth_load_opts lo = {.model_path = mp, .no_env = 1};
+    CHECK_OK(sp_synth_load_world(path, &lo, &w, &err), &err);
+    if (err.code) return;
+    snprintf(out, sizeof out, "%s/cap", d);
+    sp_synth_capture_opts o = {.n_views = 2, .width = 32, .height = 24, .fov_deg = 70, .n_points = 100,
+                               .seed = 3, .n_threads = 1};
+    CHECK_OK(sp_synth_capture(&w, out, &o, &err), &err);
+    cJSON *gt = NULL;
+    snprintf(path, sizeof path, "%s/ground_truth.json", out);
+    CHECK_OK(sp_json_read_file(path, &gt, &err), &err);
+    const cJSON *objs = cJSON_GetObjectItem(gt, "objects"), *st = cJSON_GetObjectItem(gt, "structure");
+    const char *objects[] = {"floor_lamp", "FloorLamp_01", "wall_clock", "ceiling_fan", "wall_shelf_2"};
+    const char *structure[] = {"ground_plane", "kitchen_floor", "Wall_3", "walls", "ceiling",
+                               "RetailShopFloor_01_001"};
+    for (size_t i = 0; i < sizeof objects / sizeof *objects; i++)
+        CHECK_MSG(in_list(objs, objects[i]) && !in_list(st, objects[i]),
+                  "%s is not among ground_truth.json's objects", objects[i]);
+    for (size_t i = 0; i < sizeof structure / sizeof *structure; i++)
+        CHECK_MSG(in_list(st, structure[i]) && !in_list(objs, structure[i]),
+                  "%s is not among ground_truth.json's structure", structure[i]);
+    CHECK(cJSON_GetArraySize(objs) == 5 && cJSON_GetArraySize(st) == 6);
+    cJSON_Delete(gt);
+    sp_world_free(&w);
+}
+
 static void test_bad_options(void)
 {
     sp_world w;
@@ -215,5 +305,6 @@ int main(void)
 {
     RUN(test_capture);
     RUN(test_bad_options);
+    RUN(test_structure_names);
     return TEST_EXIT();
 }

@@ -240,7 +240,7 @@ static void put(const char *dir, const char *name, const char *text)
 }
 
 /* A textured .obj quad: each quadrant of the texture lands where its UVs say (and the right way
- * up: v = 0 at the image bottom); a missing texture is an error naming it. */
+ * up: v = 0 at the image bottom). */
 static void test_textured_mesh(void)
 {
     const char *d = test_tmpdir("synth_texture");
@@ -286,12 +286,50 @@ static void test_textured_mesh(void)
         }
     sp_synth_frame_free(&fr);
     sp_world_free(&w);
-    put(d, "quad.mtl", "newmtl m\nKd 1 1 1\nmap_Kd missing.png\n");
-    CHECK_FAILS(sp_synth_load_world(p, &o, &w, &err), SP_E_NOTFOUND, &err, "missing.png");
-    o.skip_missing = 1;
-    CHECK_OK(sp_synth_load_world(p, &o, &w, &err), &err);
-    CHECK(w.n_missing == 1 && w.n_textures == 0 && w.n_triangles == 2);
     sp_world_free(&w);
+}
+
+static void keep_warnings(void *user, sp_log_level level, const char *msg)
+{
+    if (level >= SP_LOG_WARN) snprintf(user, 1024, "%s", msg);
+}
+
+/* A missing texture does not stop the world from loading (Gazebo draws such a mesh in its
+ * material colour and warns): the mesh is drawn in its material's diffuse colour, a warning
+ * names the texture, with or without skip_missing. */
+static void test_missing_texture_uses_colour(void)
+{
+    const char *d = test_tmpdir("synth_texture_missing");
+    put(d, "quad.obj", "mtllib quad.mtl\nv 0 -1 -1\nv 0 1 -1\nv 0 1 1\nv 0 -1 1\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+                       "usemtl m\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n");
+    put(d, "quad.mtl", "newmtl m\nKd 0.1 0.8 0.1\nmap_Kd missing.png\n");
+    put(d, "t.world", "<sdf version='1.6'><world name='t'><model name='poster'><pose>0 0 1 0 0 0</pose><link name='l'>"
+                      "<visual name='v'><geometry><mesh><uri>quad.obj</uri></mesh></geometry></visual></link></model></world></sdf>");
+    char p[1400], warned[1024] = "";
+    snprintf(p, sizeof p, "%s/t.world", d);
+    sp_log log = {keep_warnings, warned, SP_LOG_WARN, -1};
+    sp_world w;
+    sp_error err = {0};
+    for (int skip = 0; skip < 2; skip++) {
+        sp_synth_load_opts o = {.no_env = 1, .skip_missing = skip, .log = &log};
+        warned[0] = 0;
+        CHECK_OK(sp_synth_load_world(p, &o, &w, &err), &err);
+        if (err.code) return;
+        CHECK_MSG(strstr(warned, "missing.png") != NULL, "warning '%s'", warned);
+        CHECK(w.n_textures == 0 && w.n_triangles == 2 && w.n_missing == 0 && w.n_missing_textures == 1);
+        sp_camera c;
+        make_cam(&c, 32, 32, -2.5f, 0, 1, 0, 0, 1);
+        sp_synth_render_opts ro = {.no_detail = 1};
+        sp_synth_frame fr = {0};
+        CHECK_OK(sp_synth_render(&w, &c, &ro, NULL, &fr, &err), &err);
+        if (fr.rgb) {
+            const float *pix = &fr.rgb[((size_t)16 * 32 + 16) * 3];
+            CHECK_MSG(pix[1] > 3 * pix[0] && pix[1] > 3 * pix[2], "centre %.3f %.3f %.3f: not the material's green",
+                      pix[0], pix[1], pix[2]);
+        }
+        sp_synth_frame_free(&fr);
+        sp_world_free(&w);
+    }
 }
 
 /* A spot light inside a model's link lights its cone and nothing outside it. */
@@ -331,6 +369,7 @@ int main(void)
 {
     RUN(test_spot_light_in_link);
     RUN(test_textured_mesh);
+    RUN(test_missing_texture_uses_colour);
     RUN(test_depth_and_labels);
     RUN(test_labels_inside_gt_boxes);
     RUN(test_threads_and_clipping);

@@ -74,7 +74,7 @@ static void write_capture(const char *dir, int model, const sp_splat *gt)
     float *rgb = malloc(IW * IH * 3 * sizeof(float));
     for (int k = 0; k < NV; k++) {
         sp_camera c = ring_camera(k);
-        sp_render_request req = {rgb, NULL, NULL, NULL, NULL};
+        sp_render_request req = {.rgb = rgb};
         CHECK_OK(sp_render_splat(r, gt, &c, &req, &err), &err);
         char name[64];
         snprintf(name, sizeof name, "%03d.png", k);
@@ -350,6 +350,19 @@ static int rgb_target(void *user, size_t view, int w, int h, int F, float *dst, 
     return 0;
 }
 
+/* Three features trained with geometry frozen (SH degree 0, lr 0.02). */
+static sp_train_options frozen_feature_options(int steps, sp_feature_target_fn target, void *user)
+{
+    sp_train_options o = sp_train_options_default(steps);
+    o.sh_degree = 0;
+    o.feature_dim = 3;
+    o.freeze_geometry = 1;
+    o.get_feature_target = target;
+    o.feature_user = user;
+    o.lr_features = 0.02f;
+    return o;
+}
+
 static void test_feature_pass_frozen_geometry(void)
 {
     const char *dir = test_tmpdir("train_feat");
@@ -364,13 +377,7 @@ static void test_feature_pass_frozen_geometry(void)
     sp_splat s, before;
     CHECK_OK(sp_splat_copy(&s, &g_gt, &err), &err); /* the true geometry */
     CHECK_OK(sp_splat_copy(&before, &g_gt, &err), &err);
-    sp_train_options o = sp_train_options_default(300);
-    o.sh_degree = 0;
-    o.feature_dim = 3;
-    o.freeze_geometry = 1;
-    o.get_feature_target = rgb_target;
-    o.feature_user = &d;
-    o.lr_features = 0.02f;
+    sp_train_options o = frozen_feature_options(300, rgb_target, &d);
     sp_train_result res;
     CHECK_OK(sp_train_run(dev, &d, &o, &s, &res, NULL, &err), &err);
     CHECK(s.feat_dim == 3 && s.n == g_gt.n);
@@ -387,6 +394,66 @@ static void test_feature_pass_frozen_geometry(void)
     CHECK(err_sum / s.n < 0.2);
     sp_splat_free(&s);
     sp_splat_free(&before);
+    sp_device_free(dev);
+    sp_train_data_free(&d);
+}
+
+/* Feature targets whose held-out views differ from the training views (the first channel is
+ * offset by 0.3 there): a held-out feature MSE must see the offset, a training average cannot. */
+static int offset_target(void *user, size_t view, int w, int h, int F, float *dst, sp_error *err)
+{
+    const sp_train_data *d = user;
+    int rc = rgb_target(user, view, w, h, F, dst, err);
+    if (!rc && d->views[view].is_test)
+        for (size_t i = 0; i < (size_t)w * h; i++) dst[i * F] += 0.3f;
+    return rc;
+}
+
+/* res.feature_mse is what train.h says: the mean squared error of the trained features rendered
+ * at the held-out views against their targets (an independent render and double sum here). It
+ * used to be a running average of the training views' loss. */
+static void test_feature_mse_is_held_out(void)
+{
+    const char *dir = test_tmpdir("train_feat_mse");
+    char cap[1024];
+    snprintf(cap, sizeof cap, "%s/cap", dir);
+    write_capture(cap, SP_COLMAP_PINHOLE, &g_gt);
+    sp_error err = {0};
+    sp_train_data d;
+    CHECK_OK(sp_train_data_load(&d, cap, NULL, 2, 8, &err), &err); /* views 0 and 8 held out */
+    sp_device *dev = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    sp_splat s;
+    CHECK_OK(sp_splat_copy(&s, &g_gt, &err), &err);
+    sp_train_options o = frozen_feature_options(150, offset_target, &d);
+    sp_train_result res;
+    CHECK_OK(sp_train_run(dev, &d, &o, &s, &res, NULL, &err), &err);
+    /* the reference: render each held-out view's features, compare in double */
+    sp_raster *r = NULL;
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    double sse = 0, cnt = 0;
+    int n_test = 0;
+    for (size_t v = 0; v < d.n_views && r; v++) {
+        if (!d.views[v].is_test) continue;
+        const sp_camera *c = &d.views[v].cam;
+        size_t np = (size_t)c->width * c->height;
+        float *feat = malloc(np * 3 * sizeof(float)), *tgt = malloc(np * 3 * sizeof(float));
+        sp_render_request req = {.features = feat};
+        CHECK_OK(sp_render_splat(r, &s, c, &req, &err), &err);
+        CHECK_OK(offset_target(&d, v, c->width, c->height, 3, tgt, &err), &err);
+        for (size_t k = 0; k < np * 3; k++) sse += ((double)feat[k] - tgt[k]) * ((double)feat[k] - tgt[k]);
+        cnt += (double)np * 3;
+        n_test++;
+        free(feat), free(tgt);
+    }
+    double want = sse / cnt;
+    fprintf(stderr, "  feature_mse %.6f, held-out reference %.6f over %d views\n", res.feature_mse, want, n_test);
+    CHECK(n_test == 2 && res.n_eval_views == 2 && !res.eval_on_train);
+    CHECK_MSG(fabs(res.feature_mse - want) <= 1e-4 * want + 1e-7, "feature_mse %.6f, held-out %.6f",
+              res.feature_mse, want);
+    CHECK(want > 0.02); /* the offset is there: 0.3^2 / 3 = 0.03 */
+    sp_raster_free(r);
+    sp_splat_free(&s);
     sp_device_free(dev);
     sp_train_data_free(&d);
 }
@@ -455,6 +522,7 @@ int main(void)
     RUN(test_bad_captures);
     RUN(test_nan_guard_and_resume);
     RUN(test_feature_pass_frozen_geometry);
+    RUN(test_feature_mse_is_held_out);
     RUN(test_evaluate_view_dependent);
     sp_splat_free(&g_gt);
     return TEST_EXIT();

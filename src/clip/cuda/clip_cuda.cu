@@ -13,6 +13,7 @@
 #include <cuda_fp16.h>
 #include <cuda_runtime.h>
 
+#include "device/cuda/device_cuda.h"
 extern "C" {
 #include "../clip_internal.h"
 }
@@ -21,7 +22,10 @@ struct gpu_layer {
     size_t ln1_w, ln1_b, qkv_w, qkv_b, o_w, o_b, ln2_w, ln2_b, fc1_w, fc1_b, fc2_w, fc2_b;
 };
 
+/* The stream and cuBLAS handle are the device's (device/cuda/device_cuda.h); weights and scratch
+ * are device allocations, so they count in sp_device_peak_bytes. */
 struct sp_clip_gpu {
+    sp_device *dev;
     cublasHandle_t blas;
     cudaStream_t stream;
     float *w32;      /* blob + fused QKV weights, fp32 */
@@ -240,28 +244,35 @@ static int grid_for(long n)
 
 static size_t off_of(const sp_clip *c, const float *p) { return (size_t)(p - c->blob); }
 
+/* count bytes of device memory into *p (accounted to the device) */
+static int dev_alloc(sp_clip_gpu *g, void **p, size_t bytes, const char *what, sp_error *err)
+{
+    *p = sp_device_alloc_scratch(g->dev, bytes, err);
+    return *p ? 0 : sp_error_prefix(err, "CLIP GPU: %s: ", what);
+}
+
 extern "C" int clip_gpu_init(sp_clip *c, sp_error *err)
 {
-    int n = 0;
-    if (cudaGetDeviceCount(&n) != cudaSuccess || n < 1)
-        return sp_error_set(err, SP_E_NODEVICE, "CLIP on the GPU: no CUDA device answers");
     sp_clip_gpu *g = (sp_clip_gpu *)calloc(1, sizeof *g);
     if (!g) return sp_error_set(err, SP_E_NOMEM, "out of memory");
     c->gpu = g;
+    g->dev = c->dev;
+    g->stream = sp_cuda_stream(c->dev);
+    if (!(g->blas = sp_cuda_blas(c->dev, err))) return sp_error_prefix(err, "CLIP GPU: ");
     g->text = (gpu_layer *)calloc((size_t)c->cfg.text.layers, sizeof(gpu_layer));
     g->vision = (gpu_layer *)calloc((size_t)c->cfg.vision.layers, sizeof(gpu_layer));
     if (!g->text || !g->vision) return sp_error_set(err, SP_E_NOMEM, "out of memory");
-    CK(cudaStreamCreateWithFlags(&g->stream, cudaStreamNonBlocking), "stream");
-    CB(cublasCreate(&g->blas), "create");
-    CB(cublasSetStream(g->blas, g->stream), "set stream");
+    cudaStream_t st = g->stream;
     /* the blob, then a fused [3w][w] QKV weight and [3w] bias per layer */
     size_t extra = 0;
     int tw = c->cfg.text.width, vw = c->cfg.vision.width;
     extra += (size_t)c->cfg.text.layers * (3 * (size_t)tw * tw + 3 * tw);
     extra += (size_t)c->cfg.vision.layers * (3 * (size_t)vw * vw + 3 * vw);
     g->n_floats = c->blob_floats + extra;
-    CK(cudaMalloc(&g->w32, g->n_floats * sizeof(float)), "weights");
-    CK(cudaMemcpy(g->w32, c->blob, c->blob_floats * sizeof(float), cudaMemcpyHostToDevice), "weights upload");
+    int rc = dev_alloc(g, (void **)&g->w32, g->n_floats * sizeof(float), "weights", err);
+    if (rc) return rc;
+    CK(cudaMemcpyAsync(g->w32, c->blob, c->blob_floats * sizeof(float), cudaMemcpyHostToDevice, st),
+       "weights upload");
     size_t at = c->blob_floats;
     for (int tower = 0; tower < 2; tower++) {
         const clip_tower *tw_ = tower ? &c->vision : &c->text;
@@ -279,14 +290,15 @@ extern "C" int clip_gpu_init(sp_clip *c, sp_error *err)
             o->qkv_b = at + 3 * w * w;
             const float *src_w[3] = {L->q_w, L->k_w, L->v_w}, *src_b[3] = {L->q_b, L->k_b, L->v_b};
             for (int k = 0; k < 3; k++) {
-                CK(cudaMemcpy(g->w32 + o->qkv_w + k * w * w, g->w32 + off_of(c, src_w[k]), w * w * sizeof(float),
-                              cudaMemcpyDeviceToDevice), "qkv weights");
-                CK(cudaMemcpy(g->w32 + o->qkv_b + k * w, g->w32 + off_of(c, src_b[k]), w * sizeof(float),
-                              cudaMemcpyDeviceToDevice), "qkv bias");
+                CK(cudaMemcpyAsync(g->w32 + o->qkv_w + k * w * w, g->w32 + off_of(c, src_w[k]),
+                                   w * w * sizeof(float), cudaMemcpyDeviceToDevice, st), "qkv weights");
+                CK(cudaMemcpyAsync(g->w32 + o->qkv_b + k * w, g->w32 + off_of(c, src_b[k]),
+                                   w * sizeof(float), cudaMemcpyDeviceToDevice, st), "qkv bias");
             }
             at += 3 * w * w + 3 * w;
         }
     }
+    CK(cudaStreamSynchronize(st), "weights upload");
     return 0;
 }
 
@@ -294,11 +306,9 @@ extern "C" void clip_gpu_free(sp_clip *c)
 {
     sp_clip_gpu *g = c->gpu;
     if (!g) return;
-    if (g->blas) cublasDestroy(g->blas);
-    if (g->stream) cudaStreamDestroy(g->stream);
-    cudaFree(g->w32);
-    cudaFree(g->w16);
-    cudaFree(g->arena);
+    sp_device_release(g->dev, g->w32);
+    sp_device_release(g->dev, g->w16);
+    sp_device_release(g->dev, g->arena);
     free(g->text);
     free(g->vision);
     free(g);
@@ -309,7 +319,8 @@ extern "C" int clip_gpu_set_fp16(sp_clip *c, int on, sp_error *err)
 {
     sp_clip_gpu *g = c->gpu;
     if (on && !g->w16) {
-        CK(cudaMalloc(&g->w16, g->n_floats * sizeof(__half)), "fp16 weights");
+        int rc = dev_alloc(g, (void **)&g->w16, g->n_floats * sizeof(__half), "fp16 weights", err);
+        if (rc) return rc;
         k_f32_to_f16<<<grid_for((long)g->n_floats), 256, 0, g->stream>>>(g->w32, g->w16, (long)g->n_floats);
         CK(cudaStreamSynchronize(g->stream), "fp16 conversion");
     }
@@ -337,12 +348,12 @@ template <typename T> static T *take(arena *a, size_t count)
 
 static int arena_grow(sp_clip_gpu *g, size_t need, sp_error *err)
 {
-    cudaFree(g->arena);
+    sp_device_release(g->dev, g->arena);
     g->arena = NULL;
     g->arena_cap = 0;
-    CK(cudaMalloc(&g->arena, need), "scratch");
-    g->arena_cap = need;
-    return 0;
+    int rc = dev_alloc(g, &g->arena, need, "scratch", err);
+    if (!rc) g->arena_cap = need;
+    return rc;
 }
 
 template <typename T> struct ctx {

@@ -1,39 +1,17 @@
-/* Internals shared by the CUDA backend's stages (src/render/cuda/*.cu). Not a public header.
+/* Internals shared by the CUDA render backend's stages (src/render/cuda/*.cu). Not a public header.
  *
- * Memory: every device buffer goes through sp_cuda_malloc/sp_cuda_free (device.cu), which count
- * live and peak bytes so sp_cuda_peak_bytes reports what semsplat itself holds. The rasterizer's
- * scratch buffers are grow-only (scratch_reserve) so a training loop allocates nothing after
- * its first few steps. */
+ * Every launch and copy goes to the raster's device stream (device/cuda/device_cuda.h); memory
+ * comes from the device (accounted per device). Scratch buffers are grow-only, so a training
+ * loop allocates nothing after its first few steps. */
 #ifndef SP_RENDER_CUDA_COMMON_CUH
 #define SP_RENDER_CUDA_COMMON_CUH
 
 #include <cuda_runtime.h>
 #include <stdint.h>
 
-#include "render/cuda_api.h"
+#include "device/cuda/device_cuda.h"
+#include "render/backend.h"
 #include "render/gauss_math.h"
-
-#define SP_CUDA_CHECK(call, err, what)                                                        \
-    do {                                                                                      \
-        cudaError_t sp_e_ = (call);                                                           \
-        if (sp_e_ != cudaSuccess)                                                             \
-            return sp_error_set((err), SP_E_DEVICE, "CUDA %s: %s (%s)", (what),              \
-                                cudaGetErrorString(sp_e_), cudaGetErrorName(sp_e_));         \
-    } while (0)
-
-/* Checks the last kernel launch (configuration errors show up here, faults at the next sync). */
-#define SP_CUDA_LAUNCHED(err, what) SP_CUDA_CHECK(cudaGetLastError(), err, what)
-
-/* A grow-only device buffer. */
-typedef struct sp_cu_scratch {
-    void *ptr;
-    size_t cap;
-} sp_cu_scratch;
-
-/* Ensures s holds at least `bytes` (contents are NOT kept when it grows). Grows by 1.25x so a
- * slowly growing Gaussian count does not reallocate every step. */
-int sp_cu_scratch_reserve(sp_cu_scratch *s, size_t bytes, sp_error *err);
-void sp_cu_scratch_release(sp_cu_scratch *s);
 
 /* Projected Gaussians of one view, written by project.cu and read by every later stage. */
 typedef struct sp_cuda_proj {
@@ -45,43 +23,93 @@ typedef struct sp_cuda_proj {
     uint32_t *ntiles;  /* [n] tiles touched */
 } sp_cuda_proj;
 
-/* The backend's per-view state (defined here so the stage files share it). */
-struct sp_cuda_raster {
-    /* the last forward's arguments, kept for backward */
+/* One view's pipeline state on the device: its camera, projection, sorted (tile, depth) pairs and
+ * per-pixel results kept for the backward. */
+typedef struct sp_cuda_view {
     sp_camera cam;
-    sp_raster_cfg cfg;
-    sp_raster_in in;
-    int have_forward;
     int tiles_x, tiles_y;
-    size_t n_pairs;
-    float *bg_dev; /* [D] background on the device (inside s_bg) */
-
-    sp_cu_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
-    sp_cu_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
-    sp_cu_scratch s_tfinal, s_last, s_bg;
-    /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3 in the conic's frame, v_opacity,
-     * v_depth, pad) */
-    sp_cu_scratch s_vgeo;
     sp_cuda_proj proj;
+    size_t n_pairs;
     const uint32_t *sorted_ids; /* [n_pairs] Gaussian index per sorted pair */
     const int2 *tile_ranges;    /* [tiles] [start, end) in the sorted list */
     float *t_final;             /* [H*W] */
     int32_t *last_idx;          /* [H*W] one past the last pair index used by the pixel */
-};
+} sp_cuda_view;
 
-/* Stages (each returns 0 or a negative SP_E_*). */
-int sp_cuda_project(sp_cuda_raster *r, sp_error *err);
-int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_error *err);
-int sp_cuda_rasterize_fwd(sp_cuda_raster *r, sp_raster_out *out, sp_error *err);
+/* One compositing pass: colours [n][D] and where the pixels go. */
+typedef struct sp_cuda_pass {
+    const float *colors;
+    int D;
+    const float *bg_dev; /* [D] on the device, or NULL */
+    float *image, *depth, *alpha;
+} sp_cuda_pass;
+
+/* The backend's state (defined here so the stage files share it). */
+struct sp_cuda_raster {
+    sp_device *dev;
+    cudaStream_t stream;
+    /* the last forward's arguments, kept for backward */
+    sp_raster_cfg cfg;
+    sp_raster_in in;
+    int have_forward;
+    float *bg_dev; /* [D] background on the device (inside s_bg) */
+    sp_cuda_view view; /* the single-view path's */
+
+    sp_device_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
+    sp_device_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
+    sp_device_scratch s_tfinal, s_last, s_bg;
+    /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3 in the conic's frame, v_opacity,
+     * v_depth, pad) */
+    sp_device_scratch s_vgeo;
+    /* batches (sp_render_views): per-view pair counts, host copy of them */
+    sp_device_scratch s_counts;
+};
+typedef struct sp_cuda_raster sp_cuda_raster;
+
+static inline int sp_cu_reserve(sp_cuda_raster *r, sp_device_scratch *s, size_t bytes, sp_error *err)
+{
+    return sp_device_scratch_reserve(r->dev, s, bytes, err);
+}
+
+/* Stages (each returns 0 or a negative SP_E_*). project: proj must have room for in->n. */
+int sp_cuda_project(sp_cuda_raster *r, const sp_cuda_view *v, const sp_raster_cfg *cfg,
+                    const sp_raster_in *in, sp_error *err);
+/* Points v->proj at the raster's projection scratch, for `count` Gaussians (a batch: views x n). */
+int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp_error *err);
+int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_cuda_view *v, size_t n, sp_error *err);
+int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
+                          int max_ch, int aux, sp_error *err);
+/* Uploads a HOST background of D floats into the raster's scratch; *out NULL when bg is NULL. */
+int sp_cuda_upload_background(sp_cuda_raster *r, const float *bg, int D, float **out, sp_error *err);
+int sp_cuda_rasterize_surface(sp_cuda_raster *r, const sp_cuda_view *v, float surface_alpha,
+                              float *out, sp_error *err);
 int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                           float *vgeo, sp_error *err);
 int sp_cuda_project_bwd(sp_cuda_raster *r, sp_raster_grads *grads, const float *vgeo,
                         sp_error *err);
-
-/* Chunk width for d remaining channels: the smallest specialised width >= d, capped at max_ch. */
-int sp_cuda_chunk_width(int d, int max_ch);
-/* Widest chunk from environment variable `name` (8, 16, 32 or 64; for tuning), else dflt. */
-int sp_cuda_env_chunk(const char *name, int dflt);
+/* The tile-pair kernels of one view, for batches (tiles.cu). */
+int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n,
+                       const unsigned long long *offsets, unsigned long long *keys,
+                       uint32_t *vals, sp_error *err);
+/* cub's temporary bytes for sorting m pairs of view v (host-side query, no device work). */
+int sp_cuda_sort_temp_bytes(const sp_cuda_view *v, size_t m, size_t *bytes, sp_error *err);
+int sp_cuda_sort_pairs(sp_cuda_raster *r, sp_cuda_view *v, unsigned long long *k0,
+                       unsigned long long *k1, uint32_t *v0, uint32_t *v1, int2 *ranges,
+                       sp_error *err);
+/* The backend table's entries (raster.cu, rasterize_fwd.cu, rasterize_bwd.cu, views.cu, sh.cu). */
+int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cfg *cfg,
+                           const sp_raster_in *in, sp_raster_out *out, sp_error *err);
+int sp_cuda_raster_backward(void *state, const sp_raster_grad_in *gin, sp_raster_grads *grads,
+                            sp_error *err);
+int sp_cuda_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active, const float *sh,
+                      const float *means, sp_vec3 cam_center, float *rgb, int out_stride,
+                      sp_error *err);
+int sp_cuda_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_active,
+                               const float *sh, const float *means, sp_vec3 cam_center,
+                               const float *rgb, const float *v_rgb, int stride, float *v_sh,
+                               float *v_means, sp_error *err);
+int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geom,
+                  const sp_raster_view *views, size_t n_views, sp_error *err);
 
 /* alpha of a Gaussian at offset (dx, dy) from a pixel centre: sp_gm_alpha_g (gauss_math.h), the
  * rule the CPU backend runs bit for bit (unfused multiplies and adds, the shared polynomial exp),

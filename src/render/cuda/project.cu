@@ -53,28 +53,34 @@ __global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg,
     rect[i] = make_int4(x0, y0, x1, y1);
 }
 
-int sp_cuda_project(sp_cuda_raster *r, sp_error *err)
+int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp_error *err)
 {
-    size_t n = r->in.n;
     int rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_means2d, n * sizeof(float2), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_conic_op, n * sizeof(float4), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_depths, n * sizeof(float), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_radii, n * sizeof(int32_t), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_rect, n * sizeof(int4), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_ntiles, n * sizeof(uint32_t), err))) return rc;
-    r->proj.means2d = (float2 *)r->s_means2d.ptr;
-    r->proj.conic_op = (float4 *)r->s_conic_op.ptr;
-    r->proj.depths = (float *)r->s_depths.ptr;
-    r->proj.radii = (int32_t *)r->s_radii.ptr;
-    r->proj.rect = (int4 *)r->s_rect.ptr;
-    r->proj.ntiles = (uint32_t *)r->s_ntiles.ptr;
+    if ((rc = sp_cu_reserve(r, &r->s_means2d, count * sizeof(float2), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_conic_op, count * sizeof(float4), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_depths, count * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_radii, count * sizeof(int32_t), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_rect, count * sizeof(int4), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_ntiles, count * sizeof(uint32_t), err))) return rc;
+    proj->means2d = (float2 *)r->s_means2d.ptr;
+    proj->conic_op = (float4 *)r->s_conic_op.ptr;
+    proj->depths = (float *)r->s_depths.ptr;
+    proj->radii = (int32_t *)r->s_radii.ptr;
+    proj->rect = (int4 *)r->s_rect.ptr;
+    proj->ntiles = (uint32_t *)r->s_ntiles.ptr;
+    return 0;
+}
+
+int sp_cuda_project(sp_cuda_raster *r, const sp_cuda_view *v, const sp_raster_cfg *cfg,
+                    const sp_raster_in *in, sp_error *err)
+{
+    size_t n = in->n;
     if (n == 0) return 0;
-    k_project<<<sp_div_up(n, 256), 256>>>(n, r->cam, r->cfg,
-                                          r->in.means, r->in.quats, r->in.log_scales,
-                                          r->in.opacity_logits, r->proj.means2d,
-                                          r->proj.conic_op, r->proj.depths, r->proj.radii,
-                                          r->proj.rect, r->proj.ntiles);
+    const sp_cuda_proj *p = &v->proj;
+    k_project<<<sp_div_up(n, 256), 256, 0, r->stream>>>(n, v->cam, *cfg, in->means, in->quats,
+                                                        in->log_scales, in->opacity_logits,
+                                                        p->means2d, p->conic_op, p->depths,
+                                                        p->radii, p->rect, p->ntiles);
     SP_CUDA_LAUNCHED(err, "projection");
     return 0;
 }
@@ -119,9 +125,9 @@ int sp_cuda_project_bwd(sp_cuda_raster *r, sp_raster_grads *grads, const float *
 {
     size_t n = r->in.n;
     if (n == 0) return 0;
-    k_project_bwd<<<sp_div_up(n, 256), 256>>>(
-        n, r->cam, r->cfg, r->in.means, r->in.quats, r->in.log_scales, r->in.opacity_logits,
-        r->proj.radii, vgeo, grads->v_means, grads->v_quats, grads->v_log_scales,
+    k_project_bwd<<<sp_div_up(n, 256), 256, 0, r->stream>>>(
+        n, r->view.cam, r->cfg, r->in.means, r->in.quats, r->in.log_scales, r->in.opacity_logits,
+        r->view.proj.radii, vgeo, grads->v_means, grads->v_quats, grads->v_log_scales,
         grads->v_opacity_logits, grads->v_means2d);
     SP_CUDA_LAUNCHED(err, "projection backward");
     return 0;

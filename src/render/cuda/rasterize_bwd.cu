@@ -18,8 +18,6 @@
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
 #include "common.cuh"
 
-#include <stdlib.h>
-
 #define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
 #define FULL_MASK 0xffffffffu
 
@@ -222,38 +220,32 @@ static size_t bwd_smem(int ch)
 }
 
 template <int CH>
-static int launch_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
-                      int c_base, int n_chunks, int aux, sp_error *err)
+static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                      float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
     size_t smem = bwd_smem(CH);
     SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_bwd<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                        (int)smem),
                   err, "backward shared memory");
-    dim3 grid(r->tiles_x, r->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
-    k_raster_bwd<CH><<<grid, block, smem>>>(
-        r->cam.width, r->cam.height, r->tiles_x, r->tile_ranges, r->sorted_ids, r->proj.means2d,
-        r->proj.conic_op, r->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, r->t_final,
-        r->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+    const sp_cuda_view *v = &r->view;
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    k_raster_bwd<CH><<<grid, block, smem, r->stream>>>(
+        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
+        v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
     SP_CUDA_LAUNCHED(err, "backward rasterization");
     return 0;
 }
 
-static int dispatch_bwd(int ch, sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
-                        float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
+static int dispatch_bwd(int ch, const sp_cuda_raster *r, const sp_raster_grad_in *gin,
+                        float *v_colors, float *vgeo, int c_base, int n_chunks, int aux,
+                        sp_error *err)
 {
     switch (ch) {
-    case 1: return launch_bwd<1>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 2: return launch_bwd<2>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 3: return launch_bwd<3>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 4: return launch_bwd<4>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 8: return launch_bwd<8>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 12: return launch_bwd<12>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 16: return launch_bwd<16>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 24: return launch_bwd<24>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 32: return launch_bwd<32>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 40: return launch_bwd<40>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 48: return launch_bwd<48>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case 64: return launch_bwd<64>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+#define SP_WIDTH_CASE(w) case w: return launch_bwd<w>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
+#undef SP_WIDTH_CASE
     default: return sp_error_set(err, SP_E_ARG, "no backward kernel for chunk width %d", ch);
     }
 }
@@ -261,32 +253,30 @@ static int dispatch_bwd(int ch, sp_cuda_raster *r, const sp_raster_grad_in *gin,
 int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                           float *vgeo, sp_error *err)
 {
-    if (r->n_pairs == 0) return 0;
+    if (r->view.n_pairs == 0) return 0;
     int D = r->in.D, rc;
-    int max_ch = sp_cuda_env_chunk("SP_CUDA_BWD_CHUNK", 64);
+    int max_ch = r->cfg.chunk_bwd ? r->cfg.chunk_bwd : SP_CHANNEL_CHUNK_MAX;
     int full = D / max_ch, rem = D % max_ch;
     if (full > 0 && (rc = dispatch_bwd(max_ch, r, gin, v_colors, vgeo, 0, full, 1, err))) return rc;
-    if (rem > 0 && (rc = dispatch_bwd(sp_cuda_chunk_width(rem, max_ch), r, gin, v_colors, vgeo,
+    if (rem > 0 && (rc = dispatch_bwd(sp_channel_width(rem, max_ch), r, gin, v_colors, vgeo,
                                       full * max_ch, 1, full == 0, err)))
         return rc;
     return 0;
 }
 
-extern "C" int sp_cuda_raster_backward(sp_cuda_raster *r, const sp_raster_grad_in *gin,
+int sp_cuda_raster_backward(void *state, const sp_raster_grad_in *gin,
                                        sp_raster_grads *grads, sp_error *err)
 {
-    if (!r || !gin || !grads)
-        return sp_error_set(err, SP_E_ARG, "sp_cuda_raster_backward: NULL argument");
+    sp_cuda_raster *r = (sp_cuda_raster *)state;
     if (!r->have_forward)
-        return sp_error_set(err, SP_E_ARG, "sp_cuda_raster_backward: no forward to differentiate "
+        return sp_error_set(err, SP_E_ARG, "sp_raster_backward: no forward to differentiate "
                                            "(call sp_raster_forward first)");
-    if (!gin->v_image) return sp_error_set(err, SP_E_ARG, "gin->v_image is NULL (required)");
     size_t n = r->in.n;
     if (n == 0) return 0;
     int rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
     float *vgeo = (float *)r->s_vgeo.ptr;
-    SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * 8 * sizeof(float)), err, "clearing gradients");
+    SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * 8 * sizeof(float), r->stream), err, "clearing gradients");
     if ((rc = sp_cuda_rasterize_bwd(r, gin, grads->v_colors, vgeo, err))) return rc;
     return sp_cuda_project_bwd(r, grads, vgeo, err);
 }

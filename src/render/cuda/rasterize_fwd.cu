@@ -3,16 +3,14 @@
  * One 16x16 thread block per tile and channel chunk: each thread owns a pixel, the block walks
  * the tile's depth-sorted list in batches of 256 Gaussians staged in shared memory (position,
  * conic, opacity, depth, the chunk's colour values), and composites front to back with the 3DGS
- * bounds. Kernels are specialised on the chunk width CH in {1,2,3,4,8,12,16,24,32,40,48,64}
- * (the in-between widths keep RGB + 32 features = 35 from paying for 64); a channel count that
+ * bounds. Kernels are specialised on the chunk width CH in SP_CHANNEL_WIDTHS (device.h: 1, 2, 3,
+ * 4, 8, 12, 16, 24, 32, 40, 48, 64; the in-between widths keep RGB + 32 features = 35 from paying
+ * for 64); a channel count that
  * is not one of those is padded up to the next (padded channels read as zero and are never
  * written), and wider ones run as several chunks (blockIdx.z), each recomputing the cheap
  * per-pixel alpha so registers hold only CH accumulators. The first chunk also writes
  * depth, alpha, the final transmittance and the per-pixel end of the list for backward. */
 #include "common.cuh"
-
-#include <stdlib.h>
-#include <string.h>
 
 #define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
 
@@ -109,117 +107,94 @@ static size_t fwd_smem(int ch)
 }
 
 template <int CH>
-static int launch_fwd(sp_cuda_raster *r, sp_raster_out *out, int c_base, int n_chunks, int aux,
-                      sp_error *err)
+static int launch_fwd(const sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
+                      int c_base, int n_chunks, int aux, sp_error *err)
 {
     size_t smem = fwd_smem(CH);
     SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                        (int)smem),
                   err, "forward shared memory");
-    dim3 grid(r->tiles_x, r->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
-    k_raster_fwd<CH><<<grid, block, smem>>>(
-        r->cam.width, r->cam.height, r->tiles_x, r->tile_ranges, r->sorted_ids, r->proj.means2d,
-        r->proj.conic_op, r->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, out->image,
-        out->depth, out->alpha, r->t_final, r->last_idx, aux);
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    k_raster_fwd<CH><<<grid, block, smem, r->stream>>>(
+        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
+        v->proj.conic_op, v->proj.depths, p->colors, p->D, c_base, p->bg_dev, p->image,
+        p->depth, p->alpha, v->t_final, v->last_idx, aux);
     SP_CUDA_LAUNCHED(err, "forward rasterization");
     return 0;
 }
 
-/* Launches the kernel specialised for width `ch` (a member of the set). */
-static int dispatch_fwd(int ch, sp_cuda_raster *r, sp_raster_out *out, int c_base, int n_chunks,
-                        int aux, sp_error *err)
+/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
+static int dispatch_fwd(int ch, const sp_cuda_raster *r, const sp_cuda_view *v,
+                        const sp_cuda_pass *p, int c_base, int n_chunks, int aux, sp_error *err)
 {
     switch (ch) {
-    case 1: return launch_fwd<1>(r, out, c_base, n_chunks, aux, err);
-    case 2: return launch_fwd<2>(r, out, c_base, n_chunks, aux, err);
-    case 3: return launch_fwd<3>(r, out, c_base, n_chunks, aux, err);
-    case 4: return launch_fwd<4>(r, out, c_base, n_chunks, aux, err);
-    case 8: return launch_fwd<8>(r, out, c_base, n_chunks, aux, err);
-    case 12: return launch_fwd<12>(r, out, c_base, n_chunks, aux, err);
-    case 16: return launch_fwd<16>(r, out, c_base, n_chunks, aux, err);
-    case 24: return launch_fwd<24>(r, out, c_base, n_chunks, aux, err);
-    case 32: return launch_fwd<32>(r, out, c_base, n_chunks, aux, err);
-    case 40: return launch_fwd<40>(r, out, c_base, n_chunks, aux, err);
-    case 48: return launch_fwd<48>(r, out, c_base, n_chunks, aux, err);
-    case 64: return launch_fwd<64>(r, out, c_base, n_chunks, aux, err);
+#define SP_WIDTH_CASE(w) case w: return launch_fwd<w>(r, v, p, c_base, n_chunks, aux, err);
+    SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
+#undef SP_WIDTH_CASE
     default: return sp_error_set(err, SP_E_ARG, "no forward kernel for chunk width %d", ch);
     }
 }
 
-int sp_cuda_chunk_width(int d, int max_ch)
+/* D channels as full chunks of max_ch plus one narrower launch for the rest; aux: write depth,
+ * alpha, the final transmittance and the list ends (once, from the first chunk). */
+int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
+                          int max_ch, int aux, sp_error *err)
 {
-    static const int widths[] = {1, 2, 3, 4, 8, 12, 16, 24, 32, 40, 48, 64};
-    for (size_t i = 0; i < sizeof(widths) / sizeof(widths[0]); i++)
-        if (widths[i] >= d || widths[i] >= max_ch) return widths[i] < max_ch ? widths[i] : max_ch;
-    return max_ch;
-}
-
-int sp_cuda_env_chunk(const char *name, int dflt)
-{
-    const char *s = getenv(name);
-    if (!s) return dflt;
-    int v = atoi(s);
-    return (v == 8 || v == 16 || v == 32 || v == 64) ? v : dflt;
-}
-
-int sp_cuda_rasterize_fwd(sp_cuda_raster *r, sp_raster_out *out, sp_error *err)
-{
-    int D = r->in.D, rc;
-    int max_ch = sp_cuda_env_chunk("SP_CUDA_FWD_CHUNK", 64);
+    int D = p->D, rc;
     int full = D / max_ch, rem = D % max_ch;
-    if (full > 0 && (rc = dispatch_fwd(max_ch, r, out, 0, full, 1, err))) return rc;
-    if (rem > 0 &&
-        (rc = dispatch_fwd(sp_cuda_chunk_width(rem, max_ch), r, out, full * max_ch, 1, full == 0, err)))
+    if (full > 0 && (rc = dispatch_fwd(max_ch, r, v, p, 0, full, aux, err))) return rc;
+    if (rem > 0 && (rc = dispatch_fwd(sp_channel_width(rem, max_ch), r, v, p, full * max_ch,
+                                      1, aux && full == 0, err)))
         return rc;
+    return 0;
+}
+
+/* Uploads a host background of D floats into the raster's scratch (NULL: none). */
+int sp_cuda_upload_background(sp_cuda_raster *r, const float *bg, int D, float **out, sp_error *err)
+{
+    *out = NULL;
+    if (!bg) return 0;
+    int rc = sp_cu_reserve(r, &r->s_bg, (size_t)D * sizeof(float), err);
+    if (rc) return rc;
+    SP_CUDA_CHECK(cudaMemcpyAsync(r->s_bg.ptr, bg, (size_t)D * sizeof(float), cudaMemcpyHostToDevice,
+                                  r->stream),
+                  err, "uploading the background");
+    *out = (float *)r->s_bg.ptr;
     return 0;
 }
 
 /* ---- the whole forward --------------------------------------------------------------------- */
 
-extern "C" int sp_cuda_raster_forward(sp_cuda_raster *r, const sp_camera *cam,
-                                      const sp_raster_cfg *cfg, const sp_raster_in *in,
-                                      sp_raster_out *out, sp_error *err)
+int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cfg *cfg,
+                                      const sp_raster_in *in, sp_raster_out *out, sp_error *err)
 {
-    if (!r || !cam || !in || !out)
-        return sp_error_set(err, SP_E_ARG, "sp_cuda_raster_forward: NULL argument");
-    if (cam->width <= 0 || cam->height <= 0)
-        return sp_error_set(err, SP_E_ARG, "camera size %dx%d is not positive", cam->width,
-                            cam->height);
-    if (in->D < 1) return sp_error_set(err, SP_E_ARG, "channel count D = %d (must be >= 1)", in->D);
-    if (!out->image) return sp_error_set(err, SP_E_ARG, "out->image is NULL (required)");
-    if (in->n > 0 && (!in->means || !in->quats || !in->log_scales || !in->opacity_logits ||
-                      !in->colors))
-        return sp_error_set(err, SP_E_ARG, "sp_raster_in has a NULL buffer for %zu Gaussians",
-                            in->n);
-    if (in->n > 0x7fffffff)
-        return sp_error_set(err, SP_E_ARG, "%zu Gaussians exceed the 2^31 the backend indexes",
-                            in->n);
+    sp_cuda_raster *r = (sp_cuda_raster *)state;
+    sp_cuda_view *v = &r->view;
     int rc;
     r->have_forward = 0;
-    r->cam = *cam;
-    r->cfg = cfg ? *cfg : sp_raster_cfg_default();
+    v->cam = *cam;
+    r->cfg = *cfg;
     r->in = *in;
     r->in.background = NULL; /* host pointer; kept on the device in bg_dev */
-    r->tiles_x = (cam->width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
-    r->tiles_y = (cam->height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
+    v->tiles_x = (cam->width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
+    v->tiles_y = (cam->height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
     size_t npix = (size_t)cam->width * cam->height;
 
-    r->bg_dev = NULL;
-    if (in->background) {
-        if ((rc = sp_cu_scratch_reserve(&r->s_bg, (size_t)in->D * sizeof(float), err))) return rc;
-        SP_CUDA_CHECK(cudaMemcpy(r->s_bg.ptr, in->background, (size_t)in->D * sizeof(float),
-                                 cudaMemcpyHostToDevice),
-                      err, "uploading the background");
-        r->bg_dev = (float *)r->s_bg.ptr;
-    }
-    if ((rc = sp_cu_scratch_reserve(&r->s_tfinal, npix * sizeof(float), err))) return rc;
-    if ((rc = sp_cu_scratch_reserve(&r->s_last, npix * sizeof(int32_t), err))) return rc;
-    r->t_final = (float *)r->s_tfinal.ptr;
-    r->last_idx = (int32_t *)r->s_last.ptr;
+    if ((rc = sp_cuda_upload_background(r, in->background, in->D, &r->bg_dev, err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_tfinal, npix * sizeof(float), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_last, npix * sizeof(int32_t), err))) return rc;
+    v->t_final = (float *)r->s_tfinal.ptr;
+    v->last_idx = (int32_t *)r->s_last.ptr;
 
-    if ((rc = sp_cuda_project(r, err))) return rc;
-    if ((rc = sp_cuda_bin_and_sort(r, err))) return rc;
-    if ((rc = sp_cuda_rasterize_fwd(r, out, err))) return rc;
+    if ((rc = sp_cuda_reserve_proj(r, in->n, &v->proj, err))) return rc;
+    if ((rc = sp_cuda_project(r, v, cfg, in, err))) return rc;
+    if ((rc = sp_cuda_bin_and_sort(r, v, in->n, err))) return rc;
+    sp_cuda_pass pass = {in->colors, in->D, r->bg_dev, out->image, out->depth, out->alpha};
+    int max_ch = cfg->chunk_fwd ? cfg->chunk_fwd : SP_CHANNEL_CHUNK_MAX;
+    if ((rc = sp_cuda_rasterize_fwd(r, v, &pass, max_ch, 1, err))) return rc;
+    if (out->surface_depth &&
+        (rc = sp_cuda_rasterize_surface(r, v, cfg->surface_alpha, out->surface_depth, err)))
+        return rc;
     r->have_forward = 1;
     return 0;
 }

@@ -1,5 +1,6 @@
 /* CUDA backend: spherical harmonics to RGB and its backward, one thread per Gaussian, with the
- * per-Gaussian math from gauss_math.h (shared with the CPU backend). */
+ * per-Gaussian math from gauss_math.h (shared with the CPU backend). Arguments are checked by
+ * the public calls (src/render/sh.c). */
 #include "common.cuh"
 #include "render/gauss_math.h"
 
@@ -34,45 +35,25 @@ __global__ void k_sh_bwd(size_t n, int K, int degree_active, const float *__rest
         for (int k = 0; k < 3; k++) v_means[i * 3 + k] += vm[k];
 }
 
-static int check_args(size_t n, int degree, int degree_active, int stride, sp_error *err)
+int sp_cuda_sh_to_rgb(sp_device *dev, size_t n, int degree, int degree_active,
+                                 const float *sh, const float *means, sp_vec3 cam_center,
+                                 float *rgb, int out_stride, sp_error *err)
 {
-    if (degree < 0 || degree > 3)
-        return sp_error_set(err, SP_E_ARG, "SH degree %d outside 0..3", degree);
-    if (degree_active < 0 || degree_active > degree)
-        return sp_error_set(err, SP_E_ARG, "active SH degree %d outside 0..%d", degree_active,
-                            degree);
-    if (stride < 3) return sp_error_set(err, SP_E_ARG, "rgb stride %d < 3", stride);
-    return 0;
-}
-
-extern "C" int sp_cuda_sh_to_rgb(size_t n, int degree, int degree_active, const float *sh,
-                                 const float *means, sp_vec3 cam_center, float *rgb,
-                                 int out_stride, sp_error *err)
-{
-    int rc = check_args(n, degree, degree_active, out_stride, err);
-    if (rc) return rc;
-    if (n == 0) return 0;
-    if (!sh || !means || !rgb) return sp_error_set(err, SP_E_ARG, "sp_sh_to_rgb: NULL buffer");
-    k_sh_fwd<<<sp_div_up(n, 256), 256>>>(n, sp_sh_coeffs(degree), degree_active, sh, means,
-                                         make_float3(cam_center.x, cam_center.y, cam_center.z),
-                                         rgb, out_stride);
+    k_sh_fwd<<<sp_div_up(n, 256), 256, 0, sp_cuda_stream(dev)>>>(
+        n, sp_sh_coeffs(degree), degree_active, sh, means,
+        make_float3(cam_center.x, cam_center.y, cam_center.z), rgb, out_stride);
     SP_CUDA_LAUNCHED(err, "SH to RGB");
     return 0;
 }
 
-extern "C" int sp_cuda_sh_to_rgb_backward(size_t n, int degree, int degree_active, const float *sh,
-                                          const float *means, sp_vec3 cam_center, const float *rgb,
-                                          const float *v_rgb, int stride, float *v_sh,
-                                          float *v_means, sp_error *err)
+int sp_cuda_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_active,
+                                          const float *sh, const float *means, sp_vec3 cam_center,
+                                          const float *rgb, const float *v_rgb, int stride,
+                                          float *v_sh, float *v_means, sp_error *err)
 {
-    int rc = check_args(n, degree, degree_active, stride, err);
-    if (rc) return rc;
-    if (n == 0) return 0;
-    if (!sh || !means || !rgb || !v_rgb || !v_sh)
-        return sp_error_set(err, SP_E_ARG, "sp_sh_to_rgb_backward: NULL buffer");
-    k_sh_bwd<<<sp_div_up(n, 256), 256>>>(n, sp_sh_coeffs(degree), degree_active, sh, means,
-                                         make_float3(cam_center.x, cam_center.y, cam_center.z),
-                                         rgb, v_rgb, stride, v_sh, v_means);
+    k_sh_bwd<<<sp_div_up(n, 256), 256, 0, sp_cuda_stream(dev)>>>(
+        n, sp_sh_coeffs(degree), degree_active, sh, means,
+        make_float3(cam_center.x, cam_center.y, cam_center.z), rgb, v_rgb, stride, v_sh, v_means);
     SP_CUDA_LAUNCHED(err, "SH to RGB backward");
     return 0;
 }

@@ -1,4 +1,4 @@
-/* The trainer's per-element work on the GPU (src/train/train_cuda_api.h): the 3DGS photometric
+/* The trainer's per-element work on the GPU (the CUDA table of src/train/train_kernels.h): the 3DGS photometric
  * loss (L1 + SSIM with its exact gradient), feature MSE, Adam, densification statistics, column
  * packing and the NaN guard. Same semantics and the same separable SSIM formulation as the CPU
  * reference in src/train/loss.c:
@@ -6,12 +6,14 @@
  *   v pass   [Ho][Wo][3C] SSIM at each valid position and dS/d(mu_x, E[x^2], E[xy])
  *   back v   [H][Wo][3C]  transpose of the vertical window
  *   back h   v_pred       transpose of the horizontal window, chain rule, plus the L1 term.
- * Scalar sums are accumulated in double (block reduction, then one atomic per block). */
+ * Scalar sums are accumulated in double (block reduction, then one atomic per block). Everything
+ * runs on the device's stream. */
 #include <cuda_runtime.h>
 #include <math.h>
 #include <stdint.h>
 
-#include "train/train_cuda_api.h"
+#include "device/cuda/device_cuda.h"
+#include "train/train_kernels.h"
 
 #define R_SSIM (SP_SSIM_WINDOW / 2)
 #define TPB 256
@@ -174,10 +176,11 @@ __global__ void k_back_h(const float *pred, int S, const float *target, const fl
 
 static unsigned nblk(size_t n) { return (unsigned)((n + TPB - 1) / TPB); }
 
-extern "C" int sp_cuda_rgb_loss(const float *pred, int pred_stride, const float *target, int H,
+static int rgb_loss(sp_device *dev, const float *pred, int pred_stride, const float *target, int H,
                                 int W, int C, float ssim_lambda, float *scratch, float *v_pred,
                                 double stats[4], sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (H < SP_SSIM_WINDOW || W < SP_SSIM_WINDOW || C < 1 || pred_stride < C)
         return sp_error_set(err, SP_E_ARG,
                             "rgb loss: image %dx%d with %d of %d channels (needs >= %dx%d)", W, H,
@@ -189,23 +192,24 @@ extern "C" int sp_cuda_rgb_loss(const float *pred, int pred_stride, const float 
     float *hbuf = scratch, *dbuf = v_pred ? scratch + 5 * hw_o : NULL, *vbuf = scratch + 8 * hw_o;
     double *sums = (double *)(scratch + 12 * hw_o); /* l1, mse, ssim; inside the 16 HWC floats */
     ssim_win w = make_window();
-    CK(cudaMemsetAsync(sums, 0, 3 * sizeof(double)), "clearing loss sums");
+    CK(cudaMemsetAsync(sums, 0, 3 * sizeof(double), st), "clearing loss sums");
     size_t npix = (size_t)H * W;
-    k_l1_mse<<<nblk(npix * C), TPB>>>(pred, pred_stride, target, npix, C, sums);
-    k_ssim_h<<<nblk(hw_o), TPB>>>(pred, pred_stride, target, H, W, C, Wo, w, hbuf);
-    k_ssim_v<<<nblk((size_t)Ho * Wo * C), TPB>>>(hbuf, Ho, Wo, C, w, dbuf, sums + 2);
+    k_l1_mse<<<nblk(npix * C), TPB, 0, st>>>(pred, pred_stride, target, npix, C, sums);
+    k_ssim_h<<<nblk(hw_o), TPB, 0, st>>>(pred, pred_stride, target, H, W, C, Wo, w, hbuf);
+    k_ssim_v<<<nblk((size_t)Ho * Wo * C), TPB, 0, st>>>(hbuf, Ho, Wo, C, w, dbuf, sums + 2);
     CK(cudaGetLastError(), "SSIM kernels");
     double n = (double)npix * C, n_valid = (double)Ho * Wo * C;
     if (v_pred) {
         float l1_scale = (float)((1.0 - ssim_lambda) / n);
         float ssim_scale = (float)(-ssim_lambda / n_valid);
-        k_back_v<<<nblk((size_t)H * Wo * 3 * C), TPB>>>(dbuf, H, Ho, Wo, C, w, vbuf);
-        k_back_h<<<nblk(npix * C), TPB>>>(pred, pred_stride, target, vbuf, H, W, C, Wo, w,
+        k_back_v<<<nblk((size_t)H * Wo * 3 * C), TPB, 0, st>>>(dbuf, H, Ho, Wo, C, w, vbuf);
+        k_back_h<<<nblk(npix * C), TPB, 0, st>>>(pred, pred_stride, target, vbuf, H, W, C, Wo, w,
                                           l1_scale, ssim_scale, v_pred);
         CK(cudaGetLastError(), "SSIM backward kernels");
     }
     double h[3];
-    CK(cudaMemcpy(h, sums, sizeof(h), cudaMemcpyDeviceToHost), "reading loss sums");
+    CK(cudaMemcpyAsync(h, sums, sizeof(h), cudaMemcpyDeviceToHost, st), "reading loss sums");
+    CK(cudaStreamSynchronize(st), "reading loss sums");
     double l1 = h[0] / n, mse = h[1] / n, ssim = h[2] / n_valid;
     stats[0] = (1.0 - ssim_lambda) * l1 + ssim_lambda * (1.0 - ssim);
     stats[1] = l1;
@@ -229,10 +233,11 @@ __global__ void k_feat_mse(const float *pred, int S, int off, const float *targe
     block_add(s, sum);
 }
 
-extern "C" int sp_cuda_feature_mse(const float *pred, int pred_stride, int offset,
+static int feature_mse(sp_device *dev, const float *pred, int pred_stride, int offset,
                                    const float *target, int H, int W, int F, float lambda,
                                    float *v_pred, double *out_mse, sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (H < 1 || W < 1 || F < 1 || offset < 0 || offset + F > pred_stride)
         return sp_error_set(err, SP_E_ARG, "feature loss: %d channels at %d do not fit stride %d",
                             F, offset, pred_stride);
@@ -240,14 +245,15 @@ extern "C" int sp_cuda_feature_mse(const float *pred, int pred_stride, int offse
     size_t npix = (size_t)H * W;
     double n = (double)npix * F;
     double *sum = NULL;
-    CK(cudaMallocAsync((void **)&sum, sizeof(double), 0), "allocating the loss sum");
-    cudaMemsetAsync(sum, 0, sizeof(double));
-    k_feat_mse<<<nblk(npix * F), TPB>>>(pred, pred_stride, offset, target, npix, F,
+    CK(cudaMallocAsync((void **)&sum, sizeof(double), st), "allocating the loss sum");
+    cudaMemsetAsync(sum, 0, sizeof(double), st);
+    k_feat_mse<<<nblk(npix * F), TPB, 0, st>>>(pred, pred_stride, offset, target, npix, F,
                                         (float)(2.0 * lambda / n), v_pred, sum);
     cudaError_t e = cudaGetLastError();
     double h = 0;
-    if (e == cudaSuccess) e = cudaMemcpy(&h, sum, sizeof(h), cudaMemcpyDeviceToHost);
-    cudaFreeAsync(sum, 0);
+    if (e == cudaSuccess) e = cudaMemcpyAsync(&h, sum, sizeof(h), cudaMemcpyDeviceToHost, st);
+    cudaFreeAsync(sum, st);
+    if (e == cudaSuccess) e = cudaStreamSynchronize(st);
     if (e != cudaSuccess)
         return sp_error_set(err, SP_E_DEVICE, "CUDA feature loss: %s", cudaGetErrorString(e));
     if (out_mse) *out_mse = h / n;
@@ -267,15 +273,16 @@ __global__ void k_adam(float *param, const float *grad, float *m, float *v, size
     param[i] -= lr * (mi / c1) / (sqrtf(vi / c2) + eps);
 }
 
-extern "C" int sp_cuda_adam_step(float *param, const float *grad, float *m, float *v, size_t n,
+static int adam_step(sp_device *dev, float *param, const float *grad, float *m, float *v, size_t n,
                                  float lr, float beta1, float beta2, float eps, int step,
                                  sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (step < 1) return sp_error_set(err, SP_E_ARG, "adam: step %d (must be >= 1)", step);
     if (n == 0) return 0;
     if (!param || !grad || !m || !v) return sp_error_set(err, SP_E_ARG, "adam: NULL buffer");
     float c1 = (float)(1.0 - pow(beta1, step)), c2 = (float)(1.0 - pow(beta2, step));
-    k_adam<<<nblk(n), TPB>>>(param, grad, m, v, n, lr, beta1, beta2, eps, c1, c2);
+    k_adam<<<nblk(n), TPB, 0, st>>>(param, grad, m, v, n, lr, beta1, beta2, eps, c1, c2);
     CK(cudaGetLastError(), "adam step");
     return 0;
 }
@@ -290,14 +297,15 @@ __global__ void k_densify(const float *v2, const int32_t *radii, size_t n, float
     count[i] += 1.0f;
 }
 
-extern "C" int sp_cuda_densify_accumulate(const float *v_means2d, const int32_t *radii, size_t n,
+static int densify_accumulate(sp_device *dev, const float *v_means2d, const int32_t *radii, size_t n,
                                           float scale_x, float scale_y, float *grad2d_sum,
                                           float *count, sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (n == 0) return 0;
     if (!v_means2d || !radii || !grad2d_sum || !count)
         return sp_error_set(err, SP_E_ARG, "densify stats: NULL buffer");
-    k_densify<<<nblk(n), TPB>>>(v_means2d, radii, n, scale_x, scale_y, grad2d_sum, count);
+    k_densify<<<nblk(n), TPB, 0, st>>>(v_means2d, radii, n, scale_x, scale_y, grad2d_sum, count);
     CK(cudaGetLastError(), "densify statistics");
     return 0;
 }
@@ -312,17 +320,18 @@ __global__ void k_copy_cols(float *dst, int ds, int doff, const float *src, int 
     dst[r * ds + doff + c] = src[r * ss + soff + c];
 }
 
-extern "C" int sp_cuda_copy_columns(float *dst, int dst_stride, int dst_offset, const float *src,
+static int copy_columns(sp_device *dev, float *dst, int dst_stride, int dst_offset, const float *src,
                                     int src_stride, int src_offset, size_t rows, int cols,
                                     sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (rows == 0 || cols == 0) return 0;
     if (!dst || !src || cols < 0 || dst_offset < 0 || src_offset < 0 ||
         dst_offset + cols > dst_stride || src_offset + cols > src_stride)
         return sp_error_set(err, SP_E_ARG,
                             "copy columns: %d columns at %d/%d do not fit strides %d/%d", cols,
                             dst_offset, src_offset, dst_stride, src_stride);
-    k_copy_cols<<<nblk(rows * (size_t)cols), TPB>>>(dst, dst_stride, dst_offset, src, src_stride,
+    k_copy_cols<<<nblk(rows * (size_t)cols), TPB, 0, st>>>(dst, dst_stride, dst_offset, src, src_stride,
                                                     src_offset, rows, cols);
     CK(cudaGetLastError(), "column copy");
     return 0;
@@ -335,22 +344,29 @@ __global__ void k_nonfinite(const float *x, size_t n, int *flag)
     if (__syncthreads_or(bad) && threadIdx.x == 0) *flag = 1;
 }
 
-extern "C" int sp_cuda_any_nonfinite(const float *x, size_t n, int *out_bad, sp_error *err)
+static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad, sp_error *err)
 {
+    cudaStream_t st = sp_cuda_stream(dev);
     if (!out_bad) return sp_error_set(err, SP_E_ARG, "nonfinite check: out_bad is NULL");
     *out_bad = 0;
     if (n == 0) return 0;
     if (!x) return sp_error_set(err, SP_E_ARG, "nonfinite check: NULL buffer");
     int *flag = NULL;
-    CK(cudaMallocAsync((void **)&flag, sizeof(int), 0), "allocating the NaN flag");
-    cudaMemsetAsync(flag, 0, sizeof(int));
-    k_nonfinite<<<nblk(n), TPB>>>(x, n, flag);
+    CK(cudaMallocAsync((void **)&flag, sizeof(int), st), "allocating the NaN flag");
+    cudaMemsetAsync(flag, 0, sizeof(int), st);
+    k_nonfinite<<<nblk(n), TPB, 0, st>>>(x, n, flag);
     cudaError_t e = cudaGetLastError();
     int h = 0;
-    if (e == cudaSuccess) e = cudaMemcpy(&h, flag, sizeof(int), cudaMemcpyDeviceToHost);
-    cudaFreeAsync(flag, 0);
+    if (e == cudaSuccess) e = cudaMemcpyAsync(&h, flag, sizeof(int), cudaMemcpyDeviceToHost, st);
+    cudaFreeAsync(flag, st);
+    if (e == cudaSuccess) e = cudaStreamSynchronize(st);
     if (e != cudaSuccess)
         return sp_error_set(err, SP_E_DEVICE, "CUDA NaN check: %s", cudaGetErrorString(e));
     *out_bad = h;
     return 0;
 }
+
+static const tr_kernels cuda_kernels = {rgb_loss,           feature_mse,  adam_step,
+                                        densify_accumulate, copy_columns, any_nonfinite};
+
+extern "C" const tr_kernels *tr_cuda_kernels(void) { return &cuda_kernels; }

@@ -1,0 +1,349 @@
+/* The simulated robot's action servers, with rclcpp_action's semantics: SendGoal accepts or
+ * rejects (a goal in occupied, unknown or unreachable space is rejected), a new NavigateToPose
+ * goal preempts the running one (aborted), GetResult is answered when the goal is terminal (held
+ * until then; unknown goals get STATUS_UNKNOWN), CancelGoal follows action_msgs' rules, and
+ * GoalStatusArray is republished on every change. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "sim_internal.h"
+
+static const uint8_t zero_uuid[16];
+
+static sim_goal *find(sim *s, ros_action_kind k, const uint8_t id[16])
+{
+    for (int i = 0; i < s->n_goals; i++)
+        if (s->goals[i].kind == k && !memcmp(s->goals[i].uuid, id, 16)) return &s->goals[i];
+    return NULL;
+}
+
+static void drop(sim *s, int i)
+{
+    sp_ros_result_response_free(&s->goals[i].result);
+    if (s->active == i) s->active = -1;
+    else if (s->active == s->n_goals - 1) s->active = i; /* the last goal moves into slot i */
+    s->goals[i] = s->goals[--s->n_goals];
+}
+
+static sim_goal *new_goal(sim *s, ros_action_kind k, const uint8_t id[16])
+{
+    if (s->n_goals == SIM_MAX_GOALS) { /* make room: the oldest finished goal goes */
+        int oldest = -1;
+        for (int i = 0; i < s->n_goals; i++)
+            if (s->goals[i].status >= SP_ROS_GOAL_SUCCEEDED &&
+                (oldest < 0 || s->goals[i].finished_mono < s->goals[oldest].finished_mono))
+                oldest = i;
+        if (oldest < 0) return NULL;
+        drop(s, oldest);
+    }
+    sim_goal *g = &s->goals[s->n_goals++];
+    memset(g, 0, sizeof *g);
+    g->kind = k;
+    memcpy(g->uuid, id, 16);
+    g->accepted_stamp = ros_wall_time();
+    g->status = SP_ROS_GOAL_ACCEPTED;
+    g->started_sim = s->sim_time;
+    return g;
+}
+
+static void publish_status(sim *s, ros_action_kind k)
+{
+    sp_ros_goal_status_entry e[SIM_MAX_GOALS];
+    sp_ros_status_array a = {0, e};
+    for (int i = 0; i < s->n_goals; i++) {
+        if (s->goals[i].kind != k) continue;
+        memcpy(e[a.n].goal_id, s->goals[i].uuid, 16);
+        e[a.n].stamp_s = s->goals[i].accepted_stamp;
+        e[a.n].status = s->goals[i].status;
+        a.n++;
+    }
+    action_msgs_msg_dds__GoalStatusArray_ m;
+    if (ros_fill_status_array(&m, &a)) return;
+    dds_write(k == ROS_ACTION_NAV ? s->nav.status_w : s->path.status_w, &m);
+    ros_unfill_status_array(&m);
+}
+
+static void send_result(sim *s, const sim_goal *g, const sim_waiting *w)
+{
+    sp_ros_result_response r = g->result;
+    r.header = w->header;
+    ros_server *srv = g->kind == ROS_ACTION_NAV ? &s->nav.get_result : &s->path.get_result;
+    int jazzy = s->distro == SP_ROS_DISTRO_JAZZY;
+    if (g->kind == ROS_ACTION_NAV && jazzy) {
+        jazzy_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
+        ros_fill_nav_result_jazzy(&m, &r);
+        ros_server_reply(srv, w->writer, &m);
+    } else if (g->kind == ROS_ACTION_NAV) {
+        humble_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
+        ros_fill_nav_result_humble(&m, &r);
+        ros_server_reply(srv, w->writer, &m);
+    } else if (jazzy) {
+        jazzy_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
+        if (ros_fill_path_result_jazzy(&m, &r, ros_wall_time())) return;
+        ros_server_reply(srv, w->writer, &m);
+        ros_unfill_path(&m.result.path);
+    } else {
+        humble_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
+        if (ros_fill_path_result_humble(&m, &r, ros_wall_time())) return;
+        ros_server_reply(srv, w->writer, &m);
+        ros_unfill_path(&m.result.path);
+    }
+}
+
+static void finish(sim *s, sim_goal *g, int status, int error_code, const char *msg)
+{
+    g->status = status;
+    g->result.status = status;
+    g->result.error_code = error_code;
+    snprintf(g->result.error_msg, sizeof g->result.error_msg, "%s", msg ? msg : "");
+    g->finished_mono = ros_now();
+    for (int i = 0; i < g->n_waiting; i++) send_result(s, g, &g->waiting[i]);
+    g->n_waiting = 0;
+    publish_status(s, g->kind);
+    sp_logf(s->log, SP_LOG_INFO, "%s goal to (%.2f, %.2f): %s%s%s", ros_action_type_name(g->kind),
+            g->target.x, g->target.y, sp_ros_goal_state_name((sp_ros_goal_state)status),
+            msg && msg[0] ? ": " : "", msg ? msg : "");
+}
+
+static void reply_goal(sim *s, ros_server *srv, const sp_ros_rpc_header *h,
+                       dds_instance_handle_t writer, int accepted)
+{
+    /* NavigateToPose_ and ComputePathToPose_SendGoal_Response_ have the same layout. */
+    nav2_msgs_action_dds__NavigateToPose_SendGoal_Response_ m;
+    (void)s;
+    memset(&m, 0, sizeof m);
+    m.guid = h->guid;
+    m.seq = h->seq;
+    m.accepted = accepted != 0;
+    ros_fill_time(&m.stamp, ros_wall_time());
+    ros_server_reply(srv, writer, &m);
+}
+
+/* Goals are in the map frame, which the simulator takes as its odom frame; others are refused. */
+static int frame_refused(const sim *s, const char *frame, sp_error *e)
+{
+    if (!frame[0] || !strcmp(frame, s->map_frame) || !strcmp(frame, s->odom_frame)) return 0;
+    sp_error_set(e, SP_E_ARG, "frame '%s' is neither %s nor %s", frame, s->map_frame, s->odom_frame);
+    return 1;
+}
+
+static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
+{
+    sim *s = ctx;
+    sp_ros_goal_request r;
+    sp_error e = {0};
+    if (sp_ros_decode_nav_goal_request(bytes, n, &r, &e)) {
+        sp_logf(s->log, SP_LOG_WARN, "NavigateToPose: malformed goal ignored: %s", e.msg);
+        return;
+    }
+    double *xy = NULL;
+    size_t np = 0;
+    if (!frame_refused(s, r.frame_id, &e))
+        ros_planner_plan(s->planner, s->drive.x, s->drive.y, r.pose.x, r.pose.y, &xy, &np, &e);
+    sim_goal *g = e.code ? NULL : new_goal(s, ROS_ACTION_NAV, r.goal_id);
+    if (!g) {
+        sp_logf(s->log, SP_LOG_INFO, "NavigateToPose goal (%.2f, %.2f) rejected: %s", r.pose.x,
+                r.pose.y, e.code ? e.msg : "too many goals");
+        free(xy);
+        reply_goal(s, &s->nav.send_goal, &r.header, info->publication_handle, 0);
+        return;
+    }
+    g->target = r.pose;
+    if (s->active >= 0) finish(s, &s->goals[s->active], SP_ROS_GOAL_ABORTED, 0, "preempted by a new goal");
+    s->active = (int)(g - s->goals);
+    ros_drive_follow(&s->drive, xy, np, r.pose.yaw);
+    reply_goal(s, &s->nav.send_goal, &r.header, info->publication_handle, 1);
+    g->status = SP_ROS_GOAL_EXECUTING;
+    publish_status(s, ROS_ACTION_NAV);
+    sp_logf(s->log, SP_LOG_INFO, "NavigateToPose goal (%.2f, %.2f, yaw %.2f) accepted: %zu "
+            "waypoints, %.2f m", r.pose.x, r.pose.y, r.pose.yaw, np, ros_drive_remaining(&s->drive));
+}
+
+/* The planner's polyline as poses heading along it, the last with the goal's yaw. */
+static int path_result(sp_ros_path *out, const double *xy, size_t n, double goal_yaw,
+                       const char *frame)
+{
+    memset(out, 0, sizeof *out);
+    out->poses = calloc(n ? n : 1, sizeof *out->poses);
+    if (!out->poses) return SP_E_NOMEM;
+    out->n = n;
+    snprintf(out->frame_id, sizeof out->frame_id, "%s", frame);
+    for (size_t i = 0; i < n; i++) {
+        out->poses[i].x = xy[2 * i];
+        out->poses[i].y = xy[2 * i + 1];
+        out->poses[i].yaw = i + 1 < n ? atan2(xy[2 * i + 3] - xy[2 * i + 1], xy[2 * i + 2] - xy[2 * i])
+                                      : goal_yaw;
+    }
+    return 0;
+}
+
+static void on_path_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
+{
+    sim *s = ctx;
+    sp_ros_goal_request r;
+    sp_error e = {0};
+    if (sp_ros_decode_path_goal_request(bytes, n, &r, &e)) {
+        sp_logf(s->log, SP_LOG_WARN, "ComputePathToPose: malformed goal ignored: %s", e.msg);
+        return;
+    }
+    double sx = r.use_start ? r.start.x : s->drive.x, sy = r.use_start ? r.start.y : s->drive.y;
+    double *xy = NULL, t0 = ros_now();
+    size_t np = 0;
+    sim_goal *g = NULL;
+    if (!frame_refused(s, r.frame_id, &e) &&
+        !ros_planner_plan(s->planner, sx, sy, r.pose.x, r.pose.y, &xy, &np, &e))
+        g = new_goal(s, ROS_ACTION_PATH, r.goal_id);
+    if (!g || path_result(&g->result.path, xy, np, r.pose.yaw, s->map_frame)) {
+        sp_logf(s->log, SP_LOG_INFO, "ComputePathToPose goal (%.2f, %.2f) rejected: %s", r.pose.x,
+                r.pose.y, e.code ? e.msg : "too many goals");
+        if (g) s->n_goals--;
+        free(xy);
+        reply_goal(s, &s->path.send_goal, &r.header, info->publication_handle, 0);
+        return;
+    }
+    free(xy);
+    g->target = r.pose;
+    g->result.planning_time_s = ros_now() - t0;
+    reply_goal(s, &s->path.send_goal, &r.header, info->publication_handle, 1);
+    finish(s, g, SP_ROS_GOAL_SUCCEEDED, 0, "");
+}
+
+typedef struct {
+    sim *s;
+    ros_action_kind kind;
+} sim_ctx;
+
+static void on_result_request(void *ctx, const uint8_t *bytes, size_t n,
+                              const dds_sample_info_t *info)
+{
+    sim_ctx *c = ctx;
+    sp_ros_goal_id_request r;
+    sp_error e = {0};
+    if (sp_ros_decode_goal_id_request(bytes, n, &r, &e)) return;
+    sim_waiting w = {r.header, info->publication_handle};
+    sim_goal *g = find(c->s, c->kind, r.goal_id);
+    if (!g) { /* rclcpp_action: an unknown goal's result is STATUS_UNKNOWN at once */
+        sim_goal unknown;
+        memset(&unknown, 0, sizeof unknown);
+        unknown.kind = c->kind;
+        send_result(c->s, &unknown, &w);
+    } else if (g->status >= SP_ROS_GOAL_SUCCEEDED) {
+        send_result(c->s, g, &w);
+    } else if (g->n_waiting < SIM_MAX_WAITING) {
+        g->waiting[g->n_waiting++] = w;
+    }
+}
+
+/* action_msgs/srv/CancelGoal: zero id and stamp cancel everything; a stamp cancels all goals
+ * accepted at or before it; an id cancels that goal. */
+static int cancel_matches(const sim_goal *g, const sp_ros_cancel_request *r)
+{
+    int by_id = memcmp(r->goal_id, zero_uuid, 16) != 0;
+    if (!by_id && r->stamp_s == 0) return 1;
+    if (by_id && !memcmp(g->uuid, r->goal_id, 16)) return 1;
+    return r->stamp_s != 0 && g->accepted_stamp <= r->stamp_s;
+}
+
+static void on_cancel_request(void *ctx, const uint8_t *bytes, size_t n,
+                              const dds_sample_info_t *info)
+{
+    sim_ctx *c = ctx;
+    sim *s = c->s;
+    sp_ros_cancel_request r;
+    sp_error e = {0};
+    if (sp_ros_decode_cancel_request(bytes, n, &r, &e)) return;
+    struct action_msgs_msg_dds__GoalInfo_ canceling[SIM_MAX_GOALS];
+    uint32_t k = 0;
+    int found_terminal = 0;
+    for (int i = 0; i < s->n_goals; i++) {
+        sim_goal *g = &s->goals[i];
+        if (g->kind != c->kind || !cancel_matches(g, &r)) continue;
+        if (g->status >= SP_ROS_GOAL_SUCCEEDED) {
+            found_terminal = 1;
+            continue;
+        }
+        g->status = SP_ROS_GOAL_CANCELING;
+        if (i == s->active) ros_drive_stop(&s->drive);
+        memcpy(canceling[k].goal_id.uuid, g->uuid, 16);
+        ros_fill_time(&canceling[k].stamp, g->accepted_stamp);
+        k++;
+    }
+    action_msgs_srv_dds__CancelGoal_Response_ m;
+    memset(&m, 0, sizeof m);
+    m.guid = r.header.guid;
+    m.seq = r.header.seq;
+    int by_id = memcmp(r.goal_id, zero_uuid, 16) != 0;
+    m.return_code = k ? 0 : found_terminal ? 3 : by_id ? 2 : 1;
+    m.goals_canceling._buffer = canceling;
+    m.goals_canceling._length = m.goals_canceling._maximum = k;
+    ros_server_reply(c->kind == ROS_ACTION_NAV ? &s->nav.cancel : &s->path.cancel,
+                     info->publication_handle, &m);
+    if (k) {
+        publish_status(s, c->kind);
+        sp_logf(s->log, SP_LOG_INFO, "%s: canceling %u goal(s)", ros_action_type_name(c->kind), k);
+    }
+}
+
+void sim_serve(sim *s)
+{
+    sim_ctx nav = {s, ROS_ACTION_NAV}, path = {s, ROS_ACTION_PATH};
+    ros_server_take(&s->nav.send_goal, on_nav_goal, s);
+    ros_server_take(&s->path.send_goal, on_path_goal, s);
+    ros_server_take(&s->nav.get_result, on_result_request, &nav);
+    ros_server_take(&s->path.get_result, on_result_request, &path);
+    ros_server_take(&s->nav.cancel, on_cancel_request, &nav);
+    ros_server_take(&s->path.cancel, on_cancel_request, &path);
+}
+
+void sim_goal_progress(sim *s, ros_drive_event ev)
+{
+    if (s->active < 0) return;
+    sim_goal *g = &s->goals[s->active];
+    if (ev == ROS_DRIVE_ARRIVED) {
+        s->active = -1;
+        finish(s, g, SP_ROS_GOAL_SUCCEEDED, 0, "");
+    } else if (ev == ROS_DRIVE_STOPPED && g->status == SP_ROS_GOAL_CANCELING) {
+        s->active = -1;
+        finish(s, g, SP_ROS_GOAL_CANCELED, 0, "");
+    } else if (ev == ROS_DRIVE_STOPPED) {
+        s->active = -1;
+        finish(s, g, SP_ROS_GOAL_ABORTED, 0, "the robot stopped before an obstacle");
+    } else if (ros_planner_is_lethal(s->planner, s->drive.x, s->drive.y) && !s->drive.stopping) {
+        ros_drive_stop(&s->drive); /* collision: stop; the goal aborts once at rest */
+        sp_logf(s->log, SP_LOG_WARN, "collision at (%.2f, %.2f): stopping", s->drive.x, s->drive.y);
+    }
+}
+
+void sim_feedback(sim *s)
+{
+    if (s->active < 0) return;
+    sim_goal *g = &s->goals[s->active];
+    sp_ros_feedback_message f;
+    memset(&f, 0, sizeof f);
+    memcpy(f.goal_id, g->uuid, 16);
+    sp_ros_nav_feedback *fb = &f.feedback;
+    fb->current_pose = (sp_ros_pose){s->drive.x, s->drive.y, 0, s->drive.yaw};
+    snprintf(fb->current_frame, sizeof fb->current_frame, "%s", s->map_frame);
+    fb->navigation_time_s = s->sim_time - g->started_sim;
+    fb->distance_remaining_m = ros_drive_remaining(&s->drive);
+    fb->eta_s = fb->distance_remaining_m / fmax(s->lim.max_speed, 1e-3);
+    nav2_msgs_action_dds__NavigateToPose_FeedbackMessage_ m;
+    ros_fill_nav_feedback_message(&m, &f, ros_wall_time());
+    dds_write(s->nav.feedback_w, &m);
+}
+
+void sim_expire(sim *s)
+{
+    double now = ros_now();
+    int changed[2] = {0, 0};
+    for (int i = s->n_goals - 1; i >= 0; i--)
+        if (s->goals[i].status >= SP_ROS_GOAL_SUCCEEDED &&
+            now - s->goals[i].finished_mono > SIM_RESULT_KEEP_S) {
+            changed[s->goals[i].kind] = 1;
+            drop(s, i);
+        }
+    for (int k = 0; k < 2; k++)
+        if (changed[k]) publish_status(s, (ros_action_kind)k);
+}

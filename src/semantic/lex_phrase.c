@@ -1,0 +1,217 @@
+/* Noun phrases for the lexical text encoder: WordNet collocations joined into one token, then
+ * head noun, modifiers before it and description words after a clause marker ("something TO
+ * sit on", "a seat FOR two people", "something THAT keeps the air cool"). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+
+/* The noun base of a (possibly joined) word: its first morphy form, or "" when none. */
+static int noun_base(const lex_db *lx, const char *w, char *out, sp_error *err)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int n = lex_bases(lx, WN_NOUN, w, b, err);
+    if (n < 0) return n;
+    out[0] = 0;
+    if (n > 0) snprintf(out, WN_LEMMA_MAX, "%s", b[0]);
+    return n > 0;
+}
+
+int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *out, sp_error *err)
+{
+    out->n = 0;
+    for (int i = 0; i < in->n;) {
+        int took = 0;
+        char base[WN_LEMMA_MAX];
+        if (lex_word_class_of(in->w[i]) == LW_CONTENT) {
+            for (int k = 4; k >= 2 && !took; k--) {
+                int last = i + k <= in->n ? lex_word_class_of(in->w[i + k - 1]) : -1;
+                if (last != LW_CONTENT && last != LW_PARTITIVE) continue; /* "tv set" */
+                char joined[4 * LEX_WORD];
+                size_t o = 0;
+                for (int j = 0; j < k; j++)
+                    o += (size_t)snprintf(joined + o, sizeof joined - o, "%s%s", j ? "_" : "", in->w[i + j]);
+                int rc = strlen(joined) < WN_LEMMA_MAX ? noun_base(lx, joined, base, err) : 0;
+                if (rc < 0) return rc;
+                if (!rc && k == 2) { /* "book shelf" -> "bookshelf" */
+                    snprintf(joined, sizeof joined, "%s%s", in->w[i], in->w[i + 1]);
+                    if ((rc = noun_base(lx, joined, base, err)) < 0) return rc;
+                }
+                if (rc) took = k;
+            }
+        }
+        if (out->n == LEX_MAX_TOKENS) break;
+        if (took) {
+            snprintf(out->w[out->n++], LEX_WORD, "%s", base);
+            i += took;
+        } else {
+            snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[i]);
+            i++;
+        }
+    }
+    return 0;
+}
+
+void lex_np_free(lex_np *np)
+{
+    free(np->senses);
+    memset(np, 0, sizeof *np);
+}
+
+/* Loads the noun senses of lemma (all of its morphy bases). attested_only keeps the senses that
+ * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
+ * the first sense always; physical_only drops the non-physical ones. */
+static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
+                       lex_np *np, sp_error *err)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(lx, WN_NOUN, lemma, b, err);
+    if (nb <= 0) return nb;
+    free(np->senses);
+    np->n_senses = 0;
+    np->senses = calloc(LEX_MAX_SENSES, sizeof(lex_sense));
+    lex_sense *tmp = malloc(sizeof *tmp);
+    if (!np->senses || !tmp) {
+        free(tmp);
+        return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    }
+    int rc = 0;
+    for (int k = 0; k < nb && !rc && np->n_senses < LEX_MAX_SENSES; k++) {
+        uint32_t offs[WN_MAX_SENSES];
+        int tagged = 0;
+        int n = wn_lookup(lx->db, WN_NOUN, b[k], offs, WN_MAX_SENSES, &tagged, err);
+        if (n < 0) rc = n;
+        for (int i = 0; i < n && !rc && np->n_senses < LEX_MAX_SENSES; i++) {
+            if (attested_only && i > 0 && i >= tagged) break;
+            int dup = 0;
+            for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == offs[i];
+            if (dup) continue;
+            if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
+            tmp->attested = i == 0 || i < tagged;
+            if (physical_only && !lex_sense_physical(tmp)) continue;
+            np->senses[np->n_senses++] = *tmp;
+        }
+    }
+    free(tmp);
+    return rc;
+}
+
+/* A closed compound WordNet lacks ("nightstand"): the longest noun it ends in whose rest is a
+ * noun or an adjective ("night" + "stand"). Returns 1 and both parts when found. */
+static int split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
+{
+    size_t n = strlen(w);
+    for (size_t k = 3; k + 3 <= n; k++) {
+        char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
+        snprintf(l, sizeof l, "%.*s", (int)k, w);
+        snprintf(r, sizeof r, "%s", w + k);
+        int rn = lex_is_pos(lx, WN_NOUN, r, err);
+        if (rn < 0) return rn;
+        if (!rn) continue;
+        int ln = lex_is_pos(lx, WN_NOUN, l, err);
+        int la = ln > 0 ? 1 : lex_is_pos(lx, WN_ADJ, l, err);
+        if (ln < 0 || la < 0) return ln < 0 ? ln : la;
+        if (ln || la) {
+            snprintf(left, WN_LEMMA_MAX, "%s", l);
+            snprintf(right, WN_LEMMA_MAX, "%s", r);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* 1 when w is a noun, or a closed compound ending in one. */
+static int noun_like(const lex_db *lx, const char *w, sp_error *err)
+{
+    char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
+    int rc = lex_is_pos(lx, WN_NOUN, w, err);
+    return rc != 0 ? rc : split_compound(lx, w, l, r, err);
+}
+
+/* The head's senses; a split compound's first part becomes the last modifier. Queries keep
+ * every sense (a user may mean any); class names their attested physical ones, or when none is
+ * attested all physical ones (np->fallback: the vocabulary chooses by context), or all. */
+static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_np *np, sp_error *err)
+{
+    char left[WN_LEMMA_MAX], right[WN_LEMMA_MAX];
+    int rc = lex_is_pos(lx, WN_NOUN, w, err);
+    if (rc < 0) return rc;
+    const char *h = w;
+    if (!rc) {
+        if ((rc = split_compound(lx, w, left, right, err)) < 0) return rc;
+        if (rc == 1) {
+            if (np->n_mods < 8) snprintf(np->mods[np->n_mods++], LEX_WORD, "%s", left);
+            np->split = 1;
+            h = right;
+        }
+    }
+    rc = load_senses(lx, h, physical_only, physical_only, np, err);
+    if (!rc && physical_only && np->n_senses == 0) {
+        np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
+        rc = load_senses(lx, h, 1, 0, np, err);
+    }
+    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, np, err);
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = rc ? 0 : lex_bases(lx, WN_NOUN, h, b, err);
+    if (nb < 0) return nb;
+    if (np->split) snprintf(np->head, sizeof np->head, "%s", w);
+    else snprintf(np->head, sizeof np->head, "%s", nb > 0 ? b[0] : w);
+    return rc;
+}
+
+int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
+                 lex_np *np, sp_error *err)
+{
+    memset(np, 0, sizeof *np);
+    np->head_start = np->head_end = -1;
+    int marker = 0, n_np = 0, np_idx[LEX_MAX_TOKENS], np_ph[LEX_MAX_TOKENS];
+    for (int k = from; k < to; k++) {
+        const char *w = t->w[k];
+        int cls = lex_word_class_of(w);
+        if (cls == LW_FUNCTION) continue;
+        if (cls == LW_PARTITIVE && k + 1 < to && !strcmp(t->w[k + 1], "of")) {
+            k++;
+            continue;
+        }
+        if (cls == LW_CLAUSE || cls == LW_PREP) {
+            marker = 1;
+            continue;
+        }
+        if (marker) {
+            char b[WN_MAX_BASES][WN_LEMMA_MAX];
+            int nb = lex_bases(lx, WN_NOUN, w, b, err);
+            if (nb < 0) return nb;
+            int where = lex_is_generic_region(w) || (nb > 0 && lex_is_generic_region(b[0]));
+            if (cls == LW_CONTENT && !where && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
+            continue;
+        }
+        if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;
+    }
+    /* The head: the last noun of the phrase before any clause; words after it describe. */
+    int head = -1, rc;
+    for (int i = n_np - 1; i >= 0 && head < 0; i--) {
+        if (np_ph[i]) { head = i; break; }
+        if ((rc = noun_like(lx, t->w[np_idx[i]], err)) < 0) return rc;
+        if (rc) head = i;
+    }
+    for (int i = 0; i < n_np; i++) {
+        const char *w = t->w[np_idx[i]];
+        if (i < head && !np_ph[i] && np->n_mods < 8) snprintf(np->mods[np->n_mods++], LEX_WORD, "%s", w);
+        else if (i > head && !np_ph[i] && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
+        if (!np_ph[i] && np->n_words < LEX_MAX_TOKENS) snprintf(np->words[np->n_words++], LEX_WORD, "%s", w);
+    }
+    if (head >= 0) {
+        np->head_start = np_idx[head];
+        np->head_end = np_idx[head] + 1;
+    }
+    if (head >= 0 && np_ph[head]) {
+        np->placeholder = 1;
+        snprintf(np->head, sizeof np->head, "%s", t->w[np_idx[head]]);
+    } else if (head >= 0 && (rc = head_senses(lx, t->w[np_idx[head]], physical_only, np, err))) {
+        return rc;
+    }
+    for (int i = 0; i < np->n_desc; i++)
+        if ((rc = lex_word_weight(lx, np->desc[i], &np->desc_w[i], err))) return rc;
+    return 0;
+}

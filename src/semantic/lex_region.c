@@ -1,0 +1,234 @@
+/* Regions for the lexical text encoder: the region table (data/semantic/regions.json), and the
+ * classes that define a region: the table's object phrases, the nouns of the region's WordNet
+ * definition, classes named after it. Table regions are resolved once, when
+ * the vocabulary is made. */
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+#include "semsplat/io.h"
+
+/* Scores text (an object phrase) into ph; the region resolution's building block. */
+static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
+{
+    lex_tokens raw, t;
+    lex_tokenize(text, &raw);
+    int rc = lex_merge_collocations(v->lx, &raw, &t, err);
+    lex_np np;
+    if (!rc) rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err);
+    if (!rc) rc = lex_score_np(v, &np, ph, NULL, err);
+    lex_np_free(&np);
+    return rc;
+}
+
+/* Raises the membership of every class matching ph at or above the threshold (region->matches
+ * indexed by class, unsorted); returns 1 when ph supports the region (some class matched). */
+int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *ph, const char *why)
+{
+    int any = 0;
+    for (int i = 0; i < ph->n_matches; i++) {
+        const sp_lex_class_match *m = &ph->matches[i];
+        if (m->score < SP_LEX_THRESHOLD) continue;
+        any = 1;
+        sp_lex_class_match *r = &region->matches[m->class_index]; /* indexed by class until sorted */
+        if (m->score <= r->score) continue;
+        *r = *m; /* keeps how the member phrase matched: exact members rank before gloss ones */
+        snprintf(r->path, sizeof r->path, "%s: '%s' (%s)", why, ph->text, sp_lex_kind_name(m->kind));
+    }
+    return any;
+}
+
+
+/* Members of a named region: the table's phrases and the nouns of its WordNet definition;
+ * *support counts the phrases that found a class. */
+static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
+                          sp_lex_phrase *out, int *support, sp_error *err)
+{
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0;
+    for (int i = 0; r && i < r->n_members && !rc; i++) {
+        snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
+        if (!(rc = score_text(v, r->members[i], ph, err))) *support += lex_region_absorb(out, ph, "region table");
+    }
+    /* The nouns of the region's definition, as object phrases (bathroom: "a room ... containing
+     * a bathtub or shower and usually a washbasin and toilet"). Its verbs are not used: "used",
+     * "containing" are in thousands of definitions. */
+    lex_tokens t = {0, {{0}}};
+    if (definition) lex_tokenize(definition, &t);
+    for (int i = 0; i < t.n && !rc; i++) {
+        const char *w = t.w[i];
+        char base[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
+        if (nb < 0) rc = nb;
+        if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0])) continue;
+        snprintf(ph->text, sizeof ph->text, "%s", w);
+        if (!(rc = score_text(v, w, ph, err))) *support += lex_region_absorb(out, ph, "WordNet definition");
+    }
+    free(ph);
+    return rc;
+}
+
+
+#define ROOM 4105893u /* room.n.01 */
+
+/* The table region a head stands for: its own name or a synonym's ("hall" -> hallway). */
+int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
+                             sp_error *err)
+{
+    *r = lex_region_find(v, np->head);
+    for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
+        wn_synset syn;
+        wn_id id = {np->senses[s].off, WN_NOUN};
+        int rc = wn_read(v->lx->db, id, &syn, err);
+        if (rc) return rc;
+        for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
+        wn_synset_free(&syn);
+    }
+    return 0;
+}
+
+void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph)
+{
+    memset(ph->matches, 0, sizeof ph->matches);
+    for (int i = 0; i < v->n; i++) ph->matches[i].class_index = i;
+    ph->n_matches = v->n;
+}
+
+/* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any. */
+static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
+{
+    int any = 0;
+    char name[WN_LEMMA_MAX];
+    snprintf(name, sizeof name, "%s", region);
+    for (char *save = NULL, *w = strtok_r(name, "_ ", &save); w; w = strtok_r(NULL, "_ ", &save)) {
+        if (lex_is_generic_region(w)) continue;
+        for (int i = 0; i < v->n; i++)
+            for (int k = 0; k < v->classes[i].n_tok; k++) {
+                sp_lex_class_match *m = &ph->matches[i];
+                if (strcmp(v->classes[i].tok[k], w) || m->score >= 0.9f) continue;
+                memset(m, 0, sizeof *m);
+                m->class_index = i;
+                m->score = 0.9f;
+                m->kind = SP_LEX_REGION;
+                snprintf(m->path, sizeof m->path, "named after the region ('%s')", w);
+                any = 1;
+            }
+    }
+    return any;
+}
+
+
+/* Members of a named region into ph (sorted best first). r: its table entry or NULL (a room
+ * WordNet knows); definition: the WordNet definition of its room sense. */
+int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                       const char *definition, sp_lex_phrase *ph, sp_error *err)
+{
+    if (r && r->cache) {
+        memcpy(ph->matches, r->cache->matches, sizeof ph->matches);
+        ph->n_matches = r->cache->n_matches;
+        snprintf(ph->region, sizeof ph->region, "%s", r->name);
+        return 0;
+    }
+    lex_region_start(v, ph);
+    snprintf(ph->region, sizeof ph->region, "%s", name);
+    for (char *p = ph->region; *p; p++)
+        if (*p == '_') *p = ' ';
+    int support = 0, rc = region_members(v, r, definition, ph, &support, err);
+    if (rc) return rc;
+    named_after(v, ph->region, ph);
+    /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom. */
+    int kinds = 0;
+    for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
+    if (kinds < 2)
+        for (int i = 0; i < v->n; i++) {
+            ph->matches[i].score *= LEX_MU;
+            if (ph->matches[i].score > 0)
+                snprintf(ph->matches[i].gloss_words, sizeof ph->matches[i].gloss_words,
+                         "only one of the region's objects is in this scene");
+        }
+    qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
+    return 0;
+}
+
+/* The definition a region's name gives: its first sense that is a room, else its first. */
+const char *lex_region_definition(const lex_np *np, int table_entry)
+{
+    if (np->n_senses && np->senses[0].rank == 1 && lex_anc_find(&np->senses[0], ROOM) > 0)
+        return np->senses[0].definition;
+    for (int s = 0; table_entry && s < np->n_senses; s++)
+        if (lex_anc_find(&np->senses[s], ROOM) > 0) return np->senses[s].definition;
+    return table_entry && np->n_senses ? np->senses[0].definition : NULL;
+}
+
+int lex_regions_prepare(sp_lex_vocab *v, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i < v->n_regions && !rc; i++) {
+        lex_region *r = &v->regions[i];
+        lex_tokens raw, t;
+        lex_tokenize(r->name, &raw);
+        lex_np np;
+        if ((rc = lex_merge_collocations(v->lx, &raw, &t, err))) break;
+        if ((rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) break;
+        sp_lex_phrase *ph = malloc(sizeof *ph);
+        if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        else if (!(rc = lex_region_members(v, r, r->name, lex_region_definition(&np, 1), ph, err)))
+            r->cache = ph;
+        else
+            free(ph);
+        lex_np_free(&np);
+    }
+    return rc;
+}
+
+int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err)
+{
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return sp_error_prefix(err, "lexical: region table: ");
+    if (!cJSON_IsObject(js)) {
+        cJSON_Delete(js);
+        return sp_error_set(err, SP_E_FORMAT, "%s: the region table must be a JSON object", path);
+    }
+    int n = cJSON_GetArraySize(js);
+    v->regions = calloc(n ? (size_t)n : 1, sizeof *v->regions);
+    if (!v->regions) {
+        cJSON_Delete(js);
+        return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    }
+    const cJSON *it;
+    cJSON_ArrayForEach(it, js) {
+        if (it->string && it->string[0] == '_') continue;
+        if (!cJSON_IsArray(it)) {
+            rc = sp_error_set(err, SP_E_FORMAT, "%s: region '%s' must list object phrases", path, it->string);
+            break;
+        }
+        lex_region *r = &v->regions[v->n_regions++];
+        snprintf(r->name, sizeof r->name, "%s", it->string);
+        const cJSON *m;
+        cJSON_ArrayForEach(m, it) {
+            if (!cJSON_IsString(m) || !m->valuestring[0]) {
+                rc = sp_error_set(err, SP_E_FORMAT, "%s: region '%s': members must be strings", path, r->name);
+                break;
+            }
+            if (r->n_members < 24) snprintf(r->members[r->n_members++], 64, "%s", m->valuestring);
+        }
+        if (rc) break;
+    }
+    cJSON_Delete(js);
+    return rc;
+}
+
+const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name)
+{
+    char key[64];
+    snprintf(key, sizeof key, "%s", name);
+    for (char *p = key; *p; p++)
+        if (*p == '_') *p = ' ';
+    for (int i = 0; i < v->n_regions; i++)
+        if (!strcmp(v->regions[i].name, key)) return &v->regions[i];
+    return NULL;
+}

@@ -1,0 +1,361 @@
+/* Scoring one noun phrase against every class of a vocabulary: exact names, the taxonomy of head
+ * nouns (synonym, hypernym, hyponym, part, related), modifiers, description words against the
+ * classes' definitions, and the modifier-as-referent reading of compounds ("tv monitor"). The
+ * formula is documented in semsplat/semantic.h; the constants are in lexical.h. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+
+#define MAX_EXP 40
+
+/* A word's expansions for matching definitions: its base forms (factor 1) and the lemmas of its
+ * commonest noun and verb senses (factor LEX_SYN). */
+typedef struct {
+    int n;
+    char w[MAX_EXP][WN_LEMMA_MAX];
+    float f[MAX_EXP];
+} expansion;
+
+static void exp_add(expansion *e, const char *w, float f)
+{
+    for (int i = 0; i < e->n; i++)
+        if (!strcmp(e->w[i], w)) {
+            if (f > e->f[i]) e->f[i] = f;
+            return;
+        }
+    if (e->n == MAX_EXP) return;
+    snprintf(e->w[e->n], WN_LEMMA_MAX, "%s", w);
+    e->f[e->n++] = f;
+}
+
+static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *err)
+{
+    e->n = 0;
+    exp_add(e, word, 1.0f);
+    for (int p = 0; p < 3; p++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(lx, (wn_pos)p, word, b, err);
+        if (nb < 0) return nb;
+        for (int k = 0; k < nb; k++) exp_add(e, b[k], 1.0f);
+        if (nb == 0 || p == WN_ADJ) continue;
+        uint32_t off;
+        int n = wn_lookup(lx->db, (wn_pos)p, b[0], &off, 1, NULL, err);
+        if (n < 0) return n;
+        if (n == 0) continue;
+        wn_synset s;
+        wn_id id = {off, (uint8_t)p};
+        int rc = wn_read(lx->db, id, &s, err);
+        if (rc) return rc;
+        for (int k = 0; k < s.n_words; k++) {
+            char w[WN_LEMMA_MAX];
+            snprintf(w, sizeof w, "%s", s.words[k]);
+            for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+            if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
+        }
+        wn_synset_free(&s);
+    }
+    return 0;
+}
+
+/* Best weight of word (its expansions) in a class's bag; why gets "word (source)". */
+static float bag_match(const lex_class *c, const expansion *e, const char *word, char *why, size_t cap)
+{
+    float best = 0;
+    int src = -1;
+    for (int i = 0; i < e->n; i++) {
+        char one[1][WN_LEMMA_MAX];
+        snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
+        int s = -1;
+        /* one indirection at most: a synonym counts in the class's own definition only */
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, &s) * e->f[i];
+        if (w > best) best = w, src = s;
+    }
+    if (best > 0 && why && src >= 0) snprintf(why, cap, "%s (%s)", word, c->bag.src[src]);
+    return best;
+}
+
+/* Gloss overlap G = sum_d w_d m_d / sum_d w_d. */
+static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
+                           const char (*words)[LEX_WORD], char *why, size_t cap)
+{
+    float num = 0, den = 0;
+    size_t o = 0;
+    if (why && cap) why[0] = 0;
+    for (int i = 0; i < n; i++) {
+        char one[256];
+        float m = bag_match(c, &exps[i], words[i], one, sizeof one);
+        num += w[i] * m;
+        den += w[i];
+        if (m > 0 && why && o + 1 < cap) {
+            int k = snprintf(why + o, cap - o, "%s%s", o ? "; " : "", one);
+            if (k > 0) o += (size_t)k;
+        }
+    }
+    return den > 0 ? num / den : 0;
+}
+
+static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX])
+{
+    if (!np->head[0]) return 0;
+    char seq[LEX_MAX_TOKENS][WN_LEMMA_MAX];
+    int n = 0;
+    for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++)
+        snprintf(seq[n++], WN_LEMMA_MAX, "%s", mod_base[i]);
+    char head[WN_LEMMA_MAX];
+    snprintf(head, sizeof head, "%s", np->head);
+    for (char *save = NULL, *t = strtok_r(head, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+        snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
+    if (n != c->n_tok) {
+        /* one-word spellings of two-word names and back ("bookshelf", "book shelf") */
+        char a[256] = "", b[256] = "";
+        for (int i = 0; i < n; i++) strncat(a, seq[i], sizeof a - strlen(a) - 1);
+        for (int i = 0; i < c->n_tok; i++) strncat(b, c->tok[i], sizeof b - strlen(b) - 1);
+        return !strcmp(a, b);
+    }
+    for (int i = 0; i < n; i++)
+        if (strcmp(seq[i], c->tok[i])) return 0;
+    return 1;
+}
+
+static float wup3(int depth_lcs, int dq, int dc)
+{
+    return 2.0f * (float)depth_lcs / (float)(dq + dc + 2 * depth_lcs);
+}
+
+/* A name made of a noun modifier and a head ("shoe cabinet") is one level below the head's
+ * sense: the head alone is its hypernym, and another kind of the head ("dresser", a cabinet) is
+ * its sibling, not a match. The comparison t of the head senses is redone with the class's path
+ * one step longer. */
+static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
+{
+    int dq, dc, dep;
+    switch (t.kind) {
+    case SP_LEX_SYNONYM: dq = 0, dc = 0, dep = c->anc[0].depth; break;
+    case SP_LEX_HYPERNYM: dq = 0, dc = c->anc[t.c_anc].dist, dep = q->anc[0].depth; break;
+    case SP_LEX_HYPONYM: dq = q->anc[t.q_anc].dist, dc = 0, dep = c->anc[0].depth; break;
+    case SP_LEX_RELATED: dq = q->anc[t.q_anc].dist, dc = c->anc[t.c_anc].dist, dep = c->anc[t.c_anc].depth; break;
+    default: return t;
+    }
+    dc += 1;
+    lex_tax r = t;
+    if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
+    else if (dc == 0) r.score = powf(LEX_LAMBDA, (float)dq) * wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
+    else r.score = LEX_MU * wup3(dep, dq, dc), r.kind = SP_LEX_RELATED;
+    return r;
+}
+
+/* The best taxonomic comparison of two sense sets; spec: the class is one level below its head. */
+static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc, int spec,
+                        int *bq, int *bc)
+{
+    lex_tax best = {0, SP_LEX_NONE, -1, -1};
+    *bq = *bc = -1;
+    for (int i = 0; i < nq; i++)
+        for (int j = 0; j < nc; j++) {
+            lex_tax t = lex_compare(&qs[i], &cs[j]);
+            if (spec) t = specialize(t, &qs[i], &cs[j]);
+            if (t.score > best.score) best = t, *bq = i, *bc = j;
+        }
+    return best;
+}
+
+static float best_wup(const lex_sense *qs, int nq, const lex_sense *cs, int nc)
+{
+    float best = 0;
+    for (int i = 0; i < nq; i++)
+        for (int j = 0; j < nc; j++) {
+            float w = lex_wup(&qs[i], &cs[j]);
+            if (w > best) best = w;
+        }
+    return best;
+}
+
+static void describe_tax(sp_lex_class_match *m, const lex_tax *t, const lex_sense *q, const lex_sense *c)
+{
+    snprintf(m->query_sense, sizeof m->query_sense, "%s", q->anc[0].name);
+    snprintf(m->class_sense, sizeof m->class_sense, "%s", c->anc[0].name);
+    snprintf(m->definition, sizeof m->definition, "%s", c->definition);
+    if (t->kind == SP_LEX_HYPERNYM) lex_path(c, t->c_anc, m->path, sizeof m->path);
+    else if (t->kind == SP_LEX_HYPONYM) lex_path(q, t->q_anc, m->path, sizeof m->path);
+    else if (t->kind == SP_LEX_RELATED) {
+        char a[128], b[128];
+        lex_path(c, t->c_anc, a, sizeof a);
+        lex_path(q, t->q_anc, b, sizeof b);
+        snprintf(m->path, sizeof m->path, "%s | %s", a, b);
+    } else if (t->kind == SP_LEX_PART)
+        snprintf(m->path, sizeof m->path, "%s is part of %s", q->anc[0].name, c->anc[0].name);
+}
+
+/* Per query: the modifiers' base forms, expansions and (for those that name a class) senses. */
+typedef struct {
+    char mod_base[8][WN_LEMMA_MAX];
+    expansion mod_exp[8], desc_exp[16];
+    lex_np ref[8]; /* modifier (or first part of a joined head) read as a noun of its own */
+    int n_ref;
+    char ref_word[8][LEX_WORD];
+} query_prep;
+
+static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
+{
+    const lex_db *lx = v->lx;
+    int rc = 0;
+    for (int i = 0; i < np->n_mods && !rc; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(lx, WN_NOUN, np->mods[i], b, err);
+        if (nb < 0) return nb;
+        snprintf(qp->mod_base[i], WN_LEMMA_MAX, "%s", nb > 0 ? b[0] : np->mods[i]);
+        rc = expand(lx, np->mods[i], &qp->mod_exp[i], err);
+    }
+    for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+    /* Candidates for the modifier-as-referent reading: modifiers, and the leading words of a
+     * joined head ("tv" of "tv_monitor"), that are words of this scene's class names. */
+    char cand[8][LEX_WORD];
+    int nc = 0;
+    for (int i = 0; i < np->n_mods && nc < 8; i++) snprintf(cand[nc++], LEX_WORD, "%s", qp->mod_base[i]);
+    if (strchr(np->head, '_')) {
+        char h[WN_LEMMA_MAX];
+        snprintf(h, sizeof h, "%s", np->head);
+        char *last = strrchr(h, '_');
+        *last = 0;
+        for (char *save = NULL, *t = strtok_r(h, "_", &save); t && nc < 8; t = strtok_r(NULL, "_", &save))
+            snprintf(cand[nc++], LEX_WORD, "%s", t);
+    }
+    for (int i = 0; i < nc && !rc; i++) {
+        if (!lex_vocab_has_word(v, cand[i]) || !np->n_senses) continue;
+        lex_tokens one = {1, {{0}}};
+        snprintf(one.w[0], LEX_WORD, "%s", cand[i]);
+        lex_np *r = &qp->ref[qp->n_ref];
+        if ((rc = lex_np_parse(lx, &one, 0, 1, 0, r, err))) break;
+        if (r->n_senses) snprintf(qp->ref_word[qp->n_ref++], LEX_WORD, "%s", cand[i]);
+        else lex_np_free(r);
+    }
+    return rc;
+}
+
+/* Scores class c; mod_use [n_mods] gets what each modifier did. */
+static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
+                        sp_lex_class_match *m, int *mod_use)
+{
+    const lex_class *c = &v->classes[ci];
+    memset(m, 0, sizeof *m);
+    m->class_index = ci;
+    int has_head = np->head[0] && !np->placeholder && np->n_senses > 0;
+    float base = 0;
+    if (has_head && is_exact(np, c, qp->mod_base)) {
+        base = 1.0f;
+        m->kind = SP_LEX_EXACT;
+        snprintf(m->query_sense, sizeof m->query_sense, "%s", np->head);
+        snprintf(m->class_sense, sizeof m->class_sense, "%s", c->name);
+        if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+    } else if (has_head && c->np.n_senses) {
+        int bq, bc;
+        lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, c->spec, &bq, &bc);
+        base = t.score;
+        m->kind = t.kind;
+        if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+    }
+    /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
+     * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */
+    float fmod = 1.0f;
+    for (int i = 0; i < np->n_mods; i++) {
+        int use = LEX_MOD_IGNORED;
+        if (np->split && i == np->n_mods - 1) { /* part of the head: "night" of "nightstand" */
+            if (mod_use) mod_use[i] = LEX_MOD_USED;
+            continue;
+        }
+        for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
+            if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
+        if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
+        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], NULL, 0) > 0)
+            use = LEX_MOD_USED;
+        if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
+        if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
+        if (mod_use) mod_use[i] = use;
+    }
+    char why[192] = "";
+    if (has_head) {
+        float s = base * fmod;
+        if (np->n_desc) {
+            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, why, sizeof why);
+            s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
+            snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
+        }
+        m->score = s;
+    } else {
+        /* Description only: every content word counts against the definitions. */
+        expansion all[24];
+        float w[24];
+        char words[24][LEX_WORD];
+        int n = 0;
+        for (int i = 0; i < np->n_desc && n < 24; i++, n++)
+            all[n] = qp->desc_exp[i], w[n] = np->desc_w[i], snprintf(words[n], LEX_WORD, "%s", np->desc[i]);
+        for (int i = 0; i < np->n_mods && n < 24; i++, n++) {
+            all[n] = qp->mod_exp[i];
+            snprintf(words[n], LEX_WORD, "%s", np->mods[i]);
+            w[n] = 1.0f; /* weights of modifiers are not precomputed; equal */
+        }
+        if (np->head[0] && !np->placeholder && n < 24) { /* a head WordNet does not know as a noun */
+            expansion e = {1, {{0}}, {1.0f}};
+            snprintf(e.w[0], WN_LEMMA_MAX, "%s", np->head);
+            all[n] = e, w[n] = 1.0f, snprintf(words[n++], LEX_WORD, "%s", np->head);
+        }
+        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, why, sizeof why);
+        m->score = g;
+        m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
+        snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
+        if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+    }
+    /* A compound whose modifier names this class: T(modifier, c) * WuP(head, c). */
+    for (int r = 0; r < qp->n_ref && c->np.n_senses; r++) {
+        int bq, bc;
+        lex_tax t = best_tax(qp->ref[r].senses, qp->ref[r].n_senses, c->np.senses, c->np.n_senses,
+                             c->spec, &bq, &bc);
+        if (t.kind == SP_LEX_RELATED) continue;
+        float w = best_wup(np->senses, np->n_senses, c->np.senses, c->np.n_senses);
+        float s = t.score * w * w;
+        if (s > m->score) {
+            m->score = s;
+            m->kind = SP_LEX_MODIFIER;
+            snprintf(m->query_sense, sizeof m->query_sense, "%s", qp->ref_word[r]);
+            snprintf(m->class_sense, sizeof m->class_sense, "%s", c->np.senses[bc].anc[0].name);
+            snprintf(m->path, sizeof m->path, "'%s' names this class; '%s' is %s-like", qp->ref_word[r],
+                     np->head, c->name);
+        }
+    }
+}
+
+int lex_match_cmp(const void *a, const void *b)
+{
+    const sp_lex_class_match *x = a, *y = b;
+    if (x->score != y->score) return x->score < y->score ? 1 : -1;
+    if (x->kind != y->kind) return x->kind - y->kind; /* exact before synonym before ... */
+    return x->class_index - y->class_index;
+}
+
+int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                 sp_error *err)
+{
+    query_prep *qp = calloc(1, sizeof *qp);
+    int *uses = calloc((size_t)(v->n ? v->n : 1) * 8, sizeof *uses);
+    if (!qp || !uses) {
+        free(qp), free(uses);
+        return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    }
+    int rc = prepare(v, np, qp, err);
+    if (!rc) {
+        snprintf(ph->head, sizeof ph->head, "%s", np->placeholder ? "" : np->head);
+        for (char *p = ph->head; *p; p++)
+            if (*p == '_') *p = ' ';
+        ph->n_matches = v->n;
+        for (int i = 0; i < v->n; i++) score_class(v, np, qp, i, &ph->matches[i], uses + 8 * i);
+        qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
+        if (mod_use && v->n) memcpy(mod_use, uses + 8 * ph->matches[0].class_index, sizeof(int) * (size_t)np->n_mods);
+    }
+    for (int r = 0; r < qp->n_ref; r++) lex_np_free(&qp->ref[r]);
+    free(qp);
+    free(uses);
+    return rc;
+}

@@ -1,0 +1,192 @@
+/* A scene's vocabulary for the lexical text encoder: each class name parsed once (head noun and
+ * its physical senses, hypernym closures, the words of its definitions), and the region table. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+
+int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err)
+{
+    *out = NULL;
+    lex_db *lx = calloc(1, sizeof *lx);
+    if (!lx) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = wn_open(&lx->db, wordnet_dir ? wordnet_dir : SP_LEX_DEFAULT_WORDNET, err);
+    if (rc) {
+        free(lx);
+        return rc;
+    }
+    *out = lx;
+    return 0;
+}
+
+void sp_lexicon_free(sp_lexicon *lx)
+{
+    if (!lx) return;
+    wn_close(lx->db);
+    free(lx);
+}
+
+void sp_lex_vocab_free(sp_lex_vocab *v)
+{
+    if (!v) return;
+    for (int i = 0; i < v->n; i++) {
+        lex_np_free(&v->classes[i].np);
+        lex_bag_free(&v->classes[i].bag);
+    }
+    free(v->classes);
+    free(v->vocab_words);
+    for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
+    free(v->regions);
+    free(v);
+}
+
+int sp_lex_vocab_size(const sp_lex_vocab *v) { return v->n; }
+const char *sp_lex_vocab_class(const sp_lex_vocab *v, int i)
+{
+    return i >= 0 && i < v->n ? v->classes[i].name : NULL;
+}
+
+int lex_vocab_has_word(const sp_lex_vocab *v, const char *w)
+{
+    for (int i = 0; i < v->n_vocab_words; i++)
+        if (!strcmp(v->vocab_words[i], w)) return 1;
+    return 0;
+}
+
+/* Adds a synset's lemmas and definition to the bag at weight. */
+static int bag_synset(const lex_db *lx, lex_bag *bag, uint32_t off, float weight, sp_error *err)
+{
+    wn_synset s;
+    wn_id id = {off, WN_NOUN};
+    int rc = wn_read(lx->db, id, &s, err);
+    if (rc) return rc;
+    char def[512], src[192], lemmas[512];
+    wn_definition(s.gloss, def, sizeof def);
+    size_t o = 0;
+    lemmas[0] = 0;
+    for (int i = 0; i < s.n_words && o + 1 < sizeof lemmas; i++) {
+        int w = snprintf(lemmas + o, sizeof lemmas - o, "%s%s", i ? " " : "", s.words[i]);
+        if (w > 0) o += (size_t)w;
+    }
+    for (char *p = lemmas; *p; p++)
+        if (*p == '_') *p = ' ';
+    snprintf(src, sizeof src, "%s: %s", s.words[0], def);
+    for (char *p = src; *p && *p != ':'; p++)
+        if (*p == '_') *p = ' ';
+    rc = lex_bag_add_text(lx, bag, def, weight, src, err);
+    if (!rc) rc = lex_bag_add_text(lx, bag, lemmas, weight, src, err);
+    wn_synset_free(&s);
+    return rc;
+}
+
+static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_error *err)
+{
+    snprintf(c->name, sizeof c->name, "%s", name);
+    lex_tokens raw, t;
+    lex_tokenize(name, &raw);
+    int rc = lex_merge_collocations(lx, &raw, &t, err);
+    if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
+    /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
+    for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(lx, WN_NOUN, raw.w[i], b, err);
+        if (nb < 0) return nb;
+        snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
+    }
+    for (int i = 0; i < c->np.n_mods && !rc; i++) {
+        int noun = lex_is_pos(lx, WN_NOUN, c->np.mods[i], err);
+        if (noun < 0) return noun;
+        c->spec |= noun;
+    }
+    if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
+    /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
+    for (int s = 0; s < c->np.n_senses && !rc; s++) {
+        const lex_sense *se = &c->np.senses[s];
+        for (int a = 0; a < se->n_anc && !rc; a++) {
+            if (se->anc[a].dist > LEX_GLOSS_LEVELS) continue;
+            float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
+            rc = bag_synset(lx, &c->bag, se->anc[a].off, w, err);
+        }
+    }
+    return rc;
+}
+
+static int add_vocab_word(sp_lex_vocab *v, const char *w, sp_error *err)
+{
+    if (lex_vocab_has_word(v, w)) return 0;
+    char (*nw)[LEX_WORD] = realloc(v->vocab_words, sizeof *nw * (size_t)(v->n_vocab_words + 1));
+    if (!nw) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    v->vocab_words = nw;
+    snprintf(v->vocab_words[v->n_vocab_words++], LEX_WORD, "%s", w);
+    return 0;
+}
+
+/* A class name whose attested senses are not physical ("cube": the shapes) takes, among its
+ * physical senses, those closest to the scene's other classes (Resnik 1999, "disambiguating noun
+ * groupings"): support(s) = mean over other classes of the best Wu-Palmer similarity to one of
+ * their senses; senses within 0.02 of the best support stay ("magic cube" in a bookstore: the
+ * block, not the tropical shrub). */
+static void choose_by_context(sp_lex_vocab *v, int ci)
+{
+    lex_np *np = &v->classes[ci].np;
+    if (np->n_senses < 2 || v->n < 2) return;
+    float support[LEX_MAX_SENSES], best = 0;
+    for (int s = 0; s < np->n_senses; s++) {
+        float sum = 0;
+        for (int k = 0; k < v->n; k++) {
+            if (k == ci) continue;
+            float b = 0;
+            for (int j = 0; j < v->classes[k].np.n_senses; j++) {
+                float w = lex_wup(&np->senses[s], &v->classes[k].np.senses[j]);
+                if (w > b) b = w;
+            }
+            sum += b;
+        }
+        support[s] = sum / (float)(v->n - 1);
+        if (support[s] > best) best = support[s];
+    }
+    int kept = 0;
+    for (int s = 0; s < np->n_senses; s++)
+        if (support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+    np->n_senses = kept;
+}
+
+int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
+                        int n, const char *regions_path, sp_error *err)
+{
+    *out = NULL;
+    if (!lx || (!classes && n > 0)) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
+    if (n < 0 || n > SP_LEX_MAX_CLASSES)
+        return sp_error_set(err, SP_E_ARG, "lexical: %d classes (at most %d)", n, SP_LEX_MAX_CLASSES);
+    sp_lex_vocab *v = calloc(1, sizeof *v);
+    if (!v) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    v->lx = lx;
+    v->classes = calloc(n ? (size_t)n : 1, sizeof *v->classes);
+    int rc = v->classes ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    for (int i = 0; i < n && !rc; i++) {
+        if (!classes[i] || !classes[i][0]) {
+            rc = sp_error_set(err, SP_E_ARG, "lexical: class %d has an empty name", i);
+            break;
+        }
+        v->n = i + 1;
+        if ((rc = class_prepare(lx, &v->classes[i], classes[i], err)))
+            sp_error_prefix(err, "lexical: class '%s': ", classes[i]);
+        for (int k = 0; k < v->classes[i].n_tok && !rc; k++) rc = add_vocab_word(v, v->classes[i].tok[k], err);
+    }
+    for (int i = 0; i < v->n && !rc; i++)
+        if (v->classes[i].np.fallback) choose_by_context(v, i);
+    if (!rc) {
+        char path[2048];
+        if (!regions_path) sp_path_join(path, sizeof path, sp_data_dir(), "semantic/regions.json");
+        else snprintf(path, sizeof path, "%s", regions_path);
+        if (path[0]) rc = lex_regions_load(v, path, err);
+        if (!rc) rc = lex_regions_prepare(v, err);
+    }
+    if (rc) {
+        sp_lex_vocab_free(v);
+        return rc;
+    }
+    *out = v;
+    return 0;
+}

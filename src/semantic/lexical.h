@@ -1,0 +1,214 @@
+/* Private pieces of the lexical text encoder: words (tokens, function words, base forms),
+ * concepts (noun senses with their hypernym closure and definitions), prepared classes and the
+ * scoring of one phrase against them. See the lexical section of semsplat/semantic.h. */
+#ifndef SP_LEXICAL_H
+#define SP_LEXICAL_H
+
+#include "semsplat/semantic.h"
+#include "wordnet.h"
+
+/* The scoring constants (semantic.h documents the formula). */
+#define LEX_LAMBDA 0.85f /* per level the class is more general than the query */
+#define LEX_MU 0.45f     /* siblings and cousins: MU * WuP < threshold, always */
+#define LEX_PART 0.6f    /* the query names a part of the class */
+#define LEX_BETA 0.3f    /* a query modifier naming another class of the scene */
+#define LEX_EPS 0.1f     /* an attribute the class's definitions do not mention */
+#define LEX_GAMMA 0.3f   /* weight of a description beside a head noun */
+#define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
+#define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
+#define LEX_GLOSS_LEVELS 2
+
+#define LEX_MAX_TOKENS 32
+#define LEX_WORD 48
+#define LEX_MAX_SENSES 12 /* physical senses kept per head */
+#define LEX_MAX_ANC 96    /* ancestors in one closure */
+
+typedef struct sp_lexicon {
+    wn_db *db;
+} lex_db;
+
+/* ---- words ---------------------------------------------------------------------------------- */
+
+typedef enum {
+    LW_CONTENT = 0, /* a word to look up */
+    LW_FUNCTION,    /* determiner, pronoun, auxiliary, request verb: dropped */
+    LW_PLACEHOLDER, /* "something", "thing", "place": a head that says nothing */
+    LW_PREP,        /* a preposition that may relate two phrases */
+    LW_CLAUSE,      /* starts a description: "that", "which", "where", "for", "to" + verb */
+    LW_PARTITIVE    /* "piece", "kind", "type" (+ of): skipped with its "of" */
+} lex_word_class;
+
+typedef struct lex_tokens {
+    int n;
+    char w[LEX_MAX_TOKENS][LEX_WORD];
+} lex_tokens;
+
+/* Lower-cases and splits text into words (letters, digits, ' and -), dropping "'s". */
+void lex_tokenize(const char *text, lex_tokens *t);
+/* Joins runs of 2..4 words that WordNet knows as one noun ("coffee tables" -> "coffee_table",
+ * "chest of drawers", "book shelf" -> "bookshelf") into one token, its base form. */
+int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *out, sp_error *err);
+int lex_word_class_of(const char *w);
+/* Relation phrase starting at token i: its length in tokens (0 = none) and its canonical name. */
+int lex_relation_at(const lex_tokens *t, int i, const char **name);
+/* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
+ * and no description of an object ("something that lights the room"). */
+int lex_is_generic_region(const char *w);
+/* Words that introduce what an area contains or resembles ("with", "like", "looks", ...). */
+int lex_is_region_link(const char *w);
+
+/* Base forms of a word as pos (morphy); returns the count (>= 0) or an error. */
+int lex_bases(const lex_db *lx, wn_pos pos, const char *w, char out[][WN_LEMMA_MAX], sp_error *err);
+/* 1 when w has a noun base form, etc. (negative on read errors). */
+int lex_is_pos(const lex_db *lx, wn_pos pos, const char *w, sp_error *err);
+/* Informativeness of a word: 1 / (1 + ln(1 + its number of senses over all parts of speech)). */
+int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *err);
+
+/* ---- concepts ------------------------------------------------------------------------------- */
+
+typedef struct lex_anc {
+    uint32_t off;
+    short dist;    /* hypernym steps from the sense */
+    short depth;   /* of this ancestor: 1 + shortest hypernym path to 'entity' */
+    short parent;  /* index of the closure entry it was reached from (-1 for the sense itself) */
+    char name[42]; /* first lemma, '_' as ' ' */
+} lex_anc;
+
+/* A noun sense with its hypernym closure (index 0 = the sense itself). */
+typedef struct lex_sense {
+    uint32_t off;
+    int rank;              /* sense number of the lemma (1 = commonest) */
+    int attested;          /* the first sense, or one the tagged corpora attest */
+    char definition[192];  /* its name is anc[0].name */
+    int n_anc;
+    lex_anc anc[LEX_MAX_ANC];
+    int n_holo;
+    uint32_t holo[16];     /* part holonyms: what this is a part of */
+} lex_sense;
+
+/* Reads the sense (closure, definition, part holonyms). */
+int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_error *err);
+/* 1 when the sense is a physical entity (under physical_entity.n.01). */
+int lex_sense_physical(const lex_sense *s);
+/* Index of off in s's closure, or -1. */
+int lex_anc_find(const lex_sense *s, uint32_t off);
+/* The hypernym path from s up to its closure entry a: "s > ... > a". */
+void lex_path(const lex_sense *s, int a, char *out, size_t cap);
+
+/* Taxonomic comparison of a query sense q and a class sense c. */
+typedef struct lex_tax {
+    float score;
+    int kind;     /* SP_LEX_SYNONYM, HYPERNYM, HYPONYM, PART, RELATED, NONE */
+    int q_anc, c_anc; /* indices of the LCS in q's and c's closures (-1 none) */
+} lex_tax;
+lex_tax lex_compare(const lex_sense *q, const lex_sense *c);
+/* Plain Wu-Palmer similarity 2 dep(lcs) / (dq + dc + 2 dep(lcs)) through the deepest common
+ * ancestor (1 for the same synset). */
+float lex_wup(const lex_sense *q, const lex_sense *c);
+
+/* ---- gloss bags ------------------------------------------------------------------------------ */
+
+typedef struct lex_bag_word {
+    char w[LEX_WORD];  /* a base form */
+    float weight;      /* DELTA^level */
+    short src;         /* index into the bag's sources */
+} lex_bag_word;
+
+typedef struct lex_bag {
+    int n, cap;
+    lex_bag_word *words;
+    int n_src;
+    char (*src)[192];  /* "seat: furniture that is designed for sitting on" */
+} lex_bag;
+
+void lex_bag_free(lex_bag *b);
+/* Adds the base forms of every content word of text at weight, citing source. */
+int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
+                     const char *source, sp_error *err);
+/* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
+ * absent); *src gets the source index. */
+float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight, int *src);
+
+/* ---- phrases and classes -------------------------------------------------------------------- */
+
+/* A noun phrase resolved against WordNet: the head (longest collocation ending at the last noun),
+ * the modifiers before it and the description words after a clause marker. */
+typedef struct lex_np {
+    int n_words;
+    char words[LEX_MAX_TOKENS][LEX_WORD]; /* content words in order (base forms for nouns) */
+    int head_start, head_end;             /* [start, end) of the head collocation, -1 none */
+    char head[WN_LEMMA_MAX];              /* the collocation as a WordNet lemma */
+    int placeholder;                      /* the head was "something", "a place", ... */
+    int fallback;                         /* class name without an attested physical sense */
+    int split;                            /* the head is a closed compound split in two: its
+                                           * first part is the last modifier ("nightstand") */
+    int n_senses;
+    lex_sense *senses;                    /* [n_senses] all noun senses (queries) or physical (classes) */
+    int n_mods;
+    char mods[8][LEX_WORD];               /* content words before the head */
+    int n_desc;
+    char desc[16][LEX_WORD];              /* description words (purpose clause, relative clause) */
+    float desc_w[16];
+} lex_np;
+
+void lex_np_free(lex_np *np);
+/* Parses tokens [from, to) into np; physical_only keeps physical senses (class names). */
+int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
+                 lex_np *np, sp_error *err);
+
+typedef struct lex_class {
+    char name[128];
+    lex_np np;       /* the class name parsed (physical senses) */
+    int spec;        /* its name has noun modifiers beside the head: one level more specific */
+    lex_bag bag;     /* its names and definitions, with hypernyms' */
+    int n_tok;
+    char tok[8][LEX_WORD]; /* base forms of its name's words */
+} lex_class;
+
+typedef struct lex_region {
+    char name[64];
+    int n_members;
+    char members[24][64];
+    sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
+} lex_region;
+
+struct sp_lex_vocab {
+    const lex_db *lx;
+    int n;
+    lex_class *classes;
+    int n_vocab_words;
+    char (*vocab_words)[LEX_WORD]; /* every class-name word: modifiers that discriminate */
+    int n_regions;
+    lex_region *regions;
+};
+
+int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
+const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
+/* Loads a region table (JSON object name -> [phrases]) into v. */
+int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
+/* Resolves every table region's members once (r->cache). */
+int lex_regions_prepare(sp_lex_vocab *v, sp_error *err);
+/* The table region an NP's head stands for (itself or a synonym), or NULL. */
+int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
+/* The definition of a region name's room sense (first sense that is a room; for table entries
+ * any room sense, else the first), or NULL when it names no room. */
+const char *lex_region_definition(const lex_np *np, int table_entry);
+/* Members of a named region into ph, sorted (the cached ones for table regions). */
+int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                       const char *definition, sp_lex_phrase *ph, sp_error *err);
+/* Clears ph's matches to every class at score 0, indexed by class. */
+void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
+/* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */
+int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *sub, const char *why);
+
+/* What a query modifier did for the best class. */
+enum { LEX_MOD_IGNORED = 0, LEX_MOD_USED = 1, LEX_MOD_CONTRARY = 2 };
+
+/* Scores a parsed phrase against every class into ph (sorted best first); mod_use [np->n_mods]
+ * (may be NULL) gets what each modifier did for the best class. */
+int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                 sp_error *err);
+/* Order of class matches: score, then kind (exact first), then class index. */
+int lex_match_cmp(const void *a, const void *b);
+
+#endif

@@ -1,0 +1,287 @@
+/* The lexical text encoder on the phrasing tables (tests/semantic/phrases_*.json, written before
+ * the scorer was tuned): precision@1 on the present phrasings, rejection of the absent ones, with
+ * the one threshold SP_LEX_THRESHOLD for both worlds; plus WordNet reader and morphy checks and
+ * bad input. Tuned on the house; the bookstore was measured without retuning (precision@1 0.815,
+ * absent 0.92), then three general rules found from its misses raised it to 0.862 / 1.0 (see
+ * docs/DESIGN.md). The issue's bar is 0.9 / 0.9: the house meets it, the bookstore does not, and
+ * its floor below guards the measured figure against regressions, not the bar.
+ * Run with an argument (house | bookstore) to print every phrase of one table, and a query after
+ * it to print its explanation. */
+#include <cjson/cJSON.h>
+#include <unistd.h>
+
+#include "semantic/lexical.h"
+#include "semantic/wordnet.h"
+#include "semsplat/clip.h"
+#include "semsplat/io.h"
+#include "test.h"
+
+static const char *wordnet_dir(void)
+{
+    return SP_LEX_DEFAULT_WORDNET;
+}
+
+static int have_wordnet(void)
+{
+    char p[512];
+    snprintf(p, sizeof p, "%s/index.noun", wordnet_dir());
+    return access(p, R_OK) == 0;
+}
+
+static void test_reader(void)
+{
+    sp_error err = {0};
+    wn_db *db = NULL;
+    CHECK_OK(wn_open(&db, wordnet_dir(), &err), &err);
+    if (!db) return;
+    uint32_t offs[WN_MAX_SENSES];
+    /* index.noun: "tv n 2 6 @ ~ #p %p ; - 2 2 06277280 04405907" */
+    int n = wn_lookup(db, WN_NOUN, "tv", offs, WN_MAX_SENSES, NULL, &err);
+    CHECK(n == 2);
+    CHECK(n == 2 && offs[0] == 6277280u && offs[1] == 4405907u);
+    CHECK(wn_lookup(db, WN_NOUN, "coffee table", offs, WN_MAX_SENSES, NULL, &err) == 1);
+    CHECK(wn_lookup(db, WN_NOUN, "zzzz-no-such-word", offs, WN_MAX_SENSES, NULL, &err) == 0);
+    CHECK(wn_lookup(db, WN_NOUN, "a", offs, WN_MAX_SENSES, NULL, &err) >= 1); /* first lemma */
+    CHECK(wn_lookup(db, WN_NOUN, "zymurgy", offs, WN_MAX_SENSES, NULL, &err) == 1); /* last */
+    wn_synset s;
+    wn_id id = {4405907u, WN_NOUN};
+    CHECK_OK(wn_read(db, id, &s, &err), &err);
+    CHECK(s.n_words == 9 && !strcmp(s.words[0], "television_receiver") && !strcmp(s.words[3], "tv"));
+    CHECK(s.n_pointers == 4 && !strcmp(s.pointers[0].symbol, "@") && s.pointers[0].target.offset == 4060647u);
+    CHECK(strstr(s.gloss, "receives television signals") != NULL);
+    wn_synset_free(&s);
+    wn_id bad = {4405908u, WN_NOUN}; /* inside a line, not a synset */
+    CHECK_FAILS(wn_read(db, bad, &s, &err), SP_E_FORMAT, &err, "data.noun");
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    struct { wn_pos pos; const char *word, *base; } morph[] = {
+        {WN_NOUN, "chairs", "chair"},        {WN_NOUN, "shelves", "shelf"},
+        {WN_NOUN, "geese", "goose"},         {WN_NOUN, "boxes", "box"},
+        {WN_NOUN, "benches", "bench"},       {WN_NOUN, "women", "woman"},
+        {WN_NOUN, "libraries", "library"},   {WN_NOUN, "coffee_tables", "coffee_table"},
+        {WN_NOUN, "glass", "glass"},         {WN_VERB, "sitting", "sit"},
+        {WN_VERB, "placed", "place"},        {WN_VERB, "ran", "run"},
+        {WN_VERB, "stores", "store"},        {WN_ADJ, "bigger", "big"},
+    };
+    for (size_t i = 0; i < sizeof morph / sizeof morph[0]; i++) {
+        int nb = wn_morphy(db, morph[i].pos, morph[i].word, b, &err);
+        int hit = 0;
+        for (int k = 0; k < nb; k++) hit |= !strcmp(b[k], morph[i].base);
+        CHECK_MSG(hit, "morphy %s -> %s (got %d forms, first '%s')", morph[i].word, morph[i].base, nb,
+                  nb > 0 ? b[0] : "");
+    }
+    CHECK(wn_morphy(db, WN_NOUN, "glass", b, &err) == 1); /* "-ss" is not a plural */
+    wn_close(db);
+    /* A missing database names the file and the package. */
+    CHECK_FAILS(wn_open(&db, "/nonexistent/wordnet", &err), SP_E_NOTFOUND, &err, "wordnet-base");
+}
+
+/* A WordNet folder of links to the real files but for one file written here. */
+static const char *fake_wordnet(const char *name, const char *file, const char *text)
+{
+    const char *dir = test_tmpdir(name);
+    const char *files[] = {"index.noun", "index.verb", "index.adj", "index.adv", "data.noun", "data.verb",
+                           "data.adj", "data.adv", "noun.exc", "verb.exc", "adj.exc", "adv.exc"};
+    char a[1200], b[1200];
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        snprintf(b, sizeof b, "%s/%s", dir, files[i]);
+        if (!strcmp(files[i], file)) {
+            FILE *f = fopen(b, "w");
+            if (f) fputs(text, f), fclose(f);
+            continue;
+        }
+        snprintf(a, sizeof a, "%s/%s", wordnet_dir(), files[i]);
+        if (symlink(a, b) != 0) fprintf(stderr, "cannot link %s\n", b);
+    }
+    return dir;
+}
+
+static void test_bad_input(void)
+{
+    sp_error err = {0};
+    sp_lexicon *lx = NULL;
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_empty", "data.noun", ""), &err), SP_E_FORMAT, &err,
+                "data.noun: empty file");
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_trunc", "data.noun", "  1 license\n00001740 03 n 01 entity"),
+                                &err), SP_E_FORMAT, &err, "data.noun");
+    char other[2100]; /* a synset line where WordNet 3.0 has 'entity', naming something else */
+    memset(other, ' ', 1739);
+    other[1739] = '\n';
+    snprintf(other + 1740, sizeof other - 1740, "00001740 03 n 01 thing 0 000 | x\n");
+    CHECK_FAILS(sp_lexicon_open(&lx, fake_wordnet("wn_other", "data.noun", other), &err), SP_E_FORMAT, &err,
+                "not 'entity'");
+    CHECK(lx == NULL);
+    CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
+    if (!lx) return;
+    sp_lex_vocab *v = NULL;
+    const char *empty[] = {"chair", ""};
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, empty, 2, "", &err), SP_E_ARG, &err, "class 1");
+    const char *names[] = {"chair", "sofa", "lamp"};
+    const char *dir = test_tmpdir("lex_regions");
+    char path[1200];
+    snprintf(path, sizeof path, "%s/regions.json", dir);
+    FILE *f = fopen(path, "w");
+    if (f) fputs("{\"kitchen\": \"stove\"}", f), fclose(f);
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, names, 3, path, &err), SP_E_FORMAT, &err, "kitchen");
+    CHECK(sp_lex_vocab_create(&v, lx, names, 3, "/nonexistent/regions.json", &err) != 0);
+    CHECK_MSG(strstr(err.msg, "regions.json") != NULL, "%s", err.msg);
+    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 3, "", &err), &err);
+    sp_lex_result *res = malloc(sizeof *res);
+    if (v && res) {
+        CHECK_FAILS(sp_lex_match(v, "", res, &err), SP_E_ARG, &err, "no words");
+        CHECK_FAILS(sp_lex_match(v, "?! ...", res, &err), SP_E_ARG, &err, "no words");
+        CHECK_OK(sp_lex_match(v, "zxqvw blorft", res, &err), &err);
+        CHECK(!res->found && res->confidence < SP_LEX_THRESHOLD);
+        char longtext[8192] = "";
+        for (int i = 0; i < 600; i++) strcat(longtext, i % 7 ? "very " : "the big red ");
+        strcat(longtext, "sofa");
+        CHECK_OK(sp_lex_match(v, longtext, res, &err), &err); /* 32 words kept, no crash */
+        CHECK_OK(sp_lex_match(v, "caf\xc3\xa9 \xff\xfe sofa", res, &err), &err);
+        CHECK(res->found && !strcmp(sp_lex_vocab_class(v, res->target.matches[0].class_index), "sofa"));
+        /* As an embedding: "sofa" is the sofa's label vector, "giraffe" nothing. */
+        float e[512], ref[512], conf = 0;
+        CHECK_OK(sp_lex_embed(v, "sofas", 512, e, &conf, &err), &err);
+        sp_label_embedding("sofa", 512, ref);
+        double dot = 0;
+        for (int j = 0; j < 512; j++) dot += (double)e[j] * ref[j];
+        CHECK_NEAR(dot, 1.0, 1e-5);
+        CHECK_NEAR(conf, 1.0, 1e-6);
+        CHECK_OK(sp_lex_embed(v, "giraffe", 512, e, &conf, &err), &err);
+        CHECK(conf < SP_LEX_THRESHOLD && e[0] == 0.0f && e[511] == 0.0f);
+        char *js = sp_lex_result_json(res, v, 0.0f);
+        CHECK(js && strstr(js, "\"encoder\":\t\"lexical\""));
+        free(js);
+    }
+    free(res);
+    sp_lex_vocab_free(v);
+    sp_lexicon_free(lx);
+}
+
+typedef struct {
+    int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
+    int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
+} tally;
+
+static int bin_of(float c) { return c < 0.7f ? 0 : c < 0.9f ? 1 : 2; }
+
+static int in_array(const cJSON *arr, const char *s)
+{
+    const cJSON *it;
+    cJSON_ArrayForEach(it, arr)
+        if (cJSON_IsString(it) && !strcmp(it->valuestring, s)) return 1;
+    return 0;
+}
+
+static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
+{
+    return ph->n_matches ? sp_lex_vocab_class(v, ph->matches[0].class_index) : "";
+}
+
+/* Runs one table; verbose prints every phrase; explain: only that query, with --explain text. */
+static tally run_table(const sp_lexicon *lx, const char *name, int verbose, const char *explain)
+{
+    tally t = {0};
+    char path[1024];
+    snprintf(path, sizeof path, "%s/tests/semantic/phrases_%s.json", SP_SOURCE_DIR, name);
+    sp_error err = {0};
+    cJSON *js = NULL;
+    CHECK_OK(sp_json_read_file(path, &js, &err), &err);
+    if (!js) return t;
+    const cJSON *classes = cJSON_GetObjectItem(js, "classes"), *phrases = cJSON_GetObjectItem(js, "phrases");
+    const char *names[SP_LEX_MAX_CLASSES];
+    int n = 0;
+    const cJSON *it;
+    cJSON_ArrayForEach(it, classes) names[n++] = it->valuestring;
+    sp_lex_vocab *v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, names, n, NULL, &err), &err);
+    sp_lex_result *res = malloc(sizeof *res);
+    if (explain && v && res) {
+        static char text[16384];
+        if (!sp_lex_match(v, explain, res, &err)) sp_lex_explain(res, v, text, sizeof text), printf("%s", text);
+        else printf("error: %s\n", err.msg);
+        phrases = NULL;
+    }
+    cJSON_ArrayForEach(it, phrases) {
+        if (!v || !res) break;
+        const char *text = cJSON_GetObjectItem(it, "text")->valuestring;
+        const char *kind = cJSON_GetObjectItem(it, "kind")->valuestring;
+        const cJSON *expect = cJSON_GetObjectItem(it, "expect"), *anchor = cJSON_GetObjectItem(it, "anchor");
+        const cJSON *ignored = cJSON_GetObjectItem(it, "ignored"), *rel = cJSON_GetObjectItem(it, "relation");
+        double t0 = sp_time_now();
+        int mrc = sp_lex_match(v, text, res, &err);
+        double ms = (sp_time_now() - t0) * 1e3;
+        if (mrc) {
+            CHECK_MSG(0, "%s: '%s': %s", name, text, err.msg);
+            continue;
+        }
+        int absent = cJSON_GetArraySize(expect) == 0, ok;
+        const char *top = top_class(v, &res->target);
+        if (absent) ok = !res->found;
+        else {
+            ok = res->found && in_array(expect, top);
+            if (ok && rel) /* a relation must also be read as one, with the right anchor */
+                ok = !strcmp(res->relation, rel->valuestring) && in_array(anchor, top_class(v, &res->anchor));
+            if (ok && !strcmp(kind, "region")) ok = res->target.is_region;
+        }
+        if (absent) t.absent++, t.absent_ok += ok;
+        else t.present++, t.present_ok += ok;
+        if (res->found) t.bin_n[bin_of(res->confidence)]++, t.bin_ok[bin_of(res->confidence)] += ok;
+        const cJSON *ig;
+        cJSON_ArrayForEach(ig, ignored) {
+            int got = 0;
+            for (int k = 0; k < res->n_ignored; k++) got |= !strcmp(res->ignored[k], ig->valuestring);
+            t.ignored_total++, t.ignored_ok += got;
+        }
+        if (verbose || !ok) {
+            printf("%-5s %-9s %-36s -> %-16s %.2f %-8s", ok ? "ok" : "MISS", kind, text,
+                   res->found || absent ? top : "(none)", (double)res->confidence,
+                   res->target.n_matches ? sp_lex_kind_name(res->target.matches[0].kind) : "");
+            if (res->relation[0]) printf(" [%s %s]", res->relation, top_class(v, &res->anchor));
+            if (res->target.is_region) printf(" [region %s]", res->target.region);
+            for (int k = 0; k < res->n_ignored; k++) printf(" ignored:%s", res->ignored[k]);
+            if (verbose) printf(" (%.1f ms)", ms);
+            printf("\n");
+        }
+    }
+    free(res);
+    sp_lex_vocab_free(v);
+    cJSON_Delete(js);
+    printf("%s: precision@1 %d/%d = %.3f on present phrasings, absent rejected %d/%d = %.3f, "
+           "ignored attributes reported %d/%d (threshold %.2f)\n",
+           name, t.present_ok, t.present, t.present ? (double)t.present_ok / t.present : 0.0, t.absent_ok,
+           t.absent, t.absent ? (double)t.absent_ok / t.absent : 0.0, t.ignored_ok, t.ignored_total,
+           (double)SP_LEX_THRESHOLD);
+    printf("%s: found results correct by confidence: [0.5,0.7) %d/%d, [0.7,0.9) %d/%d, [0.9,1] %d/%d\n", name,
+           t.bin_ok[0], t.bin_n[0], t.bin_ok[1], t.bin_n[1], t.bin_ok[2], t.bin_n[2]);
+    return t;
+}
+
+int main(int argc, char **argv)
+{
+    if (!have_wordnet()) {
+        fprintf(stderr, "skipped: no WordNet at %s (Debian wordnet-base)\n", wordnet_dir());
+        return 77;
+    }
+    sp_lexicon *lx = NULL;
+    sp_error err = {0};
+    if (argc > 1) {
+        CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
+        if (lx) run_table(lx, argv[1], 1, argc > 2 ? argv[2] : NULL);
+        sp_lexicon_free(lx);
+        return TEST_EXIT();
+    }
+    RUN(test_reader);
+    RUN(test_bad_input);
+    CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
+    if (!lx) return TEST_EXIT();
+    const char *worlds[] = {"house", "bookstore"};
+    const double floor_p1[] = {0.9, 0.85}, floor_absent[] = {0.9, 0.9};
+    for (int w = 0; w < 2; w++) {
+        tally t = run_table(lx, worlds[w], 0, NULL);
+        CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
+        CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
+                  worlds[w], 100 * floor_absent[w]);
+        CHECK_MSG(t.ignored_ok == t.ignored_total, "%s: attribute words not reported as ignored", worlds[w]);
+    }
+    sp_lexicon_free(lx);
+    return TEST_EXIT();
+}
