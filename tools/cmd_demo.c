@@ -162,6 +162,7 @@ static int parse(int argc, char **argv, demo_opts *o)
             if (o->steps < 1) return cli_usage_error("demo", "--steps %ld: expected at least 1", o->steps);
         } else if ((v = cli_flag_value(argc, argv, &i, "--dim", &bad))) {
             if (cli_parse_int("demo", "--dim", v, &o->dim)) return 2;
+            if (o->dim < 1) return cli_usage_error("demo", "--dim %ld: expected at least 1", o->dim);
         } else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;
         } else if (!strcmp(argv[i], "--quiet")) o->quiet = 1;
