@@ -157,10 +157,10 @@ static int read_pgm(const char *path, const map_yaml *m, sp_ros_grid *g, sp_erro
     } else if (!(g->cells = malloc((size_t)w * h))) {
         rc = sp_error_set(err, SP_E_NOMEM, "%s: %ld x %ld", path, w, h);
     } else {
-        pos++; /* the single whitespace after maxval */
-        if (binary && n - pos < (size_t)w * h)
-            rc = sp_error_set(err, SP_E_FORMAT, "%s: %zu pixel bytes for %ld x %ld", path,
-                              n > pos ? n - pos : 0, w, h);
+        if (pos < n) pos++; /* the single whitespace after maxval (none when the file ends there) */
+        size_t avail = n > pos ? n - pos : 0;
+        if (binary && avail < (size_t)w * h)
+            rc = sp_error_set(err, SP_E_FORMAT, "%s: %zu pixel bytes for %ld x %ld", path, avail, w, h);
         for (long i = 0; i < w * h && !rc; i++) {
             long v = binary ? d[pos + i] : -1;
             if (ascii && (pgm_int(d, n, &pos, &v) || v > maxval))

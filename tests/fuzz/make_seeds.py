@@ -289,6 +289,40 @@ def main():
             "facet normal %g %g %g\n outer loop\n" % t[0] + "".join("  vertex %g %g %g\n" % v for v in t[1:]) +
             " endloop\nendfacet\n" for t in tri) + "endsolid s\n").encode())
         put("mesh", "dae_triangle", b"d" + DAE.encode())
+        # LLM bodies (selector byte, tool byte, body) and tool arguments
+        oa = {"id": "c1", "object": "chat.completion", "choices": [{"index": 0, "finish_reason": "tool_calls",
+              "message": {"role": "assistant", "content": None, "tool_calls": [{"id": "call_1", "type": "function",
+              "function": {"name": "query_object_location", "arguments": "{\"object_name\": \"chair\"}"}}]}}],
+              "usage": {"prompt_tokens": 10, "completion_tokens": 5}}
+        put("agent_llm", "openai_tool_call", b"\0\0" + json.dumps(oa).encode())
+        oa2 = {"choices": [{"finish_reason": "stop", "message": {"content": "The chair is in the kitchen."}}]}
+        put("agent_llm", "openai_text", b"\0\0" + json.dumps(oa2).encode())
+        an = {"id": "m1", "type": "message", "role": "assistant", "stop_reason": "tool_use",
+              "content": [{"type": "thinking", "thinking": "...", "signature": "x"}, {"type": "text", "text": "Going."},
+                          {"type": "tool_use", "id": "toolu_1", "name": "send_nav2_goal", "input": {"x": 1.5, "y": -2, "yaw": 0.3}}],
+              "usage": {"input_tokens": 20, "output_tokens": 7}}
+        put("agent_llm", "anthropic_tool_use", b"\1\0" + json.dumps(an).encode())
+        put("agent_llm", "error_openai", b"\2\0" + json.dumps({"error": {"message": "Rate limit", "type": "rate_limit_error",
+                                                                      "code": "rate_limit_exceeded"}}).encode())
+        put("agent_llm", "error_anthropic", b"\2\0" + json.dumps({"type": "error", "error": {"type": "overloaded_error",
+                                                                         "message": "Overloaded"}}).encode())
+        for tool, args in [(0, {"object_name": "chair"}), (2, {"start": [0, 0], "goal": [1, 2, 0, 1.5], "tolerance_m": 0.5}),
+                           (3, {"pose": [1, 2, 0.5, 0.3]}), (4, {"x": 1, "y": 2, "yaw": 0, "plan_id": "p1"}),
+                           (5, {"target": "table", "k": 3, "instance": 1}), (6, {"object_name": "sofa", "radius_m": 2}),
+                           (7, {"region": "kitchen", "max_waypoints": 4}), (8, {})]:
+            put("agent_llm", "args_tool%d" % tool, bytes([3, tool]) + json.dumps(args).encode())
+        # Nav2 maps: a map.yaml (selector 0) and a PGM (selector 1)
+        put("costmap_yaml", "map_yaml", b"\0image: map.pgm\nresolution: 0.05\norigin: [-1.0, -2.0, 0.0]\nnegate: 0\n"
+                                        b"occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n")
+        put("costmap_yaml", "map_yaml_scale", b"\0image: \"map.pgm\"\nresolution: 0.1\norigin: [0, 0, 1.57]\nnegate: 1\n"
+                                              b"occupied_thresh: 0.7\nfree_thresh: 0.2\nmode: scale\n")
+        put("costmap_yaml", "pgm_p5", b"\1P5\n# c\n3 2\n255\n" + bytes([0, 128, 255, 254, 10, 205]))
+        put("costmap_yaml", "pgm_p2", b"\1P2\n3 2\n15\n0 7 15\n15 3 0\n")
+        # ROS samples from the library's own encoders (the harness writes them)
+        d = os.path.join(CORPUS, "ros_cdr")
+        os.makedirs(d, exist_ok=True)
+        subprocess.run([os.path.join(os.path.abspath(build), "fuzz", "fuzz_ros_cdr_replay"), "/dev/null"],
+                       env=dict(os.environ, FZ_WRITE_SEEDS=d), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     finally:
         shutil.rmtree(tmp)
     for h in sorted(os.listdir(CORPUS)):
