@@ -44,12 +44,13 @@ const sp_tensor_info *sp_safetensors_find(const sp_safetensors *st, const char *
     return NULL;
 }
 
-/* A JSON number that is a non-negative integer representable exactly in a double. */
+/* A JSON number that is a non-negative integer below 2^53 (above, a double no longer tells
+ * 2^53 + 1 from 2^53: the file would be read as saying something else). */
 static int json_size(const cJSON *v, size_t *out)
 {
     if (!cJSON_IsNumber(v)) return -1;
     double d = v->valuedouble;
-    if (!(d >= 0) || d > 9007199254740992.0 || d != floor(d)) return -1;
+    if (!(d >= 0) || d >= 9007199254740992.0 || d != floor(d)) return -1;
     *out = (size_t)d;
     return 0;
 }
@@ -231,6 +232,15 @@ int sp_safetensors_parse(const void *data, size_t size, const char *name, sp_saf
     return rc;
 }
 
+/* An integer as its exact digits: cJSON prints numbers with 15 significant digits when that reads
+ * back within a relative epsilon, so 9007199254740992 would come back as 9007199254740990. */
+static cJSON *json_count(size_t v)
+{
+    char s[32];
+    snprintf(s, sizeof s, "%zu", v);
+    return cJSON_CreateRaw(s);
+}
+
 int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t n, sp_error *err)
 {
     cJSON *root = cJSON_CreateObject();
@@ -261,10 +271,10 @@ int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t
             break;
         }
         cJSON_AddStringToObject(e, "dtype", tn);
-        for (int k = 0; k < t->ndim; k++) cJSON_AddItemToArray(shape, cJSON_CreateNumber((double)t->shape[k]));
+        for (int k = 0; k < t->ndim; k++) cJSON_AddItemToArray(shape, json_count(t->shape[k]));
         cJSON_AddItemToObject(e, "shape", shape);
-        cJSON_AddItemToArray(offs, cJSON_CreateNumber((double)offset));
-        cJSON_AddItemToArray(offs, cJSON_CreateNumber((double)(offset + nbytes)));
+        cJSON_AddItemToArray(offs, json_count(offset));
+        cJSON_AddItemToArray(offs, json_count(offset + nbytes));
         cJSON_AddItemToObject(e, "data_offsets", offs);
         cJSON_AddItemToObject(root, t->name, e);
         offset += nbytes;

@@ -194,9 +194,11 @@ int geom_mesh(wbuild *b, const xform *T, const char *path, const double scale[3]
             if (me->uv) uv[0] = me->uv[2 * (size_t)v], uv[1] = me->uv[2 * (size_t)v + 1];
             xf_apply(T, p, pw);
             xf_apply_dir(T, n, nw);
-            if (!isfinite(pw[0]) || !isfinite(pw[1]) || !isfinite(pw[2]))
-                rc = sp_error_set(err, SP_E_NUMERIC, "mesh %s: vertex %u of mesh %u is not finite (%g %g %g)", path, v,
-                                  i, q[0], q[1], q[2]);
+            /* normals too: assimp derives them from the positions, and huge ones overflow */
+            if (!isfinite(pw[0]) || !isfinite(pw[1]) || !isfinite(pw[2]) || !isfinite(nw[0]) || !isfinite(nw[1]) ||
+                !isfinite(nw[2]))
+                rc = sp_error_set(err, SP_E_NUMERIC, "mesh %s: vertex %u of mesh %u is not finite or too large (%g %g %g)",
+                                  path, v, i, q[0], q[1], q[2]);
             else if (wb_vertex(b, pw, nw, uv, p) < 0)
                 rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
         }

@@ -33,6 +33,8 @@ typedef enum {
     K_SAFETENSORS,
     K_CONFIG,   /* a CLIP config.json */
     K_TEXTFILE, /* align's matches / transform files */
+    K_YAML,     /* a Nav2 map.yaml */
+    K_DIR,      /* any input folder (a WordNet database) */
     K_OUTDIR,   /* an output folder */
     K_OUTFILE,  /* an output file */
     K_TEXT,     /* free text (a query) */
@@ -52,6 +54,9 @@ typedef struct {
 
 /* Commands that run without arguments (demo: the bundled house), so that case is not bad input. */
 static int runs_bare(const command *c) { return !strcmp(c->name, "demo"); }
+/* Commands whose valid invocation cannot succeed on this machine (agent needs the nav module,
+ * ros-goal a robot): their bad cases still must fail naming what is wrong. */
+static int base_fails_here(const command *c) { return !strcmp(c->name, "agent") || !strcmp(c->name, "ros-goal"); }
 
 /* Placeholders: {CAP} capture, {MODEL} model with a semantic field, {FEAT} features, {PLY} a splat,
  * {PNG} an image, {NPY}, {ST} a CLIP checkpoint (the tiny test fixture), {CFG} its config,
@@ -93,6 +98,20 @@ static const command commands[] = {
     {"align", "align --splat {PLY} --out {OUT}.ply --transform {XFORM}",
      {{"--splat", K_PLY}, {"--out", K_OUTFILE}, {"--transform", K_TEXTFILE}, {"--matches", K_TEXTFILE},
       {"--colmap", K_COLMAP}}},
+    {"lexical", "lexical --classes chair,table,sofa --quiet chair",
+     {{"--model", K_MODEL}, {"--labels", K_CONFIG}, {"--classes", K_TEXT}, {"--wordnet", K_DIR},
+      {"--regions", K_CONFIG}, {NULL, K_TEXT}}},
+    {"agent", "agent --model {MODEL} --out {OUT} --quiet where_is_the_table",
+     {{"--model", K_MODEL}, {"--out", K_OUTDIR}, {"--llm", K_CHOICE}, {"--llm-preset", K_CHOICE},
+      {"--llm-timeout", K_FLOAT}, {"--llm-retries", K_COUNT0}, {"--max-steps", K_COUNT}, {"--max-speed", K_FLOAT},
+      {"--start", K_LIST}}},
+    {"sim-robot", "sim-robot --map {YAML} --start 0,-1,0 --duration 0.2 --loopback --domain 91 --quiet",
+     {{"--map", K_YAML}, {"--model", K_MODEL}, {"--start", K_LIST}, {"--radius", K_FLOAT}, {"--max-speed", K_FLOAT},
+      {"--max-accel", K_FLOAT}, {"--max-yaw-rate", K_FLOAT}, {"--rate", K_FLOAT}, {"--time-scale", K_FLOAT},
+      {"--duration", K_FLOAT}, {"--ready-file", K_OUTFILE}, {"--domain", K_COUNT0}, {"--ros-distro", K_CHOICE}}},
+    {"ros-goal", "ros-goal --pose --timeout 0.3 --loopback --domain 92",
+     {{"--to", K_LIST}, {"--plan", K_LIST}, {"--timeout", K_FLOAT}, {"--cancel-after", K_FLOAT},
+      {"--domain", K_COUNT0}, {"--ros-distro", K_CHOICE}}},
     /* --world and --views/--size only matter without --capture (synth's row covers them) */
     {"demo", "demo --capture {CAP} --out {OUT} --reuse --steps 3 --dim 4 --device cpu --quiet",
      {{"--capture", K_CAPTURE}, {"--out", K_OUTDIR}, {"--steps", K_COUNT}, {"--dim", K_COUNT},
@@ -105,7 +124,8 @@ static const command commands[] = {
 static char base_dir[1024];
 static rb_paths in;
 static char f_ply[1200], f_png[1200], f_npy[1200], f_st[1200], f_cfg[1200], f_world[1200], f_matches[1200],
-    f_xform[1200], f_text[1200], f_empty[1200], f_zeros[1200], f_regular[1200], f_emptydir[1200];
+    f_xform[1200], f_text[1200], f_empty[1200], f_zeros[1200], f_regular[1200], f_emptydir[1200], f_yaml[1200],
+    f_pgm[1200];
 
 static void write_text(const char *path, const char *text)
 {
@@ -144,6 +164,8 @@ static int make_fixtures(void)
     F(f_emptydir, "emptydir");
     F(f_matches, "matches.txt");
     F(f_xform, "transform.txt");
+    F(f_yaml, "map.yaml");
+    F(f_pgm, "map.pgm");
     snprintf(f_st, sizeof f_st, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
     snprintf(f_cfg, sizeof f_cfg, "%s/tests/fixtures/clip/tiny/config.json", SP_SOURCE_DIR);
     snprintf(f_world, sizeof f_world, "%s/tiny.world", in.fix);
@@ -152,6 +174,15 @@ static int make_fixtures(void)
     write_text(f_regular, "a regular file where a folder should be\n");
     write_text(f_matches, "0 0 0 1 1 1\n1 0 0 2 1 1\n0 1 0 1 2 1\n0 0 1 1 1 2\n");
     write_text(f_xform, "1 0 0 0\n0 1 0 0\n0 0 1 0\n");
+    write_text(f_yaml, "image: map.pgm\nresolution: 0.05\norigin: [-1.0, -2.0, 0.0]\nnegate: 0\n"
+                       "occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n");
+    {   /* a free 40 x 40 map (2 x 2 m) */
+        char pgm[2000];
+        int h = snprintf(pgm, sizeof pgm, "P5\n40 40\n255\n");
+        memset(pgm + h, 254, 1600);
+        sp_error err = {0};
+        CHECK_OK(sp_write_file_atomic(f_pgm, pgm, (size_t)h + 1600, &err), &err);
+    }
     rb_sh("mkdir -p '%s'%s", f_emptydir, "");
     /* 64 MB of zeros that takes no disk (a file far larger than its format implies) */
     return rb_sh("truncate -s 64M '%s'%s", f_zeros, "");
@@ -280,10 +311,12 @@ static int bad_values(kind k, bad_value *v)
             V(broken_dir(in.feat, "features.json", 1, "feat", d), "features.json", "truncated features.json");
             V(broken_dir(in.feat, "maps/00000.npy", 1, "feat", d), "00000.npy", "truncated map");
             V(broken_dir(in.feat, "pca_basis.npy", 0, "feat", d), "pca_basis.npy", "no PCA basis");
+        } else if (k == K_DIR) {
+            V(f_emptydir, f_emptydir, "empty folder");
         } else {
             V(f_emptydir, f_emptydir, "a folder");
             const char *src = k == K_PLY ? f_ply : k == K_WORLD ? f_world : k == K_SAFETENSORS ? f_st
-                            : k == K_CONFIG ? f_cfg : k == K_TEXTFILE ? f_xform : f_npy;
+                            : k == K_CONFIG ? f_cfg : k == K_TEXTFILE ? f_xform : k == K_YAML ? f_yaml : f_npy;
             snprintf(d, sizeof d, "%s/truncated-%d", base_dir, (int)k);
             truncated_copy(src, d);
             V(d, d, "truncated");
@@ -304,13 +337,13 @@ static int base_argv(const command *c, const char *out, char *buf, size_t cap, c
 {
     rb_paths p = in;
     snprintf(p.out, sizeof p.out, "%s", out);
-    static const char *keys[] = {"{PLY}", "{PNG}", "{NPY}", "{ST}", "{CFG}", "{WORLD}", "{MATCHES}", "{XFORM}"};
-    const char *vals[] = {f_ply, f_png, f_npy, f_st, f_cfg, f_world, f_matches, f_xform};
+    static const char *keys[] = {"{PLY}", "{PNG}", "{NPY}", "{ST}", "{CFG}", "{WORLD}", "{MATCHES}", "{XFORM}", "{YAML}"};
+    const char *vals[] = {f_ply, f_png, f_npy, f_st, f_cfg, f_world, f_matches, f_xform, f_yaml};
     char exp[8192] = "";
     size_t L = 0;
     for (const char *s = c->base; *s && L + 1 < sizeof exp;) {
         int k = -1;
-        for (int j = 0; j < 8 && k < 0; j++)
+        for (int j = 0; j < 9 && k < 0; j++)
             if (!strncmp(s, keys[j], strlen(keys[j]))) k = j;
         if (k >= 0) {
             L += (size_t)snprintf(exp + L, sizeof exp - L, "%s", vals[k]);
@@ -415,7 +448,7 @@ static void one_command(const command *c)
     base_argv(c, out, buf, sizeof buf, argv);
     rb_result r;
     rb_run_argv(argv, NULL, 120, -1, &r);
-    CHECK_MSG(r.status == 0, "%s: the valid invocation failed: %s", c->name, r.out);
+    if (!base_fails_here(c)) CHECK_MSG(r.status == 0, "%s: the valid invocation failed: %s", c->name, r.out);
     /* no arguments, an unknown flag */
     char *none[] = {argv[0], (char *)c->name, NULL};
     if (!runs_bare(c)) expect_failure(c, none, NULL, c->name, "no arguments", NULL, 0);
