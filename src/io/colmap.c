@@ -147,6 +147,28 @@ int colmap_check_part(sp_colmap_part part, const char *name, const sp_colmap_mod
     return SP_OK;
 }
 
+int colmap_read_dir(const char *dir, const char *ext, colmap_parse_fn parse, sp_colmap_model *m, sp_error *err)
+{
+    static const char *const stems[3] = {"cameras", "images", "points3D"};
+    memset(m, 0, sizeof *m);
+    int rc = SP_OK;
+    for (int part = 0; part < 3 && !rc; part++) {
+        char name[32], path[4200], *buf;
+        size_t size;
+        snprintf(name, sizeof name, "%s.%s", stems[part], ext);
+        if (sp_path_join(path, sizeof path, dir, name)) {
+            rc = sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
+            break;
+        }
+        if ((rc = sp_read_file(path, &buf, &size, err))) break;
+        rc = parse((sp_colmap_part)part, buf, size, path, m, err);
+        free(buf);
+    }
+    if (!rc) rc = colmap_check_model(dir, m, ext, err);
+    if (rc) sp_colmap_free(m);
+    return rc;
+}
+
 static int cmp_u32(const void *a, const void *b)
 {
     uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;

@@ -142,24 +142,7 @@ int sp_colmap_parse_bin(sp_colmap_part part, const void *data, size_t size, cons
 
 int sp_colmap_read_bin(const char *dir, sp_colmap_model *m, sp_error *err)
 {
-    static const char *const names[3] = {"cameras.bin", "images.bin", "points3D.bin"};
-    memset(m, 0, sizeof *m);
-    int rc = SP_OK;
-    for (int part = 0; part < 3 && !rc; part++) {
-        char path[4200], *buf;
-        size_t size;
-        if (sp_path_join(path, sizeof path, dir, names[part])) {
-            rc = sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
-            break;
-        }
-        if ((rc = sp_read_file(path, &buf, &size, err))) break;
-        io_cursor c = {(const unsigned char *)buf, size, 0};
-        rc = readers[part](path, &c, m, err);
-        free(buf);
-    }
-    if (!rc) rc = colmap_check_model(dir, m, "bin", err);
-    if (rc) sp_colmap_free(m);
-    return rc;
+    return colmap_read_dir(dir, "bin", sp_colmap_parse_bin, m, err);
 }
 
 /* ---- writing ---------------------------------------------------------------------------------- */

@@ -316,27 +316,15 @@ int sp_colmap_parse_txt(sp_colmap_part part, const char *text, size_t size, cons
     return rc;
 }
 
+static int parse_txt(sp_colmap_part part, const void *data, size_t size, const char *name, sp_colmap_model *m,
+                     sp_error *err)
+{
+    return sp_colmap_parse_txt(part, data, size, name, m, err);
+}
+
 int sp_colmap_read_txt(const char *dir, sp_colmap_model *m, sp_error *err)
 {
-    static const char *const names[3] = {"cameras.txt", "images.txt", "points3D.txt"};
-    memset(m, 0, sizeof *m);
-    tokens t = {0};
-    int rc = SP_OK;
-    for (int part = 0; part < 3 && !rc; part++) {
-        char path[4200], *buf;
-        size_t size;
-        if (sp_path_join(path, sizeof path, dir, names[part])) {
-            rc = sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
-            break;
-        }
-        if ((rc = sp_read_file(path, &buf, &size, err))) break;
-        rc = readers[part](path, buf, size, m, &t, err);
-        free(buf);
-    }
-    if (!rc) rc = colmap_check_model(dir, m, "txt", err);
-    free(t.tok);
-    if (rc) sp_colmap_free(m);
-    return rc;
+    return colmap_read_dir(dir, "txt", parse_txt, m, err);
 }
 
 /* ---- writers ---------------------------------------------------------------------------------- */

@@ -45,6 +45,17 @@ int io_tmp_commit(FILE *f, const char *tmp, const char *path, int ok, sp_error *
     return SP_OK;
 }
 
+FILE *io_memstream(const void *data, size_t size, const char *name, const char *what, sp_error *err)
+{
+    if (!size) {
+        sp_error_set(err, SP_E_FORMAT, "%s: not %s (empty)", name, what);
+        return NULL;
+    }
+    FILE *f = fmemopen((void *)data, size, "rb");
+    if (!f) sp_error_set(err, SP_E_NOMEM, "%s: cannot open a stream over %zu bytes", name, size);
+    return f;
+}
+
 const char *io_basename(const char *path)
 {
     const char *s = strrchr(path, '/');

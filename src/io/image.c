@@ -315,9 +315,8 @@ int sp_image_read(const char *path, sp_image *img, sp_error *err)
 int sp_image_decode(const void *data, size_t size, const char *name, sp_image *img, sp_error *err)
 {
     memset(img, 0, sizeof *img);
-    if (!size) return sp_error_set(err, SP_E_FORMAT, "%s: neither a PNG nor a JPEG (empty)", name);
-    FILE *f = fmemopen((void *)data, size, "rb");
-    if (!f) return sp_error_set(err, SP_E_NOMEM, "%s: cannot open a stream over %zu bytes", name, size);
+    FILE *f = io_memstream(data, size, name, "a PNG or JPEG", err);
+    if (!f) return err ? err->code : SP_E_FORMAT;
     int rc = read_stream(f, name, img, err);
     fclose(f);
     return rc;

@@ -410,10 +410,8 @@ int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err)
 int sp_ply_parse_splat(const void *data, size_t size, const char *name, sp_splat *s, sp_error *err)
 {
     memset(s, 0, sizeof *s);
-    if (!size) return sp_error_set(err, SP_E_FORMAT, "%s: not a PLY file (empty)", name);
-    /* A read-only stream over the bytes: the reader is the file reader, unchanged. */
-    FILE *f = fmemopen((void *)data, size, "rb");
-    if (!f) return sp_error_set(err, SP_E_NOMEM, "%s: cannot open a stream over %zu bytes", name, size);
+    FILE *f = io_memstream(data, size, name, "a PLY file", err);
+    if (!f) return err ? err->code : SP_E_FORMAT;
     int rc = read_splat(f, size, name, s, err);
     fclose(f);
     return rc;

@@ -43,4 +43,12 @@ static inline void fz_folder_init(void)
     }
 }
 
+/* The three folder harnesses' initializer. */
+int LLVMFuzzerInitialize(int *argc, char ***argv)
+{
+    (void)argc, (void)argv;
+    fz_folder_init();
+    return 0;
+}
+
 #endif

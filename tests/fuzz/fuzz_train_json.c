@@ -4,13 +4,6 @@
 #include "fuzz_folder.h"
 #include "semsplat/semantic.h"
 
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc, (void)argv;
-    fz_folder_init();
-    return 0;
-}
-
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     char p[1024], nofeat[1024];
