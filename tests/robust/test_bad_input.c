@@ -235,7 +235,6 @@ static int bad_values(kind k, bad_value *v)
     case K_COUNT0:
     case K_STEP:
         V("-1", "", "negative");
-        V("abc", "", "not a number");
         V("2.5", "", "not an integer");
         V("", "", "empty");
         V("99999999999999999999", "", "beyond long");
@@ -393,8 +392,8 @@ static void case_argv(const command *c, const char *flag, const char *value, int
 /* OUT fresh for a case: removed, or a copy of the model for commands that write into it. */
 static void fresh_out(const command *c, const char *out, int bad_model)
 {
-    rb_sh("rm -rf '%s'%s", out, "");
-    if (strstr(c->base, "--model {OUT}") && !bad_model) rb_sh("cp -r '%s' '%s'", in.model, out);
+    rb_rm_rf(out);
+    if (strstr(c->base, "--model {OUT}") && !bad_model) rb_cp_r(in.model, out);
 }
 
 /* The message names the flag: "--sh-interval", or its words as the library spells options
