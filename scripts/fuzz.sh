@@ -96,7 +96,6 @@ run_one() {
     [ "$status" -ne 0 ] && line="$line  FAILED (exit $status, see $log)"
     echo "$line" | tee -a "$OUT/summary.txt"
     if [ "$MERGE" = 1 ] && [ "$status" -eq 0 ]; then
-        mkdir -p "$OUT/merged/$h"
         nice -n 10 "$bin" -merge=1 "tests/fuzz/corpus/$h" "$OUT/corpus/$h" >"$OUT/logs/$h.merge.log" 2>&1 || true
     fi
     [ "$status" -eq 0 ] && [ "$faults" -eq 0 ]
