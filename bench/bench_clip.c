@@ -3,7 +3,13 @@
  * the exact ViT-B/16 shapes (timing does not depend on the values). With --anchor FILE (the JSON
  * lines of shared/bench/anchors/bench_clip.py from the same run) it prints ratios against
  * transformers. Output: `name  value  unit  (settings)`.
- *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE] */
+ * On the GPU the batch-32/128 image figures are also given with the pixels already on the device
+ * (`_resident`, as the transformers anchor times it: its inputs are on the GPU), and --variants
+ * adds batch 128 / text 256 in fp16 with the tiled fused-attention kernel and with neither
+ * cuBLASLt epilogues nor fused attention (the previous design); --variants 2 adds each alone.
+ * --ncu runs one of each GPU workload only (for Nsight Compute).
+ *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]
+ *              [--variants [2]] [--ncu] */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -13,6 +19,7 @@
 #include "semsplat/render.h"
 
 static int reps = 5;
+static const char *variant = ""; /* suffix of the figure names ("_nolt", ...) */
 
 static double median(double *t, int n)
 {
@@ -61,12 +68,28 @@ static int bench_images(sp_clip *c, const char *dev_name, const char *prec, int 
     if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
     else {
         double ips = batch / median(t, reps);
-        printf("clip_image_%s_%s_b%d  %.1f  img/s  (ViT-B/16 224x224, batch %d, %s)\n", sp_clip_on_gpu(c) ? "gpu" : "cpu",
-               prec, batch, ips, batch, dev_name);
+        printf("clip_image_%s_%s_b%d%s  %.1f  img/s  (ViT-B/16 224x224, batch %d, host pixels in, %s)\n",
+               sp_clip_on_gpu(c) ? "gpu" : "cpu", prec, batch, variant, ips, batch, dev_name);
         double a = anchor_k >= 0 ? anchor_img[!strcmp(prec, "fp16")][anchor_k] : 0;
         if (a > 0)
-            printf("clip_image_%s_b%d_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f img/s, same GPU)\n",
-                   prec, batch, ips / a, ips, a);
+            printf("clip_image_%s_b%d%s_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f img/s, same GPU)\n",
+                   prec, batch, variant, ips / a, ips, a);
+        if (sp_clip_on_gpu(c) && batch >= 32) {
+            for (int r = 0; r < reps && !rc; r++) {
+                double t0 = sp_time_now();
+                rc = clip_gpu_vision_again(c, batch, S, S, out, &err);
+                t[r] = sp_time_now() - t0;
+            }
+            if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
+            else {
+                double rps = batch / median(t, reps);
+                printf("clip_image_gpu_%s_b%d%s_resident  %.1f  img/s  (pixels already on the GPU, %s)\n", prec, batch,
+                       variant, rps, dev_name);
+                if (a > 0)
+                    printf("clip_image_%s_b%d%s_resident_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f img/s)\n",
+                           prec, batch, variant, rps / a, rps, a);
+            }
+        }
     }
     free(px);
     free(out);
@@ -90,12 +113,12 @@ static int bench_text(sp_clip *c, const char *dev_name, const char *prec, int ba
     if (rc) fprintf(stderr, "bench_clip: %s\n", err.msg);
     else {
         double tps = batch / median(t, reps);
-        printf("clip_text_%s_%s_b%d  %.1f  texts/s  (77 tokens, batch %d, %s)\n", sp_clip_on_gpu(c) ? "gpu" : "cpu", prec,
-               batch, tps, batch, dev_name);
+        printf("clip_text_%s_%s_b%d%s  %.1f  texts/s  (77 tokens, batch %d, %s)\n", sp_clip_on_gpu(c) ? "gpu" : "cpu",
+               prec, batch, variant, tps, batch, dev_name);
         double a = anchor_txt[!strcmp(prec, "fp16")];
         if (a > 0 && batch == 256)
-            printf("clip_text_%s_b256_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f texts/s)\n", prec, tps / a,
-                   tps, a);
+            printf("clip_text_%s_b256%s_vs_transformers  %.2f  x  (ours %.1f / transformers %.1f texts/s)\n", prec,
+                   variant, tps / a, tps, a);
     }
     free(ids);
     free(out);
@@ -112,7 +135,7 @@ static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n
     sp_clip_dense_grid(c, &o, W, H, &gw, &gh);
     float *rgb = malloc(sizeof(float) * W * H * 3), *out = malloc(sizeof(float) * gw * gh * P);
     for (long i = 0; i < (long)W * H * 3; i++) rgb[i] = (float)((i * 31) % 255) / 255.f;
-    int rc = 0;
+    int rc = sp_clip_dense_features(c, rgb, W, H, &o, out, &err); /* warm-up: scratch, plans */
     double t0 = sp_time_now();
     for (int r = 0; r < n_img && !rc; r++) rc = sp_clip_dense_features(c, rgb, W, H, &o, out, &err);
     double dt = sp_time_now() - t0;
@@ -127,17 +150,20 @@ static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n
 
 int main(int argc, char **argv)
 {
-    int cpu = 1, gpu = 1, dense_cpu = 0;
+    int cpu = 1, gpu = 1, dense_cpu = 0, variants = 0, ncu = 0;
     long threads = 2;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--cpu-only")) gpu = 0;
         else if (!strcmp(argv[i], "--gpu-only")) cpu = 0;
         else if (!strcmp(argv[i], "--dense-cpu")) dense_cpu = 1;
+        else if (!strcmp(argv[i], "--variants")) variants = i + 1 < argc && !strcmp(argv[i + 1], "2") ? (i++, 2) : 1;
+        else if (!strcmp(argv[i], "--ncu")) ncu = 1;
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atol(argv[++i]);
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--anchor") && i + 1 < argc) read_anchor(argv[++i]);
         else {
-            fprintf(stderr, "usage: bench_clip [--cpu-only|--gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]\n");
+            fprintf(stderr, "usage: bench_clip [--cpu-only|--gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE] "
+                    "[--variants] [--ncu]\n");
             return 2;
         }
     }
@@ -174,6 +200,17 @@ int main(int argc, char **argv)
             return 1;
         }
         const char *name = sp_device_name(dev);
+        if (ncu) { /* one of each, fp16 */
+            reps = 1;
+            if (!sp_clip_set_fp16(c, 1, &err)) {
+                bench_images(c, name, "fp16", 128, -1);
+                bench_text(c, name, "fp16", 256);
+                bench_dense(c, name, "fp16", 1);
+            }
+            sp_clip_free(c);
+            sp_device_free(dev);
+            return 0;
+        }
         for (int half = 0; half <= 1; half++) {
             const char *prec = half ? "fp16" : "fp32";
             if (sp_clip_set_fp16(c, half, &err)) { fprintf(stderr, "bench_clip: %s\n", err.msg); break; }
@@ -181,7 +218,20 @@ int main(int argc, char **argv)
             bench_images(c, name, prec, 32, 1);
             bench_images(c, name, prec, 128, 2);
             bench_text(c, name, prec, 256);
-            bench_dense(c, name, prec, 3);
+            bench_dense(c, name, prec, 10);
+            /* the same without cuBLASLt epilogues, without the fused attention (--variants 2: also
+             * each alone), with the tiled fused kernel instead of the sequence-resident one */
+            static const struct { int flags; const char *suffix; } vs[] = {
+                {CLIP_GPU_FLASH_V1, "_flashv1"}, {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"},
+                {CLIP_GPU_NO_LT, "_nolt"}, {CLIP_GPU_NO_FLASH, "_noflash"}};
+            for (int v = half ? 0 : 2; v < (variants > 1 ? 4 : 2) && variants; v++) {
+                clip_gpu_set_flags(c, vs[v].flags);
+                variant = vs[v].suffix;
+                bench_images(c, name, prec, 128, 2);
+                bench_text(c, name, prec, 256);
+                clip_gpu_set_flags(c, 0);
+                variant = "";
+            }
         }
         sp_clip_free(c);
         sp_device_free(dev);

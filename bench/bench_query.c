@@ -102,7 +102,8 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
     sp_query_engine *e = NULL;
     sp_query_opts o = sp_query_opts_default();
     o.heatmap = 0;
-    if (sp_query_engine_create(&e, s, pca, cams, NCAM, 1, &o, dev, NULL, &err)) {
+    sp_query_model qm = {.splat = s, .pca = pca, .cams = cams, .n_cams = NCAM};
+    if (sp_query_engine_create(&e, &qm, &o, dev, NULL, &err)) {
         printf("# engine: %s\n", err.msg);
         sp_device_free(dev);
         return;
@@ -110,14 +111,14 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
     const char *dn = sp_device_name(dev);
     const int methods[2] = {SP_QUERY_3D, SP_QUERY_MULTIVIEW};
     for (int mi = 0; mi < 2; mi++) {
-        sp_query_engine_opts(e)->method = methods[mi];
+        o.method = methods[mi];
         int reps = mi == 0 ? 10 : 3;
         double best = 1e30, sum = 0, rel = 0;
         int found = 0;
         for (int r = 0; r < reps; r++) {
             sp_query_result res;
             int k = 1 + r % (CLASSES - 1);
-            if (sp_query_engine_query_embedding(e, emb + (size_t)k * FULL, "bench", &res, &err)) {
+            if (sp_query_engine_query_embedding(e, emb + (size_t)k * FULL, "bench", &o, &res, &err)) {
                 printf("# query: %s\n", err.msg);
                 break;
             }
@@ -132,10 +133,10 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
                rel / reps, n, DIM, FULL, dn, found, reps);
     }
     /* with the heatmap (a 640x480 render of RGB + features) */
-    sp_query_engine_opts(e)->method = SP_QUERY_3D;
-    sp_query_engine_opts(e)->heatmap = 1;
+    o.method = SP_QUERY_3D;
+    o.heatmap = 1;
     sp_query_result res;
-    if (!sp_query_engine_query_embedding(e, emb + FULL, "bench", &res, &err)) {
+    if (!sp_query_engine_query_embedding(e, emb + FULL, "bench", &o, &res, &err)) {
         printf("query_3d_heatmap_%s  %.1f  ms  (heatmap part %.1f ms, 640x480, %s)\n",
                kind == SP_DEVICE_CUDA ? "gpu" : "cpu", res.ms_total, res.ms_heatmap, dn);
         sp_query_result_free(&res);

@@ -80,3 +80,49 @@ int cli_parse_size(const char *cmd, const char *flag, const char *s, int *w, int
     *h = b;
     return 0;
 }
+
+cli_common cli_common_default(void)
+{
+    cli_common c = {SP_DEVICE_AUTO, "auto", 0, 0, 0};
+    return c;
+}
+
+int cli_device_kind(const char *cmd, const char *value, sp_device_kind *kind)
+{
+    sp_error err = {0};
+    if (sp_device_kind_parse(value, kind, &err)) return cli_usage_error(cmd, "--device: %s", err.msg);
+    return 0;
+}
+
+int cli_common_flag(const char *cmd, int argc, char **argv, int *i, unsigned which, cli_common *c)
+{
+    int bad = 0;
+    const char *v;
+    if ((which & CLI_DEVICE) && (v = cli_flag_value(argc, argv, i, "--device", &bad))) {
+        if (cli_device_kind(cmd, v, &c->device)) return 2;
+        c->device_name = v;
+        return 1;
+    }
+    if ((which & CLI_THREADS) && (v = cli_flag_value(argc, argv, i, "--threads", &bad))) {
+        if (cli_parse_int(cmd, "--threads", v, &c->threads)) return 2;
+        if (c->threads < 0 || c->threads > 4096)
+            return cli_usage_error(cmd, "--threads: %ld not in 0..4096 (0 = all cores)", c->threads);
+        return 1;
+    }
+    if (bad) return 2;
+    if ((which & CLI_QUIET) && (!strcmp(argv[*i], "--quiet") || !strcmp(argv[*i], "-q"))) return c->quiet = 1, 1;
+    if ((which & CLI_VERBOSE) && !strcmp(argv[*i], "--verbose")) return c->verbose = 1, 1;
+    return 0;
+}
+
+int cli_device_open(const char *cmd, const cli_common *c, sp_device **dev)
+{
+    sp_error err = {0};
+    if (sp_device_create(dev, c->device, (int)c->threads, &err)) return cli_fail(cmd, &err);
+    return 0;
+}
+
+sp_log cli_log(const cli_common *c, sp_log_level level)
+{
+    return sp_log_stderr(c->verbose ? SP_LOG_DEBUG : level, c->quiet);
+}

@@ -109,14 +109,17 @@ int cmd_agent(int argc, char **argv)
 {
     sp_agent_config cfg = sp_agent_config_default();
     const char *texts[64], *v;
-    int n_texts = 0, json = 0, quiet = 0, bad = 0;
+    int n_texts = 0, json = 0, bad = 0, r;
+    cli_common c = cli_common_default();
     cfg.out_dir = "agent-out";
     cfg.confirm_fn = confirm;
     for (int i = 1; i < argc; i++) {
         long n;
         double d;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) cfg.model_dir = v;
+        if ((r = cli_common_flag("agent", argc, argv, &i, CLI_QUIET | CLI_VERBOSE, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) cfg.model_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) cfg.out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--llm-preset", &bad))) cfg.llm.preset = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--llm-url", &bad))) cfg.llm.base_url = v;
@@ -140,7 +143,6 @@ int cmd_agent(int argc, char **argv)
         } else if (!strcmp(argv[i], "--confirm")) cfg.confirm = 1;
         else if (!strcmp(argv[i], "--ros")) cfg.use_ros = 1;
         else if (!strcmp(argv[i], "--json")) json = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (argv[i][0] == '-' && argv[i][1] == '-' && !bad)
             return cli_usage_error("agent", "unknown flag '%s'", argv[i]);
         else if (!bad) {
@@ -166,7 +168,7 @@ int cmd_agent(int argc, char **argv)
     if (!known) return cli_usage_error("agent", "--llm-preset '%s': expected openai, llama.cpp, ollama or vllm", cfg.llm.preset);
     sp_error merr = {0};
     if (cfg.out_dir && sp_mkdirs(cfg.out_dir, &merr)) return cli_fail("agent", &merr);
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     cfg.log = &log;
     sp_error err = {0};
     sp_agent_session *s = NULL;

@@ -1,6 +1,8 @@
 /* semsplat align: puts a COLMAP-frame splat into the world (odometry) frame, from known camera
  * positions (a robust similarity, >= 4 matches, the fit written as JSON), a given 4x4 transform,
- * or the detected floor plane (z up, floor at z = 0), and writes the transformed splat. */
+ * or the detected floor plane (z up, floor at z = 0). With --model it writes DIR/frame.json
+ * (source "align"), which the query engine applies to splat and cameras; --out writes a
+ * transformed copy of the splat. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,7 +14,7 @@
 
 static void help(void)
 {
-    printf("usage: semsplat align (--splat IN.ply | --model DIR) --out OUT.ply\n"
+    printf("usage: semsplat align (--splat IN.ply --out OUT.ply | --model DIR [--out OUT.ply])\n"
            "                      (--matches FILE --colmap DIR | --transform FILE | --floor [--colmap DIR])\n"
            "                      [--no-scale] [--inlier-m D] [--report FILE]\n\n"
            "  --matches FILE   lines 'IMAGE_NAME x y z' (that camera's world position; needs\n"
@@ -22,10 +24,13 @@ static void help(void)
            "                   names the outlying images, and refuses when fewer than half agree.\n"
            "  --inlier-m D     inlier bound in world units (default: 4.03 x the noise scale\n"
            "                   estimated from the median residual)\n"
-           "  --report FILE    the fit as JSON (default: OUT with .ply replaced by .align.json)\n"
+           "  --report FILE    the fit as JSON (default: OUT with .ply replaced by .align.json;\n"
+           "                   with --model it is also under \"fit\" in DIR/frame.json)\n"
            "  --transform FILE 12 or 16 numbers: a row-major 3x4 / 4x4 similarity.\n"
            "  --floor          RANSAC floor plane on the lowest Gaussians: z up, floor at z=0\n"
-           "                   (uses --colmap cameras for the rough up direction when given).\n");
+           "                   (uses --colmap cameras for the rough up direction when given).\n"
+           "  --model DIR      writes DIR/frame.json (world_from_model, source align); splat.ply\n"
+           "                   stays as it is and queries report world positions.\n");
 }
 
 static int read_transform(const char *path, double M[16], sp_error *err)
@@ -39,6 +44,21 @@ static int read_transform(const char *path, double M[16], sp_error *err)
     if (n == 12) M[12] = 0, M[13] = 0, M[14] = 0, M[15] = 1;
     else if (n != 16) return sp_error_set(err, SP_E_FORMAT, "%s: %d numbers (need 12 or 16)", path, n);
     return 0;
+}
+
+/* The model folder's frame: the fitted similarity as world_from_model (metres, z up). */
+static int write_frame(const char *model, const double M[16], double rms, const char *how,
+                       const char *fit_json, sp_error *err)
+{
+    sp_frame f;
+    sp_frame_init(&f, "align");
+    memcpy(f.world_from_model, M, sizeof f.world_from_model);
+    f.residual_m = rms;
+    snprintf(f.note, sizeof f.note, "semsplat align --%s", how);
+    if (!strcmp(how, "floor")) snprintf(f.units, sizeof f.units, "unknown"); /* no scale from a plane */
+    char path[2100];
+    snprintf(path, sizeof path, "%s/frame.json", model);
+    return sp_frame_write_fit(path, &f, fit_json, err);
 }
 
 int cmd_align(int argc, char **argv)
@@ -68,7 +88,7 @@ int cmd_align(int argc, char **argv)
     if (splat) snprintf(in, sizeof in, "%s", splat);
     else if (model) snprintf(in, sizeof in, "%s/splat.ply", model);
     else return cli_usage_error("align", "--splat IN.ply or --model DIR is required");
-    if (!out) return cli_usage_error("align", "--out OUT.ply is required");
+    if (!out && !model) return cli_usage_error("align", "--out OUT.ply is required with --splat");
     if (!!matches + !!tfile + floor_ != 1)
         return cli_usage_error("align", "give exactly one of --matches, --transform, --floor");
     sp_error err = {0};
@@ -103,18 +123,23 @@ int cmd_align(int argc, char **argv)
         if (!rc) rc = sp_detect_floor(&s, cams, nc, M, n3, &inl, &err);
         if (!rc) printf("floor normal (%.4f, %.4f, %.4f), %.1f%% of low Gaussians on it\n", n3[0], n3[1], n3[2], 100 * inl);
     }
-    if (!rc) rc = sp_splat_transform(&s, M, &err);
-    if (!rc) rc = sp_ply_write_splat(out, &s, &err);
-    size_t stem = strlen(out) > 4 && !strcmp(out + strlen(out) - 4, ".ply") ? strlen(out) - 4 : strlen(out);
+    if (!rc && model)
+        rc = write_frame(model, M, matches ? fit.rms_inliers : -1, matches ? "matches" : tfile ? "transform" : "floor",
+                         json, &err);
+    if (!rc && out) rc = sp_splat_transform(&s, M, &err);
+    if (!rc && out) rc = sp_ply_write_splat(out, &s, &err);
+    size_t stem = out && strlen(out) > 4 && !strcmp(out + strlen(out) - 4, ".ply") ? strlen(out) - 4 : out ? strlen(out) : 0;
     snprintf(rpath, sizeof rpath, "%s", report ? report : "");
-    if (!report) snprintf(rpath, sizeof rpath, "%.*s.align.json", (int)stem, out);
-    if (!rc && json) rc = sp_write_file_atomic(rpath, json, strlen(json), &err);
+    if (!report && out) snprintf(rpath, sizeof rpath, "%.*s.align.json", (int)stem, out);
+    int write_report = report || out; /* with --model only, the fit lives in frame.json */
+    if (!rc && json && write_report) rc = sp_write_file_atomic(rpath, json, strlen(json), &err);
     if (!rc) {
         printf("transform (row-major 4x4):\n");
         for (int r = 0; r < 4; r++)
             printf("  %12.6f %12.6f %12.6f %12.6f\n", M[r * 4], M[r * 4 + 1], M[r * 4 + 2], M[r * 4 + 3]);
-        printf("wrote %s (%zu Gaussians)\n", out, s.n);
-        if (json) printf("wrote %s (the fit)\n", rpath);
+        if (model) printf("wrote %s/frame.json (source align)\n", model);
+        if (out) printf("wrote %s (%zu Gaussians)\n", out, s.n);
+        if (json && write_report) printf("wrote %s (the fit)\n", rpath);
     }
     free(cams), free(json);
     sp_align_fit_free(&fit);

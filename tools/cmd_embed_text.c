@@ -10,7 +10,7 @@
 static void help(void)
 {
     printf("usage: semsplat embed-text [--clip MODEL.safetensors] [--config config.json]\n"
-           "                           [--full | --json] [--device cpu|cuda|auto] TEXT...\n\n"
+           "                           [--full | --json] [--device cpu|cuda|auto] [--threads N] TEXT...\n\n"
            "Prints each text's L2-normalised embedding: its dimension, norm and first values\n"
            "(--full: all values, --json: one JSON object per line). Without --clip it prints the\n"
            "deterministic label embedding used for label features (512-D, not CLIP).\n");
@@ -18,15 +18,18 @@ static void help(void)
 
 int cmd_embed_text(int argc, char **argv)
 {
-    const char *weights = NULL, *config = NULL, *device = "cpu", *v;
+    const char *weights = NULL, *config = NULL, *v;
     const char **texts = calloc((size_t)argc, sizeof *texts);
-    int n = 0, full = 0, json = 0, bad = 0;
+    cli_common c = cli_common_default();
+    c.device = SP_DEVICE_CPU;
+    int n = 0, full = 0, json = 0, bad = 0, r;
     if (!texts) return 1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return free(texts), help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--clip", &bad))) weights = v;
+        if ((r = cli_common_flag("embed-text", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return free(texts), 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--clip", &bad))) weights = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--config", &bad))) config = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
         else if (!strcmp(argv[i], "--full")) full = 1;
         else if (!strcmp(argv[i], "--json")) json = 1;
         else if (!strcmp(argv[i], "--")) { while (++i < argc) texts[n++] = argv[i]; }
@@ -40,10 +43,8 @@ int cmd_embed_text(int argc, char **argv)
     sp_clip *clip = NULL;
     int dim = 512, rc = 0;
     if (weights) {
-        if (strcmp(device, "cpu") && strcmp(device, "cuda") && strcmp(device, "auto"))
-            return free(texts), cli_usage_error("embed-text", "--device '%s': expected cpu, cuda or auto", device);
-        sp_device_kind kind = !strcmp(device, "cuda") ? SP_DEVICE_CUDA : !strcmp(device, "auto") ? SP_DEVICE_AUTO : SP_DEVICE_CPU;
-        if ((rc = sp_device_create(&dev, kind, 0, &err)) || (rc = sp_clip_load(&clip, weights, config, dev, &err))) {
+        if ((rc = sp_device_create(&dev, c.device, (int)c.threads, &err)) ||
+            (rc = sp_clip_load(&clip, weights, config, dev, &err))) {
             sp_device_free(dev);
             free(texts);
             return cli_fail("embed-text", &err);
@@ -66,9 +67,9 @@ int cmd_embed_text(int argc, char **argv)
                 else if ((unsigned char)*p < 0x20) printf("\\u%04x", *p);
                 else putchar(*p);
             }
-            printf("\", \"source\": \"%s\", \"dim\": %d, \"embedding\": [", clip ? "clip" : "hash", dim);
+            printf("\", \"encoder\": \"%s\", \"dim\": %d, \"embedding\": [", clip ? "clip" : "exact", dim);
         } else {
-            printf("\"%s\"  source %s  dim %d  norm %.6f  values", texts[i], clip ? "clip" : "hash (no --clip)", dim, sqrt(norm));
+            printf("\"%s\"  encoder %s  dim %d  norm %.6f  values", texts[i], clip ? "clip" : "exact (hashed name, no --clip)", dim, sqrt(norm));
         }
         for (int k = 0; k < show; k++) printf(json ? "%s%.7g" : "%s%.6f", json ? (k ? ", " : "") : " ", x[k]);
         printf(json ? "]}\n" : (show < dim ? " ...\n" : "\n"));

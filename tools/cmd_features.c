@@ -41,12 +41,15 @@ static int parse_scales(const char *s, sp_clip_dense_opts *d)
 int cmd_features(int argc, char **argv)
 {
     sp_features_opts o = sp_features_opts_default();
-    const char *device = "auto", *v;
-    long threads = 0, num;
-    int quiet = 0, bad = 0;
+    cli_common c = cli_common_default();
+    const char *v;
+    long num;
+    int bad = 0, r;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) o.colmap_dir = v;
+        if ((r = cli_common_flag("features", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) o.colmap_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) o.out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--source", &bad))) o.source = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--clip", &bad))) o.clip_weights = v;
@@ -54,7 +57,6 @@ int cmd_features(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--maps", &bad))) o.maps_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--labels", &bad))) o.labels_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) o.images_dir = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--head", &bad))) {
             if (!strcmp(v, "clearclip")) o.dense.head = SP_CLIP_HEAD_CLEARCLIP;
             else if (!strcmp(v, "maskclip")) o.dense.head = SP_CLIP_HEAD_MASKCLIP;
@@ -82,28 +84,21 @@ int cmd_features(int argc, char **argv)
         } else if ((v = cli_flag_value(argc, argv, &i, "--batch", &bad))) {
             if (cli_parse_int("features", "--batch", v, &num)) return 2;
             o.dense.batch = (int)num;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("features", "--threads", v, &threads)) return 2;
         } else if (!strcmp(argv[i], "--fp16")) o.fp16 = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("features", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
     if (!o.colmap_dir || !o.out_dir) return cli_usage_error("features", "--colmap and --out are required");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("features", "--device: '%s' is not cpu, cuda or auto", device);
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     sp_device *dev = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("features", &err);
+    if (cli_device_open("features", &c, &dev)) return 1;
     o.dev = dev;
     o.log = &log;
     double t0 = sp_time_now();
     int rc = sp_features_extract(&o, &err);
     double dt = sp_time_now() - t0;
-    if (!rc && !quiet)
+    if (!rc && !c.quiet)
         printf("features  %.2f  s  (source %s, dim %d, %s, out %s)\n", dt, o.source, o.dim,
                sp_device_name(dev), o.out_dir);
     sp_device_free(dev);

@@ -64,22 +64,20 @@ static void print_answer(const sp_lex_answer *a, const sp_lex_vocab *v)
 int cmd_lexical(int argc, char **argv)
 {
     const char *model = NULL, *labels = NULL, *classes = NULL, *wordnet = NULL, *regions = NULL;
-    const char *device = "auto", *v, *texts[256];
-    int n_texts = 0, json = 0, explain = 0, quiet = 0, bad = 0;
-    long threads = 0;
+    const char *v, *texts[256];
+    int n_texts = 0, json = 0, explain = 0, bad = 0, r;
+    cli_common c = cli_common_default();
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
+        if ((r = cli_common_flag("lexical", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--labels", &bad))) labels = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--classes", &bad))) classes = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--wordnet", &bad))) wordnet = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--regions", &bad))) regions = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("lexical", "--threads", v, &threads)) return 2;
-        } else if (!strcmp(argv[i], "--json")) json = 1;
+        else if (!strcmp(argv[i], "--json")) json = 1;
         else if (!strcmp(argv[i], "--explain")) explain = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (argv[i][0] == '-' && argv[i][1] == '-' && !bad)
             return cli_usage_error("lexical", "unknown flag '%s'", argv[i]);
         else if (!bad) {
@@ -91,11 +89,8 @@ int cmd_lexical(int argc, char **argv)
     if (!!model + !!labels + !!classes != 1)
         return cli_usage_error("lexical", "give exactly one of --model DIR, --labels FILE, --classes LIST");
     if (n_texts == 0) return cli_usage_error("lexical", "give the text to match, e.g. \"something to sit on\"");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("lexical", "--device: '%s' is not cpu, cuda or auto", device);
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
+    sp_log log = cli_log(&c, SP_LOG_WARN);
     sp_lexicon *lx = NULL;
     sp_lex_vocab *voc = NULL;
     sp_device *dev = NULL;
@@ -113,7 +108,7 @@ int cmd_lexical(int argc, char **argv)
         rc = sp_lex_vocab_from_labels(&voc, lx, labels, regions, &err);
     } else if (!rc) {
         rc = sp_lex_vocab_for_model(&voc, lx, model, regions, &err);
-        if (!rc) rc = sp_device_create(&dev, kind, (int)threads, &err);
+        if (!rc) rc = sp_device_create(&dev, c.device, (int)c.threads, &err);
         if (!rc) rc = sp_query_engine_open(&e, model, NULL, dev, &log, &err);
     }
     if (!rc && json && n_texts > 1) printf("[\n");

@@ -4,7 +4,6 @@
 #include <string.h>
 
 #include "cli.h"
-#include "semsplat/render.h"
 #include "semsplat/semantic.h"
 
 static void help(void)
@@ -19,30 +18,24 @@ static void help(void)
 
 int cmd_lift(int argc, char **argv)
 {
-    const char *model = NULL, *features = NULL, *colmap = NULL, *device = "auto", *v;
-    long threads = 0;
-    int quiet = 0, bad = 0;
+    const char *model = NULL, *features = NULL, *colmap = NULL, *v;
+    cli_common c = cli_common_default();
+    int bad = 0, r;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
+        if ((r = cli_common_flag("lift", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--features", &bad))) features = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("lift", "--threads", v, &threads)) return 2;
-        } else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("lift", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
     if (!model || !features) return cli_usage_error("lift", "--model and --features are required");
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("lift", "--device: '%s' is not cpu, cuda or auto", device);
-    sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
     sp_device *dev = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("lift", &err);
+    if (cli_device_open("lift", &c, &dev)) return 1;
+    sp_error err = {0};
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     double t0 = sp_time_now();
     int rc = sp_semantic_lift_model(model, features, colmap, dev, &log, &err);
     double dt = sp_time_now() - t0;

@@ -23,7 +23,10 @@ static void help(void)
            "                        (default 4; up to 3N while under 97%% of the relevant set is seen)\n"
            "  --negatives a,b,c     canonical negatives (default %s)\n"
            "  --min-confidence C    raw cosine below which nothing is found (default 0.2)\n"
-           "  --device cpu|cuda|auto, --threads N, --quiet\n",
+           "  --device cpu|cuda|auto, --threads N, --quiet\n\n"
+           "Positions are in the model folder's frame (frame.json: world for synth captures and\n"
+           "aligned models, else COLMAP's); the output names the frame, the text encoder and the\n"
+           "feature source.\n",
            SP_SEM_DEFAULT_NEGATIVES);
 }
 
@@ -35,19 +38,29 @@ static void slug(const char *text, char *out, size_t cap)
     out[j] = 0;
 }
 
+/* Once, above the results: what produced them and which frame the positions are in. */
+static void print_provenance(const sp_query_source *s, const sp_frame *f)
+{
+    const char *note = sp_query_source_note(s);
+    printf("source: text encoder %s, features %s%s%s\n", s->encoder, s->features, note[0] ? "; " : "", note);
+    printf("frame:  %s (%s; units %s, up %s)\n", sp_frame_name(f), f->source, f->units, f->up);
+}
+
 int cmd_query(int argc, char **argv)
 {
-    const char *model = NULL, *heatmap = NULL, *heatmap_dir = NULL, *device = "auto", *v;
+    const char *model = NULL, *heatmap = NULL, *heatmap_dir = NULL, *v;
     const char *texts[256];
-    int n_texts = 0, json = 0, quiet = 0, bad = 0;
-    long threads = 0, view = -1;
+    int n_texts = 0, json = 0, bad = 0, r;
+    long view = -1;
+    cli_common c = cli_common_default();
     sp_query_opts opts = sp_query_opts_default();
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
+        if ((r = cli_common_flag("query", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--heatmap-dir", &bad))) heatmap_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--heatmap", &bad))) heatmap = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--negatives", &bad)))
             snprintf(opts.negatives, sizeof opts.negatives, "%s", v);
         else if ((v = cli_flag_value(argc, argv, &i, "--method", &bad))) {
@@ -61,14 +74,11 @@ int cmd_query(int argc, char **argv)
             opts.n_views = (int)nv;
         } else if ((v = cli_flag_value(argc, argv, &i, "--view", &bad))) {
             if (cli_parse_int("query", "--view", v, &view)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("query", "--threads", v, &threads)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--min-confidence", &bad))) {
             double c;
             if (cli_parse_float("query", "--min-confidence", v, &c)) return 2;
             opts.min_confidence = (float)c;
         } else if (!strcmp(argv[i], "--json")) json = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (argv[i][0] == '-' && argv[i][1] == '-' && !bad)
             return cli_usage_error("query", "unknown flag '%s'", argv[i]);
         else if (!bad) {
@@ -83,24 +93,21 @@ int cmd_query(int argc, char **argv)
     if (heatmap && heatmap_dir) return cli_usage_error("query", "--heatmap and --heatmap-dir exclude each other");
     opts.heatmap = heatmap || heatmap_dir;
     opts.heatmap_view = (int)view;
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("query", "--device: '%s' is not cpu, cuda or auto", device);
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_WARN, quiet);
+    sp_log log = cli_log(&c, SP_LOG_WARN);
     sp_device *dev = NULL;
     sp_query_engine *e = NULL;
-    if (sp_device_create(&dev, kind, (int)threads, &err)) return cli_fail("query", &err);
+    if (cli_device_open("query", &c, &dev)) return 1;
     if (sp_query_engine_open(&e, model, &opts, dev, &log, &err)) {
         sp_device_free(dev);
         return cli_fail("query", &err);
     }
     int rc = 0;
     if (json && n_texts > 1) printf("[\n");
+    if (!json) print_provenance(sp_query_engine_source(e), sp_query_engine_frame(e));
     for (int q = 0; q < n_texts && !rc; q++) {
         sp_query_result res;
-        if (sp_query_engine_query(e, texts[q], &res, &err)) {
+        if (sp_query_engine_query(e, texts[q], &opts, &res, &err)) {
             rc = cli_fail("query", &err);
             break;
         }

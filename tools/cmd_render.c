@@ -24,51 +24,6 @@ static void usage(FILE *f)
             "and writes one PNG per image into DIR.\n");
 }
 
-/* Turbo colour map (Google, 2019), polynomial fit, t in [0, 1]. */
-static void turbo(float t, float rgb[3])
-{
-    t = t < 0.f ? 0.f : (t > 1.f ? 1.f : t);
-    float t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t;
-    rgb[0] = 0.13572138f + 4.61539260f * t - 42.66032258f * t2 + 132.13108234f * t3 -
-             152.94239396f * t4 + 59.28637943f * t5;
-    rgb[1] = 0.09140261f + 2.19418839f * t + 4.84296658f * t2 - 14.18503333f * t3 +
-             4.27729857f * t4 + 2.82956604f * t5;
-    rgb[2] = 0.10667330f + 12.64194608f * t - 60.58204836f * t2 + 110.36276771f * t3 -
-             89.90310912f * t4 + 27.34824973f * t5;
-    for (int c = 0; c < 3; c++) rgb[c] = rgb[c] < 0.f ? 0.f : (rgb[c] > 1.f ? 1.f : rgb[c]);
-}
-
-static int cmp_float(const void *a, const void *b)
-{
-    float x = *(const float *)a, y = *(const float *)b;
-    return (x > y) - (x < y);
-}
-
-/* depth [n] -> rgb [n][3]: turbo between the 2nd and 98th percentile of covered pixels, near in
- * red and far in blue; black where alpha < 0.5 (nothing solid drawn). */
-static void depth_to_rgb(const float *depth, const float *alpha, size_t n, float *rgb)
-{
-    float *vals = malloc((n ? n : 1) * sizeof(float));
-    size_t m = 0;
-    for (size_t i = 0; i < n; i++)
-        if (alpha[i] >= 0.5f && depth[i] > 0.f) vals[m++] = depth[i];
-    float lo = 0.f, hi = 1.f;
-    if (m > 0) {
-        qsort(vals, m, sizeof(float), cmp_float);
-        lo = vals[(size_t)(0.02 * (m - 1))];
-        hi = vals[(size_t)(0.98 * (m - 1))];
-        if (!(hi > lo)) hi = lo + 1e-3f;
-    }
-    for (size_t i = 0; i < n; i++) {
-        if (alpha[i] < 0.5f || !(depth[i] > 0.f)) {
-            rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = 0.f;
-            continue;
-        }
-        turbo(1.f - (depth[i] - lo) / (hi - lo), rgb + 3 * i); /* near = red, far = blue */
-    }
-    free(vals);
-}
-
 static void output_path(char *out, size_t cap, const char *dir, const char *image_name,
                         const char *suffix)
 {
@@ -87,24 +42,24 @@ int cmd_render(int argc, char **argv)
 {
     const char *cmd = "render";
     const char *splat_path = NULL, *colmap_dir = NULL, *image_name = NULL, *out_dir = NULL;
-    const char *channels = "rgb", *device = "auto";
-    int all = 0, quiet = 0, bad = 0;
-    long threads = 0, downscale = 1;
+    const char *channels = "rgb";
+    cli_common cf = cli_common_default();
+    int all = 0, bad = 0, took;
+    long downscale = 1;
     float bg[3] = {0.f, 0.f, 0.f};
     for (int i = 1; i < argc; i++) {
         const char *v;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             usage(stdout);
             return 0;
+        } else if ((took = cli_common_flag(cmd, argc, argv, &i, CLI_ALL, &cf))) {
+            if (took == 2) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--splat", &bad))) splat_path = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--image", &bad))) image_name = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--channels", &bad))) channels = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int(cmd, "--threads", v, &threads)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--downscale", &bad))) {
+        else if ((v = cli_flag_value(argc, argv, &i, "--downscale", &bad))) {
             if (cli_parse_int(cmd, "--downscale", v, &downscale)) return 2;
             if (downscale < 1 || downscale > 64)
                 return cli_usage_error(cmd, "--downscale %ld: must be 1..64", downscale);
@@ -114,7 +69,6 @@ int cmd_render(int argc, char **argv)
                 !(bg[1] >= 0 && bg[1] <= 1) || !(bg[2] >= 0 && bg[2] <= 1))
                 return cli_usage_error(cmd, "--background '%s': expected R,G,B in [0,1]", v);
         } else if (!strcmp(argv[i], "--all")) all = 1;
-        else if (!strcmp(argv[i], "--quiet") || !strcmp(argv[i], "-q")) quiet = 1;
         else if (!bad)
             return cli_usage_error(cmd, "unknown argument '%s'", argv[i]);
         if (bad) return 2;
@@ -125,12 +79,8 @@ int cmd_render(int argc, char **argv)
     if (!all == !image_name) return cli_usage_error(cmd, "give exactly one of --image NAME and --all");
     int mode = !strcmp(channels, "rgb") ? 0 : !strcmp(channels, "depth") ? 1 : !strcmp(channels, "alpha") ? 2 : -1;
     if (mode < 0) return cli_usage_error(cmd, "--channels '%s': expected rgb, depth or alpha", channels);
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error(cmd, "--device '%s': expected cpu, cuda or auto", device);
 
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&cf, SP_LOG_INFO);
     sp_error err = {0};
     sp_splat splat = {0};
     sp_colmap_model model = {0};
@@ -140,7 +90,7 @@ int cmd_render(int argc, char **argv)
     float *buf = NULL, *aux = NULL, *rgb8 = NULL;
     int rc = 1;
     if (sp_ply_read_splat(splat_path, &splat, &err) || sp_colmap_read(colmap_dir, &model, &err) ||
-        sp_mkdirs(out_dir, &err) || sp_device_create(&dev, kind, (int)threads, &err) ||
+        sp_mkdirs(out_dir, &err) || sp_device_create(&dev, cf.device, (int)cf.threads, &err) ||
         sp_raster_create(&r, dev, &err) ||
         sp_scene_create(&scene, dev, &splat, mode == 0 ? SP_SCENE_RGB : 0, &err)) {
         cli_fail(cmd, &err);
@@ -199,8 +149,8 @@ int cmd_render(int argc, char **argv)
         output_path(path, sizeof path, out_dir, model.images[k].name, suffix);
         int wrc;
         if (mode == 1) {
-            depth_to_rgb(buf, aux, npix, rgb8);
-            wrc = sp_write_png_f32(path, rgb8, cam.width, cam.height, 3, &err);
+            wrc = sp_depth_colormap(buf, aux, npix, rgb8, &err);
+            if (!wrc) wrc = sp_write_png_f32(path, rgb8, cam.width, cam.height, 3, &err);
         } else {
             wrc = sp_write_png_f32(path, buf, cam.width, cam.height, mode == 0 ? 3 : 1, &err);
         }

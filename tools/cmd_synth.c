@@ -30,12 +30,15 @@ static void help(void)
 int cmd_synth(int argc, char **argv)
 {
     const char *world = NULL, *out = NULL, *mpath = NULL, *v;
-    long views = 150, ss = 4, points = 30000, seed = 1, threads = 0;
-    int w = 640, h = 480, quiet = 0, skip = 0, bad = 0;
+    long views = 150, ss = 4, points = 30000, seed = 1;
+    int w = 640, h = 480, skip = 0, bad = 0, r;
+    cli_common c = cli_common_default();
     double fov = 70, hmin = 0.3, hmax = 1.5, psf = 0.5;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
+        if ((r = cli_common_flag("synth", argc, argv, &i, CLI_THREADS | CLI_QUIET, &c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--world", &bad))) world = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--model-path", &bad))) mpath = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--views", &bad))) {
@@ -56,10 +59,7 @@ int cmd_synth(int argc, char **argv)
             if (cli_parse_int("synth", "--points", v, &points)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--seed", &bad))) {
             if (cli_parse_int("synth", "--seed", v, &seed)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--threads", &bad))) {
-            if (cli_parse_int("synth", "--threads", v, &threads)) return 2;
         } else if (!strcmp(argv[i], "--skip-missing")) skip = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
         else if (!bad) return cli_usage_error("synth", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
@@ -70,7 +70,7 @@ int cmd_synth(int argc, char **argv)
     if (!(psf >= 0 && psf <= 4)) return cli_usage_error("synth", "--blur-px %g: expected 0..4", psf);
     if (points < 1) return cli_usage_error("synth", "--points %ld: expected at least 1", points);
     sp_error err = {0};
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     sp_synth_load_opts lo = {.model_path = mpath, .skip_missing = skip, .log = &log};
     sp_world wd;
     double t0 = sp_time_now();
@@ -88,12 +88,12 @@ int cmd_synth(int argc, char **argv)
     sp_synth_capture_opts co = {.n_views = (int)views, .width = w, .height = h, .fov_deg = (float)fov,
                                 .min_height_m = (float)hmin, .max_height_m = (float)hmax,
                                 .supersample = (int)ss, .psf_px = psf > 0 ? (float)psf : -1.f, .n_points = (int)points, .seed = (unsigned)seed,
-                                .n_threads = (int)threads, .log = &log};
+                                .n_threads = (int)c.threads, .log = &log};
     double t1 = sp_time_now();
     int rc = sp_synth_capture(&wd, out, &co, &err);
     sp_world_free(&wd);
     if (rc) return cli_fail("synth", &err);
-    if (!quiet)
+    if (!c.quiet)
         printf("synth  %.2f  s  (%ld views %dx%d, %s -> %s)\n", sp_time_now() - t1, views, w, h, world, out);
     return 0;
 }

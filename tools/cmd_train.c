@@ -1,15 +1,11 @@
-/* semsplat train: fits a Gaussian splat to a COLMAP capture (gsplat simple_trainer defaults) and
- * writes OUT/splat.ply (3DGS layout), OUT/train.json (settings + held-out psnr/ssim) and
- * checkpoints in OUT/checkpoints/. */
+/* semsplat train: fits a Gaussian splat to a COLMAP capture (gsplat simple_trainer defaults) into
+ * a model folder (sp_train_model: splat.ply, train.json, frame.json, checkpoints/). */
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
-#include "semsplat/io.h"
-#include "semsplat/render.h"
 #include "semsplat/train.h"
 
 static void help(void)
@@ -17,7 +13,8 @@ static void help(void)
     printf(
         "usage: semsplat train --colmap DIR --out DIR [flags]\n\n"
         "Trains a 3D Gaussian splat from a COLMAP capture (capture root with sparse/0 and\n"
-        "images/, or the model folder itself). Writes OUT/splat.ply, OUT/train.json and\n"
+        "images/, or the model folder itself). Writes OUT/splat.ply, OUT/train.json,\n"
+        "OUT/frame.json (the capture's frame: world for synth captures, else colmap) and\n"
         "OUT/checkpoints/checkpoint.bin. Every 8th image (sorted by name) is held out.\n\n"
         "  --images DIR          image folder (default COLMAP/images)\n"
         "  --steps N             optimisation steps (default 30000); density-control and SH\n"
@@ -43,35 +40,37 @@ static void help(void)
         "  --quiet / --verbose\n");
 }
 
+/* Flags not given keep the schedule's defaults; any value given goes to the library's range checks
+ * (a bad one is an error naming it, never silently the default). */
+#define UNSET LONG_MIN
+
+typedef struct {
+    long steps, downscale, init_points, sh_degree, sh_interval, max_g, test_every, eval_every;
+    long ck_every, seed, refine_start, refine_stop, refine_every, reset_every;
+    double grow;
+    const char *colmap, *images, *out, *init, *init_ply, *resume;
+    int want_resume, no_densify, random_bg;
+} train_flags;
+
 #define INT_FLAG(name, var)                                                                        \
     else if ((v = cli_flag_value(argc, argv, &i, name, &bad))) {                                   \
-        if (cli_parse_int("train", name, v, &tmp)) return 2;                                       \
-        var = tmp;                                                                                 \
+        if (cli_parse_int("train", name, v, &f->var)) return 2;                                    \
     }
 
-int cmd_train(int argc, char **argv)
+static int parse(int argc, char **argv, train_flags *f, cli_common *c)
 {
-    const char *colmap = NULL, *images = NULL, *out = NULL, *device = "auto", *init = "points";
-    const char *init_ply = NULL, *resume = NULL, *v;
-    /* UNSET: flags not given keep the schedule's defaults; any value given goes to the library's
-     * range checks (a bad one is an error naming it, never silently the default) */
-    const long UNSET = LONG_MIN;
-    long tmp, threads = 0, steps = 30000, downscale = 1, init_points = 100000, sh_degree = 3, sh_interval = UNSET;
-    long max_g = 0, test_every = 8, eval_every = 0, ck_every = 1000, seed = 42;
-    long refine_start = UNSET, refine_stop = UNSET, refine_every = UNSET, reset_every = UNSET;
-    double grow = NAN;
-    int quiet = 0, verbose = 0, bad = 0, no_densify = 0, random_bg = 0, want_resume = 0;
+    int bad = 0, r;
+    const char *v;
     for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) colmap = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) images = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) out = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--device", &bad))) device = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--init-ply", &bad))) init_ply = v;
-        else if ((v = cli_flag_value(argc, argv, &i, "--init-points", &bad))) {
-            if (cli_parse_int("train", "--init-points", v, &init_points)) return 2;
-        } else if ((v = cli_flag_value(argc, argv, &i, "--init", &bad))) init = v;
-        INT_FLAG("--threads", threads)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), -1;
+        if ((r = cli_common_flag("train", argc, argv, &i, CLI_ALL, c))) {
+            if (r == 2) return 2;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--colmap", &bad))) f->colmap = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--images", &bad))) f->images = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) f->out = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--init-ply", &bad))) f->init_ply = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--init", &bad))) f->init = v;
+        INT_FLAG("--init-points", init_points)
         INT_FLAG("--steps", steps)
         INT_FLAG("--downscale", downscale)
         INT_FLAG("--sh-degree", sh_degree)
@@ -86,98 +85,79 @@ int cmd_train(int argc, char **argv)
         INT_FLAG("--refine-every", refine_every)
         INT_FLAG("--reset-every", reset_every)
         else if ((v = cli_flag_value(argc, argv, &i, "--grow-grad2d", &bad))) {
-            if (cli_parse_float("train", "--grow-grad2d", v, &grow)) return 2;
+            if (cli_parse_float("train", "--grow-grad2d", v, &f->grow)) return 2;
         } else if (!strcmp(argv[i], "--resume")) {
-            want_resume = 1;
-            if (i + 1 < argc && strncmp(argv[i + 1], "--", 2) != 0) resume = argv[++i];
-        } else if (!strcmp(argv[i], "--no-densify")) no_densify = 1;
-        else if (!strcmp(argv[i], "--random-bg")) random_bg = 1;
-        else if (!strcmp(argv[i], "--quiet")) quiet = 1;
-        else if (!strcmp(argv[i], "--verbose")) verbose = 1;
+            f->want_resume = 1;
+            if (i + 1 < argc && strncmp(argv[i + 1], "--", 2) != 0) f->resume = argv[++i];
+        } else if (!strcmp(argv[i], "--no-densify")) f->no_densify = 1;
+        else if (!strcmp(argv[i], "--random-bg")) f->random_bg = 1;
         else if (!bad) return cli_usage_error("train", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
-    if (!colmap || !out) return cli_usage_error("train", "--colmap and --out are required");
-    if (steps < 1) return cli_usage_error("train", "--steps must be >= 1 (got %ld)", steps);
-    if (downscale < 1) return cli_usage_error("train", "--downscale must be >= 1 (got %ld)", downscale);
-    if (sh_degree < 0 || sh_degree > 3) return cli_usage_error("train", "--sh-degree must be 0..3");
-    if (sh_interval != UNSET && sh_interval < 1) return cli_usage_error("train", "--sh-interval must be positive");
-    if (max_g < 0) return cli_usage_error("train", "--max-gaussians must be >= 0");
-    if (strcmp(init, "points") && strcmp(init, "random"))
-        return cli_usage_error("train", "--init: '%s' is not points or random", init);
-    sp_device_kind kind = !strcmp(device, "cpu") ? SP_DEVICE_CPU
-                          : !strcmp(device, "cuda") ? SP_DEVICE_CUDA
-                          : !strcmp(device, "auto") ? SP_DEVICE_AUTO : (sp_device_kind)-1;
-    if ((int)kind < 0) return cli_usage_error("train", "--device: '%s' is not cpu, cuda or auto", device);
+    if (!f->colmap || !f->out) return cli_usage_error("train", "--colmap and --out are required");
+    if (f->steps < 1) return cli_usage_error("train", "--steps must be >= 1 (got %ld)", f->steps);
+    if (f->downscale < 1) return cli_usage_error("train", "--downscale must be >= 1 (got %ld)", f->downscale);
+    if (f->sh_degree < 0 || f->sh_degree > 3) return cli_usage_error("train", "--sh-degree must be 0..3");
+    if (f->sh_interval != UNSET && f->sh_interval < 1) return cli_usage_error("train", "--sh-interval must be positive");
+    if (f->ck_every < 1) return cli_usage_error("train", "--checkpoint-every must be >= 1 (got %ld)", f->ck_every);
+    if (f->max_g < 0) return cli_usage_error("train", "--max-gaussians must be >= 0");
+    if (f->init_points < 1) return cli_usage_error("train", "--init-points must be >= 1");
+    if (strcmp(f->init, "points") && strcmp(f->init, "random"))
+        return cli_usage_error("train", "--init: '%s' is not points or random", f->init);
+    return 0;
+}
 
-    sp_error err = {0};
-    sp_log log = sp_log_stderr(verbose ? SP_LOG_DEBUG : SP_LOG_INFO, quiet);
-    char ckdir[4096], ckfile[4200], plyp[4200], jsonp[4200];
-    snprintf(ckdir, sizeof ckdir, "%s/checkpoints", out);
-    snprintf(ckfile, sizeof ckfile, "%s/checkpoint.bin", ckdir);
-    snprintf(plyp, sizeof plyp, "%s/splat.ply", out);
-    snprintf(jsonp, sizeof jsonp, "%s/train.json", out);
-    if (want_resume && !resume) resume = ckfile;
-    if (resume && !sp_file_exists(resume)) {
-        sp_error_set(&err, SP_E_NOTFOUND, "--resume: %s does not exist", resume);
-        return cli_fail("train", &err);
-    }
-    if (sp_mkdirs(out, &err)) return cli_fail("train", &err);
+static sp_train_model_opts to_opts(const train_flags *f, char *resume, size_t cap)
+{
+    sp_train_model_opts m = sp_train_model_opts_default((int)f->steps);
+    sp_train_options *o = &m.train;
+    m.colmap_dir = f->colmap, m.images_dir = f->images, m.out_dir = f->out;
+    m.downscale = (int)f->downscale, m.test_every = (int)f->test_every;
+    m.init = f->init_ply ? SP_TRAIN_INIT_PLY : !strcmp(f->init, "random") ? SP_TRAIN_INIT_RANDOM : SP_TRAIN_INIT_POINTS;
+    m.init_ply = f->init_ply, m.init_points = (size_t)f->init_points;
+    if (f->want_resume) snprintf(resume, cap, "%s", f->resume ? f->resume : "");
+    if (f->want_resume && !f->resume) snprintf(resume, cap, "%s/checkpoints/checkpoint.bin", f->out);
+    m.resume = f->want_resume ? resume : NULL;
+    o->sh_degree = (int)f->sh_degree;
+    if (f->sh_interval != UNSET) o->sh_degree_interval = (int)f->sh_interval;
+    o->max_gaussians = (size_t)f->max_g;
+    o->densify = !f->no_densify;
+    o->random_background = f->random_bg;
+    o->seed = (uint64_t)f->seed;
+    o->eval_every = (int)f->eval_every;
+    o->checkpoint_every = (int)f->ck_every;
+    if (f->refine_start != UNSET) o->refine_start = (int)f->refine_start;
+    if (f->refine_stop != UNSET) o->refine_stop = (int)f->refine_stop;
+    if (f->refine_every != UNSET) o->refine_every = (int)f->refine_every;
+    if (f->reset_every != UNSET) o->reset_every = (int)f->reset_every;
+    if (!isnan(f->grow)) o->grow_grad2d = (float)f->grow;
+    return m;
+}
 
-    sp_train_data d;
-    if (sp_train_data_load(&d, colmap, images, (int)downscale, (int)test_every, &err))
-        return cli_fail("train", &err);
-    sp_logf(&log, SP_LOG_INFO, "%zu views at %dx%d, %zu points, scene scale %.3f", d.n_views,
-            d.views[0].cam.width, d.views[0].cam.height, d.n_points, (double)d.scene_scale);
+int cmd_train(int argc, char **argv)
+{
+    train_flags f = {30000, 1, 100000, 3, UNSET, 0, 8, 0, 1000, 42, UNSET, UNSET, UNSET, UNSET, NAN,
+                     NULL, NULL, NULL, "points", NULL, NULL, 0, 0, 0};
+    cli_common c = cli_common_default();
+    int prc = parse(argc, argv, &f, &c);
+    if (prc) return prc < 0 ? 0 : prc;
+    char resume[4200];
+    sp_train_model_opts m = to_opts(&f, resume, sizeof resume);
     sp_device *dev = NULL;
-    sp_splat s;
-    memset(&s, 0, sizeof s);
-    int rc = sp_device_create(&dev, kind, (int)threads, &err);
-    if (!rc && !resume) {
-        if (init_ply) {
-            rc = sp_ply_read_splat(init_ply, &s, &err);
-            if (!rc && s.n == 0) rc = sp_error_set(&err, SP_E_FORMAT, "%s: the splat is empty", init_ply);
-            if (!rc) sp_logf(&log, SP_LOG_INFO, "starting from %s: %zu Gaussians", init_ply, s.n);
-        } else if (!strcmp(init, "random") || d.n_points == 0) {
-            if (d.n_points == 0 && strcmp(init, "random"))
-                sp_logf(&log, SP_LOG_WARN, "the COLMAP model has no points3D: using random init");
-            rc = sp_train_init_random(&s, &d, (size_t)init_points, 3.0f, (int)sh_degree,
-                                      (uint64_t)seed, &err);
-        } else {
-            rc = sp_train_init_from_points(&s, &d, (int)sh_degree, (uint64_t)seed, &err);
-        }
-    }
-    sp_train_options o = sp_train_options_default((int)steps);
-    o.sh_degree = (int)sh_degree;
-    if (sh_interval != UNSET) o.sh_degree_interval = (int)sh_interval;
-    o.max_gaussians = (size_t)max_g;
-    o.densify = !no_densify;
-    o.random_background = random_bg;
-    o.seed = (uint64_t)seed;
-    o.eval_every = (int)eval_every;
-    o.checkpoint_every = (int)ck_every;
-    o.checkpoint_dir = ckdir;
-    o.resume = resume;
-    if (refine_start != UNSET) o.refine_start = (int)refine_start;
-    if (refine_stop != UNSET) o.refine_stop = (int)refine_stop;
-    if (refine_every != UNSET) o.refine_every = (int)refine_every;
-    if (reset_every != UNSET) o.reset_every = (int)reset_every;
-    if (!isnan(grow)) o.grow_grad2d = (float)grow;
+    if (cli_device_open("train", &c, &dev)) return 1;
+    sp_error err = {0};
+    sp_log log = cli_log(&c, SP_LOG_INFO);
     sp_train_result res;
-    memset(&res, 0, sizeof res);
-    if (!rc) rc = sp_train_run(dev, &d, &o, &s, &res, &log, &err);
-    if (!rc) rc = sp_ply_write_splat(plyp, &s, &err);
-    if (!rc) rc = sp_train_write_json(jsonp, &o, &res, colmap, images, (int)downscale, &err);
-    if (!rc && !quiet) {
+    int rc = sp_train_model(dev, &m, &res, &log, &err);
+    sp_device_free(dev);
+    if (rc) return cli_fail("train", &err);
+    if (!c.quiet) {
         printf("train  psnr       %.3f  dB  (%s, %d views)\n", res.psnr,
                res.eval_on_train ? "training views, none held out" : "held-out", res.n_eval_views);
         printf("train  ssim       %.4f\n", res.ssim);
         printf("train  gaussians  %zu\n", res.gaussians);
         printf("train  seconds    %.1f  s  (%d steps, %s)\n", res.seconds, res.steps, res.device);
-        printf("train  wrote      %s, %s\n", plyp, jsonp);
+        printf("train  wrote      %s/splat.ply, %s/train.json, %s/frame.json\n", f.out, f.out, f.out);
     }
-    sp_splat_free(&s);
-    sp_device_free(dev);
-    sp_train_data_free(&d);
-    return rc ? cli_fail("train", &err) : 0;
+    return 0;
 }

@@ -127,7 +127,7 @@ typedef struct sp_clip_dense_opts {
     int n_scales;
     int tile;         /* tile side in model pixels (multiple of the patch size; 0: image_size) */
     int stride;       /* tile stride in model pixels (0: tile/2) */
-    int batch;        /* tiles per forward pass */
+    int batch;        /* tiles per forward pass (on the GPU a minimum: up to max(batch, 128)) */
 } sp_clip_dense_opts;
 
 /* ClearCLIP head, scale 2 (8 px per feature for ViT-B/16), tiles of image_size, stride half. */
@@ -137,7 +137,8 @@ void sp_clip_dense_grid(const sp_clip *c, const sp_clip_dense_opts *o, int width
                         int *grid_w, int *grid_h);
 /* Dense features of one RGB image [height][width][3] in [0,1] -> out [grid_h][grid_w][embed_dim]
  * (caller allocates, size from sp_clip_dense_grid), L2-normalised. Overlapping tiles are
- * averaged; several scales are resampled onto the first scale's grid and averaged. */
+ * averaged; several scales are resampled onto the first scale's grid and averaged. On the GPU
+ * every step after the upload of the image runs on the device. */
 int sp_clip_dense_features(sp_clip *c, const float *rgb, int width, int height,
                            const sp_clip_dense_opts *o, float *out, sp_error *err);
 /* Bilinear upsampling of a feature grid [gh][gw][dim] to [height][width][dim] (align_corners

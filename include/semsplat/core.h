@@ -277,6 +277,22 @@ int sp_splat_check_finite(const sp_splat *s, sp_error *err);
 static inline float sp_sigmoid(float x) { return 1.0f / (1.0f + expf(-x)); }
 static inline float sp_logit(float p) { return logf(p / (1.0f - p)); }
 
+/* ---- text ------------------------------------------------------------------------------------- */
+
+/* A growing NUL-terminated string for reports and descriptions the library returns as text.
+ * Zero-initialise; on allocation failure `failed` is set and further appends are dropped. */
+typedef struct sp_strbuf {
+    char *data;
+    size_t len, cap;
+    int failed;
+} sp_strbuf;
+
+void sp_strbuf_printf(sp_strbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* Hands the text over (caller frees with free(); "" when empty) and resets b; NULL when an
+ * append failed. */
+char *sp_strbuf_take(sp_strbuf *b);
+void sp_strbuf_free(sp_strbuf *b);
+
 /* ---- grids and distance transforms ------------------------------------------------------------ */
 
 /* A regular 2D grid of floats over the world's x-y plane (row-major [ny][nx]; cell (ix, iy)

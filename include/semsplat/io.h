@@ -195,6 +195,55 @@ const sp_tensor_info *sp_safetensors_find(const sp_safetensors *st, const char *
 /* Writes tensors (host data) as a safetensors file atomically. */
 int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t n, sp_error *err);
 
+/* ---- frames (frame.json) ---------------------------------------------------------------------- */
+
+/* Which frame a model or capture folder's coordinates are in. x_world = world_from_model x_model,
+ * where "model" coordinates are the splat as stored and the COLMAP poses of its capture.
+ *   source "synth":  a synth capture; the model frame IS the SDF world frame (identity, metres, +z up)
+ *   source "align":  `semsplat align` fitted world_from_model (metres, +z up in the world)
+ *   source "colmap": a plain reconstruction; identity, positions are in COLMAP's arbitrary frame
+ *                    (scale and up unknown) and are not world positions.
+ * File: {"format": "semsplat-frame-1", "source", "frame": "world"|"colmap", "world_from_model":
+ * 4 rows of 4 numbers (a similarity [sR t; 0 0 0 1]), "up", "units", "residual_m" (align's fit
+ * residual or null), "note", and from align --matches "fit" (the robust fit's report)}. */
+typedef struct sp_frame {
+    double world_from_model[16]; /* row-major */
+    char source[16];             /* "synth", "align", "colmap" */
+    char up[8];                  /* "+z" or "unknown" */
+    char units[16];              /* "m" or "unknown" */
+    double residual_m;           /* align: RMS of the fit in world units; < 0 = none */
+    char note[256];              /* how it was made (free text, may be empty) */
+} sp_frame;
+
+/* Identity frame of a source: synth/align get "+z" and "m", colmap "unknown" for both. */
+void sp_frame_init(sp_frame *f, const char *source);
+int sp_frame_is_world(const sp_frame *f);       /* 1 for synth and align */
+const char *sp_frame_name(const sp_frame *f);   /* "world" or "colmap" */
+double sp_frame_scale(const sp_frame *f);       /* s of world_from_model */
+/* Finite, last row 0 0 0 1, a similarity with positive scale, a known source; `what` names it. */
+int sp_frame_check(const sp_frame *f, const char *what, sp_error *err);
+int sp_frame_read(const char *path, sp_frame *f, sp_error *err);
+int sp_frame_write(const char *path, const sp_frame *f, sp_error *err); /* atomic; checks first */
+/* The same with the fit that made the frame recorded under "fit" (fit_json: a JSON object's text,
+ * e.g. sp_align_fit_json's: matches, inliers, residuals, the outlying images); NULL = none. */
+int sp_frame_write_fit(const char *path, const sp_frame *f, const char *fit_json, sp_error *err);
+/* The frame of a capture: <dir>/frame.json, or the capture root's when dir is its sparse/<n>
+ * model folder; else a capture with ground_truth.json (synth's, before frame.json existed) is
+ * "synth"; else "colmap". */
+int sp_frame_of_capture(const char *colmap_dir, sp_frame *f, sp_error *err);
+/* The frame of a model folder: <model>/frame.json, else that of its capture (may be NULL). */
+int sp_frame_of_model(const char *model_dir, const char *colmap_dir, sp_frame *f, sp_error *err);
+/* Model -> world for a point, and for a camera (pixels unchanged, t in world units). */
+void sp_frame_apply_point(const sp_frame *f, const float in[3], float out[3]);
+void sp_frame_apply_camera(const sp_frame *f, sp_camera *cam);
+
+/* ---- descriptions ------------------------------------------------------------------------------- */
+
+/* What is in PATH (COLMAP model folder or capture root, splat PLY, PNG/JPEG, .npy, safetensors;
+ * recognised by content) as text lines: counts, sizes, extents, value ranges. all: list every
+ * camera / tensor (else the first 20). *text is malloc'd (caller frees with free()). */
+int sp_io_describe(const char *path, int all, char **text, sp_error *err);
+
 /* ---- JSON (cJSON) ----------------------------------------------------------------------------- */
 
 struct cJSON;

@@ -213,6 +213,14 @@ int sp_render_views(sp_raster *r, sp_scene *sc, const sp_camera *cams, size_t n,
 int sp_render_splat(sp_raster *r, const sp_splat *s, const sp_camera *cam,
                     const sp_render_request *req, sp_error *err);
 
+/* ---- colour maps ------------------------------------------------------------------------------ */
+
+/* Turbo colour map (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
+void sp_turbo(float t, float rgb[3]);
+/* depth [n] (expected depth, metres) -> rgb [n][3] floats: turbo between the 2nd and 98th
+ * percentile of covered pixels (alpha >= 0.5), near red, far blue; black where nothing solid. */
+int sp_depth_colormap(const float *depth, const float *alpha, size_t n, float *rgb, sp_error *err);
+
 #ifdef __cplusplus
 }
 #endif

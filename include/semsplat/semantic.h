@@ -31,7 +31,9 @@
 #define SEMSPLAT_SEMANTIC_H
 
 #include "semsplat/core.h"
+#include "semsplat/io.h"
 #include "semsplat/render.h"
+#include "semsplat/train.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -118,7 +120,44 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
 int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
                               const char *colmap_dir, const char *method, sp_error *err);
 
+/* ---- distillation (what `semsplat distill` does) --------------------------------------------- */
+
+typedef struct sp_distill_opts {
+    const char *model_dir;    /* made by `train`: splat.ply is read and rewritten with f_sem_* */
+    const char *features_dir; /* a feature folder (semsplat features) */
+    const char *colmap_dir;   /* the capture (views and images) */
+    const char *images_dir;   /* NULL: <colmap_dir>/images */
+    int steps;                /* 3000 */
+    float lambda;             /* feature loss weight (1) */
+    int freeze_geometry;      /* train the features only (0) */
+    int densify;              /* keep the trainer's clone/split schedule (0: off, already trained) */
+    int init_from_lift;       /* start from the one-pass lift (1) or from zero (0) */
+    int downscale;            /* image downscale (1) */
+} sp_distill_opts;
+
+sp_distill_opts sp_distill_opts_default(void);
+
+typedef struct sp_distill_result {
+    sp_train_result before, after; /* RGB metrics before distilling and the run's result after */
+} sp_distill_result;
+
+/* Continues training the model folder's splat with feature_lambda * MSE(rendered features, maps)
+ * added to the RGB loss, then writes f_sem_* into DIR/splat.ply and DIR/semantic.json. Refuses
+ * (SP_E_UNSUPPORTED) captures with distorted cameras: the maps are not resampled through the
+ * lens here (lift does that). */
+int sp_semantic_distill_model(sp_device *dev, const sp_distill_opts *o, sp_distill_result *res,
+                              const sp_log *log, sp_error *err);
+
 /* ---- the query engine ------------------------------------------------------------------------- */
+
+/* Thread safety: an engine locks itself, so several threads may call any function on one engine
+ * (calls run one at a time). The splat, cameras, frame and source an engine returns are fixed
+ * at open and may be read from any thread without the lock. Each call takes its options
+ * (NULL = the engine's defaults, given at open); nothing a call does changes the next one.
+ *
+ * Frames: every position, splat and camera the engine gives out is in the model folder's frame
+ * (frame.json, see io.h): the world frame for synth captures and aligned models ("world"), else
+ * COLMAP's own ("colmap"), and each result says which. */
 
 typedef enum { SP_QUERY_3D = 0, SP_QUERY_MULTIVIEW = 1 } sp_query_method;
 
@@ -145,8 +184,34 @@ typedef struct sp_query_opts {
 
 sp_query_opts sp_query_opts_default(void);
 
+/* What produced a result: the text encoder and the feature source, named (never a flag).
+ *   encoder  "clip"   CLIP's text tower (real weights)
+ *            "exact"  hashed class names (sp_label_embedding): only the exact class string can
+ *                     match; for tests and label scenes without weights
+ *   features "clip"   dense CLIP features of the images
+ *            "npy"    imported maps (any extractor in the text space)
+ *            "labels" ground-truth label images of a synthetic capture: results then measure
+ *                     localization given a perfect 2D segmentation, not language understanding */
+typedef struct sp_query_source {
+    char encoder[16];
+    char features[16];
+    int ground_truth;  /* 1 when the features come from ground-truth label images */
+} sp_query_source;
+
+/* The caveat every output carries for this source ("" when there is none): with label
+ * features, that the figures measure localization given a perfect 2D segmentation. */
+const char *sp_query_source_note(const sp_query_source *s);
+
+/* The frame a result's positions are in (frame.json of the model folder). */
+typedef struct sp_query_frame {
+    char name[16];   /* "world" or "colmap" */
+    char source[16]; /* "synth", "align" or "colmap" */
+    char units[16];  /* "m" or "unknown" */
+    char up[8];      /* "+z" or "unknown" */
+} sp_query_frame;
+
 typedef struct sp_query_instance {
-    float position[3];   /* world frame */
+    float position[3];   /* in the result's frame */
     float extent_min[3]; /* robust bounds: the 5% and 95% weighted quantiles of its points per */
     float extent_max[3]; /* axis; position is their middle */
     float score;         /* summed weight of its points: 3D, opacity * (relevancy - 0.5);
@@ -159,7 +224,7 @@ typedef struct sp_query_result {
     char text[256];
     int method;          /* sp_query_method used */
     int valid;           /* 1 when confidence >= min_confidence and an instance was found */
-    float position[3];   /* best instance (world frame); NaN when !valid */
+    float position[3];   /* best instance (in `frame`); NaN when !valid */
     float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
                           * opacity >= min_opacity */
     float relevancy_max; /* largest calibrated relevancy */
@@ -173,44 +238,88 @@ typedef struct sp_query_result {
     int n_instances;
     sp_query_instance *instances; /* best first */
     double ms_embed, ms_relevancy, ms_localize, ms_heatmap, ms_total;
+    sp_query_source source;      /* what produced it */
+    sp_query_frame frame;        /* the frame of position and instances */
 } sp_query_result;
 
 void sp_query_result_free(sp_query_result *res);
 
 typedef struct sp_query_engine sp_query_engine;
 
-/* Opens a model folder (splat.ply with f_sem_*, semantic.json, PCA, cameras from the sidecar's
- * COLMAP folder) once; opts NULL = defaults. dev is borrowed (must outlive the engine). */
+/* Opens a model folder (splat.ply with f_sem_*, semantic.json, PCA, frame.json, cameras from the
+ * sidecar's COLMAP folder) once, and puts splat and cameras into the folder's frame; opts NULL =
+ * defaults (kept as the engine's defaults). dev is borrowed (must outlive the engine). */
 int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
                          sp_device *dev, const sp_log *log, sp_error *err);
-/* Builds an engine from memory (tests, tools): copies splat, pca and cameras. */
-int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,
-                           const sp_camera *cams, size_t n_cams, int label_embedding,
-                           const sp_query_opts *opts, sp_device *dev, const sp_log *log,
-                           sp_error *err);
+
+/* An engine from memory (tests, tools): everything is copied. */
+typedef struct sp_query_model {
+    const sp_splat *splat;        /* with features [n][pca->dim], in model coordinates */
+    const sp_sem_pca *pca;
+    const sp_camera *cams;        /* [n_cams] in model coordinates (may be NULL with 0) */
+    size_t n_cams;
+    const char *const *cam_names; /* [n_cams] or NULL ("view <i>") */
+    const sp_query_source *source; /* NULL = encoder "exact", features "labels" */
+    const sp_frame *frame;        /* NULL = identity, source "colmap" */
+    const char *clip_weights;     /* encoder "clip": the CLIP model.safetensors */
+} sp_query_model;
+
+int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const sp_query_opts *opts,
+                           sp_device *dev, const sp_log *log, sp_error *err);
 void sp_query_engine_free(sp_query_engine *e);
 
-/* Embeds the text (CLIP text tower, or the label embedding for label-feature scenes) and
- * localizes it. res is filled (free with sp_query_result_free) even when nothing is found. */
-int sp_query_engine_query(sp_query_engine *e, const char *text, sp_query_result *res,
-                          sp_error *err);
+/* Embeds the text (the engine's text encoder) and localizes it with opts (NULL = the engine's
+ * defaults). res is filled (free with sp_query_result_free) even when nothing is found; on an
+ * error it is left empty (nothing to free). */
+int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *opts,
+                          sp_query_result *res, sp_error *err);
 /* Same with a precomputed full_dim embedding (need not be unit length); label names the result. */
-int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
-                                    const char *label, sp_query_result *res, sp_error *err);
+int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
+                                    const sp_query_opts *opts, sp_query_result *res, sp_error *err);
 /* Text -> full_dim unit embedding as the engine does it (out [full_dim]). */
 int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err);
+/* Per-Gaussian calibrated relevancy [n] (0.5 = no preference .. 1) and, when raw_cos is not
+ * NULL, raw cosine [n] of a text, with the engine's default negatives and temperature; n and the
+ * order are those of sp_query_engine_splat(e). */
+int sp_query_engine_relevancy(sp_query_engine *e, const char *text, float *relevancy,
+                              float *raw_cos, sp_error *err);
+/* The heatmap of a text seen from any camera (in the engine's frame, pinhole): rgb [H][W][3] the
+ * turbo overlay on the rendered scene (as query heatmaps: stretched when the text is confidently
+ * present, faded when not), relevancy [H][W] (may be NULL) the calibrated per-pixel relevancy
+ * (0.5 where nothing is drawn). H, W = cam->height, cam->width. */
+int sp_query_engine_heatmap(sp_query_engine *e, const char *text, const sp_camera *cam,
+                            uint8_t *rgb, float *relevancy, sp_error *err);
 
-sp_query_opts *sp_query_engine_opts(sp_query_engine *e); /* change between queries */
+const sp_query_opts *sp_query_engine_defaults(const sp_query_engine *e);
+/* An empty, not-found result (position NaN, no instances) carrying the engine's source and frame,
+ * for modules that compose answers from several queries (lexical, relations). */
+void sp_query_engine_result_init(const sp_query_engine *e, const char *text, sp_query_result *res);
 int sp_query_engine_full_dim(const sp_query_engine *e);
 size_t sp_query_engine_n_cameras(const sp_query_engine *e);
+/* The splat (with its semantic features) and cameras in the engine's frame (world for synth and
+ * aligned models): what navigation, the agent and ROS plan and render on. */
 const sp_splat *sp_query_engine_splat(const sp_query_engine *e);
-/* Camera i as COLMAP has it, lens included (renders use its pinhole part). */
+/* Camera i with the lens COLMAP gives it (renders use its pinhole part), posed in the engine's
+ * frame. */
 const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i);
+const char *sp_query_engine_camera_name(const sp_query_engine *e, size_t i);
+const sp_frame *sp_query_engine_frame(const sp_query_engine *e);
+const sp_query_source *sp_query_engine_source(const sp_query_engine *e);
 
 /* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
  * position (array or null), confidence, relevancy_max, view, instances [{position, extent_min,
- * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms. */
+ * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms, source
+ * {encoder, features, ground_truth, note}, frame {name, source, units, up}. */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
+
+/* ---- ABI (for bindings: the Python module checks these before any call) ---------------------- */
+
+#define SP_SEMANTIC_ABI_VERSION 2
+int sp_semantic_abi_version(void);
+/* sizeof of a public struct by name ("sp_query_opts", "sp_query_result", "sp_query_instance",
+ * "sp_query_source", "sp_query_frame", "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when
+ * unknown. */
+size_t sp_semantic_abi_sizeof(const char *type_name);
 
 /* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *
  *
@@ -397,8 +506,7 @@ int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char 
 
 /* ---- heatmaps --------------------------------------------------------------------------------- */
 
-/* Turbo colormap (Google, 2019) at t in [0,1] -> rgb in [0,1]. */
-void sp_turbo(float t, float rgb[3]);
+/* (The Turbo colour map, sp_turbo, is in render.h.) */
 /* Overlays relevancy [H][W] (0.5 = neutral .. 1) in turbo colours on rgb [H][W][3] floats,
  * writing out [H][W][3] uint8: a dimmed scene with the colour map fading in above 0.5. */
 void sp_heatmap_overlay(const float *rgb, const float *relevancy, int width, int height,

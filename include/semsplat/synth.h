@@ -196,9 +196,19 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *opts, sp
  *   images/NNNNN.png  depth/NNNNN.npy (float32 metres [h][w])  labels/NNNNN.png (16-bit ids)
  *   labels.json  (id -> model name, class, is_structure)
  *   ground_truth.json  (world path; each object's name, class, world pose and AABB under
- *                       "objects", walls, floors, ceilings and the ground under "structure") */
+ *                       "objects", walls, floors, ceilings and the ground under "structure")
+ *   frame.json  (source "synth": the model frame is the world frame; see sp_frame in io.h) */
 int sp_synth_capture(const sp_world *w, const char *out_dir, const sp_synth_capture_opts *opts,
                      sp_error *err);
+
+/* ---- ground truth for navigation ------------------------------------------------------------ */
+
+/* Ground-truth occupancy of the world between heights z_lo and z_hi (world z) on a grid of nx x ny
+ * cells of res metres whose cell (0,0) has its lower-left corner at origin (row 0 at the origin's
+ * y): occ[iy * nx + ix] = 1 when any triangle, clipped to the band, overlaps the cell's interior
+ * (touching its border does not count), else 0. */
+int sp_synth_floor_plan(const sp_world *w, float z_lo, float z_hi, float res, const float origin[2],
+                        int nx, int ny, uint8_t *occ, sp_error *err);
 
 #ifdef __cplusplus
 }

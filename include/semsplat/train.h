@@ -124,7 +124,7 @@ typedef struct sp_train_options {
     /* Evaluation and checkpoints. */
     int eval_every;          /* held-out evaluation every this many steps (0 = only at the end) */
     const char *checkpoint_dir; /* NULL = no checkpoints */
-    int checkpoint_every;    /* steps between checkpoints (default 1000) */
+    int checkpoint_every;    /* steps between checkpoints (default 1000; 0: only the final one) */
     const char *resume;      /* checkpoint file to resume from (NULL = start fresh) */
 
     /* Feature distillation (see the header comment). */
@@ -176,6 +176,37 @@ int sp_train_evaluate(sp_device *dev, const sp_train_data *data, const sp_splat 
 int sp_train_write_json(const char *path, const sp_train_options *opt, const sp_train_result *res,
                         const char *colmap_dir, const char *images_dir, int downscale,
                         sp_error *err);
+
+/* ---- a model folder (what `semsplat train` does) ----------------------------------------------- */
+
+typedef enum {
+    SP_TRAIN_INIT_POINTS = 0, /* COLMAP points3D (random when the model has none, with a warning) */
+    SP_TRAIN_INIT_RANDOM = 1, /* init_points uniform points around the cameras */
+    SP_TRAIN_INIT_PLY = 2     /* init_ply: continue from an existing splat (3DGS/gsplat PLY) */
+} sp_train_init;
+
+typedef struct sp_train_model_opts {
+    const char *colmap_dir;  /* capture root or COLMAP model folder (required) */
+    const char *images_dir;  /* NULL: <colmap_dir>/images */
+    const char *out_dir;     /* the model folder (required; made when missing) */
+    int downscale;           /* integer image downscale (1) */
+    int test_every;          /* hold out every n-th image (8; 0 = none) */
+    sp_train_init init;
+    const char *init_ply;    /* SP_TRAIN_INIT_PLY */
+    size_t init_points;      /* SP_TRAIN_INIT_RANDOM (100000) */
+    const char *resume;      /* continue from this checkpoint (NULL = fresh); replaces init */
+    sp_train_options train;  /* checkpoint_dir and resume are set by the call */
+} sp_train_model_opts;
+
+/* sp_train_options_default(steps) inside, init from points, downscale 1, test_every 8. */
+sp_train_model_opts sp_train_model_opts_default(int steps);
+
+/* Trains a model folder: OUT/splat.ply (3DGS layout), OUT/train.json (settings, held-out metrics),
+ * OUT/frame.json (the capture's frame: a synth capture's model frame is the world frame, see
+ * sp_frame_of_capture in io.h) and OUT/checkpoints/checkpoint.bin. res (may be NULL) receives the
+ * result; log the progress. Errors name the capture, image, file or setting at fault. */
+int sp_train_model(sp_device *dev, const sp_train_model_opts *o, sp_train_result *res,
+                   const sp_log *log, sp_error *err);
 
 /* ---- building blocks (host buffers; the loop uses device versions) ------------------------------ */
 

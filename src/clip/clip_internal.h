@@ -59,13 +59,64 @@ int clip_cpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *e
 int clip_cpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_out_kind kind,
                     float *out, sp_error *err);
 
-/* GPU forwards (clip_gpu.c dispatches to cuda/ when built). */
+/* ---- dense planning, shared by the CPU and GPU dense paths (dense.c) ---- */
+
+typedef struct clip_scale_plan {
+    int rw, rh; /* resized image */
+    int pw, ph; /* padded to whole tiles */
+    int gw, gh; /* patch grid covering the resized image */
+} clip_scale_plan;
+#define CLIP_TILES_MAX 4096 /* tiles along one axis */
+
+void clip_plan_scale(const sp_clip *c, float s, int tile, int width, int height, clip_scale_plan *sp);
+void clip_tile_params(const sp_clip *c, const sp_clip_dense_opts *o, int *tile, int *stride);
+/* Tile origins along one axis (0, stride, ..., the last flush with the end); returns the count
+ * (only the first cap are written). */
+int clip_tile_starts(int padded, int tile, int stride, int *out, int cap);
+
+/* PIL's antialiased bicubic weights of one axis: output i takes cnt[i] taps from x0[i],
+ * weights w[i * taps ...]. */
+typedef struct clip_axis_weights {
+    double *w;
+    int *x0, *cnt, taps;
+} clip_axis_weights;
+int clip_axis_weights_make(clip_axis_weights *a, int n_in, int n_out); /* -1: out of memory */
+void clip_axis_weights_free(clip_axis_weights *a);
+
+/* fp32 -> fp16, round to nearest even (F16C when the CPU has it): the fp16 GPU path's uploads. */
+void clip_floats_to_half(const float *src, uint16_t *dst, size_t n);
+
+/* GPU forwards (cuda/ when built, nocuda/ stubs otherwise). */
 int clip_gpu_init(sp_clip *c, sp_error *err);
 void clip_gpu_free(sp_clip *c);
 int clip_gpu_set_fp16(sp_clip *c, int on, sp_error *err);
 int clip_gpu_text(sp_clip *c, const int32_t *ids, int n, float *out, sp_error *err);
 int clip_gpu_vision(sp_clip *c, const float *pixels, int n, int H, int W, clip_out_kind kind,
                     float *out, sp_error *err);
+/* Dense features of one image entirely on the device (resize, tiles, the dense head, overlap
+ * averaging, scales, normalisation); options already validated, tile/stride from
+ * clip_tile_params. Same result as the CPU path of sp_clip_dense_features. */
+int clip_gpu_dense(sp_clip *c, const float *rgb, int width, int height, const sp_clip_dense_opts *o,
+                   int tile, int stride, clip_out_kind kind, float *out, sp_error *err);
+
+/* C [F][F] = (x - mean)^T (x - mean) for x [n][F] on a CUDA device (cuBLAS, fp32). */
+int clip_gpu_gram(sp_device *dev, const float *x, size_t n, int F, const float *mean, float *C, sp_error *err);
+/* sp_clip_pca_fit with the covariance product on dev when it is a CUDA device (NULL: CPU). */
+int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int dim, float *mean, float *basis,
+                     sp_error *err);
+
+/* Variants for benchmarks and tests: CLIP_GPU_NO_LT runs the plain cuBLAS products and
+ * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax),
+ * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits. */
+enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4 };
+void clip_gpu_set_flags(sp_clip *c, int flags);
+/* Benchmarks: the last sp_clip_encode_pixels call again on the pixels still on the device (the
+ * upload left out, as a framework's timing with inputs on the GPU). */
+int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err);
+/* The fused attention kernel alone on host data: qkv [B*T][3w] (converted to fp16) -> out
+ * [B*T][w] (v1: the tiled kernel); SP_E_UNSUPPORTED when the kernel does not take this head width. */
+int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
+                             int qq, int v1, float *out, sp_error *err);
 
 /* label id -> class name, from a capture's labels.json ({"labels": {"1": {"class": ..}}} as synth
  * writes it, or {"labels": [{"id": 1, "class": ..}]}); ids 1..65535, each once; id 0 and ids not

@@ -20,13 +20,8 @@ static double bicubic_filter(double x)
 
 /* Resampling weights of one axis as PIL's ImagingResample: output i samples around
  * (i + 0.5) * in/out with the filter stretched by the downscale factor (antialiasing), weights
- * normalised. w [n_out][*taps], first tap x0[i], cnt[i] taps. */
-typedef struct axis_weights {
-    double *w;
-    int *x0, *cnt, taps;
-} axis_weights;
-
-static int axis_weights_make(axis_weights *a, int n_in, int n_out)
+ * normalised (clip_internal.h: clip_axis_weights). */
+int clip_axis_weights_make(clip_axis_weights *a, int n_in, int n_out)
 {
     double scale = (double)n_in / n_out, fs = scale > 1 ? scale : 1, support = 2 * fs;
     a->taps = (int)ceil(support) * 2 + 1;
@@ -53,7 +48,7 @@ static int axis_weights_make(axis_weights *a, int n_in, int n_out)
     return 0;
 }
 
-static void axis_weights_free(axis_weights *a)
+void clip_axis_weights_free(clip_axis_weights *a)
 {
     free(a->w);
     free(a->x0);
@@ -63,16 +58,16 @@ static void axis_weights_free(axis_weights *a)
  * that combines whole rows (contiguous memory). */
 static int resize_rgb(const float *in, int w, int h, float *out, int ow, int oh)
 {
-    axis_weights ax, ay;
+    clip_axis_weights ax, ay;
     float *tmp = malloc((size_t)h * ow * 3 * sizeof *tmp);
     double *acc = malloc((size_t)ow * 3 * sizeof *acc);
-    if (!tmp || !acc || axis_weights_make(&ax, w, ow)) {
+    if (!tmp || !acc || clip_axis_weights_make(&ax, w, ow)) {
         free(tmp);
         free(acc);
         return -1;
     }
-    if (axis_weights_make(&ay, h, oh)) {
-        axis_weights_free(&ax);
+    if (clip_axis_weights_make(&ay, h, oh)) {
+        clip_axis_weights_free(&ax);
         free(tmp);
         free(acc);
         return -1;
@@ -102,8 +97,8 @@ static int resize_rgb(const float *in, int w, int h, float *out, int ow, int oh)
         }
         for (size_t j = 0; j < row; j++) out[(size_t)i * row + j] = (float)acc[j];
     }
-    axis_weights_free(&ax);
-    axis_weights_free(&ay);
+    clip_axis_weights_free(&ax);
+    clip_axis_weights_free(&ay);
     free(tmp);
     free(acc);
     return 0;
@@ -165,13 +160,7 @@ sp_clip_dense_opts sp_clip_dense_opts_default(void)
     return o;
 }
 
-typedef struct scale_plan {
-    int rw, rh;     /* resized image */
-    int pw, ph;     /* padded to whole tiles */
-    int gw, gh;     /* patch grid covering the resized image */
-} scale_plan;
-
-static void plan_scale(const sp_clip *c, float s, int tile, int width, int height, scale_plan *sp)
+void clip_plan_scale(const sp_clip *c, float s, int tile, int width, int height, clip_scale_plan *sp)
 {
     int p = c->cfg.patch_size;
     sp->rw = (int)lroundf(width * s);
@@ -184,7 +173,7 @@ static void plan_scale(const sp_clip *c, float s, int tile, int width, int heigh
     sp->ph = sp->gh * p < tile ? tile : sp->gh * p;
 }
 
-static void tile_params(const sp_clip *c, const sp_clip_dense_opts *o, int *tile, int *stride)
+void clip_tile_params(const sp_clip *c, const sp_clip_dense_opts *o, int *tile, int *stride)
 {
     int p = c->cfg.patch_size;
     *tile = o->tile > 0 ? o->tile / p * p : c->cfg.image_size;
@@ -198,29 +187,27 @@ void sp_clip_dense_grid(const sp_clip *c, const sp_clip_dense_opts *o, int width
 {
     sp_clip_dense_opts d = o ? *o : sp_clip_dense_opts_default();
     int tile, stride;
-    tile_params(c, &d, &tile, &stride);
-    scale_plan sp;
-    plan_scale(c, d.n_scales > 0 ? d.scales[0] : 1.f, tile, width, height, &sp);
+    clip_tile_params(c, &d, &tile, &stride);
+    clip_scale_plan sp;
+    clip_plan_scale(c, d.n_scales > 0 ? d.scales[0] : 1.f, tile, width, height, &sp);
     *grid_w = sp.gw;
     *grid_h = sp.gh;
 }
 
-/* Tile origins along one axis: 0, stride, ... and the last one flush with the end. */
-static int tile_starts(int padded, int tile, int stride, int *out, int cap)
+/* Tile origins along one axis: 0, stride, ... and the last one flush with the end. Returns the
+ * count, of which only the first cap are written (cap 0: count only). */
+int clip_tile_starts(int padded, int tile, int stride, int *out, int cap)
 {
     int n = 0;
-    for (int x = 0;; x += stride) {
-        if (x + tile >= padded) {
-            if (n < cap) out[n++] = padded - tile;
-            break;
-        }
-        if (n < cap) out[n++] = x;
+    for (int x = 0;; x += stride, n++) {
+        int last = x + tile >= padded;
+        if (n < cap) out[n] = last ? padded - tile : x;
+        if (last) return n + 1;
     }
-    return n;
 }
 
 /* Dense features of one scale into acc [gh][gw][P] (summed) + cnt [gh][gw]. */
-static int dense_scale(sp_clip *c, const float *rgb, int width, int height, const scale_plan *sp,
+static int dense_scale(sp_clip *c, const float *rgb, int width, int height, const clip_scale_plan *sp,
                        int tile, int stride, clip_out_kind kind, int batch, float *acc, float *cnt,
                        sp_error *err)
 {
@@ -229,10 +216,11 @@ static int dense_scale(sp_clip *c, const float *rgb, int width, int height, cons
     float *norm = calloc((size_t)sp->pw * sp->ph * 3, sizeof *norm);
     float *px = malloc((size_t)batch * 3 * tile * tile * sizeof *px);
     float *feat = malloc((size_t)batch * tg * tg * P * sizeof *feat);
-    int xs[4096], ys[4096];
-    int nx = tile_starts(sp->pw, tile, stride, xs, 4096), ny = tile_starts(sp->ph, tile, stride, ys, 4096);
+    int xs[CLIP_TILES_MAX], ys[CLIP_TILES_MAX];
+    int nx = clip_tile_starts(sp->pw, tile, stride, xs, CLIP_TILES_MAX);
+    int ny = clip_tile_starts(sp->ph, tile, stride, ys, CLIP_TILES_MAX);
     int rc = 0;
-    if (!img || !norm || !px || !feat || nx > 4096 || ny > 4096 ||
+    if (!img || !norm || !px || !feat || nx > CLIP_TILES_MAX || ny > CLIP_TILES_MAX ||
         resize_rgb(rgb, width, height, img, sp->rw, sp->rh)) {
         rc = sp_error_set(err, SP_E_NOMEM, "dense features: out of memory for %dx%d", sp->rw, sp->rh);
         goto done;
@@ -311,15 +299,16 @@ int sp_clip_dense_features(sp_clip *c, const float *rgb, int width, int height,
         return sp_error_set(err, SP_E_ARG, "dense features: image size %dx%d", width, height);
     if (d.batch < 1) d.batch = 1;
     int tile, stride, P = c->cfg.projection_dim;
-    tile_params(c, &d, &tile, &stride);
+    clip_tile_params(c, &d, &tile, &stride);
     clip_out_kind kind = d.head == SP_CLIP_HEAD_MASKCLIP ? CLIP_OUT_DENSE_MASKCLIP : CLIP_OUT_DENSE_CLEARCLIP;
-    scale_plan base;
-    plan_scale(c, d.scales[0], tile, width, height, &base);
+    if (c->gpu) return clip_gpu_dense(c, rgb, width, height, &d, tile, stride, kind, out, err);
+    clip_scale_plan base;
+    clip_plan_scale(c, d.scales[0], tile, width, height, &base);
     memset(out, 0, (size_t)base.gw * base.gh * P * sizeof *out);
     int rc = 0;
     for (int s = 0; s < d.n_scales && !rc; s++) {
-        scale_plan sp;
-        plan_scale(c, d.scales[s], tile, width, height, &sp);
+        clip_scale_plan sp;
+        clip_plan_scale(c, d.scales[s], tile, width, height, &sp);
         float *acc = calloc((size_t)sp.gw * sp.gh * P, sizeof *acc);
         float *cnt = calloc((size_t)sp.gw * sp.gh, sizeof *cnt);
         float *up = s ? malloc((size_t)base.gw * base.gh * P * sizeof *up) : NULL;

@@ -12,6 +12,8 @@
 #include <cJSON.h>
 
 #include "clip_internal.h"
+#include "compat/sgemm_blocked.h"
+#include "features_internal.h"
 #include "semsplat/io.h"
 
 sp_features_opts sp_features_opts_default(void)
@@ -121,46 +123,14 @@ static int map_npy(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_e
     return 0;
 }
 
+/* Label maps are class weights per cell (features_labels.c): [cells][n_classes]. */
 static int map_labels(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
 {
     char stem[512], file[600], path[1800];
     stem_of(x->model.images[i].name, stem, sizeof stem);
     snprintf(file, sizeof file, "%s.png", stem);
     sp_path_join(path, sizeof path, x->labels_dir, file);
-    sp_image img;
-    int rc = sp_image_read(path, &img, err);
-    if (rc) return rc;
-    int F = x->full_dim, fac = x->o->map_factor > 0 ? x->o->map_factor : 4;
-    int W = img.width, H = img.height;
-    *mw = (W + fac - 1) / fac;
-    *mh = (H + fac - 1) / fac;
-    float *m = calloc((size_t)*mw * *mh * F, sizeof *m);
-    if (!m) { sp_image_free(&img); return sp_error_set(err, SP_E_NOMEM, "out of memory"); }
-    /* each map cell averages the class features of the pixels it covers */
-    for (int by = 0; by < *mh; by++)
-        for (int bx = 0; bx < *mw; bx++) {
-            float *o = m + ((size_t)by * *mw + bx) * F;
-            int cnt = 0;
-            for (int y = by * fac; y < (by + 1) * fac && y < H; y++)
-                for (int xx = bx * fac; xx < (bx + 1) * fac && xx < W; xx++) {
-                    size_t at = ((size_t)y * W + xx) * img.channels;
-                    int id = img.bit_depth == 16 ? ((uint16_t *)img.data)[at] : ((uint8_t *)img.data)[at];
-                    if (id >= x->labels.n) {
-                        rc = sp_error_set(err, SP_E_FORMAT, "%s: pixel (%d, %d) has label %d, labels.json "
-                                          "knows ids up to %d", path, xx, y, id, x->labels.n - 1);
-                        goto done;
-                    }
-                    const float *e = x->class_emb + (size_t)x->labels.class_of[id] * F;
-                    for (int k = 0; k < F; k++) o[k] += e[k];
-                    cnt++;
-                }
-            for (int k = 0; k < F; k++) o[k] /= (float)cnt;
-        }
-done:
-    sp_image_free(&img);
-    if (rc) { free(m); return rc; }
-    *map = m;
-    return 0;
+    return label_weights(path, &x->labels, x->o->map_factor > 0 ? x->o->map_factor : 4, map, mw, mh, err);
 }
 
 static int compute_map(extract_ctx *x, size_t i, float **map, int *mw, int *mh, sp_error *err)
@@ -222,13 +192,16 @@ static int setup(extract_ctx *x, sp_error *err)
         }
         x->class_emb = malloc((size_t)x->labels.n_classes * x->full_dim * sizeof(float));
         if (!x->class_emb) return sp_error_set(err, SP_E_NOMEM, "out of memory");
-        for (int k = 0; k < x->labels.n_classes; k++) {
-            if (x->clip) {
-                const char *t = x->labels.class_names[k];
-                if ((rc = sp_clip_encode_text(x->clip, &t, 1, x->class_emb + (size_t)k * x->full_dim, err))) return rc;
-            } else {
+        if (x->clip) { /* every class name in one batch */
+            const char **names = malloc((size_t)x->labels.n_classes * sizeof *names);
+            if (!names) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+            for (int k = 0; k < x->labels.n_classes; k++) names[k] = x->labels.class_names[k];
+            rc = sp_clip_encode_text(x->clip, names, x->labels.n_classes, x->class_emb, err);
+            free(names);
+            if (rc) return rc;
+        } else {
+            for (int k = 0; k < x->labels.n_classes; k++)
                 sp_label_embedding(x->labels.class_names[k], x->full_dim, x->class_emb + (size_t)k * x->full_dim);
-            }
         }
     } else {
         return sp_error_set(err, SP_E_ARG, "unknown feature source '%s' (clip, npy, labels)", o->source);
@@ -281,6 +254,144 @@ static int write_json(extract_ctx *x, const int *mw, const int *mh, const char *
     return rc;
 }
 
+/* A labels cell's full feature: its class weights times the class embeddings. */
+static void label_feature(const extract_ctx *x, const float *w, float *out)
+{
+    int F = x->full_dim;
+    memset(out, 0, (size_t)F * sizeof *out);
+    for (int k = 0; k < x->labels.n_classes; k++) {
+        if (w[k] == 0) continue;
+        const float *e = x->class_emb + (size_t)k * F;
+        for (int j = 0; j < F; j++) out[j] += w[k] * e[j];
+    }
+}
+
+/* Map rows -> PCA codes as one product: code = row table^T - offset, with table [D][cols] and
+ * offset [D]. Full features: table = basis, offset = basis mean. Labels (rows are class weights
+ * summing to 1): table^T = the classes' codes (E - mean) basis^T, offset = 0. */
+typedef struct encoder {
+    int cols, D;
+    float *table, *offset;
+} encoder;
+
+static int encoder_make(const extract_ctx *x, const float *mean, const float *basis, int D, encoder *e, sp_error *err)
+{
+    int F = x->full_dim, labels = !strcmp(x->o->source, "labels"), cols = labels ? x->labels.n_classes : F;
+    e->cols = cols;
+    e->D = D;
+    e->table = malloc((size_t)D * cols * sizeof *e->table);
+    e->offset = calloc((size_t)D, sizeof *e->offset);
+    if (!e->table || !e->offset) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    for (int k = 0; k < D; k++) {
+        const float *b = basis + (size_t)k * F;
+        if (labels) {
+            for (int c = 0; c < cols; c++) {
+                const float *ec = x->class_emb + (size_t)c * F;
+                double s = 0;
+                for (int j = 0; j < F; j++) s += (double)b[j] * (ec[j] - mean[j]);
+                e->table[(size_t)k * cols + c] = (float)s;
+            }
+        } else {
+            double s = 0;
+            for (int j = 0; j < F; j++) s += (double)b[j] * mean[j];
+            memcpy(e->table + (size_t)k * cols, b, (size_t)F * sizeof *b);
+            e->offset[k] = (float)s;
+        }
+    }
+    return 0;
+}
+
+static int encode_map(const encoder *e, const float *map, size_t cells, uint16_t *out, sp_error *err)
+{
+    const size_t chunk = 4096;
+    float *code = malloc(chunk * e->D * sizeof *code);
+    if (!code) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    for (size_t c0 = 0; c0 < cells; c0 += chunk) {
+        size_t nb = cells - c0 < chunk ? cells - c0 : chunk;
+        /* on the calling thread: the images themselves run in parallel */
+        if (sp_sgemm_blocked(NULL, 0, 1, (int)nb, e->D, e->cols, 1.f, map + c0 * e->cols, e->cols, e->table, e->cols, 0.f,
+                             code, e->D)) {
+            free(code);
+            return sp_error_set(err, SP_E_NOMEM, "out of memory");
+        }
+        for (size_t c = 0; c < nb; c++)
+            for (int k = 0; k < e->D; k++) out[(c0 + c) * e->D + k] = sp_float_to_half(code[c * e->D + k] - e->offset[k]);
+    }
+    free(code);
+    return 0;
+}
+
+/* Pass 2 for one image: its full map (from the cache, or computed again), its PCA codes, the
+ * map file. Touches nothing shared but read-only state, so images run in parallel. */
+typedef struct codes_job {
+    extract_ctx *x;
+    const encoder *enc;
+    const int *mw, *mh;
+    const char *const *files;
+    const char *cache_dir; /* NULL: maps are computed again */
+    int *rc;
+    sp_error *errs;
+} codes_job;
+
+static int write_codes(const codes_job *j, size_t i, sp_error *err)
+{
+    const extract_ctx *x = j->x;
+    char stem[512], path[2000];
+    float *map = NULL;
+    int w2 = 0, h2 = 0, rc, D = j->enc->D;
+    stem_of(x->model.images[i].name, stem, sizeof stem);
+    if (j->cache_dir) {
+        snprintf(path, sizeof path, "%s/%s.npy", j->cache_dir, stem);
+        sp_npy a;
+        if ((rc = sp_npy_read(path, &a, err))) return rc;
+        rc = sp_npy_to_f32(&a, &map, err);
+        sp_npy_free(&a);
+        unlink(path);
+        if (rc) return rc;
+    } else if ((rc = compute_map(j->x, i, &map, &w2, &h2, err))) {
+        return rc;
+    }
+    size_t cells = (size_t)j->mw[i] * j->mh[i];
+    uint16_t *h = malloc(cells * D * sizeof *h);
+    if (!h) rc = sp_error_set(err, SP_E_NOMEM, "out of memory");
+    else rc = encode_map(j->enc, map, cells, h, err);
+    size_t shape[3] = {(size_t)j->mh[i], (size_t)j->mw[i], (size_t)D};
+    sp_path_join(path, sizeof path, x->o->out_dir, j->files[i]);
+    if (!rc) rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
+    free(h);
+    free(map);
+    return rc;
+}
+
+static void codes_task(void *ctx, long i, int thread_id)
+{
+    codes_job *j = ctx;
+    (void)thread_id;
+    j->rc[i] = write_codes(j, (size_t)i, &j->errs[i]);
+}
+
+/* Every image's codes across the device's (or a temporary) pool; the first failing image's
+ * error is reported. */
+static int write_all_codes(extract_ctx *x, const encoder *enc, const int *mw, const int *mh, const char *const *files,
+                           const char *cache_dir, sp_error *err)
+{
+    size_t n = x->model.n_images;
+    codes_job j = {x, enc, mw, mh, files, cache_dir, calloc(n, sizeof(int)), calloc(n, sizeof(sp_error))};
+    sp_pool *pool = x->o->dev ? sp_device_pool(x->o->dev) : NULL, *own = NULL;
+    int rc = j.rc && j.errs ? 0 : sp_error_set(err, SP_E_NOMEM, "out of memory");
+    if (!rc && !pool && sp_pool_create(&own, 0, err) == 0) pool = own;
+    if (!rc) sp_pool_for(pool, (long)n, codes_task, &j);
+    for (size_t i = 0; !rc && i < n; i++)
+        if (j.rc[i]) {
+            rc = j.rc[i];
+            if (err) *err = j.errs[i];
+        }
+    sp_pool_free(own);
+    free(j.rc);
+    free(j.errs);
+    return rc;
+}
+
 int sp_features_extract(const sp_features_opts *opts, sp_error *err)
 {
     sp_features_opts o = *opts;
@@ -304,6 +415,7 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
     int *mw = NULL, *mh = NULL, rc;
     char **files = NULL, cache_dir[1200], maps_dir[1200], path[2000];
     float *samples = NULL, *mean = NULL, *basis = NULL;
+    encoder enc = {0};
     if ((rc = setup(&x, err))) goto done;
     n = x.model.n_images;
     sp_path_join(maps_dir, sizeof maps_dir, o.out_dir, "maps");
@@ -319,10 +431,11 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
     sp_progress pr;
     sp_progress_begin(&pr, o.log, "features", (long)n, "img");
     uint64_t rng = 0x5EED5EED;
+    int labels = !strcmp(o.source, "labels");
     for (size_t i = 0; i < n; i++) {
         float *map = NULL;
         if ((rc = compute_map(&x, i, &map, &mw[i], &mh[i], err))) goto done;
-        int F = x.full_dim;
+        int F = x.full_dim, cols = labels ? x.labels.n_classes : F;
         if (!samples) {
             samples = malloc(per_image * n * F * sizeof *samples);
             if (!samples) { free(map); rc = sp_error_set(err, SP_E_NOMEM, "PCA samples: out of memory"); goto done; }
@@ -330,7 +443,8 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
         size_t cells = (size_t)mw[i] * mh[i];
         for (size_t k = 0; k < per_image && k < cells; k++) {
             size_t c = per_image >= cells ? k : (size_t)(rng_next(&rng) % cells);
-            memcpy(samples + n_samp++ * F, map + c * F, (size_t)F * sizeof(float));
+            if (labels) label_feature(&x, map + c * cols, samples + n_samp++ * F);
+            else memcpy(samples + n_samp++ * F, map + c * F, (size_t)F * sizeof(float));
         }
         char stem[512];
         stem_of(x.model.images[i].name, stem, sizeof stem);
@@ -357,45 +471,9 @@ int sp_features_extract(const sp_features_opts *opts, sp_error *err)
     basis = malloc((size_t)D * F * sizeof *basis);
     if (!mean || !basis) { rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
     sp_logf(o.log, SP_LOG_INFO, "PCA %d -> %d on %zu pixel features", F, D, n_samp);
-    if ((rc = sp_clip_pca_fit(samples, n_samp, F, D, mean, basis, err))) goto done;
-    sp_features proj;
-    memset(&proj, 0, sizeof proj);
-    proj.dim = D;
-    proj.full_dim = F;
-    proj.pca_mean = mean;
-    proj.pca_basis = basis;
-    for (size_t i = 0; i < n; i++) {
-        float *map = NULL;
-        int w2 = 0, h2 = 0;
-        char stem[512];
-        stem_of(x.model.images[i].name, stem, sizeof stem);
-        if (cache) {
-            snprintf(path, sizeof path, "%s/%s.npy", cache_dir, stem);
-            sp_npy a;
-            if ((rc = sp_npy_read(path, &a, err))) goto done;
-            rc = sp_npy_to_f32(&a, &map, err);
-            sp_npy_free(&a);
-            unlink(path);
-            if (rc) goto done;
-        } else if ((rc = compute_map(&x, i, &map, &w2, &h2, err))) {
-            goto done;
-        }
-        size_t cells = (size_t)mw[i] * mh[i];
-        uint16_t *h = malloc(cells * D * sizeof *h);
-        float *e = malloc((size_t)D * sizeof *e);
-        if (!h || !e) { free(h); free(e); free(map); rc = sp_error_set(err, SP_E_NOMEM, "out of memory"); goto done; }
-        for (size_t c = 0; c < cells; c++) {
-            sp_features_encode(&proj, map + c * F, e);
-            for (int k = 0; k < D; k++) h[c * D + k] = sp_float_to_half(e[k]);
-        }
-        size_t shape[3] = {(size_t)mh[i], (size_t)mw[i], (size_t)D};
-        sp_path_join(path, sizeof path, o.out_dir, files[i]);
-        rc = sp_npy_write(path, SP_DTYPE_F16, 3, shape, h, err);
-        free(h);
-        free(e);
-        free(map);
-        if (rc) goto done;
-    }
+    if ((rc = clip_pca_fit_dev(o.dev, samples, n_samp, F, D, mean, basis, err))) goto done;
+    if ((rc = encoder_make(&x, mean, basis, D, &enc, err))) goto done;
+    if ((rc = write_all_codes(&x, &enc, mw, mh, (const char *const *)files, cache ? cache_dir : NULL, err))) goto done;
     if (cache) rmdir(cache_dir);
     size_t s1 = (size_t)F, s2[2] = {(size_t)D, (size_t)F};
     sp_path_join(path, sizeof path, o.out_dir, "pca_mean.npy");
@@ -411,6 +489,8 @@ done:
     free(samples);
     free(mean);
     free(basis);
+    free(enc.table);
+    free(enc.offset);
     free(x.class_emb);
     clip_label_table_free(&x.labels);
     sp_clip_free(x.clip);

@@ -7,7 +7,7 @@
 
 #include <cblas.h>
 
-#include "semsplat/clip.h"
+#include "clip_internal.h"
 
 /* Householder reduction of symmetric a [n][n] to tridiagonal form (d diagonal, e off-diagonal),
  * a replaced by the orthogonal transform (tred2, Numerical Recipes 11.2, 0-based). */
@@ -133,8 +133,40 @@ static int sym_eigen(double *A, int n, double *w, double *Vt)
     return rc;
 }
 
-int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean, float *basis,
-                    sp_error *err)
+/* C = (x - m)^T (x - m), accumulated chunk by chunk in float; on the GPU when dev is a CUDA
+ * device and the product is large (falls back to the CPU if the GPU cannot run it). */
+static int covariance(sp_device *dev, const float *x, size_t n, int F, const double *m, float *C, sp_error *err)
+{
+    if (dev && sp_device_kind_of(dev) == SP_DEVICE_CUDA && (double)n * F * F >= 1e9) {
+        float *mf = malloc((size_t)F * sizeof *mf);
+        sp_error e2 = {0};
+        int ok = mf != NULL;
+        for (int j = 0; ok && j < F; j++) mf[j] = (float)m[j];
+        ok = ok && !clip_gpu_gram(dev, x, n, F, mf, C, &e2);
+        free(mf);
+        if (ok) return 0;
+    }
+    size_t chunk = 4096;
+    float *xc = malloc(chunk * F * sizeof *xc);
+    if (!xc) return sp_error_set(err, SP_E_NOMEM, "PCA: out of memory for %d dims", F);
+    memset(C, 0, (size_t)F * F * sizeof *C);
+    for (size_t i0 = 0; i0 < n; i0 += chunk) {
+        size_t nb = n - i0 < chunk ? n - i0 : chunk;
+        for (size_t i = 0; i < nb; i++)
+            for (int j = 0; j < F; j++) xc[i * F + j] = (float)(x[(i0 + i) * F + j] - m[j]);
+        cblas_sgemm(CblasRowMajor, CblasTrans, CblasNoTrans, F, F, (int)nb, 1.f, xc, F, xc, F, 1.f, C, F);
+    }
+    free(xc);
+    return 0;
+}
+
+int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean, float *basis, sp_error *err)
+{
+    return clip_pca_fit_dev(NULL, x, n, full_dim, dim, mean, basis, err);
+}
+
+int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int dim, float *mean, float *basis,
+                     sp_error *err)
 {
     int F = full_dim;
     if (n < 1 || F < 1 || dim < 1 || dim > F)
@@ -142,11 +174,9 @@ int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean
     double *m = calloc((size_t)F, sizeof *m), *A = malloc((size_t)F * F * sizeof *A);
     double *V = malloc((size_t)F * F * sizeof *V), *w = malloc((size_t)F * sizeof *w);
     float *C = malloc((size_t)F * F * sizeof *C);
-    size_t chunk = 4096;
-    float *xc = malloc(chunk * F * sizeof *xc);
     int *order = malloc((size_t)F * sizeof *order);
     int rc = 0;
-    if (!m || !A || !V || !w || !C || !xc || !order) {
+    if (!m || !A || !V || !w || !C || !order) {
         rc = sp_error_set(err, SP_E_NOMEM, "PCA: out of memory for %d dims", F);
         goto done;
     }
@@ -160,14 +190,7 @@ int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean
             m[j] += v;
         }
     for (int j = 0; j < F; j++) m[j] /= (double)n;
-    /* covariance = (X - mean)^T (X - mean) / n, accumulated chunk by chunk in float */
-    memset(C, 0, (size_t)F * F * sizeof *C);
-    for (size_t i0 = 0; i0 < n; i0 += chunk) {
-        size_t nb = n - i0 < chunk ? n - i0 : chunk;
-        for (size_t i = 0; i < nb; i++)
-            for (int j = 0; j < F; j++) xc[i * F + j] = (float)(x[(i0 + i) * F + j] - m[j]);
-        cblas_sgemm(CblasRowMajor, CblasTrans, CblasNoTrans, F, F, (int)nb, 1.f, xc, F, xc, F, 1.f, C, F);
-    }
+    if ((rc = covariance(dev, x, n, F, m, C, err))) goto done;
     for (size_t i = 0; i < (size_t)F * F; i++) A[i] = C[i] / (double)n;
     for (int i = 0; i < F; i++) /* exact symmetry */
         for (int j = i + 1; j < F; j++) A[(size_t)i * F + j] = A[(size_t)j * F + i] = 0.5 * (A[(size_t)i * F + j] + A[(size_t)j * F + i]);
@@ -190,6 +213,6 @@ int sp_clip_pca_fit(const float *x, size_t n, int full_dim, int dim, float *mean
         for (int j = 0; j < F; j++) basis[(size_t)r * F + j] = (float)(sgn * V[(size_t)col * F + j]);
     }
 done:
-    free(m); free(A); free(V); free(w); free(C); free(xc); free(order);
+    free(m); free(A); free(V); free(w); free(C); free(order);
     return rc;
 }

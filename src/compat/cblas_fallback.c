@@ -1,14 +1,9 @@
-/* A plain blocked SGEMM for builds without OpenBLAS. Correct, cache-blocked, single-threaded:
- * enough for PCA and for the CPU CLIP path on machines where the GPU does the heavy work. */
+/* cblas_sgemm for builds without OpenBLAS: the blocked SGEMM of sgemm_blocked.c, on a pool of
+ * all cores for products large enough to pay for starting one (the BLAS interface carries no
+ * pool; a temporary one is safe even when the caller is itself a pool task). */
 #include "cblas.h"
 
-#include <stdlib.h>
-
-/* Element (i, j) of op(X) for a row-major X with leading dimension ld. */
-static inline float at(const float *X, int ld, int trans, int i, int j)
-{
-    return trans ? X[(size_t)j * ld + i] : X[(size_t)i * ld + j];
-}
+#include "sgemm_blocked.h"
 
 void cblas_sgemm(enum CBLAS_ORDER order, enum CBLAS_TRANSPOSE ta, enum CBLAS_TRANSPOSE tb, int M,
                  int N, int K, float alpha, const float *A, int lda, const float *B, int ldb,
@@ -19,34 +14,12 @@ void cblas_sgemm(enum CBLAS_ORDER order, enum CBLAS_TRANSPOSE ta, enum CBLAS_TRA
         cblas_sgemm(CblasRowMajor, tb, ta, N, M, K, alpha, B, ldb, A, lda, beta, C, ldc);
         return;
     }
-    int tA = ta != CblasNoTrans, tB = tb != CblasNoTrans;
-    /* BLAS semantics: with beta == 0, C is written without being read (it may hold NaN). */
-    for (int i = 0; i < M; i++)
-        for (int j = 0; j < N; j++)
-            C[(size_t)i * ldc + j] = beta == 0.0f ? 0.0f : beta * C[(size_t)i * ldc + j];
-    enum { BK = 64, BJ = 256 };
-    float *row = malloc(sizeof(float) * BJ);
-    if (!row) return;
-    for (int k0 = 0; k0 < K; k0 += BK) {
-        int k1 = k0 + BK < K ? k0 + BK : K;
-        for (int j0 = 0; j0 < N; j0 += BJ) {
-            int j1 = j0 + BJ < N ? j0 + BJ : N;
-            for (int i = 0; i < M; i++) {
-                for (int j = j0; j < j1; j++) row[j - j0] = 0;
-                for (int k = k0; k < k1; k++) {
-                    float a = alpha * at(A, lda, tA, i, k);
-                    if (a == 0) continue;
-                    if (!tB) {
-                        const float *b = B + (size_t)k * ldb;
-                        for (int j = j0; j < j1; j++) row[j - j0] += a * b[j];
-                    } else {
-                        for (int j = j0; j < j1; j++) row[j - j0] += a * B[(size_t)j * ldb + k];
-                    }
-                }
-                float *c = C + (size_t)i * ldc;
-                for (int j = j0; j < j1; j++) c[j] += row[j - j0];
-            }
-        }
-    }
-    free(row);
+    sp_pool *pool = NULL;
+    sp_error err = {0};
+    if ((double)M * N * K >= 5e7 && sp_pool_create(&pool, 0, &err)) pool = NULL;
+    if (sp_sgemm_blocked(pool, ta != CblasNoTrans, tb != CblasNoTrans, M, N, K, alpha, A, lda, B, ldb, beta, C,
+                         ldc) && pool)
+        /* no memory for every thread's packing buffers (C untouched): one thread needs one */
+        sp_sgemm_blocked(NULL, ta != CblasNoTrans, tb != CblasNoTrans, M, N, K, alpha, A, lda, B, ldb, beta, C, ldc);
+    sp_pool_free(pool);
 }

@@ -1,4 +1,7 @@
-/* A fixed thread pool with one operation: a parallel for over [0, n) with dynamic hand-out. */
+/* A fixed thread pool with one operation: a parallel for over [0, n) with dynamic hand-out.
+ * One job runs at a time: a caller that finds the pool busy (another thread's job, or a nested
+ * call from inside a job) runs its loop itself, serially, so concurrent callers can never
+ * overwrite each other's job and a nested call cannot deadlock. */
 #include "semsplat/core.h"
 
 #include <pthread.h>
@@ -9,6 +12,7 @@ struct sp_pool {
     int n_threads; /* workers, not counting the caller */
     pthread_t *threads;
     pthread_mutex_t mu;
+    pthread_mutex_t job_mu; /* held by the caller whose job the workers run */
     pthread_cond_t cv_work, cv_done;
     /* current job */
     void (*fn)(void *, long, int);
@@ -64,6 +68,7 @@ int sp_pool_create(sp_pool **out, int n_threads, sp_error *err)
     if (!p) return sp_error_set(err, SP_E_NOMEM, "thread pool: out of memory");
     p->n_threads = n_threads - 1;
     pthread_mutex_init(&p->mu, NULL);
+    pthread_mutex_init(&p->job_mu, NULL);
     pthread_cond_init(&p->cv_work, NULL);
     pthread_cond_init(&p->cv_done, NULL);
     if (p->n_threads > 0) {
@@ -99,6 +104,7 @@ void sp_pool_free(sp_pool *p)
     pthread_mutex_unlock(&p->mu);
     for (int i = 0; i < p->n_threads; i++) pthread_join(p->threads[i], NULL);
     pthread_mutex_destroy(&p->mu);
+    pthread_mutex_destroy(&p->job_mu);
     pthread_cond_destroy(&p->cv_work);
     pthread_cond_destroy(&p->cv_done);
     free(p->threads);
@@ -110,7 +116,8 @@ int sp_pool_size(const sp_pool *p) { return p ? p->n_threads + 1 : 1; }
 void sp_pool_for(sp_pool *p, long n, void (*fn)(void *ctx, long i, int thread_id), void *ctx)
 {
     if (n <= 0) return;
-    if (!p || p->n_threads == 0 || n == 1) {
+    /* Busy (another caller's job, or called from inside one): run here, serially. */
+    if (!p || p->n_threads == 0 || n == 1 || pthread_mutex_trylock(&p->job_mu) != 0) {
         for (long i = 0; i < n; i++) fn(ctx, i, 0);
         return;
     }
@@ -127,4 +134,5 @@ void sp_pool_for(sp_pool *p, long n, void (*fn)(void *ctx, long i, int thread_id
     pthread_mutex_lock(&p->mu);
     while (p->active > 0) pthread_cond_wait(&p->cv_done, &p->mu);
     pthread_mutex_unlock(&p->mu);
+    pthread_mutex_unlock(&p->job_mu);
 }

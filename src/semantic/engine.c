@@ -1,9 +1,11 @@
 /* The query engine: opens a language-embedded model folder once (splat with f_sem_*, sidecar,
- * PCA, cameras) and answers text queries with a world position, instances, a confidence and a
- * heatmap. Text goes through CLIP's text tower, or the label embedding for label-feature scenes. */
+ * PCA, frame, cameras), puts splat and cameras into the folder's frame, and answers text queries
+ * with a position, instances, a confidence and a heatmap; per-Gaussian relevancy and heatmaps
+ * from any camera for other modules. Text goes through CLIP's text tower (encoder "clip") or the
+ * hashed label embedding (encoder "exact"). Every public call holds the engine's lock. */
 #include <cjson/cJSON.h>
-#include <stdio.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -57,15 +59,43 @@ void sp_query_engine_free(sp_query_engine *e)
     free(e->raw);
     free(e->rel);
     free(e->scores2);
-    free(e->occ);
+    sp_grid3_free(&e->occ);
     sp_scene_free(e->scene);
     sp_scene_free(e->scores_scene);
+    if (e->has_mutex) pthread_mutex_destroy(&e->mu);
     free(e);
+}
+
+/* Puts splat and cameras into the frame (model -> world); nothing to do for identity frames. */
+static int apply_frame(sp_query_engine *e, sp_error *err)
+{
+    static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    if (!memcmp(e->frame.world_from_model, I, sizeof I)) return 0;
+    int rc = sp_splat_transform(&e->splat, e->frame.world_from_model, err);
+    if (rc) return sp_error_prefix(err, "query engine: frame.json: ");
+    for (size_t i = 0; i < e->n_cams; i++) sp_frame_apply_camera(&e->frame, &e->cams[i]);
+    return 0;
+}
+
+static void set_qframe(sp_query_engine *e)
+{
+    sp_query_frame *q = &e->qframe;
+    snprintf(q->name, sizeof q->name, "%s", sp_frame_name(&e->frame));
+    snprintf(q->source, sizeof q->source, "%s", e->frame.source);
+    snprintf(q->units, sizeof q->units, "%s", e->frame.units);
+    snprintf(q->up, sizeof q->up, "%s", e->frame.up);
 }
 
 static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error *err)
 {
-    e->opts = opts ? *opts : sp_query_opts_default();
+    e->defaults = opts ? *opts : sp_query_opts_default();
+    if (pthread_mutex_init(&e->mu, NULL) != 0)
+        return sp_error_set(err, SP_E_NOMEM, "query engine: cannot create its lock");
+    e->has_mutex = 1;
+    int frc = sp_frame_check(&e->frame, "query engine: frame", err);
+    if (frc) return frc;
+    if ((frc = apply_frame(e, err))) return frc;
+    set_qframe(e);
     if (e->splat.feat_dim != e->pca.dim)
         return sp_error_set(err, SP_E_FORMAT,
                             "query engine: the splat has %d f_sem_* features but the PCA has dim %d",
@@ -94,34 +124,54 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
     return rc;
 }
 
-int sp_query_engine_create(sp_query_engine **out, const sp_splat *splat, const sp_sem_pca *pca,
-                           const sp_camera *cams, size_t n_cams, int label_embedding,
-                           const sp_query_opts *opts, sp_device *dev, const sp_log *log,
-                           sp_error *err)
+static void source_init(sp_query_source *s, const char *encoder, const char *features)
+{
+    memset(s, 0, sizeof *s);
+    snprintf(s->encoder, sizeof s->encoder, "%s", encoder);
+    snprintf(s->features, sizeof s->features, "%s", features);
+    s->ground_truth = !strcmp(features, "labels");
+}
+
+static int copy_inputs(sp_query_engine *e, const sp_query_model *m, sp_error *err)
+{
+    const sp_sem_pca *pca = m->pca;
+    int rc = sp_splat_copy(&e->splat, m->splat, err);
+    if (rc) return rc;
+    e->pca.dim = pca->dim;
+    e->pca.full_dim = pca->full_dim;
+    e->pca.mean = malloc(sizeof(float) * pca->full_dim);
+    e->pca.basis = malloc(sizeof(float) * pca->full_dim * pca->dim);
+    e->n_cams = m->n_cams;
+    e->cams = malloc(sizeof(sp_camera) * (m->n_cams ? m->n_cams : 1));
+    e->cam_names = calloc(m->n_cams ? m->n_cams : 1, sizeof *e->cam_names);
+    if (!e->pca.mean || !e->pca.basis || !e->cams || !e->cam_names)
+        return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
+    memcpy(e->pca.mean, pca->mean, sizeof(float) * pca->full_dim);
+    memcpy(e->pca.basis, pca->basis, sizeof(float) * pca->full_dim * pca->dim);
+    for (size_t i = 0; i < m->n_cams; i++) {
+        e->cams[i] = m->cams[i];
+        if (m->cam_names && m->cam_names[i]) snprintf(e->cam_names[i], 256, "%s", m->cam_names[i]);
+        else snprintf(e->cam_names[i], 256, "view %zu", i);
+    }
+    return 0;
+}
+
+int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const sp_query_opts *opts,
+                           sp_device *dev, const sp_log *log, sp_error *err)
 {
     *out = NULL;
-    if (!splat || !pca || !dev) return sp_error_set(err, SP_E_ARG, "query engine: missing argument");
+    if (!m || !m->splat || !m->pca || !dev || (m->n_cams && !m->cams))
+        return sp_error_set(err, SP_E_ARG, "query engine: missing argument");
     sp_query_engine *e = calloc(1, sizeof *e);
     if (!e) return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
     e->dev = dev;
     if (log) e->log = *log, e->has_log = 1;
-    e->label_embedding = label_embedding;
-    int rc = sp_splat_copy(&e->splat, splat, err);
-    if (!rc) {
-        e->pca.dim = pca->dim;
-        e->pca.full_dim = pca->full_dim;
-        e->pca.mean = malloc(sizeof(float) * pca->full_dim);
-        e->pca.basis = malloc(sizeof(float) * pca->full_dim * pca->dim);
-        e->n_cams = n_cams;
-        e->cams = malloc(sizeof(sp_camera) * (n_cams ? n_cams : 1));
-        if (!e->pca.mean || !e->pca.basis || !e->cams) {
-            rc = sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
-        } else {
-            memcpy(e->pca.mean, pca->mean, sizeof(float) * pca->full_dim);
-            memcpy(e->pca.basis, pca->basis, sizeof(float) * pca->full_dim * pca->dim);
-            if (n_cams) memcpy(e->cams, cams, sizeof(sp_camera) * n_cams);
-        }
-    }
+    if (m->source) e->source = *m->source;
+    else source_init(&e->source, "exact", "labels");
+    if (m->frame) e->frame = *m->frame;
+    else sp_frame_init(&e->frame, "colmap");
+    if (m->clip_weights) snprintf(e->clip_path, sizeof e->clip_path, "%s", m->clip_weights);
+    int rc = copy_inputs(e, m, err);
     if (!rc) rc = engine_finish(e, opts, err);
     if (rc) {
         sp_query_engine_free(e);
@@ -196,8 +246,16 @@ int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_
     resolve(p2, sizeof p2, model_dir, basis);
     if ((rc = sp_sem_pca_read(path, p2, &e->pca, err))) goto fail;
     const char *le = jstr(js, "label_embedding"), *model = jstr(js, "model");
-    e->label_embedding = le && !strcmp(le, "hash");
-    if (!e->label_embedding) {
+    const char *enc = jstr(js, "encoder"), *fsrc = jstr(js, "source");
+    /* "encoder" names the text encoder; older sidecars say label_embedding "hash" for exact */
+    source_init(&e->source, enc ? enc : (le && !strcmp(le, "hash")) ? "exact" : "clip",
+                fsrc ? fsrc : "clip");
+    if (strcmp(e->source.encoder, "exact") && strcmp(e->source.encoder, "clip")) {
+        rc = sp_error_set(err, SP_E_UNSUPPORTED, "%s/semantic.json: text encoder '%s' is not "
+                          "clip or exact", model_dir, e->source.encoder);
+        goto fail;
+    }
+    if (!strcmp(e->source.encoder, "clip")) {
         if (!model || !model[0]) {
             rc = sp_error_set(err, SP_E_NOTFOUND,
                               "%s/semantic.json: features need CLIP text embeddings but name no "
@@ -209,9 +267,11 @@ int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_
     sp_path_join(path, sizeof path, model_dir, "splat.ply");
     if ((rc = sp_ply_read_splat(path, &e->splat, err))) goto fail;
     const char *colmap = jstr(js, "colmap");
+    if (colmap && colmap[0]) resolve(p2, sizeof p2, model_dir, colmap);
+    if ((rc = sp_frame_of_model(model_dir, colmap && colmap[0] ? p2 : NULL, &e->frame, err))) goto fail;
     if (colmap && colmap[0]) {
         /* Without the capture the engine still localizes in 3D; views and heatmaps need it. */
-        resolve(path, sizeof path, model_dir, colmap);
+        snprintf(path, sizeof path, "%s", p2);
         sp_error cerr = {0};
         if (load_cameras(e, path, &cerr)) {
             sp_logf(log, SP_LOG_WARN, "%s (queries work without views: no multi-view, no heatmaps)",
@@ -230,7 +290,13 @@ fail:
     return rc;
 }
 
-sp_query_opts *sp_query_engine_opts(sp_query_engine *e) { return &e->opts; }
+const sp_query_opts *sp_query_engine_defaults(const sp_query_engine *e) { return &e->defaults; }
+const sp_frame *sp_query_engine_frame(const sp_query_engine *e) { return &e->frame; }
+const sp_query_source *sp_query_engine_source(const sp_query_engine *e) { return &e->source; }
+const char *sp_query_engine_camera_name(const sp_query_engine *e, size_t i)
+{
+    return i < e->n_cams && e->cam_names ? e->cam_names[i] : NULL;
+}
 int sp_query_engine_full_dim(const sp_query_engine *e) { return e->pca.full_dim; }
 size_t sp_query_engine_n_cameras(const sp_query_engine *e) { return e->n_cams; }
 const sp_splat *sp_query_engine_splat(const sp_query_engine *e) { return &e->splat; }
@@ -242,11 +308,13 @@ const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i)
 static int embed_many(sp_query_engine *e, const char *const *texts, int n, float *out, sp_error *err)
 {
     int F = e->pca.full_dim;
-    if (e->label_embedding) {
+    if (!strcmp(e->source.encoder, "exact")) {
         for (int i = 0; i < n; i++) sp_label_embedding(texts[i], F, out + (size_t)i * F);
         return 0;
     }
     if (!e->clip) {
+        if (!e->clip_path[0])
+            return sp_error_set(err, SP_E_NOTFOUND, "query engine: text encoder clip, but no CLIP weights given");
         int rc = sp_clip_load(&e->clip, e->clip_path, NULL, e->dev, err);
         if (rc) return sp_error_prefix(err, "query engine: text embeddings: ");
         if (sp_clip_embed_dim(e->clip) != F)
@@ -256,15 +324,23 @@ static int embed_many(sp_query_engine *e, const char *const *texts, int n, float
     return sp_clip_encode_text(e->clip, texts, n, out, err);
 }
 
-int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err)
+static int embed_text(sp_query_engine *e, const char *text, float *out, sp_error *err)
 {
     if (!text || !text[0]) return sp_error_set(err, SP_E_ARG, "query: empty text");
     return embed_many(e, &text, 1, out, err);
 }
 
-static int ensure_negatives(sp_query_engine *e, sp_error *err)
+int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err)
 {
-    const char *key = e->opts.negatives[0] ? e->opts.negatives : SP_SEM_DEFAULT_NEGATIVES;
+    pthread_mutex_lock(&e->mu);
+    int rc = embed_text(e, text, out, err);
+    pthread_mutex_unlock(&e->mu);
+    return rc;
+}
+
+static int ensure_negatives(sp_query_engine *e, const sp_query_opts *o, sp_error *err)
+{
+    const char *key = o->negatives[0] ? o->negatives : SP_SEM_DEFAULT_NEGATIVES;
     if (e->neg_emb && !strcmp(key, e->neg_key)) return 0;
     char buf[256];
     snprintf(buf, sizeof buf, "%s", key);
@@ -311,46 +387,98 @@ static float robust_max(const float *v, const float *op, float min_op, size_t n)
     return 0;
 }
 
-int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
-                                    const char *label, sp_query_result *res, sp_error *err)
+/* Raw cosine and relevancy of every Gaussian into e->raw, e->rel (on the GPU when the features
+ * live there). */
+static int score_gaussians(sp_query_engine *e, const sp_sem_scorer *sc, sp_error *err)
 {
-    double t0 = sp_time_now();
-    memset(res, 0, sizeof *res);
-    res->view_index = -1;
-    res->position[0] = res->position[1] = res->position[2] = NAN;
-    snprintf(res->text, sizeof res->text, "%s", label ? label : "");
-    res->method = e->opts.method;
-    int rc = sem_check_opts(&e->opts, err);
-    if (!rc) rc = ensure_negatives(e, err);
-    if (rc) return rc;
-    sp_sem_scorer sc;
-    if ((rc = sp_sem_scorer_init(&sc, &e->pca, embedding, e->neg_emb, e->n_neg,
-                                 e->opts.temperature, err)))
-        return rc;
-    double t1 = sp_time_now();
-    int on_gpu = 0;
-    if (e->d_feat && sc.orthonormal) {
+    int on_gpu = 0, rc = 0;
+    if (e->d_feat && sc->orthonormal) {
         size_t nb = sizeof(float) * e->splat.n;
-        if ((rc = sem_cuda_score(e->dev, &sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
+        if ((rc = sem_cuda_score(e->dev, sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
             (rc = sp_device_download(e->dev, e->raw, e->d_raw, nb, err)) ||
             (rc = sp_device_download(e->dev, e->rel, e->d_rel, nb, err)))
             return rc;
         on_gpu = 1;
     }
-    if (!on_gpu) sp_sem_score(&sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
-    res->confidence = robust_max(e->raw, e->opacity, e->opts.min_opacity, e->splat.n);
+    if (!on_gpu) sp_sem_score(sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
+    return rc;
+}
+
+/* Negatives, scorer and per-Gaussian scores of an embedding under options o. */
+static int score_embedding(sp_query_engine *e, const float *embedding, const sp_query_opts *o,
+                           sp_sem_scorer *sc, sp_error *err)
+{
+    int rc = ensure_negatives(e, o, err);
+    if (!rc) rc = sp_sem_scorer_init(sc, &e->pca, embedding, e->neg_emb, e->n_neg, o->temperature, err);
+    if (!rc) rc = score_gaussians(e, sc, err);
+    return rc;
+}
+
+/* The view that best sees the best instance: its relevant Gaussians inside its box. */
+static int best_view(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                     const sp_query_result *res, int *v, sp_error *err)
+{
+    const sp_query_instance *I = &res->instances[0];
+    uint8_t *mask = calloc(e->splat.n ? e->splat.n : 1, 1);
+    if (!mask) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    float pad = th->opts->voxel_m;
+    for (size_t i = 0; i < e->splat.n; i++) {
+        const float *m = e->splat.means + 3 * i;
+        int in = e->raw[i] >= th->thr_raw && e->opacity[i] >= th->min_op;
+        for (int a = 0; a < 3 && in; a++)
+            in = m[a] >= I->extent_min[a] - pad && m[a] <= I->extent_max[a] + pad;
+        mask[i] = (uint8_t)in;
+    }
+    int got = sem_pick_views(e, sc, th, mask, 1, 1, v, NULL, err);
+    free(mask);
+    if (got < 0) return got;
+    if (got == 0) *v = -1;
+    return 0;
+}
+
+void sp_query_engine_result_init(const sp_query_engine *e, const char *text, sp_query_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->view_index = -1;
+    res->position[0] = res->position[1] = res->position[2] = NAN;
+    snprintf(res->text, sizeof res->text, "%s", text ? text : "");
+    res->source = e->source;
+    res->frame = e->qframe;
+}
+
+static void result_init(const sp_query_engine *e, const char *label, int method, sp_query_result *res)
+{
+    memset(res, 0, sizeof *res);
+    res->view_index = -1;
+    res->position[0] = res->position[1] = res->position[2] = NAN;
+    snprintf(res->text, sizeof res->text, "%s", label ? label : "");
+    res->method = method;
+    res->source = e->source;
+    res->frame = e->qframe;
+}
+
+static int query_embedding(sp_query_engine *e, const float *embedding, const char *label,
+                           const sp_query_opts *o, sp_query_result *res, sp_error *err)
+{
+    double t0 = sp_time_now();
+    result_init(e, label, o->method, res);
+    sp_sem_scorer sc;
+    int rc = score_embedding(e, embedding, o, &sc, err);
+    if (rc) return rc;
+    res->confidence = robust_max(e->raw, e->opacity, o->min_opacity, e->splat.n);
     float rmax = 0;
     for (size_t i = 0; i < e->splat.n; i++)
-        if (e->opacity[i] >= e->opts.min_opacity && e->rel[i] > rmax) rmax = e->rel[i];
+        if (e->opacity[i] >= o->min_opacity && e->rel[i] > rmax) rmax = e->rel[i];
     res->relevancy_max = rmax;
     double t2 = sp_time_now();
-    res->ms_relevancy = (t2 - t1) * 1e3;
+    res->ms_relevancy = (t2 - t0) * 1e3;
     sem_thresholds th;
-    th.thr_raw = e->opts.keep_fraction * res->confidence;
+    th.thr_raw = o->keep_fraction * res->confidence;
     if (th.thr_raw < 0.1f) th.thr_raw = 0.1f;
-    th.thr_rel = e->opts.min_relevancy;
-    th.min_op = e->opts.min_opacity;
-    if (e->opts.method == SP_QUERY_MULTIVIEW && e->n_cams > 0)
+    th.thr_rel = o->min_relevancy;
+    th.min_op = o->min_opacity;
+    th.opts = o;
+    if (o->method == SP_QUERY_MULTIVIEW && e->n_cams > 0)
         rc = sem_localize_multiview(e, &sc, &th, res, err);
     else {
         res->method = SP_QUERY_3D;
@@ -359,99 +487,116 @@ int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding,
     if (rc) return rc;
     double t3 = sp_time_now();
     res->ms_localize = (t3 - t2) * 1e3;
-    if (e->opts.heatmap && e->n_cams > 0) {
-        int v = e->opts.heatmap_view;
+    if (o->heatmap && e->n_cams > 0) {
+        int v = o->heatmap_view;
+        if (v >= 0 && (size_t)v >= e->n_cams)
+            return sp_error_set(err, SP_E_ARG, "query: heatmap view %d not in 0..%zu", v, e->n_cams - 1);
         if (v < 0 && res->view_index >= 0) v = res->view_index;
-        if (v < 0 && res->n_instances > 0) {
-            /* the view that best sees the best instance: its relevant Gaussians inside its box */
-            const sp_query_instance *I = &res->instances[0];
-            uint8_t *mask = calloc(e->splat.n ? e->splat.n : 1, 1);
-            if (!mask) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
-            float pad = e->opts.voxel_m;
-            for (size_t i = 0; i < e->splat.n; i++) {
-                const float *m = e->splat.means + 3 * i;
-                int in = e->raw[i] >= th.thr_raw && e->opacity[i] >= th.min_op;
-                for (int a = 0; a < 3 && in; a++)
-                    in = m[a] >= I->extent_min[a] - pad && m[a] <= I->extent_max[a] + pad;
-                mask[i] = (uint8_t)in;
-            }
-            int got = sem_pick_views(e, &sc, &th, mask, 1, 1, &v, NULL, err);
-            free(mask);
-            if (got < 0) return got;
-            if (got == 0) v = -1;
-        }
+        if (v < 0 && res->n_instances > 0 && (rc = best_view(e, &sc, &th, res, &v, err))) return rc;
         if (v < 0) v = 0;
-        if ((rc = sem_heatmap(e, &sc, v, res, err))) return rc;
+        if ((rc = sem_heatmap(e, &th, v, res, err))) return rc;
         res->ms_heatmap = (sp_time_now() - t3) * 1e3;
     }
     res->ms_total = (sp_time_now() - t0) * 1e3;
     return 0;
 }
 
-int sp_query_engine_query(sp_query_engine *e, const char *text, sp_query_result *res,
-                          sp_error *err)
+static int check_opts(const sp_query_engine *e, const sp_query_opts *o, sp_error *err)
 {
-    double t0 = sp_time_now();
+    int rc = sem_check_opts(o, err); /* the numeric ranges (opts.c) */
+    if (rc) return rc;
+    if (o->heatmap && e->n_cams > 0 && o->heatmap_view >= 0 && (size_t)o->heatmap_view >= e->n_cams)
+        return sp_error_set(err, SP_E_ARG, "query: heatmap view %d not in 0..%zu", o->heatmap_view,
+                            e->n_cams - 1);
+    if (o->method != SP_QUERY_3D && o->method != SP_QUERY_MULTIVIEW)
+        return sp_error_set(err, SP_E_ARG, "query: method %d is not 3d (0) or multiview (1)", o->method);
+    if (!(o->temperature > 0) || !(o->voxel_m > 0))
+        return sp_error_set(err, SP_E_ARG, "query: temperature (%g) and voxel_m (%g) must be > 0",
+                            (double)o->temperature, (double)o->voxel_m);
+    if (!memchr(o->negatives, 0, sizeof o->negatives))
+        return sp_error_set(err, SP_E_ARG, "query: negatives is not NUL-terminated");
+    return 0;
+}
+
+int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
+                                    const sp_query_opts *opts, sp_query_result *res, sp_error *err)
+{
+    const sp_query_opts *o = opts ? opts : &e->defaults;
     memset(res, 0, sizeof *res);
+    int rc = check_opts(e, o, err);
+    if (rc) return rc;
+    pthread_mutex_lock(&e->mu);
+    rc = query_embedding(e, embedding, label, o, res, err);
+    pthread_mutex_unlock(&e->mu);
+    if (rc) sp_query_result_free(res); /* nothing half-made is handed back */
+    return rc;
+}
+
+int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *opts,
+                          sp_query_result *res, sp_error *err)
+{
+    const sp_query_opts *o = opts ? opts : &e->defaults;
+    memset(res, 0, sizeof *res);
+    int rc = check_opts(e, o, err);
+    if (rc) return rc;
     float *q = malloc(sizeof(float) * e->pca.full_dim);
     if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
-    int rc = sp_query_engine_embed(e, text, q, err);
-    if (!rc) rc = ensure_negatives(e, err);
+    pthread_mutex_lock(&e->mu);
+    double t0 = sp_time_now();
+    rc = embed_text(e, text, q, err);
+    if (!rc) rc = ensure_negatives(e, o, err);
     double t1 = sp_time_now();
-    if (!rc) rc = sp_query_engine_query_embedding(e, q, text, res, err);
+    if (!rc) rc = query_embedding(e, q, text, o, res, err);
+    pthread_mutex_unlock(&e->mu);
     free(q);
-    if (rc) return rc;
+    if (rc) {
+        sp_query_result_free(res); /* nothing half-made is handed back */
+        return rc;
+    }
     res->ms_embed = (t1 - t0) * 1e3;
     res->ms_total += res->ms_embed;
     return 0;
 }
 
-static cJSON *vec3(const float *v)
+/* Embeds text and scores every Gaussian with the default negatives and temperature. */
+static int score_text(sp_query_engine *e, const char *text, sp_sem_scorer *sc, sp_error *err)
 {
-    cJSON *a = cJSON_CreateArray();
-    for (int k = 0; k < 3; k++) cJSON_AddItemToArray(a, cJSON_CreateNumber(v[k]));
-    return a;
+    float *q = malloc(sizeof(float) * e->pca.full_dim);
+    if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    int rc = embed_text(e, text, q, err);
+    if (!rc) rc = score_embedding(e, q, &e->defaults, sc, err);
+    free(q);
+    return rc;
 }
 
-char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
+int sp_query_engine_relevancy(sp_query_engine *e, const char *text, float *relevancy,
+                              float *raw_cos, sp_error *err)
 {
-    cJSON *o = cJSON_CreateObject();
-    if (!o) return NULL;
-    cJSON_AddStringToObject(o, "text", res->text);
-    cJSON_AddStringToObject(o, "method", res->method == SP_QUERY_MULTIVIEW ? "multiview" : "3d");
-    cJSON_AddBoolToObject(o, "found", res->valid);
-    if (res->valid) cJSON_AddItemToObject(o, "position", vec3(res->position));
-    else cJSON_AddNullToObject(o, "position");
-    cJSON_AddNumberToObject(o, "confidence", res->confidence);
-    cJSON_AddNumberToObject(o, "relevancy_max", res->relevancy_max);
-    if (res->view_index >= 0) {
-        cJSON *v = cJSON_AddObjectToObject(o, "view");
-        cJSON_AddNumberToObject(v, "index", res->view_index);
-        cJSON_AddStringToObject(v, "name", res->view_name);
-    } else {
-        cJSON_AddNullToObject(o, "view");
+    if (!relevancy) return sp_error_set(err, SP_E_ARG, "relevancy: no output buffer");
+    sp_sem_scorer sc;
+    pthread_mutex_lock(&e->mu);
+    int rc = score_text(e, text, &sc, err);
+    if (!rc) {
+        memcpy(relevancy, e->rel, sizeof(float) * e->splat.n);
+        if (raw_cos) memcpy(raw_cos, e->raw, sizeof(float) * e->splat.n);
     }
-    cJSON *arr = cJSON_AddArrayToObject(o, "instances");
-    for (int i = 0; i < res->n_instances; i++) {
-        const sp_query_instance *I = &res->instances[i];
-        cJSON *it = cJSON_CreateObject();
-        cJSON_AddItemToObject(it, "position", vec3(I->position));
-        cJSON_AddItemToObject(it, "extent_min", vec3(I->extent_min));
-        cJSON_AddItemToObject(it, "extent_max", vec3(I->extent_max));
-        cJSON_AddNumberToObject(it, "score", I->score);
-        cJSON_AddNumberToObject(it, "confidence", I->confidence);
-        cJSON_AddNumberToObject(it, "points", I->n_points);
-        cJSON_AddItemToArray(arr, it);
+    pthread_mutex_unlock(&e->mu);
+    return rc;
+}
+
+int sp_query_engine_heatmap(sp_query_engine *e, const char *text, const sp_camera *cam,
+                            uint8_t *rgb, float *relevancy, sp_error *err)
+{
+    if (!cam || !rgb) return sp_error_set(err, SP_E_ARG, "heatmap: no camera or output buffer");
+    sp_sem_scorer sc;
+    pthread_mutex_lock(&e->mu);
+    int rc = score_text(e, text, &sc, err);
+    if (!rc) {
+        const sp_query_opts *o = &e->defaults;
+        float conf = robust_max(e->raw, e->opacity, o->min_opacity, e->splat.n);
+        rc = sem_heatmap_render(e, cam, conf >= o->min_confidence, conf, o->min_confidence, rgb,
+                                relevancy, err);
     }
-    if (heatmap_path) cJSON_AddStringToObject(o, "heatmap", heatmap_path);
-    else cJSON_AddNullToObject(o, "heatmap");
-    cJSON *t = cJSON_AddObjectToObject(o, "timings_ms");
-    cJSON_AddNumberToObject(t, "embed", res->ms_embed);
-    cJSON_AddNumberToObject(t, "relevancy", res->ms_relevancy);
-    cJSON_AddNumberToObject(t, "localize", res->ms_localize);
-    cJSON_AddNumberToObject(t, "heatmap", res->ms_heatmap);
-    cJSON_AddNumberToObject(t, "total", res->ms_total);
-    char *s = cJSON_Print(o);
-    cJSON_Delete(o);
-    return s;
+    pthread_mutex_unlock(&e->mu);
+    return rc;
 }

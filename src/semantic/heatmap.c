@@ -7,24 +7,6 @@
 
 #include "sem_internal.h"
 
-/* Turbo (Mikhailov, Google AI 2019): the published polynomial approximation. */
-void sp_turbo(float t, float rgb[3])
-{
-    if (!(t >= 0)) t = 0;
-    if (t > 1) t = 1;
-    const double r4[6] = {0.13572138, 4.61539260, -42.66032258, 132.13108234, -152.94239396, 59.28637943};
-    const double g4[6] = {0.09140261, 2.19418839, 4.84296658, -14.18503333, 4.27729857, 2.82956604};
-    const double b4[6] = {0.10667330, 12.64194608, -60.58204836, 110.36276771, -89.90310912, 27.34824973};
-    double p[6] = {1, t, t * t, t * t * t, t * t * t * t, t * t * t * t * t};
-    double c[3] = {0, 0, 0};
-    for (int i = 0; i < 6; i++) {
-        c[0] += r4[i] * p[i];
-        c[1] += g4[i] * p[i];
-        c[2] += b4[i] * p[i];
-    }
-    for (int k = 0; k < 3; k++) rgb[k] = (float)(c[k] < 0 ? 0 : c[k] > 1 ? 1 : c[k]);
-}
-
 static uint8_t to_u8(float v)
 {
     v = v < 0 ? 0 : v > 1 ? 1 : v;
@@ -73,52 +55,76 @@ static int to_photo_pixels(const sp_camera *cam, float *rgb, float *rel, sp_erro
     return rc;
 }
 
-int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
-                sp_error *err)
+/* Stretch the visible relevancy to the full colour range when the query was found, so a
+ * weak-but-real CLIP match still reads; a query that was not found is faded (cold). */
+static float display_scale(const float *rel, size_t np, int found, float confidence, float min_conf)
 {
-    if (v < 0 || (size_t)v >= e->n_cams)
-        return sp_error_set(err, SP_E_ARG, "heatmap: view %d not in 0..%zu", v, e->n_cams);
-    const sp_camera *cam = &e->cams[v];
+    if (!found) { /* not found: fade by how far the confidence is below the bar */
+        float f = min_conf > 0 ? confidence / min_conf : 0.0f;
+        f = f < 0 ? 0 : f > 1 ? 1 : f;
+        return f * f;
+    }
+    float rmax = 0.5f;
+    for (size_t p = 0; p < np; p++)
+        if (rel[p] > rmax) rmax = rel[p];
+    return rmax > 0.55f ? 0.5f / (rmax - 0.5f) : 1.0f;
+}
+
+int sem_heatmap_render(sp_query_engine *e, const sp_camera *cam, int found, float confidence,
+                       float min_confidence, uint8_t *img, float *rel_out, sp_error *err)
+{
+    if (cam->width < 1 || cam->height < 1 || cam->width > 16384 || cam->height > 16384 ||
+        !(cam->fx > 0) || !(cam->fy > 0))
+        return sp_error_set(err, SP_E_ARG, "heatmap: camera %dx%d, fx %g, fy %g is not a usable pinhole",
+                            cam->width, cam->height, (double)cam->fx, (double)cam->fy);
     int W = cam->width, H = cam->height;
     size_t np = (size_t)W * H;
-    (void)sc;
     float *rgb = malloc(sizeof(float) * np * 3), *rel = malloc(sizeof(float) * np),
           *raw = malloc(sizeof(float) * np);
-    uint8_t *img = malloc(np * 3);
     int rc = 0;
-    if (!rgb || !rel || !raw || !img) {
+    if (!rgb || !rel || !raw) {
         rc = sp_error_set(err, SP_E_NOMEM, "heatmap: out of memory for %dx%d", W, H);
         goto done;
     }
     /* The per-Gaussian relevancy composited like a colour (2 channels, not D), over the RGB. */
     if ((rc = sem_render_scores(e, cam, raw, rel, rgb, err))) goto done;
     if (cam->distortion != SP_DIST_NONE && (rc = to_photo_pixels(cam, rgb, rel, err))) goto done;
-    /* Stretch the visible relevancy to the full colour range when the query was found, so a
-     * weak-but-real CLIP match still reads; a query that was not found is faded (cold). */
-    float rmax = 0.5f;
-    for (size_t p = 0; p < np; p++)
-        if (rel[p] > rmax) rmax = rel[p];
-    float scale = res->valid && rmax > 0.55f ? 0.5f / (rmax - 0.5f) : 1.0f;
-    if (!res->valid) { /* not found: fade by how far the confidence is below the bar */
-        float f = e->opts.min_confidence > 0 ? res->confidence / e->opts.min_confidence : 0.0f;
-        f = f < 0 ? 0 : f > 1 ? 1 : f;
-        scale = f * f;
-    }
+    float scale = display_scale(rel, np, found, confidence, min_confidence);
     float *shown = raw; /* reuse */
     for (size_t p = 0; p < np; p++) shown[p] = 0.5f + (rel[p] - 0.5f) * scale;
     sp_heatmap_overlay(rgb, shown, W, H, img);
+    if (rel_out) memcpy(rel_out, rel, sizeof(float) * np);
+done:
+    free(rgb), free(rel), free(raw);
+    return rc;
+}
+
+int sem_heatmap(sp_query_engine *e, const sem_thresholds *th, int v, sp_query_result *res,
+                sp_error *err)
+{
+    if (v < 0 || (size_t)v >= e->n_cams)
+        return sp_error_set(err, SP_E_ARG, "heatmap: view %d not in 0..%zu", v, e->n_cams);
+    const sp_camera *cam = &e->cams[v];
+    size_t np = (size_t)cam->width * cam->height;
+    uint8_t *img = malloc(np * 3);
+    float *rel = malloc(sizeof(float) * np);
+    if (!img || !rel) {
+        free(img), free(rel);
+        return sp_error_set(err, SP_E_NOMEM, "heatmap: out of memory for %dx%d", cam->width, cam->height);
+    }
+    int rc = sem_heatmap_render(e, cam, res->valid, res->confidence, th->opts->min_confidence, img, rel, err);
+    if (rc) {
+        free(img), free(rel);
+        return rc;
+    }
     free(res->relevancy_image);
     free(res->relevancy);
     res->relevancy_image = img;
     res->relevancy = rel;
-    img = NULL;
-    rel = NULL;
-    res->width = W;
-    res->height = H;
+    res->width = cam->width;
+    res->height = cam->height;
     res->view_index = v;
     if (e->cam_names) snprintf(res->view_name, sizeof res->view_name, "%s", e->cam_names[v]);
     else snprintf(res->view_name, sizeof res->view_name, "view %d", v);
-done:
-    free(rgb), free(rel), free(raw), free(img);
-    return rc;
+    return 0;
 }

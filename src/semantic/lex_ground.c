@@ -49,12 +49,11 @@ static void extent_of(const sp_query_instance *in, int n, sp_lex_extent *x)
     x->n_instances = n;
 }
 
-static void not_found(sp_query_result *res, const char *text)
+/* An empty answer of the lexical encoder, in the engine's frame. */
+static void not_found(const sp_query_engine *e, sp_query_result *res, const char *text)
 {
-    memset(res, 0, sizeof *res);
-    res->view_index = -1;
-    res->position[0] = res->position[1] = res->position[2] = NAN;
-    snprintf(res->text, sizeof res->text, "%s", text);
+    sp_query_engine_result_init(e, text, res);
+    snprintf(res->source.encoder, sizeof res->source.encoder, "lexical");
 }
 
 /* Localizes one class (its label embedding) with lexical score `score` as the confidence. A
@@ -68,13 +67,13 @@ static int localize_class(sp_query_engine *e, const sp_lex_vocab *v, int cls, fl
     float *q = malloc(sizeof(float) * (size_t)F);
     if (!q) return sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");
     sp_label_embedding(sp_lex_vocab_class(v, cls), F, q);
-    sp_query_opts *o = sp_query_engine_opts(e), saved = *o;
-    o->min_confidence = 0.5f;
-    o->heatmap = heatmap && saved.heatmap;
-    int rc = sp_query_engine_query_embedding(e, q, text, res, err);
-    *o = saved;
+    sp_query_opts o = *sp_query_engine_defaults(e);
+    o.min_confidence = 0.5f;
+    o.heatmap = heatmap && o.heatmap;
+    int rc = sp_query_engine_query_embedding(e, q, text, &o, res, err);
     free(q);
     if (!rc) {
+        snprintf(res->source.encoder, sizeof res->source.encoder, "lexical");
         res->confidence = score;
         if (!res->valid) res->position[0] = res->position[1] = res->position[2] = NAN;
     }
@@ -87,7 +86,7 @@ static int localize_class(sp_query_engine *e, const sp_lex_vocab *v, int cls, fl
 static int localize_target(sp_query_engine *e, const sp_lex_vocab *v, const sp_lex_phrase *ph,
                            sp_query_result *res, int **classes, sp_error *err)
 {
-    not_found(res, ph->text);
+    not_found(e, res, ph->text);
     int rc = 0, have = 0;
     float *cls_score = NULL;
     int *cls = NULL;
@@ -183,7 +182,7 @@ static int localize_region(sp_query_engine *e, const sp_lex_vocab *v, const sp_l
         }
         sp_query_result_free(&r);
     }
-    not_found(res, ph->text);
+    not_found(e, res, ph->text);
     res->confidence = ph->n_matches ? ph->matches[0].score : 0;
     int *parent = rc || !n ? NULL : malloc(sizeof(int) * (size_t)n);
     if (!rc && n && !parent) rc = sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");

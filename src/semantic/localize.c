@@ -238,7 +238,7 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
     for (size_t i = 0; i < s->n; i++)
         if (e->raw[i] >= th->thr_raw && e->rel[i] >= th->thr_rel && e->opacity[i] >= th->min_op) m++;
     if (m == 0) {
-        set_best(res, e->opts.min_confidence);
+        set_best(res, th->opts->min_confidence);
         return 0;
     }
     float *pts = malloc(sizeof(float) * 3 * m), *w = malloc(sizeof(float) * m),
@@ -257,11 +257,11 @@ int sem_localize_3d(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thres
         cf[j] = e->raw[i];
         j++;
     }
-    int rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction, 0.0f,
+    int rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction, 0.0f,
                          &res->instances, &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
-    set_best(res, e->opts.min_confidence);
+    set_best(res, th->opts->min_confidence);
     return 0;
 }
 
@@ -353,8 +353,9 @@ static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float 
     return rc ? rc : sp_render_views(e->raster, e->scene, cam, 1, &req, err);
 }
 
-/* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels: a cheap occlusion test for
- * choosing views (a wall between a camera and the object), instead of rendering candidates. */
+/* Occupancy of opaque Gaussian centres on a grid of <= 256^3 voxels (core's sp_grid3, 1 =
+ * occupied): a cheap occlusion test for choosing views (a wall between a camera and the object),
+ * instead of rendering candidates. */
 static int build_occupancy(sp_query_engine *e, sp_error *err)
 {
     const sp_splat *s = &e->splat;
@@ -366,20 +367,14 @@ static int build_occupancy(sp_query_engine *e, sp_error *err)
         }
     float ext = fmaxf(hi[0] - lo[0], fmaxf(hi[1] - lo[1], hi[2] - lo[2]));
     float vox = fmaxf(0.05f, ext / 255.0f);
-    size_t tot = 1;
-    for (int a = 0; a < 3; a++) {
-        e->occ_dim[a] = (int)((hi[a] - lo[a]) / vox) + 1;
-        e->occ_lo[a] = lo[a];
-        tot *= (size_t)e->occ_dim[a];
-    }
-    e->occ_voxel = vox;
-    e->occ = calloc(tot, 1);
-    if (!e->occ) return sp_error_set(err, SP_E_NOMEM, "query: out of memory for the occupancy grid");
+    int dim[3];
+    for (int a = 0; a < 3; a++) dim[a] = (int)((hi[a] - lo[a]) / vox) + 1;
+    int rc = sp_grid3_alloc(&e->occ, dim[0], dim[1], dim[2], vox, lo, err);
+    if (rc) return sp_error_prefix(err, "query: occupancy grid: ");
     for (size_t i = 0; i < s->n; i++) {
-        if (e->opacity[i] < 0.5f) continue;
         int c[3];
-        for (int a = 0; a < 3; a++) c[a] = (int)((s->means[3 * i + a] - lo[a]) / vox);
-        e->occ[((size_t)c[2] * e->occ_dim[1] + c[1]) * e->occ_dim[0] + c[0]] = 1;
+        if (e->opacity[i] >= 0.5f && sp_grid3_cell(&e->occ, s->means + 3 * i, c))
+            e->occ.data[((size_t)c[2] * dim[1] + c[1]) * dim[0] + c[0]] = 1.0f;
     }
     return 0;
 }
@@ -388,18 +383,17 @@ static int build_occupancy(sp_query_engine *e, sp_error *err)
  * the first 0.2 m are not tested: p's own surface and the camera's surroundings). */
 static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
 {
+    const sp_grid3 *g = &e->occ;
     sp_vec3 d = sp_v3_sub(p, c);
-    float len = sp_v3_norm(d), step = 0.5f * e->occ_voxel;
+    float len = sp_v3_norm(d), step = 0.5f * g->res;
     if (len < 1e-6f) return 1;
     d = sp_v3_scale(d, 1.0f / len);
-    for (float t = 0.2f; t < len - 2.5f * e->occ_voxel; t += step) {
+    for (float t = 0.2f; t < len - 2.5f * g->res; t += step) {
         sp_vec3 x = sp_v3_add(c, sp_v3_scale(d, t));
-        int q[3] = {(int)floorf((x.x - e->occ_lo[0]) / e->occ_voxel), (int)floorf((x.y - e->occ_lo[1]) / e->occ_voxel),
-                    (int)floorf((x.z - e->occ_lo[2]) / e->occ_voxel)};
-        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= e->occ_dim[0] || q[1] >= e->occ_dim[1] ||
-            q[2] >= e->occ_dim[2])
-            continue;
-        if (e->occ[((size_t)q[2] * e->occ_dim[1] + q[1]) * e->occ_dim[0] + q[0]]) return 0;
+        float xp[3] = {x.x, x.y, x.z};
+        int q[3];
+        if (!sp_grid3_cell(g, xp, q)) continue;
+        if (g->data[((size_t)q[2] * g->ny + q[1]) * g->nx + q[0]] != 0) return 0;
     }
     return 1;
 }
@@ -410,7 +404,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     (void)sc;
     const sp_splat *s = &e->splat;
     if (e->n_cams == 0 || k <= 0) return 0;
-    if (!e->occ) {
+    if (!e->occ.data) {
         int rc = build_occupancy(e, err);
         if (rc) return rc;
     }
@@ -517,7 +511,7 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     /* n_views views at least; up to three times that while the relevant set is not covered
      * (instances spread over the house: windows, chairs on both sides of a table). With twice,
      * small instances far from the rest (a window, one chair) went unseen on the house. */
-    int k = e->opts.n_views > 0 ? e->opts.n_views : 4;
+    int k = th->opts->n_views > 0 ? th->opts->n_views : 4;
     int *views = malloc(sizeof(int) * (size_t)(3 * k));
     if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
     int got = sem_pick_views(e, sc, th, NULL, k, 3 * k, views, NULL, err);
@@ -529,7 +523,7 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     float *pts = NULL, *w = NULL, *cf = NULL;
     size_t m = 0, cap = 0;
     int rc = 0;
-    int ds = e->opts.render_downscale > 0 ? e->opts.render_downscale : 1;
+    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1;
     for (int q = 0; q < got && !rc; q++) {
         sp_camera cam;
         float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
@@ -590,11 +584,11 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     /* A cluster's weight here sums every view that saw it, so an instance seen from one or two
      * views weighs a fraction of one seen from many: the relative cut is a third of the 3D one. */
     if (!rc && m > 0)
-        rc = sem_cluster(pts, w, cf, m, e->opts.voxel_m, e->opts.min_instance_fraction / 3.0f,
-                         MV_MIN_VOXEL_COVER * e->opts.voxel_m * e->opts.voxel_m, &res->instances,
+        rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
+                         MV_MIN_VOXEL_COVER * th->opts->voxel_m * th->opts->voxel_m, &res->instances,
                          &res->n_instances, err);
     free(pts), free(w), free(cf);
     if (rc) return rc;
-    set_best(res, e->opts.min_confidence);
+    set_best(res, th->opts->min_confidence);
     return 0;
 }

@@ -75,6 +75,8 @@ int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
      * "clip" = the CLIP text tower of `model`. */
     const char *le = f.label_embedding[0] ? f.label_embedding : "clip";
     cJSON_AddStringToObject(o, "label_embedding", le);
+    /* the text encoder by name (what the query engine reads; "exact" = hashed class names) */
+    cJSON_AddStringToObject(o, "encoder", !strcmp(le, "hash") ? "exact" : "clip");
     if (f.model_path[0]) cJSON_AddStringToObject(o, "model", f.model_path);
     else cJSON_AddNullToObject(o, "model");
     cJSON_AddStringToObject(o, "method", method);

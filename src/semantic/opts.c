@@ -1,5 +1,5 @@
-/* Ranges of the query options, checked at every query: the options are a struct the caller may
- * change between queries (sp_query_engine_opts), so a bad value is an error naming it then. */
+/* Ranges of the query options, checked at every query (the engine's check_opts; options come
+ * per call), so a bad value is an error naming it. */
 #include <stddef.h>
 
 #include "sem_internal.h"
@@ -27,8 +27,6 @@ int sem_check_opts(const sp_query_opts *o, sp_error *err)
             return sp_error_set(err, SP_E_ARG, "query: %s %g is outside %g..%g", floats[i].name, v, floats[i].lo,
                                 floats[i].hi);
     }
-    if (o->method != SP_QUERY_3D && o->method != SP_QUERY_MULTIVIEW)
-        return sp_error_set(err, SP_E_ARG, "query: unknown method %d", o->method);
     if (o->n_views < 1 || o->n_views > 256)
         return sp_error_set(err, SP_E_ARG, "query: views %d outside 1..256", o->n_views);
     if (o->render_downscale < 1 || o->render_downscale > 64)

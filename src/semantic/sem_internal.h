@@ -2,24 +2,30 @@
 #ifndef SP_SEM_INTERNAL_H
 #define SP_SEM_INTERNAL_H
 
+#include <pthread.h>
+
 #include "semsplat/semantic.h"
 
 struct sp_clip;
 
 struct sp_query_engine {
+    pthread_mutex_t mu;        /* every public call holds it: scratch, caches and rasters below */
+    int has_mutex;
     sp_device *dev;
     sp_raster *raster;
     sp_log log;
     int has_log;
-    sp_splat splat;
+    sp_splat splat;            /* in the engine's frame (world_from_model applied at open) */
     sp_sem_pca pca;
     size_t n_cams;
-    sp_camera *cams;
+    sp_camera *cams;           /* in the engine's frame */
     char (*cam_names)[256];
-    int label_embedding;       /* 1: text -> sp_label_embedding; 0: CLIP text tower */
+    sp_query_source source;    /* encoder ("exact": sp_label_embedding, "clip": the text tower) */
+    sp_frame frame;
+    sp_query_frame qframe;     /* the frame as results carry it */
     char clip_path[1024];
     struct sp_clip *clip;      /* loaded on the first text query */
-    sp_query_opts opts;
+    sp_query_opts defaults;    /* options of calls that pass NULL */
     char neg_key[256];         /* negatives string the cached embeddings belong to */
     int n_neg;
     float *neg_emb;            /* [n_neg][full_dim] */
@@ -30,9 +36,7 @@ struct sp_query_engine {
     sp_scene *scores_scene;    /* the same geometry with scores2 as 2-channel features, updated
                                 * per query (made on first use) */
     float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
-    uint8_t *occ;              /* occupancy grid of opaque Gaussian centres, built on first use */
-    int occ_dim[3];
-    float occ_lo[3], occ_voxel;
+    sp_grid3 occ;              /* occupancy of opaque Gaussian centres (1), built on first use */
 };
 
 /* Every numeric query option in its range (opts.c); SP_E_ARG naming the option otherwise. */
@@ -45,9 +49,11 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
                 float min_fraction, float min_voxel_weight, sp_query_instance **out, int *n_out,
                 sp_error *err);
 
-/* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op. */
+/* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op,
+ * and the options of the call they belong to. */
 typedef struct {
     float thr_raw, thr_rel, min_op;
+    const sp_query_opts *opts;
 } sem_thresholds;
 
 /* Localizations: fill res->instances / position / valid / view_index. raw, rel per Gaussian
@@ -64,8 +70,13 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                    const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err);
 /* Renders view `v` at full size with the heatmap overlay into res. */
-int sem_heatmap(sp_query_engine *e, const sp_sem_scorer *sc, int v, sp_query_result *res,
+int sem_heatmap(sp_query_engine *e, const sem_thresholds *th, int v, sp_query_result *res,
                 sp_error *err);
+/* The overlay of the last scoring through any camera: img [H][W][3], rel [H][W] (may be NULL).
+ * found: stretch the visible relevancy to the full colour range; else fade it by how far
+ * confidence is below min_confidence. */
+int sem_heatmap_render(sp_query_engine *e, const sp_camera *cam, int found, float confidence,
+                       float min_confidence, uint8_t *img, float *rel, sp_error *err);
 /* Renders the per-Gaussian (raw, rel) of the last scoring through camera cam (2 channels, cheap
  * next to D feature channels): raw/rel [H][W] of the alpha-normalised composite where alpha >
  * 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */

@@ -108,6 +108,17 @@ static int write_json(const sp_world *w, const char *out, sp_error *err)
     return rc;
 }
 
+/* The capture's frame.json: poses, points and ground truth are all in the SDF world frame. */
+static int write_frame(const sp_world *w, const char *out, sp_error *err)
+{
+    sp_frame f;
+    sp_frame_init(&f, "synth");
+    snprintf(f.note, sizeof f.note, "synth capture of %s", w->path);
+    char path[2048];
+    snprintf(path, sizeof path, "%s/frame.json", out);
+    return sp_frame_write(path, &f, err);
+}
+
 typedef struct write_job {
     const char *out;
     const sp_camera *cams;
@@ -270,6 +281,7 @@ int sp_synth_capture(const sp_world *w, const char *out, const sp_synth_capture_
         free(pids);
     }
     if (!rc) rc = write_json(w, out, err);
+    if (!rc) rc = write_frame(w, out, err);
     sp_progress_end(&prog, rc ? "failed" : NULL);
     free(pts);
     free(cams);

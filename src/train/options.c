@@ -74,8 +74,9 @@ int tr_check_option_ranges(const sp_train_options *o, sp_error *err)
     for (int k = 0; k < 3; k++)
         if (!(o->background[k] >= 0 && o->background[k] <= 1))
             return sp_error_set(err, SP_E_ARG, "train: background %g is outside [0, 1]", o->background[k]);
-    if (o->checkpoint_dir && o->checkpoint_every < 1)
-        return sp_error_set(err, SP_E_ARG, "train: checkpoint_every %d must be >= 1", o->checkpoint_every);
+    /* 0: no periodic checkpoints (the final one is still written when checkpoint_dir is set) */
+    if (o->checkpoint_every < 0 || o->checkpoint_every > 10000000)
+        return sp_error_set(err, SP_E_ARG, "train: checkpoint_every %d outside 0 (none)..10000000", o->checkpoint_every);
     if (o->max_gaussians > (size_t)1 << 30)
         return sp_error_set(err, SP_E_ARG, "train: max_gaussians %zu is beyond 2^30", o->max_gaussians);
     return SP_OK;

@@ -22,7 +22,7 @@ min_build() {
             "-DSP_DATA_DIR=\"$PWD/data\"" -Iinclude -Isrc -I.clipdev/include -I.clipdev/include/cjson
             -I"$(dirname "$(dirname "$nv")")/include")
   for f in src/core/*.c src/device/*.c src/io/common.c src/io/json.c src/io/npy.c src/io/safetensors.c \
-           src/clip/tokenizer.c src/clip/model.c src/clip/cpu.c src/clip/dense.c src/clip/label.c; do
+           src/clip/tokenizer.c src/clip/model.c src/clip/cpu.c src/clip/dense.c src/clip/label.c src/clip/half_host.c; do
     o=$b/$(echo "$f" | tr / _).o; objs+=("$o"); gcc "${cf[@]}" -c "$f" -o "$o" &
   done
   for f in src/device/cuda/*.cu src/clip/cuda/*.cu; do
@@ -31,7 +31,7 @@ min_build() {
   done
   wait
   rm -f $b/libsp.a; ar rcs $b/libsp.a "${objs[@]}" || return 1
-  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lcudart -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
+  local lk=($b/libsp.a -L.clipdev/lib -lcjson -lcublas -lcublasLt -lcudart -lm -lpthread -Xlinker -rpath="$PWD/.clipdev/lib")
   for t in $TESTS; do
     gcc "${cf[@]}" -Itests "-DSP_SOURCE_DIR=\"$PWD\"" "-DSP_BUILD_DIR=\"$PWD/build-gpu\"" -c tests/clip/$t.c -o $b/$t.o &&
       "$nv" -arch=sm_90 -o build-gpu/clip_$t $b/$t.o "${lk[@]}" || echo "link $t failed"
@@ -64,7 +64,7 @@ SP_CLIP_REF_DIR="$W/ref" ./build-gpu/clip_test_reference --gpu 2>&1 | tee -a "$O
 el "parity done"
 python3 scripts/clip_reference.py bench 2>&1 | grep -v -i warn | tee "$OUT/anchor-clip.jsonl"
 el "transformers bench done"
-./build-gpu/bench/bench_clip --gpu-only --anchor "$OUT/anchor-clip.jsonl" 2>&1 | tee "$OUT/bench_clip.txt"
+./build-gpu/bench/bench_clip --gpu-only ${BENCH_ARGS:-} --anchor "$OUT/anchor-clip.jsonl" 2>&1 | tee "$OUT/bench_clip.txt"
 el "bench done"
 [ -n "$TPID" ] && { wait $TPID; el "tokenizer pairs rc $?"; tail -3 "$W/tok.log"; }
 for f in "$W"/tok/tokenizer_pairs_all_*.json; do

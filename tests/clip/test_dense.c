@@ -2,6 +2,8 @@
  * tiling and overlap averaging against per-tile dense-head calls done here, the bicubic resize
  * against a direct double implementation of PIL's antialiased filter, and bilinear upsampling. */
 #include "semsplat/clip.h"
+#include "semsplat/device.h"
+#include "clip/clip_internal.h"
 #include "test.h"
 
 static sp_clip *c;
@@ -116,6 +118,19 @@ static void test_preprocess(void)
     free(rgb); free(px); free(row); free(tmp); free(col); free(colo);
 }
 
+/* Tile origins: the count alone (cap 0, as the GPU path sizes its tables) equals the count
+ * written; 640x480 at scale 2 is 11 x 8 tiles of 224 at stride 112, the last flush. */
+static void test_tile_starts(void)
+{
+    int xs[64], ys[64];
+    CHECK(clip_tile_starts(1280, 224, 112, NULL, 0) == 11 && clip_tile_starts(1280, 224, 112, xs, 64) == 11);
+    CHECK(clip_tile_starts(960, 224, 112, NULL, 0) == 8 && clip_tile_starts(960, 224, 112, ys, 64) == 8);
+    CHECK(xs[0] == 0 && xs[9] == 1008 && xs[10] == 1056 && ys[7] == 736);
+    CHECK(clip_tile_starts(224, 224, 112, NULL, 0) == 1 && clip_tile_starts(224, 224, 112, xs, 64) == 1 && xs[0] == 0);
+    /* more than cap: counted, only cap written */
+    CHECK(clip_tile_starts(1280, 224, 16, xs, 3) == 67 && xs[2] == 32);
+}
+
 static void test_upsample(void)
 {
     /* a linear ramp is reproduced exactly away from the borders */
@@ -134,8 +149,55 @@ static void test_upsample(void)
         }
 }
 
-int main(void)
+/* The device-resident dense pipeline against the CPU path on the same model: two scales (the
+ * second resampled onto the first's grid), an image that is not a whole number of tiles, both
+ * heads, fp32 and fp16. */
+static void test_gpu_dense(void)
 {
+    char w[1024];
+    snprintf(w, sizeof w, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    sp_clip *gpu = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CUDA, 0, &err), &err);
+    if (dev) CHECK_OK(sp_clip_load(&gpu, w, NULL, dev, &err), &err);
+    if (!gpu) {
+        sp_device_free(dev);
+        return;
+    }
+    int W = 150, H = 97, P = sp_clip_embed_dim(c);
+    test_rng rng = {31};
+    float *rgb = malloc(sizeof(float) * W * H * 3);
+    for (int i = 0; i < W * H * 3; i++) rgb[i] = (float)test_uniform(&rng);
+    sp_clip_dense_opts o = sp_clip_dense_opts_default();
+    o.n_scales = 2;
+    o.scales[0] = 1.0f;
+    o.scales[1] = 0.75f;
+    o.batch = 3;
+    int gw, gh;
+    sp_clip_dense_grid(c, &o, W, H, &gw, &gh);
+    float *a = malloc(sizeof(float) * gw * gh * P), *b = malloc(sizeof(float) * gw * gh * P);
+    for (int fp16 = 0; fp16 <= 1; fp16++)
+        for (int head = 0; head <= 1; head++) {
+            o.head = (sp_clip_head)head;
+            CHECK_OK(sp_clip_set_fp16(gpu, fp16, &err), &err);
+            CHECK_OK(sp_clip_dense_features(c, rgb, W, H, &o, a, &err), &err);
+            for (int i = 0; i < gw * gh * P; i++) b[i] = NAN; /* every cell must be written */
+            CHECK_OK(sp_clip_dense_features(gpu, rgb, W, H, &o, b, &err), &err);
+            double worst = 0;
+            for (int i = 0; i < gw * gh * P; i++) worst = isfinite(b[i]) ? fmax(worst, fabs(a[i] - b[i])) : 1e9;
+            fprintf(stderr, "dense GPU %s head %d vs CPU (%dx%d grid): max abs %.3g\n", fp16 ? "fp16" : "fp32", head, gw,
+                    gh, worst);
+            CHECK(worst < (fp16 ? 3e-2 : 1e-4));
+        }
+    free(rgb); free(a); free(b);
+    sp_clip_free(gpu);
+    sp_device_free(dev);
+}
+
+int main(int argc, char **argv)
+{
+    TEST_ARGS(argc, argv);
     char w[1024];
     snprintf(w, sizeof w, "%s/tests/fixtures/clip/tiny/model.safetensors", SP_SOURCE_DIR);
     sp_error err = {0};
@@ -146,6 +208,8 @@ int main(void)
     RUN(test_tiles);
     RUN(test_preprocess);
     RUN(test_upsample);
+    RUN(test_tile_starts);
+    RUN_GPU(test_gpu_dense);
     sp_clip_free(c);
     return TEST_EXIT();
 }

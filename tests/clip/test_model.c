@@ -7,6 +7,7 @@
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "semsplat/device.h"
+#include "clip/clip_internal.h"
 #include "test.h"
 
 enum { TW = 32, TH = 2, TL = 2, TM = 64, VOCAB = 49408, CTX = 77,
@@ -421,6 +422,97 @@ done:
     sp_device_free(dev);
 }
 
+/* The host fp32 -> fp16 conversion of the GPU uploads (F16C where the CPU has it) rounds as
+ * sp_float_to_half: to nearest even, denormals, overflow to infinity, signed zeros. */
+static void test_half_host(void)
+{
+    enum { N = 4099 };
+    static float x[N];
+    static uint16_t a[N];
+    for (int i = 0; i < N; i++) {
+        double mag = pow(2.0, test_range(&rng, -26, 17)); /* underflow to overflow */
+        x[i] = (float)((i & 1 ? -1 : 1) * mag);
+    }
+    x[0] = 0.f; x[1] = -0.f; x[2] = 65504.f; x[3] = 65520.f; x[4] = 1.0009765625f + 0.00048828125f; /* a tie */
+    x[5] = INFINITY; x[6] = -INFINITY; x[7] = 5.96e-8f; x[8] = 2.98e-8f;
+    clip_floats_to_half(x, a, N);
+    int bad = 0;
+    for (int i = 0; i < N; i++) bad += a[i] != sp_float_to_half(x[i]);
+    CHECK_MSG(bad == 0, "%d of %d conversions differ from sp_float_to_half", bad, N);
+}
+
+/* The fused fp16 attention kernel alone against a double reference on the same fp16-rounded
+ * inputs: head widths 16/32/64, sequence lengths around the 64-row tiles (1, 63, 64, 65, 77,
+ * 197), causal and not, q-q (ClearCLIP) and q-k; every output element written and finite. */
+static void ref_attention(const float *qkv, int B, int T, int H, int w, int causal, int qq, double *out)
+{
+    int d = w / H;
+    double *p = malloc(sizeof(double) * T);
+    for (int b = 0; b < B; b++)
+        for (int h = 0; h < H; h++)
+            for (int q = 0; q < T; q++) {
+                const float *qr = qkv + ((size_t)b * T + q) * 3 * w + h * d;
+                double m = -1e300, sum = 0;
+                int n = causal ? q + 1 : T;
+                for (int k = 0; k < n; k++) {
+                    const float *kr = qkv + ((size_t)b * T + k) * 3 * w + (qq ? 0 : w) + h * d;
+                    double s = 0;
+                    for (int c = 0; c < d; c++) s += (double)qr[c] * kr[c];
+                    p[k] = s / sqrt((double)d);
+                    if (p[k] > m) m = p[k];
+                }
+                for (int k = 0; k < n; k++) sum += (p[k] = exp(p[k] - m));
+                for (int c = 0; c < d; c++) {
+                    double o = 0;
+                    for (int k = 0; k < n; k++) o += p[k] * qkv[((size_t)b * T + k) * 3 * w + 2 * w + h * d + c];
+                    out[((size_t)b * T + q) * w + h * d + c] = o / sum;
+                }
+            }
+    free(p);
+}
+
+static void test_gpu_attention(void)
+{
+    sp_error err = {0};
+    sp_device *dev = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CUDA, 0, &err), &err);
+    if (!dev) return;
+    /* 800 keys of width 64 do not fit in shared memory: the sequence-resident kernel hands over
+     * to the tiled one */
+    const int Ts[] = {1, 63, 64, 65, 77, 197, 300, 800}, ds[] = {16, 32, 64};
+    double worst[2] = {0, 0};
+    int cases = 0;
+    for (int ti = 0; ti < 8; ti++)
+        for (int di = 0; di < 3; di++)
+            for (int mode = 0; mode < 3; mode++) {
+                int T = Ts[ti], d = ds[di], H = 2, w = H * d, B = 2, causal = mode == 1, qq = mode == 2;
+                if (T == 800 && d != 64) continue;
+                size_t nin = (size_t)B * T * 3 * w, nout = (size_t)B * T * w;
+                float *qkv = malloc(sizeof(float) * nin), *got = malloc(sizeof(float) * nout);
+                double *ref = malloc(sizeof(double) * nout);
+                /* scores up to a few units (softmax neither flat nor one-hot), rounded to fp16 */
+                for (size_t i = 0; i < nin; i++)
+                    qkv[i] = sp_half_to_float(sp_float_to_half((float)test_range(&rng, -1.5, 1.5)));
+                ref_attention(qkv, B, T, H, w, causal, qq, ref);
+                for (int v1 = 0; v1 <= 1; v1++) {
+                    CHECK_OK(clip_gpu_attention_check(dev, qkv, B, T, H, w, causal, qq, v1, got, &err), &err);
+                    double e = 0;
+                    for (size_t i = 0; i < nout; i++) e = isfinite(got[i]) ? fmax(e, fabs(got[i] - ref[i])) : 1e9;
+                    CHECK_MSG(e < 4e-3, "fused attention %s T=%d d=%d causal=%d qq=%d: max abs %g",
+                              v1 ? "tiled" : "resident", T, d, causal, qq, e);
+                    worst[v1] = fmax(worst[v1], e);
+                    cases++;
+                }
+                free(qkv); free(got); free(ref);
+            }
+    fprintf(stderr, "fused attention vs double: %d cases, max abs %.3g (resident K/V), %.3g (tiled)\n", cases,
+            worst[0], worst[1]);
+    /* a head width the kernel does not take is refused, not miscomputed */
+    float one[3 * 24] = {0}, o1[24];
+    CHECK_FAILS(clip_gpu_attention_check(dev, one, 1, 1, 1, 24, 0, 0, 0, o1, &err), SP_E_UNSUPPORTED, &err, "width");
+    sp_device_free(dev);
+}
+
 static void test_errors(void)
 {
     sp_clip *c = NULL;
@@ -489,7 +581,9 @@ int main(int argc, char **argv)
     RUN(test_text);
     RUN(test_vision);
     RUN(test_half_files);
+    RUN(test_half_host);
     RUN_GPU(test_gpu);
+    RUN_GPU(test_gpu_attention);
     RUN(test_errors);
     for (int i = 0; i < n_w; i++) free(W[i].data);
     return TEST_EXIT();

@@ -10,6 +10,7 @@
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "semsplat/device.h"
+#include "clip/clip_internal.h"
 #include "test.h"
 
 static char dir[1024];
@@ -121,6 +122,11 @@ static void test_gpu(void)
         run_model(c, "gpu-fp32", 1e-4);
         CHECK_OK(sp_clip_set_fp16(c, 1, &err), &err);
         run_model(c, "gpu-fp16", 5e-2);
+        clip_gpu_set_flags(c, CLIP_GPU_FLASH_V1); /* the tiled fused-attention kernel */
+        run_model(c, "gpu-fp16-tiled", 5e-2);
+        clip_gpu_set_flags(c, CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH); /* plain cuBLAS, no fusion */
+        run_model(c, "gpu-fp16-plain", 5e-2);
+        clip_gpu_set_flags(c, 0);
     }
     sp_clip_free(c);
     sp_device_free(dev);

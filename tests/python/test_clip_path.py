@@ -16,14 +16,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import gs_semantic_query as gq  # noqa: E402
 
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("CHECK failed: " + what, file=sys.stderr)
+import checks  # noqa: E402
+from checks import check  # noqa: E402
 
 
 def vec3(v):
@@ -64,9 +58,13 @@ def main():
               and r.relevancy_image.dtype == np.uint8, "heatmap overlay (48, 64, 3) uint8")
         check(r.relevancy is not None and r.relevancy.shape == (cam_h, cam_w), "relevancy (48, 64)")
         check(r.timings_ms["embed"] > 0 and r.timings_ms["total"] >= r.timings_ms["embed"], "timings")
+        # what produced it, and where: CLIP text and features, no label caveat, the synth world
+        want = {"encoder": "clip", "features": "clip", "ground_truth": False, "note": None}
+        check(r.source == want and j["source"] == want, "source: Python %s, CLI %s" % (r.source, j["source"]))
+        check(r.frame["name"] == "world" and r.frame == j["frame"], "frame: Python %s, CLI %s" % (r.frame, j["frame"]))
     print("clip path: found %s, confidence %.3f, %d instances (random tiny weights)"
           % (r.found, r.confidence, len(r.instances)))
-    return 1 if failures else 0
+    return 1 if checks.failures else 0
 
 
 if __name__ == "__main__":

@@ -1,6 +1,8 @@
 """The Python module against the CLI: the same model folder and query must give the same answer
-(found, position, confidence, instances, view) through gs_semantic_query and `semsplat query
---json`. Run by tests/semantic/test_python.c with a model folder it builds:
+(found, position, confidence, instances, view, source, frame) through gs_semantic_query and
+`semsplat query --json`, and positions come out in the folder's frame (frame.json moves the model
+into a world frame; expect.json says where the table must be). Run by tests/semantic/test_python.c
+with a model folder it builds:
     test_query.py MODEL_DIR SEMSPLAT_BINARY
 """
 import json
@@ -13,14 +15,8 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "python"))
 import gs_semantic_query as gq  # noqa: E402
 
-failures = 0
-
-
-def check(cond, what):
-    global failures
-    if not cond:
-        failures += 1
-        print("CHECK failed: " + what, file=sys.stderr)
+import checks  # noqa: E402
+from checks import check  # noqa: E402
 
 
 def cli(binary, model, text, method):
@@ -34,8 +30,23 @@ def close(a, b, tol=1e-5):
     return a is not None and b is not None and np.allclose(np.asarray(a, float), np.asarray(b, float), atol=tol)
 
 
+EXPECT_SOURCE = {"encoder": "exact", "features": "labels", "ground_truth": True}
+EXPECT_FRAME = {"name": "world", "source": "align", "units": "m", "up": "+z"}
+
+
+def check_provenance(r, j, tag):
+    """Source and frame: named, the same through Python and the CLI, with the label caveat."""
+    for k, v in EXPECT_SOURCE.items():
+        check(r.source[k] == v and j["source"][k] == v, tag + ": source %s = %r / CLI %r" % (k, r.source[k], j["source"][k]))
+    check(r.source["note"] == j["source"]["note"] and "perfect 2D segmentation" in (r.source["note"] or ""),
+          tag + ": source note %r" % r.source["note"])
+    check(r.frame == EXPECT_FRAME and j["frame"] == EXPECT_FRAME, tag + ": frame %r / CLI %r" % (r.frame, j["frame"]))
+    check(r.to_dict()["source"] == r.source and r.to_dict()["frame"] == r.frame, tag + ": to_dict carries both")
+
+
 def main():
     model, binary = sys.argv[1], sys.argv[2]
+    table_world = np.array(json.load(open(os.path.join(model, "expect.json")))["table_world"])
     q = gq.SemanticSplatQuery(model_path=model, device="cpu")
     check(q.n_cameras > 0, "cameras loaded")
     for method in ("3d", "multiview"):
@@ -43,6 +54,8 @@ def main():
             r = q.query(text, method=method)
             j = cli(binary, model, text, method)
             tag = "%s/%s" % (text, method)
+            check_provenance(r, j, tag)
+            check(r.method == method and j["method"] == method, tag + ": method of this call")
             check(r.found == j["found"], tag + ": found %s vs CLI %s" % (r.found, j["found"]))
             check(abs(r.confidence - j["confidence"]) < 1e-6, tag + ": confidence")
             check(len(r.instances) == len(j["instances"]), tag + ": instance count")
@@ -61,6 +74,11 @@ def main():
                   tag + ": relevancy_image H x W x 3 uint8")
             check(isinstance(r.confidence, float), tag + ": confidence is a float")
             check(j["heatmap"] is not None and os.path.exists(j["heatmap"]), tag + ": CLI heatmap written")
+    # the table in the world frame of frame.json (both methods: splat and cameras moved alike)
+    for method in ("3d", "multiview"):
+        r = q.query("table", method=method)
+        check(r.found and np.linalg.norm(r.position - table_world) < (0.1 if method == "3d" else 0.25),
+              "table/%s at %s, world truth %s" % (method, r.position, table_world))
     # chairs: two instances; the embedding path gives the same answer as text
     r = q.query("chair")
     check(len(r.instances) == 2, "two chairs")
@@ -72,11 +90,11 @@ def main():
     try:
         gq.SemanticSplatQuery(model_path=os.path.join(model, "missing"))
         check(False, "opening a missing folder raises")
-    except gq.SemsplatError as e:
-        check("semantic.json" in str(e), "error names semantic.json: %s" % e)
+    except FileNotFoundError as e:
+        check(isinstance(e, gq.SemsplatError) and "semantic.json" in str(e), "error names semantic.json: %s" % e)
     q.close()
-    print("python: %d failures" % failures)
-    return 1 if failures else 0
+    print("python: %d failures" % checks.failures)
+    return 1 if checks.failures else 0
 
 
 if __name__ == "__main__":

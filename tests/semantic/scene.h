@@ -159,7 +159,8 @@ static inline void sc_make_engine(int n_cams, int w, int h, int n_threads, float
     sc_make_cams(cams, n_cams, w, h);
     sp_error err = {0};
     if (sp_device_create(dev, SP_DEVICE_CPU, n_threads, &err) ||
-        sp_query_engine_create(eng, &s, &pca, cams, (size_t)n_cams, 1, NULL, *dev, NULL, &err)) {
+        sp_query_engine_create(eng, &(sp_query_model){.splat = &s, .pca = &pca, .cams = cams, .n_cams = (size_t)n_cams},
+                               NULL, *dev, NULL, &err)) {
         fprintf(stderr, "setup: %s\n", err.msg);
         exit(1);
     }

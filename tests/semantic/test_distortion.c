@@ -147,9 +147,10 @@ static void test_lift_and_heatmap_through_a_lens(void)
     if (!e) return;
     CHECK(sp_query_engine_camera(e, 0)->distortion == SP_DIST_OPENCV);
     const int v = 5;
-    sp_query_engine_opts(e)->heatmap_view = v;
+    sp_query_opts qo = sp_query_opts_default();
+    qo.heatmap_view = v;
     sp_query_result res;
-    CHECK_OK(sp_query_engine_query(e, "table", &res, &err), &err);
+    CHECK_OK(sp_query_engine_query(e, "table", &qo, &res, &err), &err);
     uint8_t *truth = malloc(W * H);
     table_mask(v, truth);
     long inter = 0, uni = 0, n_truth = 0;

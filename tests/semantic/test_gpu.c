@@ -24,15 +24,17 @@ static void test_gpu_engine_matches_cpu(void)
     sp_query_engine *ec = NULL, *eg = NULL;
     CHECK_OK(sp_device_create(&cpu, SP_DEVICE_CPU, 2, &err), &err);
     CHECK_OK(sp_device_create(&gpu, SP_DEVICE_CUDA, 2, &err), &err);
-    CHECK_OK(sp_query_engine_create(&ec, &s, &pca, cams, 12, 1, NULL, cpu, NULL, &err), &err);
-    CHECK_OK(sp_query_engine_create(&eg, &s, &pca, cams, 12, 1, NULL, gpu, NULL, &err), &err);
+    sp_query_model qm = {.splat = &s, .pca = &pca, .cams = cams, .n_cams = 12};
+    CHECK_OK(sp_query_engine_create(&ec, &qm, NULL, cpu, NULL, &err), &err);
+    CHECK_OK(sp_query_engine_create(&eg, &qm, NULL, gpu, NULL, &err), &err);
     const char *texts[4] = {"table", "chair", "lamp", "refrigerator"};
     for (int m = 0; m < 2 && ec && eg; m++) {
-        sp_query_engine_opts(ec)->method = sp_query_engine_opts(eg)->method = m;
+        sp_query_opts qo = sp_query_opts_default();
+        qo.method = m;
         for (int q = 0; q < 4; q++) {
             sp_query_result a, b;
-            CHECK_OK(sp_query_engine_query(ec, texts[q], &a, &err), &err);
-            CHECK_OK(sp_query_engine_query(eg, texts[q], &b, &err), &err);
+            CHECK_OK(sp_query_engine_query(ec, texts[q], &qo, &a, &err), &err);
+            CHECK_OK(sp_query_engine_query(eg, texts[q], &qo, &b, &err), &err);
             CHECK_NEAR(a.confidence, b.confidence, 1e-5);
             CHECK(a.valid == b.valid && a.n_instances == b.n_instances);
             if (a.valid && b.valid)

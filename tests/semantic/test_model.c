@@ -101,7 +101,7 @@ static void test_lift_model_folder_then_query(void)
         const int objs[3] = {2, 3, 0};
         for (int q = 0; q < 3; q++) {
             sp_query_result res;
-            CHECK_OK(sp_query_engine_query(e, names[q], &res, &err), &err);
+            CHECK_OK(sp_query_engine_query(e, names[q], NULL, &res, &err), &err);
             float c[3];
             sc_center(objs[q], c);
             double best = 1e9;
@@ -179,7 +179,7 @@ static void test_clip_text_tower_sidecar(void)
             sp_clip_free(c);
         }
         sp_query_result res;
-        CHECK_OK(sp_query_engine_query(e, "a red mug", &res, &err), &err);
+        CHECK_OK(sp_query_engine_query(e, "a red mug", NULL, &res, &err), &err);
         CHECK(res.confidence > -1.0f && res.confidence <= 1.0f);
         sp_query_result_free(&res);
         sp_query_engine_free(e);
@@ -193,7 +193,7 @@ static void test_clip_text_tower_sidecar(void)
     CHECK_OK(sp_query_engine_open(&e, dir, NULL, dev, NULL, &err), &err);
     if (e) {
         sp_query_result res;
-        CHECK_FAILS(sp_query_engine_query(e, "mug", &res, &err), SP_E_FORMAT, &err, "64");
+        CHECK_FAILS(sp_query_engine_query(e, "mug", NULL, &res, &err), SP_E_FORMAT, &err, "64");
         sp_query_engine_free(e);
     }
     sp_device_free(dev);

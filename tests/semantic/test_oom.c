@@ -90,13 +90,14 @@ static int same_result(const sp_query_result *a, const sp_query_result *b)
 /* Fails each library allocation of one query in turn. */
 static void sweep(int method, const char *text)
 {
-    sp_query_engine_opts(g_eng)->method = method;
+    sp_query_opts qo = sp_query_opts_default();
+    qo.method = method;
     sp_query_result ref, res;
     sp_error err = {0};
-    CHECK_OK(sp_query_engine_query(g_eng, text, &ref, &err), &err);
+    CHECK_OK(sp_query_engine_query(g_eng, text, &qo, &ref, &err), &err);
     /* count the library's allocations in one query */
     armed = 1, n_calls = 0, fail_at = 0;
-    CHECK_OK(sp_query_engine_query(g_eng, text, &res, &err), &err);
+    CHECK_OK(sp_query_engine_query(g_eng, text, &qo, &res, &err), &err);
     armed = 0;
     long total = n_calls;
     CHECK(same_result(&ref, &res));
@@ -106,7 +107,7 @@ static void sweep(int method, const char *text)
     for (long k = 1; k <= total; k++) {
         sp_error_clear(&err);
         armed = 1, n_calls = 0, fail_at = k, n_failed = 0;
-        int rc = sp_query_engine_query(g_eng, text, &res, &err);
+        int rc = sp_query_engine_query(g_eng, text, &qo, &res, &err);
         armed = 0;
         if (n_failed == 0) { /* fewer allocations this time (a cache filled earlier) */
             sp_query_result_free(&res);
@@ -122,7 +123,7 @@ static void sweep(int method, const char *text)
     }
     CHECK_MSG(wrong == 0, "%ld of %ld injected failures did not end in SP_E_NOMEM", wrong, total);
     /* the engine is intact: the same answer as before */
-    CHECK_OK(sp_query_engine_query(g_eng, text, &res, &err), &err);
+    CHECK_OK(sp_query_engine_query(g_eng, text, &qo, &res, &err), &err);
     CHECK(same_result(&ref, &res));
     sp_query_result_free(&res);
     sp_query_result_free(&ref);

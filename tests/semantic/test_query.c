@@ -16,6 +16,7 @@ enum { NCAM = 12, CW = 160, CH = 120 };
 
 static sp_device *g_dev;
 static sp_query_engine *g_eng;
+static sp_query_opts g_opts; /* per-call options: each test sets what it needs */
 static float g_emb[SC_CLASSES][SC_FULL];
 
 static double dist3(const float *a, const float *b)
@@ -23,14 +24,18 @@ static double dist3(const float *a, const float *b)
     return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
 }
 
-static void setup(void) { sc_make_engine(NCAM, CW, CH, 2, g_emb, &g_dev, &g_eng); }
+static void setup(void)
+{
+    sc_make_engine(NCAM, CW, CH, 2, g_emb, &g_dev, &g_eng);
+    g_opts = sp_query_opts_default();
+}
 
 static void test_3d_finds_table_and_chairs(void)
 {
     sp_query_result res;
     sp_error err = {0};
-    sp_query_engine_opts(g_eng)->method = SP_QUERY_3D;
-    CHECK_OK(sp_query_engine_query(g_eng, "table", &res, &err), &err);
+    g_opts.method = SP_QUERY_3D;
+    CHECK_OK(sp_query_engine_query(g_eng, "table", &g_opts, &res, &err), &err);
     float c[3];
     sc_center(2, c);
     CHECK(res.valid);
@@ -39,7 +44,7 @@ static void test_3d_finds_table_and_chairs(void)
     CHECK(res.n_instances == 1);
     sp_query_result_free(&res);
 
-    CHECK_OK(sp_query_engine_query(g_eng, "Chair", &res, &err), &err); /* case and spaces normalised */
+    CHECK_OK(sp_query_engine_query(g_eng, "Chair", &g_opts, &res, &err), &err); /* case and spaces normalised */
     CHECK(res.valid);
     CHECK_MSG(res.n_instances == 2, "%d chair instances", res.n_instances);
     float c0[3], c1[3];
@@ -59,11 +64,11 @@ static void test_multiview_finds_table_and_lamp(void)
 {
     sp_query_result res;
     sp_error err = {0};
-    sp_query_engine_opts(g_eng)->method = SP_QUERY_MULTIVIEW;
+    g_opts.method = SP_QUERY_MULTIVIEW;
     const int objs[2] = {2, 3};
     const char *names[2] = {"table", "lamp"};
     for (int q = 0; q < 2; q++) {
-        CHECK_OK(sp_query_engine_query(g_eng, names[q], &res, &err), &err);
+        CHECK_OK(sp_query_engine_query(g_eng, names[q], &g_opts, &res, &err), &err);
         float c[3];
         sc_center(objs[q], c);
         CHECK(res.valid && res.method == SP_QUERY_MULTIVIEW);
@@ -72,18 +77,18 @@ static void test_multiview_finds_table_and_lamp(void)
                   res.position[0], res.position[1], res.position[2], c[0], c[1], c[2]);
         sp_query_result_free(&res);
     }
-    sp_query_engine_opts(g_eng)->method = SP_QUERY_3D;
+    g_opts.method = SP_QUERY_3D;
 }
 
 static void test_absent_classes(void)
 {
     const char *absent[] = {"refrigerator", "bathtub", "piano"};
     for (int m = 0; m < 2; m++) {
-        sp_query_engine_opts(g_eng)->method = m ? SP_QUERY_MULTIVIEW : SP_QUERY_3D;
+        g_opts.method = m ? SP_QUERY_MULTIVIEW : SP_QUERY_3D;
         for (int q = 0; q < 3; q++) {
             sp_query_result res;
             sp_error err = {0};
-            CHECK_OK(sp_query_engine_query(g_eng, absent[q], &res, &err), &err);
+            CHECK_OK(sp_query_engine_query(g_eng, absent[q], &g_opts, &res, &err), &err);
             CHECK_MSG(!res.valid, "%s found (method %d)", absent[q], m);
             CHECK(isnan(res.position[0]));
             CHECK_MSG(res.confidence < 0.15f, "%s: confidence %.3f", absent[q], res.confidence);
@@ -96,14 +101,14 @@ static void test_absent_classes(void)
             sp_query_result_free(&res);
         }
     }
-    sp_query_engine_opts(g_eng)->method = SP_QUERY_3D;
+    g_opts.method = SP_QUERY_3D;
 }
 
 static void test_heatmap_hot_on_object(void)
 {
     sp_query_result res;
     sp_error err = {0};
-    CHECK_OK(sp_query_engine_query(g_eng, "lamp", &res, &err), &err);
+    CHECK_OK(sp_query_engine_query(g_eng, "lamp", &g_opts, &res, &err), &err);
     CHECK(res.relevancy_image != NULL && res.width == CW && res.height == CH);
     CHECK(res.view_index >= 0);
     if (res.relevancy_image && res.view_index >= 0) {
@@ -144,11 +149,11 @@ static void test_heatmap_hot_on_object(void)
     free(js);
     sp_query_result_free(&res);
     /* a given camera */
-    sp_query_engine_opts(g_eng)->heatmap_view = 3;
-    CHECK_OK(sp_query_engine_query(g_eng, "lamp", &res, &err), &err);
+    g_opts.heatmap_view = 3;
+    CHECK_OK(sp_query_engine_query(g_eng, "lamp", &g_opts, &res, &err), &err);
     CHECK(res.view_index == 3);
     sp_query_result_free(&res);
-    sp_query_engine_opts(g_eng)->heatmap_view = -1;
+    g_opts.heatmap_view = -1;
 }
 
 static void test_embedding_query_and_bad_input(void)
@@ -157,15 +162,15 @@ static void test_embedding_query_and_bad_input(void)
     sp_error err = {0};
     float q[SC_FULL];
     CHECK_OK(sp_query_engine_embed(g_eng, "table", q, &err), &err);
-    CHECK_OK(sp_query_engine_query_embedding(g_eng, q, "table", &a, &err), &err);
-    CHECK_OK(sp_query_engine_query(g_eng, "table", &b, &err), &err);
+    CHECK_OK(sp_query_engine_query_embedding(g_eng, q, "table", &g_opts, &a, &err), &err);
+    CHECK_OK(sp_query_engine_query(g_eng, "table", &g_opts, &b, &err), &err);
     CHECK(a.valid && b.valid && dist3(a.position, b.position) < 1e-6);
     sp_query_result_free(&a);
     sp_query_result_free(&b);
-    CHECK_FAILS(sp_query_engine_query(g_eng, "", &a, &err), SP_E_ARG, &err, "empty");
-    snprintf(sp_query_engine_opts(g_eng)->negatives, 256, "a,b,c,d,e,f,g,h,i");
-    CHECK_FAILS(sp_query_engine_query(g_eng, "table", &a, &err), SP_E_ARG, &err, "negatives");
-    sp_query_engine_opts(g_eng)->negatives[0] = 0;
+    CHECK_FAILS(sp_query_engine_query(g_eng, "", &g_opts, &a, &err), SP_E_ARG, &err, "empty");
+    snprintf(g_opts.negatives, sizeof g_opts.negatives, "a,b,c,d,e,f,g,h,i");
+    CHECK_FAILS(sp_query_engine_query(g_eng, "table", &g_opts, &a, &err), SP_E_ARG, &err, "negatives");
+    g_opts.negatives[0] = 0;
     sp_query_engine *e = NULL;
     CHECK_FAILS(sp_query_engine_open(&e, "/nonexistent/model", NULL, g_dev, NULL, &err), SP_E_NOTFOUND, &err,
                 "semantic.json");

@@ -146,7 +146,10 @@ static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *e
         sp_sem_pca pca = {f.dim, f.full_dim, f.pca_mean, f.pca_basis};
         sp_query_opts qo = sp_query_opts_default();
         qo.heatmap = 0;
-        CHECK_OK(sp_query_engine_create(&e, &s, &pca, cams, m.n_images, 1, &qo, dev, NULL, err), err);
+        sp_frame fr;
+        sp_frame_init(&fr, "synth"); /* a synth capture: its poses are the world's */
+        sp_query_model qm = {.splat = &s, .pca = &pca, .cams = cams, .n_cams = m.n_images, .frame = &fr};
+        CHECK_OK(sp_query_engine_create(&e, &qm, &qo, dev, NULL, err), err);
     }
     free(cams);
     sp_colmap_free(&m);

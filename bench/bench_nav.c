@@ -1,0 +1,194 @@
+/* Navigation figures: costmap build time, planning time for k trajectories to an object, and
+ * with a world file the costmap's agreement with the world's floor plan in the same height band
+ * (>= 95 % of known cells, <= 1 % of truly occupied cells marked free is the bar).
+ *   bench_nav --model DIR [--world W.world [--model-path DIR]]   a trained model folder
+ *   bench_nav --ideal --world W.world [--views N]                 an ideal splat of the world's
+ *                                                                 geometry (tests/nav/world_splat.h)
+ * Options: --to NAME (a world object's name, default refrigerator) --k N (3) --threads N (2)
+ *          --map OUT.yaml (writes the map and OUT.yaml.truth.pgm: agreement colour-coded);
+ *          costmap settings --needs-floor 0|1 --evidence E --min-opacity O --despeckle N --fill M2. */
+#include <cjson/cJSON.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "../tests/nav/world_splat.h"
+#include "semsplat/io.h"
+#include "semsplat/nav.h"
+#include "semsplat/synth.h"
+
+static int fail(const sp_error *e)
+{
+    fprintf(stderr, "bench_nav: %s\n", e->msg);
+    return 1;
+}
+
+/* The machine is shared: timings mean little without the load they ran under. */
+static double load_average(void)
+{
+    double l = -1;
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (fscanf(f, "%lf", &l) != 1) l = -1;
+        fclose(f);
+    }
+    return l;
+}
+
+/* DIR/splat.ply and the cameras of the capture DIR/train.json names. */
+static int load_model(const char *model, sp_splat *s, sp_camera **cams, size_t *n, sp_error *err)
+{
+    char p[2048];
+    snprintf(p, sizeof p, "%s/splat.ply", model);
+    int rc = sp_ply_read_splat(p, s, err);
+    if (rc) return rc;
+    cJSON *tj;
+    snprintf(p, sizeof p, "%s/train.json", model);
+    if ((rc = sp_json_read_file(p, &tj, err))) return rc;
+    cJSON *st = cJSON_GetObjectItem(tj, "settings"), *c = st ? cJSON_GetObjectItem(st, "colmap") : NULL;
+    if (!cJSON_IsString(c)) {
+        cJSON_Delete(tj);
+        return sp_error_set(err, SP_E_FORMAT, "%s: no settings.colmap", p);
+    }
+    sp_colmap_model m;
+    rc = sp_colmap_read(c->valuestring, &m, err);
+    cJSON_Delete(tj);
+    if (rc) return rc;
+    *cams = calloc(m.n_images, sizeof(sp_camera));
+    *n = 0;
+    for (size_t i = 0; i < m.n_images && !rc; i++) rc = sp_colmap_image_camera(&m, i, &(*cams)[(*n)++], err);
+    sp_colmap_free(&m);
+    return rc;
+}
+
+static void write_comparison(const char *map, const sp_costmap *cm, const uint8_t *truth)
+{
+    char tp[2100];
+    snprintf(tp, sizeof tp, "%s.truth.pgm", map);
+    FILE *f = fopen(tp, "wb");
+    if (!f) return;
+    /* white / black: free / occupied, agreeing; 150: free marked occupied; 60: occupied marked
+     * free; 205 / 100: unknown over truly free / occupied */
+    fprintf(f, "P5\n%d %d\n255\n", cm->nx, cm->ny);
+    for (int y = cm->ny - 1; y >= 0; y--)
+        for (int x = 0; x < cm->nx; x++) {
+            long i = (long)y * cm->nx + x;
+            int t = truth[i], o = cm->occ[i];
+            fputc(o == SP_CELL_UNKNOWN ? (t ? 100 : 205) : (o == SP_CELL_OCCUPIED) == t ? (t ? 0 : 254) : (t ? 60 : 150), f);
+        }
+    fclose(f);
+}
+
+int main(int argc, char **argv)
+{
+    const char *model = NULL, *world = NULL, *model_path = NULL, *to = "refrigerator", *map = NULL;
+    int k = 3, threads = 2, ideal = 0, views = 150;
+    sp_costmap_opts co = sp_costmap_opts_default();
+    for (int i = 1; i < argc; i++) {
+        const char *v = i + 1 < argc ? argv[i + 1] : "";
+        if (!strcmp(argv[i], "--ideal")) ideal = 1;
+        else if (!strcmp(argv[i], "--model")) model = v, i++;
+        else if (!strcmp(argv[i], "--world")) world = v, i++;
+        else if (!strcmp(argv[i], "--model-path")) model_path = v, i++;
+        else if (!strcmp(argv[i], "--to")) to = v, i++;
+        else if (!strcmp(argv[i], "--k")) k = atoi(v), i++;
+        else if (!strcmp(argv[i], "--views")) views = atoi(v), i++;
+        else if (!strcmp(argv[i], "--threads")) threads = atoi(v), i++;
+        else if (!strcmp(argv[i], "--map")) map = v, i++;
+        /* costmap settings, to see how each one matters (the defaults are the library's) */
+        else if (!strcmp(argv[i], "--band-lo")) co.band_lo_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--needs-floor")) co.free_needs_floor = atoi(v), i++;
+        else if (!strcmp(argv[i], "--evidence")) co.occupied_evidence = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--min-opacity")) co.min_opacity = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--despeckle")) co.despeckle_cells = atoi(v), i++;
+        else if (!strcmp(argv[i], "--fill")) co.fill_max_area_m2 = (float)atof(v), i++;
+        else {
+            fprintf(stderr, "bench_nav: unknown argument '%s'\n", argv[i]);
+            return 2;
+        }
+    }
+    if (!(model || (ideal && world))) {
+        fprintf(stderr, "usage: bench_nav (--model DIR | --ideal) [--world W.world [--model-path DIR]] [--views N] "
+                        "[--to NAME] [--k 3] [--threads N] [--map OUT.yaml]\n");
+        return 2;
+    }
+    sp_error err = {0};
+    sp_splat s;
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    ws_scene sc;
+    memset(&sc, 0, sizeof sc);
+    if (ideal) {
+        if (ws_build(&sc, world, model_path, views, 160, 120, 0.07f, &err)) return fail(&err);
+        s = sc.splat, cams = sc.cams, n = sc.n_cams;
+    } else if (load_model(model, &s, &cams, &n, &err)) {
+        return fail(&err);
+    }
+    sp_device *dev;
+    sp_raster *r;
+    if (sp_device_create(&dev, SP_DEVICE_CPU, threads, &err) || sp_raster_create(&r, dev, &err)) return fail(&err);
+    sp_costmap cm;
+    double t0 = sp_time_now(), la = load_average();
+    clock_t k0 = clock();
+    if (sp_costmap_build(&cm, &s, cams, n, &co, r, NULL, &err)) return fail(&err);
+    double t_build = sp_time_now() - t0, cpu = (double)(clock() - k0) / CLOCKS_PER_SEC;
+    printf("costmap_build  %.0f ms  (%s; %zu Gaussians, %zu views at 1/%d, %dx%d cells of %.2f m, %s; %.0f ms of "
+           "CPU time over all threads; load average %.1f)\n", 1e3 * t_build, ideal ? "ideal splat" : model, s.n, n,
+           co.carve_downscale, cm.nx, cm.ny, cm.res, sp_device_name(dev), 1e3 * cpu, la);
+    printf("floor_z  %.3f m  (band %.2f..%.2f m above it)\n", cm.floor_z, cm.band[0] - cm.floor_z, cm.band[1] - cm.floor_z);
+    if (map && sp_costmap_write_map(&cm, map, &err)) return fail(&err);
+    sp_nav_box goal_box = {{NAN, NAN}, {NAN, NAN}};
+    if (world) {
+        sp_world w;
+        sp_synth_load_opts lo = {model_path, 1, 0, NULL};
+        if (sp_synth_load_world(world, &lo, &w, &err)) return fail(&err);
+        uint8_t *truth = malloc((size_t)cm.nx * cm.ny);
+        /* the world's floor is z = 0; the costmap's band above it */
+        if (sp_synth_floor_plan(&w, cm.band[0] - cm.floor_z, cm.band[1] - cm.floor_z, cm.res, cm.origin, cm.nx, cm.ny,
+                                truth, &err))
+            return fail(&err);
+        sp_costmap_agreement a;
+        sp_costmap_compare(&cm, truth, &a);
+        printf("costmap_agreement  %.2f %%  (%ld of %ld known cells; %.1f %% of the map known)\n", 100 * a.agreement,
+               a.agree, a.known, 100 * a.known_fraction);
+        printf("occupied_marked_free  %.2f %%  (%ld of %ld truly occupied cells)\n", 100 * a.occupied_free_rate,
+               a.occupied_as_free, a.truth_occupied);
+        printf("free_marked_occupied  %ld cells\n", a.free_as_occupied);
+        if (map) write_comparison(map, &cm, truth);
+        for (size_t o = 0; o < w.n_objects; o++)
+            if (!strcmp(w.objects[o].name, to))
+                for (int d = 0; d < 2; d++) goal_box.min[d] = w.objects[o].aabb_min[d], goal_box.max[d] = w.objects[o].aabb_max[d];
+        free(truth);
+        sp_world_free(&w);
+    }
+    if (isnan(goal_box.min[0])) {
+        fprintf(stderr, "bench_nav: no object named '%s' (give --world and --to NAME) for the planning figure\n", to);
+        return 1;
+    }
+    sp_nav_opts no = sp_nav_opts_default();
+    sp_vec3 c0 = sp_camera_center(&cams[0]);
+    float start[3] = {c0.x, c0.y, 0};
+    sp_nav_goal g = sp_nav_goal_box(goal_box.min, goal_box.max, no.approach_m);
+    sp_path_set set;
+    double best = INFINITY;
+    for (int rep = 0; rep < 5; rep++) {
+        t0 = sp_time_now();
+        if (sp_plan_k(&cm, start, &g, k, &no.planner, &set, &err)) return fail(&err);
+        best = fmin(best, sp_time_now() - t0);
+        if (rep < 4) sp_path_set_free(&set);
+    }
+    printf("plan_k%d  %.1f ms  (best of 5; %d paths in %d planner runs from (%.2f, %.2f) to %s; load average %.1f)\n",
+           k, 1e3 * best, set.n, set.rounds, start[0], start[1], to, load_average());
+    for (int i = 0; i < set.n; i++)
+        printf("  path %d  %.2f m  %d corners  share %.2f\n", i, set.paths[i].length_m, set.paths[i].n_corners, set.share[i]);
+    if (set.note[0]) printf("  note: %s\n", set.note);
+    sp_path_set_free(&set);
+    sp_costmap_free(&cm);
+    sp_raster_free(r);
+    sp_device_free(dev);
+    if (ideal) ws_free(&sc);
+    else sp_splat_free(&s), free(cams);
+    return 0;
+}

@@ -1,0 +1,325 @@
+/* Fused multi-head attention on the tensor cores (FlashAttention-2 style, fp16 in, fp32
+ * accumulation): one block of 4 warps takes 64 queries of one head; key/value tiles of 64 rows go
+ * through shared memory; each warp keeps its 16 query rows' scores, running max and sum and the
+ * output in registers (mma.sync m16n8k16), so the attention matrix never exists in memory. The
+ * probabilities go from the score accumulators straight into the A operand of the P V product
+ * (the accumulator layout of two n-tiles is the A layout of one k-step). Reads q, k, v straight
+ * from the fused projection [B*T][3w] and writes [B*T][w]: no head split or merge passes.
+ *
+ * Fragment layouts (PTX ISA, mma.m16n8k16 .f16): lane = 4 g + t; A (16x16, row): a0 = (g, 2t..),
+ * a1 = (g+8, 2t..), a2 = (g, 2t+8..), a3 = (g+8, 2t+8..); B (16x8, col): b0 = (k 2t.., n g),
+ * b1 = (k 2t+8.., n g); C (16x8): c0,c1 = (g, 2t..), c2,c3 = (g+8, 2t..). */
+#include <math.h>
+
+#include "clip_gpu.cuh"
+
+enum { FQ = 64, FK = 64, FWARPS = 4 };
+
+__device__ __forceinline__ void mma16816(float c[4], const uint32_t a[4], uint32_t b0, uint32_t b1)
+{
+    asm volatile("mma.sync.aligned.m16n8k16.row.col.f32.f16.f16.f32 {%0,%1,%2,%3}, {%4,%5,%6,%7}, {%8,%9}, "
+                 "{%0,%1,%2,%3};\n"
+                 : "+f"(c[0]), "+f"(c[1]), "+f"(c[2]), "+f"(c[3])
+                 : "r"(a[0]), "r"(a[1]), "r"(a[2]), "r"(a[3]), "r"(b0), "r"(b1));
+}
+
+/* four 8x8 b16 matrices, transposed: lane 8 i + r gives the address of row r of matrix i */
+__device__ __forceinline__ void ldmatrix_x4_trans(uint32_t r[4], const __half *p)
+{
+    unsigned a = (unsigned)__cvta_generic_to_shared(p);
+    asm volatile("ldmatrix.sync.aligned.m8n8.x4.trans.shared.b16 {%0,%1,%2,%3}, [%4];\n"
+                 : "=r"(r[0]), "=r"(r[1]), "=r"(r[2]), "=r"(r[3])
+                 : "r"(a));
+}
+
+__device__ __forceinline__ uint32_t pack_half2(float lo, float hi)
+{
+    __half2 h = __floats2half2_rn(lo, hi);
+    return *(uint32_t *)&h;
+}
+
+__device__ __forceinline__ uint32_t ld32(const __half *p) { return *(const uint32_t *)p; }
+
+/* Per-warp state: 16 query rows as A fragments, the output accumulators, running max and sum of
+ * rows g and g + 8 (of the lane's quad). */
+template <int D> struct warp_rows {
+    uint32_t qa[D / 16][4];
+    float o[D / 8][4];
+    float m0, m1, l0, l1;
+    int ra, rb; /* the lane's two query rows */
+};
+
+/* rows r0 .. r0+15 of q (rows past T read as zero), accumulators cleared */
+template <int D>
+__device__ __forceinline__ void rows_begin(warp_rows<D> &w, const __half *qb, size_t ld, int r0, int T, int g, int t)
+{
+    w.ra = r0 + g;
+    w.rb = r0 + g + 8;
+#pragma unroll
+    for (int kk = 0; kk < D / 16; kk++) {
+        int c = 16 * kk + 2 * t;
+        w.qa[kk][0] = w.ra < T ? ld32(qb + w.ra * ld + c) : 0u;
+        w.qa[kk][1] = w.rb < T ? ld32(qb + w.rb * ld + c) : 0u;
+        w.qa[kk][2] = w.ra < T ? ld32(qb + w.ra * ld + c + 8) : 0u;
+        w.qa[kk][3] = w.rb < T ? ld32(qb + w.rb * ld + c + 8) : 0u;
+    }
+#pragma unroll
+    for (int j = 0; j < D / 8; j++) w.o[j][0] = w.o[j][1] = w.o[j][2] = w.o[j][3] = 0.f;
+    w.m0 = w.m1 = -INFINITY;
+    w.l0 = w.l1 = 0.f;
+}
+
+/* One tile of FK keys starting at key k0, its rows in shared memory at Ks / Vs (row stride LD):
+ * scores, mask, online softmax, O += P V. Keys past T must read as zero rows. */
+template <int D, int LD>
+__device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, const __half *Vs, int k0, int T,
+                                          int causal, float scale_log2, int lane)
+{
+    const int g = lane >> 2, t = lane & 3;
+    const int valid = T - k0 < FK ? T - k0 : FK; /* keys of this tile that exist */
+    const int nj = (valid + 7) / 8, nk = (valid + 15) / 16;
+    float s[FK / 8][4];
+#pragma unroll
+    for (int j = 0; j < FK / 8; j++) {
+        s[j][0] = s[j][1] = s[j][2] = s[j][3] = 0.f;
+        if (j < nj) {
+#pragma unroll
+            for (int kk = 0; kk < D / 16; kk++) {
+                const __half *kr = Ks + (8 * j + g) * LD + 16 * kk + 2 * t;
+                mma16816(s[j], w.qa[kk], ld32(kr), ld32(kr + 8));
+            }
+        }
+    }
+    /* mask (only where the tile is partial or the attention causal), running max per row */
+    float mx0 = -INFINITY, mx1 = -INFINITY;
+    const bool masked = valid < FK || (causal && k0 + FK - 1 > w.ra - g);
+#pragma unroll
+    for (int j = 0; j < FK / 8; j++)
+#pragma unroll
+        for (int e = 0; e < 4; e++) {
+            if (masked) {
+                int key = k0 + 8 * j + 2 * t + (e & 1), q = e < 2 ? w.ra : w.rb;
+                if (key >= T || (causal && key > q)) s[j][e] = -INFINITY;
+            }
+            if (e < 2) mx0 = fmaxf(mx0, s[j][e]);
+            else mx1 = fmaxf(mx1, s[j][e]);
+        }
+#pragma unroll
+    for (int d = 1; d <= 2; d <<= 1) {
+        mx0 = fmaxf(mx0, __shfl_xor_sync(0xffffffffu, mx0, d));
+        mx1 = fmaxf(mx1, __shfl_xor_sync(0xffffffffu, mx1, d));
+    }
+    float n0 = fmaxf(w.m0, mx0), n1 = fmaxf(w.m1, mx1);
+    /* a row with nothing unmasked yet keeps 0 as its reference (no inf - inf) */
+    float u0 = n0 == -INFINITY ? 0.f : n0 * scale_log2, u1 = n1 == -INFINITY ? 0.f : n1 * scale_log2;
+    float al0 = exp2f(w.m0 * scale_log2 - u0), al1 = exp2f(w.m1 * scale_log2 - u1);
+    w.m0 = n0;
+    w.m1 = n1;
+    w.l0 *= al0;
+    w.l1 *= al1;
+#pragma unroll
+    for (int j = 0; j < D / 8; j++) {
+        w.o[j][0] *= al0;
+        w.o[j][1] *= al0;
+        w.o[j][2] *= al1;
+        w.o[j][3] *= al1;
+    }
+#pragma unroll
+    for (int j = 0; j < FK / 8; j++) {
+        s[j][0] = exp2f(s[j][0] * scale_log2 - u0);
+        s[j][1] = exp2f(s[j][1] * scale_log2 - u0);
+        s[j][2] = exp2f(s[j][2] * scale_log2 - u1);
+        s[j][3] = exp2f(s[j][3] * scale_log2 - u1);
+        w.l0 += s[j][0] + s[j][1];
+        w.l1 += s[j][2] + s[j][3];
+    }
+    /* O += P V, 16 keys per k-step; V fragments by transposed ldmatrix */
+    const int mi = lane >> 3, rr = lane & 7;
+#pragma unroll
+    for (int kk = 0; kk < FK / 16; kk++) {
+        if (kk < nk) {
+            uint32_t pa[4] = {pack_half2(s[2 * kk][0], s[2 * kk][1]), pack_half2(s[2 * kk][2], s[2 * kk][3]),
+                              pack_half2(s[2 * kk + 1][0], s[2 * kk + 1][1]),
+                              pack_half2(s[2 * kk + 1][2], s[2 * kk + 1][3])};
+#pragma unroll
+            for (int jp = 0; jp < D / 16; jp++) {
+                uint32_t vf[4];
+                ldmatrix_x4_trans(vf, Vs + (16 * kk + (mi & 1) * 8 + rr) * LD + 16 * jp + (mi >> 1) * 8);
+                mma16816(w.o[2 * jp], pa, vf[0], vf[1]);
+                mma16816(w.o[2 * jp + 1], pa, vf[2], vf[3]);
+            }
+        }
+    }
+}
+
+/* the finished rows (past T not written) into out rows of width w at column offset ob */
+template <int D>
+__device__ __forceinline__ void rows_end(warp_rows<D> &w, __half *ob, int wd, int T, int t)
+{
+#pragma unroll
+    for (int d = 1; d <= 2; d <<= 1) {
+        w.l0 += __shfl_xor_sync(0xffffffffu, w.l0, d);
+        w.l1 += __shfl_xor_sync(0xffffffffu, w.l1, d);
+    }
+    float i0 = w.l0 > 0 ? 1.f / w.l0 : 0.f, i1 = w.l1 > 0 ? 1.f / w.l1 : 0.f;
+#pragma unroll
+    for (int j = 0; j < D / 8; j++) {
+        int c = 8 * j + 2 * t;
+        if (w.ra < T) *(__half2 *)(ob + (size_t)w.ra * wd + c) = __floats2half2_rn(w.o[j][0] * i0, w.o[j][1] * i0);
+        if (w.rb < T) *(__half2 *)(ob + (size_t)w.rb * wd + c) = __floats2half2_rn(w.o[j][2] * i1, w.o[j][3] * i1);
+    }
+}
+
+/* key rows [k0, k0 + n) of K and V into shared rows of stride LD, 16-byte chunks by all threads
+ * (rows past T zero: never garbage, 0 * NaN is NaN) */
+template <int D, int LD>
+__device__ __forceinline__ void load_kv(__half *Ks, __half *Vs, const __half *kb, const __half *vb, size_t ld, int k0,
+                                        int n, int T)
+{
+    for (int i = threadIdx.x; i < n * (D / 8); i += blockDim.x) {
+        int row = i / (D / 8), c8 = (i % (D / 8)) * 8, key = k0 + row;
+        uint4 kv = make_uint4(0, 0, 0, 0), vv = make_uint4(0, 0, 0, 0);
+        if (key < T) {
+            kv = *(const uint4 *)(kb + key * ld + c8);
+            vv = *(const uint4 *)(vb + key * ld + c8);
+        }
+        *(uint4 *)(Ks + row * LD + c8) = kv;
+        *(uint4 *)(Vs + row * LD + c8) = vv;
+    }
+}
+
+/* v1, any length: grid (ceil(T / 64), H, B), 4 warps of 16 queries, key/value tiles streamed
+ * through shared memory. */
+template <int D>
+__global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict__ qkv, __half *__restrict__ out,
+                                                      int T, int w, float scale_log2, int causal, int qq)
+{
+    constexpr int LD = D + 8; /* padded smem rows: conflict-free fragment reads and ldmatrix */
+    __shared__ __align__(16) __half Ks[FK * LD];
+    __shared__ __align__(16) __half Vs[FK * LD];
+    const int lane = threadIdx.x & 31, warp = threadIdx.x >> 5;
+    const int h = blockIdx.y, b = blockIdx.z, q0 = blockIdx.x * FQ, r0 = q0 + warp * 16;
+    const size_t ld = 3 * (size_t)w;
+    const __half *base = qkv + (size_t)b * T * ld + (size_t)h * D;
+    const __half *kb = base + (qq ? 0 : w), *vb = base + 2 * (size_t)w;
+    const bool active = r0 < T;
+    warp_rows<D> wr;
+    rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3);
+    int n_tiles = (T + FK - 1) / FK;
+    if (causal) {
+        int last = (q0 + FQ - 1) / FK + 1; /* keys beyond the block's last query are masked */
+        if (last < n_tiles) n_tiles = last;
+    }
+    for (int kt = 0; kt < n_tiles; kt++) {
+        load_kv<D, LD>(Ks, Vs, kb, vb, ld, kt * FK, FK, T);
+        __syncthreads();
+        if (active) tile_step<D, LD>(wr, Ks, Vs, kt * FK, T, causal, scale_log2, lane);
+        __syncthreads();
+    }
+    if (active) rows_end(wr, out + (size_t)b * T * w + (size_t)h * D, w, T, lane & 3);
+}
+
+/* v2, short sequences (the whole K and V of one head fit in shared memory): one block of 8 warps
+ * per (head, sequence) loads K and V once, then each warp takes 16-query chunks with no further
+ * barriers. grid (H, B), dynamic shared memory 2 * Tp * (D + 8) halves, Tp = T rounded up to FK. */
+enum { SEQ_WARPS = 8 };
+template <int D>
+__global__ void __launch_bounds__(SEQ_WARPS * 32) k_flash_seq(const __half *__restrict__ qkv, __half *__restrict__ out,
+                                                             int T, int w, float scale_log2, int causal, int qq)
+{
+    constexpr int LD = D + 8;
+    extern __shared__ __align__(16) __half kv_smem[];
+    const int Tp = (T + FK - 1) / FK * FK;
+    __half *Ks = kv_smem, *Vs = kv_smem + (size_t)Tp * LD;
+    const int lane = threadIdx.x & 31, warp = threadIdx.x >> 5;
+    const int h = blockIdx.x, b = blockIdx.y;
+    const size_t ld = 3 * (size_t)w;
+    const __half *base = qkv + (size_t)b * T * ld + (size_t)h * D;
+    load_kv<D, LD>(Ks, Vs, base + (qq ? 0 : w), base + 2 * (size_t)w, ld, 0, Tp, T);
+    __syncthreads();
+    __half *ob = out + (size_t)b * T * w + (size_t)h * D;
+    for (int r0 = warp * 16; r0 < T; r0 += SEQ_WARPS * 16) {
+        warp_rows<D> wr;
+        rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3);
+        int n_tiles = Tp / FK;
+        if (causal && r0 / FK + 1 < n_tiles) n_tiles = r0 / FK + 1; /* keys past row r0 + 15 are masked */
+        for (int kt = 0; kt < n_tiles; kt++)
+            tile_step<D, LD>(wr, Ks + (size_t)kt * FK * LD, Vs + (size_t)kt * FK * LD, kt * FK, T, causal, scale_log2,
+                             lane);
+        rows_end(wr, ob, w, T, lane & 3);
+    }
+}
+
+static size_t seq_smem(int T, int D) { return (size_t)2 * ((T + FK - 1) / FK * FK) * (D + 8) * sizeof(__half); }
+enum { SEQ_SMEM_MAX = 200 * 1024 }; /* Hopper gives a block up to 227 KB; leave room */
+
+template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq,
+                                         __half *out, int v1, cudaStream_t st)
+{
+    float sl2 = 1.4426950408889634f / sqrtf((float)D);
+    size_t smem = seq_smem(Tn, D);
+    if (!v1 && smem <= SEQ_SMEM_MAX) {
+        /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
+        if (smem <= 48 * 1024 || cudaFuncSetAttribute(k_flash_seq<D>, cudaFuncAttributeMaxDynamicSharedMemorySize,
+                                                      (int)smem) == cudaSuccess) {
+            k_flash_seq<D><<<dim3(H, B), SEQ_WARPS * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+            return 0;
+        }
+    }
+    k_flash<D><<<dim3((Tn + FQ - 1) / FQ, H, B), FWARPS * 32, 0, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+    return 0;
+}
+
+int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out, int v1,
+                    cudaStream_t st)
+{
+    int D = w / H;
+    /* 16-byte rows of K/V need the fused row (3w halves) and each head to start on 8 halves */
+    if (w % H || (D != 16 && D != 32 && D != 64) || w % 8 || B < 1 || Tn < 1 || B > 65535) return 1;
+    if (D == 64) return launch_flash<64>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
+    if (D == 32) return launch_flash<32>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
+    return launch_flash<16>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
+}
+
+/* ---- test hook: the kernel alone on host data -------------------------------------------------- */
+
+__global__ void k_half_to_float(const __half *x, float *y, size_t n)
+{
+    for (size_t i = blockIdx.x * (size_t)blockDim.x + threadIdx.x; i < n; i += (size_t)gridDim.x * blockDim.x)
+        y[i] = __half2float(x[i]);
+}
+
+extern "C" int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
+                                        int qq, int v1, float *out, sp_error *err)
+{
+    size_t nin = (size_t)B * T * 3 * w, nout = (size_t)B * T * w;
+    int d = H > 0 && w % H == 0 ? w / H : 0;
+    if ((d != 16 && d != 32 && d != 64) || w % 8 || B < 1 || T < 1)
+        return sp_error_set(err, SP_E_UNSUPPORTED, "fused attention: width %d with %d heads", w, H);
+    cudaStream_t st = sp_cuda_stream(dev);
+    float *f = (float *)sp_device_alloc_scratch(dev, (nin + nout) * sizeof(float), err);
+    __half *h = f ? (__half *)sp_device_alloc_scratch(dev, (nin + nout) * sizeof(__half), err) : NULL;
+    int rc = 0;
+    if (!f || !h) rc = sp_error_prefix(err, "fused attention check: ");
+    else if (cudaMemcpyAsync(f, qkv, nin * sizeof(float), cudaMemcpyHostToDevice, st) != cudaSuccess)
+        rc = sp_error_set(err, SP_E_DEVICE, "fused attention check: upload failed");
+    if (!rc) {
+        launch_f32_to_f16(f, h, (long)nin, st);
+        /* poison the output: every element must be written */
+        cudaMemsetAsync(h + nin, 0xff, nout * sizeof(__half), st);
+        if (flash_attention(h, B, T, H, w, causal, qq, h + nin, v1, st))
+            rc = sp_error_set(err, SP_E_DEVICE, "fused attention check: the kernel refused %d x %d", B, H);
+    }
+    if (!rc) {
+        k_half_to_float<<<256, 256, 0, st>>>(h + nin, f + nin, nout);
+        cudaError_t e = cudaGetLastError();
+        if (e == cudaSuccess && cudaMemcpyAsync(out, f + nin, nout * sizeof(float), cudaMemcpyDeviceToHost, st) == cudaSuccess)
+            e = cudaStreamSynchronize(st);
+        else if (e == cudaSuccess)
+            e = cudaErrorUnknown;
+        if (e != cudaSuccess) rc = sp_error_set(err, SP_E_DEVICE, "fused attention check: %s", cudaGetErrorString(e));
+    }
+    sp_device_release(dev, f);
+    sp_device_release(dev, h);
+    return rc;
+}

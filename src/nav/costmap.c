@@ -1,0 +1,636 @@
+/* The costmap from the splat: floor detection, map bounds, opacity-weighted Gaussian footprints
+ * in the robot's height band, then free space from the carving pass (carve.c) and Nav2-style
+ * inflation (inflate.c). First stage of navigation, fed by the model folder's splat.ply. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "nav_internal.h"
+
+#define FLOOR_BIN_M 0.02f     /* floor histogram bin */
+#define FLOOR_MIN_OPACITY 0.5f
+#define FLOOR_FLATNESS 0.5f   /* smallest scale / middle scale below this is a flat Gaussian */
+#define FLOOR_NZ 0.9f         /* its normal within ~25 degrees of vertical */
+#define BOUNDS_QUANTILE 0.001 /* robust map bounds: drop this share of band Gaussians per side */
+
+sp_costmap_opts sp_costmap_opts_default(void)
+{
+    sp_costmap_opts o;
+    memset(&o, 0, sizeof o);
+    o.resolution_m = 0.05f;
+    o.band_lo_m = 0.05f;
+    o.band_hi_m = 1.0f;
+    o.floor_z = NAN;
+    o.robot_radius_m = 0.2f;
+    o.inflation_radius_m = 1.0f;
+    o.cost_scaling_factor = 3.0f;
+    o.keep_clear_of_unknown = 0;
+    o.min_opacity = 0.15f;
+    o.min_views = 0;
+    o.footprint_sigmas = 3.0f;
+    o.occupied_evidence = 0.5f;
+    o.slice_m = 0.1f;
+    o.pass_veto = 3.0f;
+    o.fill_max_area_m2 = 4.0f;
+    o.free_needs_floor = 1;
+    o.cameras_stand = 1;
+    o.despeckle_cells = 0;
+    o.carve_downscale = 4;
+    o.carve_alpha = 0.5f;
+    o.carve_stop_m = 0.03f;
+    o.floor_tolerance_m = 0.15f;
+    o.max_range_m = 8.0f;
+    o.margin_m = 0.5f;
+    o.max_cells = 4096;
+    return o;
+}
+
+void sp_costmap_free(sp_costmap *cm)
+{
+    if (!cm) return;
+    free(cm->occ);
+    free(cm->cost);
+    free(cm->dist);
+    free(cm->seen);
+    memset(cm, 0, sizeof *cm);
+}
+
+int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err)
+{
+    memset(dst, 0, sizeof *dst);
+    size_t n = (size_t)src->nx * src->ny;
+    *dst = *src;
+    dst->occ = malloc(n);
+    dst->cost = malloc(n);
+    dst->dist = malloc(n * sizeof(float));
+    dst->seen = src->seen ? malloc(n * sizeof(uint16_t)) : NULL;
+    if (!dst->occ || !dst->cost || !dst->dist || (src->seen && !dst->seen)) {
+        sp_costmap_free(dst);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory copying %zu cells", n);
+    }
+    memcpy(dst->occ, src->occ, n);
+    memcpy(dst->cost, src->cost, n);
+    memcpy(dst->dist, src->dist, n * sizeof(float));
+    if (src->seen) memcpy(dst->seen, src->seen, n * sizeof(uint16_t));
+    return SP_OK;
+}
+
+int sp_costmap_cell(const sp_costmap *cm, float x, float y, int *ix, int *iy)
+{
+    *ix = (int)floorf((x - cm->origin[0]) / cm->res);
+    *iy = (int)floorf((y - cm->origin[1]) / cm->res);
+    return nav_inside(cm, *ix, *iy) ? 0 : -1;
+}
+
+void sp_costmap_cell_center(const sp_costmap *cm, int ix, int iy, float xy[2])
+{
+    xy[0] = cm->origin[0] + ((float)ix + 0.5f) * cm->res;
+    xy[1] = cm->origin[1] + ((float)iy + 0.5f) * cm->res;
+}
+
+int sp_costmap_traversable(const sp_costmap *cm, int ix, int iy)
+{
+    if (!nav_inside(cm, ix, iy)) return 0;
+    long i = nav_idx(cm, ix, iy);
+    return cm->occ[i] == SP_CELL_FREE && cm->cost[i] < SP_COST_INSCRIBED;
+}
+
+/* ---- Gaussian geometry ------------------------------------------------------------------------ */
+
+/* World covariance of Gaussian i (row-major 3x3) and its opacity. */
+static float gauss_cov(const sp_splat *s, size_t i, float C[9])
+{
+    float R[9], sc[3];
+    sp_quat_to_mat3(s->quats + 4 * i, R);
+    for (int k = 0; k < 3; k++) sc[k] = expf(2.0f * s->log_scales[3 * i + k]);
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            C[a * 3 + b] = R[a * 3] * R[b * 3] * sc[0] + R[a * 3 + 1] * R[b * 3 + 1] * sc[1] +
+                           R[a * 3 + 2] * R[b * 3 + 2] * sc[2];
+    return sp_sigmoid(s->opacity_logits[i]);
+}
+
+/* |z component| of the axis of Gaussian i's smallest scale, and flatness (smallest / middle). */
+static void gauss_normal(const sp_splat *s, size_t i, float *nz, float *flat)
+{
+    const float *ls = s->log_scales + 3 * i;
+    int a = 0;
+    for (int k = 1; k < 3; k++)
+        if (ls[k] < ls[a]) a = k;
+    float mid = INFINITY;
+    for (int k = 0; k < 3; k++)
+        if (k != a && ls[k] < mid) mid = ls[k];
+    float R[9];
+    sp_quat_to_mat3(s->quats + 4 * i, R);
+    *nz = fabsf(R[6 + a]); /* column a of R is the axis; its z component is row 2 */
+    *flat = expf(ls[a] - mid);
+}
+
+static int cmp_float(const void *a, const void *b)
+{
+    float x = *(const float *)a, y = *(const float *)b;
+    return (x > y) - (x < y);
+}
+
+/* An opaque, flat, horizontal Gaussian: a piece of floor or of a table top. */
+static int flat_horizontal(const sp_splat *s, size_t i, float *op)
+{
+    float nz, flat;
+    *op = sp_sigmoid(s->opacity_logits[i]);
+    if (*op < FLOOR_MIN_OPACITY) return 0;
+    gauss_normal(s, i, &nz, &flat);
+    return nz >= FLOOR_NZ && flat <= FLOOR_FLATNESS;
+}
+
+/* The floor: the heaviest 10 cm window of flat, horizontal, opaque Gaussians below the lowest
+ * cameras, weighted by area x opacity; refined to the opacity-weighted mean z within it, whose
+ * standard deviation is the floor's roughness in this splat. */
+static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams, float *floor_z,
+                        float *floor_sd, sp_error *err)
+{
+    float *zc = malloc(sizeof(float) * n_cams);
+    if (!zc) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    for (size_t c = 0; c < n_cams; c++) zc[c] = sp_camera_center(&cams[c]).z;
+    /* The floor lies below the cameras: below the lowest of them (the 5th percentile, so that one
+     * stray pose cannot decide), which keeps table and shelf tops out when cameras stood low. */
+    qsort(zc, n_cams, sizeof(float), cmp_float);
+    float z_top = zc[n_cams / 20] - 0.05f;
+    free(zc);
+    float z_min = INFINITY;
+    for (size_t i = 0; i < s->n; i++)
+        if (s->means[3 * i + 2] < z_min && s->means[3 * i + 2] > z_top - 20.0f) z_min = s->means[3 * i + 2];
+    if (!(z_min < z_top))
+        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no Gaussians below the cameras (the lowest "
+                            "at %.2f m): cannot find the floor (give floor_z)", z_top + 0.05f);
+    int nb = (int)ceilf((z_top - z_min) / FLOOR_BIN_M) + 1;
+    double *hist = calloc((size_t)nb, sizeof(double));
+    if (!hist) return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2], op;
+        if (!(z >= z_min && z < z_top) || !flat_horizontal(s, i, &op)) continue;
+        const float *ls = s->log_scales + 3 * i;
+        float area = expf(ls[0] + ls[1] + ls[2] - fminf(ls[0], fminf(ls[1], ls[2])));
+        hist[(int)((z - z_min) / FLOOR_BIN_M)] += (double)op * area;
+    }
+    /* the heaviest 10 cm window (a trained floor is often smeared over several bins) */
+    int best = -1;
+    double best_w = 0;
+    for (int b = 0; b < nb; b++) {
+        double w = 0;
+        for (int k = b - 2; k <= b + 2; k++) w += k >= 0 && k < nb ? hist[k] : 0;
+        if (w > best_w) best_w = w, best = b;
+    }
+    free(hist);
+    if (best < 0)
+        return sp_error_set(err, SP_E_NOTFOUND, "costmap: no flat horizontal Gaussians below the "
+                            "cameras: cannot find the floor (give floor_z)");
+    float lo = z_min + (best - 2) * FLOOR_BIN_M, hi = z_min + (best + 3) * FLOOR_BIN_M;
+    double sw = 0, sz = 0, szz = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2], op;
+        if (!(z >= lo && z < hi) || !flat_horizontal(s, i, &op)) continue;
+        sw += op;
+        sz += (double)op * z;
+        szz += (double)op * z * z;
+    }
+    *floor_z = (float)(sz / sw);
+    *floor_sd = (float)sqrt(fmax(0.0, szz / sw - (sz / sw) * (sz / sw)));
+    return SP_OK;
+}
+
+/* Share of a 1-D Gaussian (mean m, std sd) inside [lo, hi]. */
+static float band_fraction(float m, float sd, float lo, float hi)
+{
+    float k = 1.0f / (sd * 1.41421356f);
+    return 0.5f * (erff((hi - m) * k) - erff((lo - m) * k));
+}
+
+
+/* Bounds: the band Gaussians (robust quantiles) and the cameras, plus the margin. */
+static int map_bounds(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                      const sp_costmap_opts *o, sp_error *err)
+{
+    size_t n = 0;
+    float *xs = malloc(sizeof(float) * (s->n + 1)), *ys = malloc(sizeof(float) * (s->n + 1));
+    if (!xs || !ys) {
+        free(xs), free(ys);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+    }
+    for (size_t i = 0; i < s->n; i++) {
+        float z = s->means[3 * i + 2];
+        if (z < cm->band[0] || z > cm->band[1]) continue;
+        if (sp_sigmoid(s->opacity_logits[i]) < o->min_opacity) continue;
+        xs[n] = s->means[3 * i], ys[n] = s->means[3 * i + 1];
+        n++;
+    }
+    float lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    if (n > 0) {
+        qsort(xs, n, sizeof(float), cmp_float);
+        qsort(ys, n, sizeof(float), cmp_float);
+        size_t a = (size_t)(BOUNDS_QUANTILE * n), b = n - 1 - a;
+        lo[0] = xs[a], hi[0] = xs[b], lo[1] = ys[a], hi[1] = ys[b];
+    }
+    free(xs), free(ys);
+    for (size_t c = 0; c < n_cams; c++) {
+        sp_vec3 p = sp_camera_center(&cams[c]);
+        lo[0] = fminf(lo[0], p.x), hi[0] = fmaxf(hi[0], p.x);
+        lo[1] = fminf(lo[1], p.y), hi[1] = fmaxf(hi[1], p.y);
+    }
+    /* Cell borders sit half a cell off round coordinates: built worlds put walls and furniture
+     * faces on round numbers, and a face on a border would touch two cells. */
+    float res = o->resolution_m;
+    for (int k = 0; k < 2; k++) {
+        lo[k] = floorf((lo[k] - o->margin_m) / res) * res - 0.5f * res;
+        hi[k] = ceilf((hi[k] + o->margin_m) / res) * res + 0.5f * res;
+    }
+    double nx = ceil((hi[0] - lo[0]) / res), ny = ceil((hi[1] - lo[1]) / res);
+    if (nx > o->max_cells || ny > o->max_cells)
+        return sp_error_set(err, SP_E_UNSUPPORTED,
+                            "costmap: the observed space spans %.1f x %.1f m, %.0f x %.0f cells at "
+                            "%.3f m, over max_cells %d: use a coarser resolution",
+                            hi[0] - lo[0], hi[1] - lo[1], nx, ny, res, o->max_cells);
+    cm->nx = (int)nx, cm->ny = (int)ny;
+    cm->res = res;
+    cm->origin[0] = lo[0], cm->origin[1] = lo[1];
+    return SP_OK;
+}
+
+/* Smallest (q - m)^T A (q - m) over q in the box [x0, x1] x [y0, y1], A = [a b; b c] positive
+ * definite: 0 when m is inside, else the least over the four edges (a 1-D quadratic each). */
+static float maha_box_min(float a, float b, float c, const float m[2], float x0, float y0, float x1, float y1)
+{
+    if (m[0] >= x0 && m[0] <= x1 && m[1] >= y0 && m[1] <= y1) return 0.0f;
+    const float ex[4][4] = {{x0, y0, x1, y0}, {x1, y0, x1, y1}, {x1, y1, x0, y1}, {x0, y1, x0, y0}};
+    float best = INFINITY;
+    for (int k = 0; k < 4; k++) {
+        float px = ex[k][0] - m[0], py = ex[k][1] - m[1], dx = ex[k][2] - ex[k][0], dy = ex[k][3] - ex[k][1];
+        float ee = a * dx * dx + 2 * b * dx * dy + c * dy * dy, pe = a * px * dx + b * (px * dy + py * dx) + c * py * dy;
+        float t = ee > 0 ? -pe / ee : 0;
+        t = t < 0 ? 0 : t > 1 ? 1 : t;
+        float qx = px + t * dx, qy = py + t * dy, v = a * qx * qx + 2 * b * qx * qy + c * qy * qy;
+        if (v < best) best = v;
+    }
+    return best;
+}
+
+/* Accumulates log(1 - w) per voxel over the band Gaussians' footprints: w = opacity x (share of
+ * the Gaussian's vertical mass inside the slice) x exp(-d^2 / 2), d the smallest Mahalanobis
+ * distance (xy marginal) from the Gaussian's centre to any point of the cell: the most opaque
+ * the Gaussian gets anywhere in the cell, so a cell counts when its footprint covers any part of
+ * it, not only its centre, and never for being next to a surface. Out to footprint_sigmas.
+ * Fused per slice, a wall's column of tens of Gaussians cannot add its tails up into a phantom
+ * obstacle beside it; within a slice, neighbours' tails fill the gaps between them as they do in
+ * the rendered image. */
+static void splat_footprints(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o,
+                             const nav_slices *sl, const uint16_t *views, float *log_free)
+{
+    const float k2 = o->footprint_sigmas * o->footprint_sigmas;
+    float wv[NAV_MAX_SLICES];
+    for (size_t i = 0; i < s->n; i++) {
+        if (views[i] < o->min_views) continue;
+        float C[9];
+        float op = gauss_cov(s, i, C);
+        if (op < o->min_opacity) continue;
+        const float *m = s->means + 3 * i;
+        float sz = fmaxf(sqrtf(C[8]), 1e-6f);
+        if (m[2] + 3.0f * sz < cm->band[0] || m[2] - 3.0f * sz > cm->band[1]) continue;
+        int any = 0;
+        for (int v = 0; v < sl->n; v++) {
+            float lo = sl->z0 + v * sl->dz, w = op * band_fraction(m[2], sz, lo, lo + sl->dz);
+            wv[v] = w < 0.02f ? 0.0f : w;
+            any |= wv[v] > 0.0f;
+        }
+        if (!any) continue;
+        /* a floor of 1e-8 m^2 keeps a needle's covariance invertible */
+        float a = C[0] + 1e-8f, b = C[1], c = C[4] + 1e-8f, det = a * c - b * b;
+        if (!(det > 0)) continue;
+        float ia = c / det, ib = -b / det, ic = a / det;
+        float rx = o->footprint_sigmas * sqrtf(a), ry = o->footprint_sigmas * sqrtf(c);
+        int x0, y0, x1, y1;
+        sp_costmap_cell(cm, m[0] - rx, m[1] - ry, &x0, &y0);
+        sp_costmap_cell(cm, m[0] + rx, m[1] + ry, &x1, &y1);
+        if (x0 < 0) x0 = 0;
+        if (y0 < 0) y0 = 0;
+        if (x1 >= cm->nx) x1 = cm->nx - 1;
+        if (y1 >= cm->ny) y1 = cm->ny - 1;
+        for (int iy = y0; iy <= y1; iy++)
+            for (int ix = x0; ix <= x1; ix++) {
+                float bx = cm->origin[0] + ix * cm->res, by = cm->origin[1] + iy * cm->res;
+                float d2 = maha_box_min(ia, ib, ic, m, bx, by, bx + cm->res, by + cm->res);
+                if (d2 > k2) continue;
+                float g = expf(-0.5f * d2);
+                long cell = nav_idx(cm, ix, iy);
+                for (int v = 0; v < sl->n; v++)
+                    if (wv[v] > 0) log_free[v * sl->cells + cell] += log1pf(-fminf(wv[v] * g, 0.999f));
+            }
+    }
+}
+
+/* Floor the splat reconstructed: opaque Gaussians at the floor's height that are thin vertically
+ * (sigma_z within half the floor tolerance) mark the cells of their footprint (1.5 sigma) as
+ * floor seen: a camera saw the floor there, past whatever stands around it. Denser than the
+ * rays' floor hits, whose rendered depth spreads a slanted floor over several centimetres. */
+static void mark_floor(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, uint16_t *floor_seen)
+{
+    for (size_t i = 0; i < s->n; i++) {
+        const float *m = s->means + 3 * i;
+        if (fabsf(m[2] - cm->floor_z) > o->floor_tolerance_m) continue;
+        float C[9];
+        if (gauss_cov(s, i, C) < FLOOR_MIN_OPACITY || sqrtf(C[8]) > 0.5f * o->floor_tolerance_m) continue;
+        float a = 2.25f * C[0], b = 2.25f * C[1], c = 2.25f * C[4], det = a * c - b * b;
+        if (!(det > 0)) continue;
+        float ia = c / det, ib = -b / det, ic = a / det, rx = sqrtf(a), ry = sqrtf(c);
+        int x0, y0, x1, y1;
+        sp_costmap_cell(cm, m[0] - rx, m[1] - ry, &x0, &y0);
+        sp_costmap_cell(cm, m[0] + rx, m[1] + ry, &x1, &y1);
+        for (int iy = y0 < 0 ? 0 : y0; iy <= y1 && iy < cm->ny; iy++)
+            for (int ix = x0 < 0 ? 0 : x0; ix <= x1 && ix < cm->nx; ix++) {
+                float p[2];
+                sp_costmap_cell_center(cm, ix, iy, p);
+                float dx = p[0] - m[0], dy = p[1] - m[1];
+                if (ia * dx * dx + 2 * ib * dx * dy + ic * dy * dy > 1.0f) continue;
+                uint16_t *f = &floor_seen[nav_idx(cm, ix, iy)];
+                if (*f < UINT16_MAX) (*f)++;
+            }
+    }
+}
+
+/* Where the capture stood: a disk of the robot's radius under every training camera is free
+ * (the robot or person carrying it was there), though no camera saw that floor: cameras look
+ * away from their own feet. Occupancy evidence still wins (a camera held above a table). */
+static void mark_stands(const sp_costmap *cm, const sp_camera *cams, size_t n_cams, float radius,
+                        uint8_t *stood)
+{
+    int r = (int)ceilf(radius / cm->res);
+    for (size_t c = 0; c < n_cams; c++) {
+        sp_vec3 p = sp_camera_center(&cams[c]);
+        int cx, cy;
+        sp_costmap_cell(cm, p.x, p.y, &cx, &cy);
+        for (int y = cy - r; y <= cy + r; y++)
+            for (int x = cx - r; x <= cx + r; x++) {
+                float q[2];
+                if (!nav_inside(cm, x, y)) continue;
+                sp_costmap_cell_center(cm, x, y, q);
+                if (hypotf(q[0] - p.x, q[1] - p.y) <= radius) stood[nav_idx(cm, x, y)] = 1;
+            }
+    }
+}
+
+/* Fuses the footprints with the rays, voxel by voxel: a voxel is occupied when its footprint
+ * evidence 1 - prod(1 - w) reaches occupied_evidence and rays did not pass through it more than
+ * pass_veto x (1 + the rays that ended there) times (a floater the cameras saw through). (Rays'
+ * end points alone are no evidence: rendered depth scatters a surface over neighbouring cells.)
+ * A column is
+ * occupied when one of its voxels is; free when none is and its floor was seen (a ray ended on
+ * it, or the splat has floor there) with some ray crossing it (floor Gaussians' footprints reach
+ * under the walls they meet, where no ray goes), or rays passed through all its slices: a ray
+ * passing above a low bed does not make the bed free (free_needs_floor; without it any ray
+ * does, like Nav2's voxel layer); unknown otherwise. */
+static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co,
+                     const float *log_free, const uint8_t *stood)
+{
+    const float occ_log = logf(1.0f - o->occupied_evidence);
+    const nav_slices *sl = &co->sl;
+    for (long i = 0; i < sl->cells; i++) {
+        int occ = 0, passed = 0;
+        unsigned seen = co->floor_seen[i];
+        for (int v = 0; v < sl->n && !occ; v++) {
+            long k = v * sl->cells + i;
+            float P = co->passes[k], H = co->hits[k];
+            seen += co->passes[k];
+            passed += co->passes[k] > 0;
+            occ = log_free[k] <= occ_log && P <= o->pass_veto * (1.0f + H);
+        }
+        int free_ok = o->free_needs_floor ? (co->floor_seen[i] > 0 && passed > 0) || passed == sl->n : seen > 0;
+        free_ok |= stood && stood[i];
+        cm->seen[i] = seen > UINT16_MAX ? UINT16_MAX : (uint16_t)seen;
+        cm->occ[i] = occ ? SP_CELL_OCCUPIED : free_ok ? SP_CELL_FREE : SP_CELL_UNKNOWN;
+    }
+}
+
+/* Pockets enclosed by obstacles are the insides of solid things: a 4-connected component of
+ * non-occupied cells that does not reach the map's border, with every cell unknown (the inside
+ * of a wall or a cabinet, which no ray reaches and no Gaussian covers) or with an area of at most
+ * fill_max_area_m2 (a bed or table whose top the splat reconstructs too thinly, rays passing above
+ * and below it). Walls are closed by one cell first so a one-cell gap does not open a pocket. A
+ * robot could never reach such a pocket, so filling it changes no plan. */
+static int fill_pockets(sp_costmap *cm, float max_area_m2)
+{
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *queue = malloc(sizeof(int32_t) * n);
+    uint8_t *wall = calloc(n, 1), *mark = calloc(n, 1);
+    if (!queue || !wall || !mark) {
+        free(queue), free(wall), free(mark);
+        return -1;
+    }
+    for (int y = 0; y < cm->ny; y++)
+        for (int x = 0; x < cm->nx; x++) {
+            if (cm->occ[nav_idx(cm, x, y)] != SP_CELL_OCCUPIED) continue;
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++)
+                    if (nav_inside(cm, x + dx, y + dy)) wall[nav_idx(cm, x + dx, y + dy)] = 1;
+        }
+    long max_cells = (long)(max_area_m2 / (cm->res * cm->res));
+    for (size_t seed = 0; seed < n; seed++) {
+        if (wall[seed] || mark[seed]) continue;
+        long head = 0, tail = 0;
+        int open = 0, any_free = 0;
+        queue[tail++] = (int32_t)seed;
+        mark[seed] = 1;
+        while (head < tail) {
+            long c = queue[head++];
+            any_free |= cm->occ[c] == SP_CELL_FREE;
+            int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
+            for (int k = 0; k < 4; k++) {
+                int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
+                if (!nav_inside(cm, x, y)) {
+                    open = 1;
+                    continue;
+                }
+                long j = nav_idx(cm, x, y);
+                if (wall[j] || mark[j]) continue;
+                mark[j] = 1;
+                queue[tail++] = (int32_t)j;
+            }
+        }
+        if (open || (any_free && tail > max_cells)) continue;
+        /* the pocket and the closing ring around it that is not an obstacle yet */
+        for (long q = 0; q < tail; q++) {
+            long c = queue[q];
+            cm->occ[c] = SP_CELL_OCCUPIED;
+            int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
+            for (int k = 0; k < 4; k++) {
+                int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
+                if (nav_inside(cm, x, y) && wall[nav_idx(cm, x, y)]) cm->occ[nav_idx(cm, x, y)] = SP_CELL_OCCUPIED;
+            }
+        }
+    }
+    free(queue), free(wall), free(mark);
+    return 0;
+}
+
+/* Speckle: 8-connected occupied components of at most max_cells cells with free cells all
+ * around (no unknown neighbour) are floaters the cameras saw past, not furniture; they become
+ * free. A thin pole of the world is larger than a cell in a well-trained splat. */
+static int despeckle(sp_costmap *cm, int max_cells)
+{
+    if (max_cells <= 0) return 0;
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *comp = malloc(sizeof(int32_t) * (size_t)(max_cells + 1));
+    uint8_t *mark = calloc(n, 1);
+    long *stack = malloc(sizeof(long) * n);
+    if (!comp || !mark || !stack) {
+        free(comp), free(mark), free(stack);
+        return -1;
+    }
+    for (size_t seed = 0; seed < n; seed++) {
+        if (cm->occ[seed] != SP_CELL_OCCUPIED || mark[seed]) continue;
+        long top = 0, size = 0;
+        int touches_unknown = 0;
+        stack[top++] = (long)seed;
+        mark[seed] = 1;
+        while (top > 0) {
+            long c = stack[--top];
+            if (size <= max_cells) comp[size] = (int32_t)c;
+            size++;
+            int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
+            for (int dy = -1; dy <= 1; dy++)
+                for (int dx = -1; dx <= 1; dx++) {
+                    int x = cx + dx, y = cy + dy;
+                    if (!nav_inside(cm, x, y)) {
+                        touches_unknown = 1;
+                        continue;
+                    }
+                    long j = nav_idx(cm, x, y);
+                    if (cm->occ[j] == SP_CELL_UNKNOWN) touches_unknown = 1;
+                    if (cm->occ[j] != SP_CELL_OCCUPIED || mark[j]) continue;
+                    mark[j] = 1;
+                    stack[top++] = j;
+                }
+        }
+        if (size <= max_cells && !touches_unknown)
+            for (long k = 0; k < size; k++) cm->occ[comp[k]] = SP_CELL_FREE;
+    }
+    free(comp), free(mark), free(stack);
+    return 0;
+}
+
+static int check_opts(const sp_costmap_opts *o, sp_error *err)
+{
+    if (!(o->resolution_m > 0.001f && o->resolution_m < 10.0f))
+        return sp_error_set(err, SP_E_ARG, "costmap: resolution_m %g not in (0.001, 10)", o->resolution_m);
+    if (!(o->band_hi_m > o->band_lo_m))
+        return sp_error_set(err, SP_E_ARG, "costmap: height band [%g, %g] m is empty", o->band_lo_m, o->band_hi_m);
+    if (!(o->robot_radius_m >= 0) || !(o->inflation_radius_m >= o->robot_radius_m))
+        return sp_error_set(err, SP_E_ARG, "costmap: robot radius %g m and inflation radius %g m "
+                            "(need 0 <= robot <= inflation)", o->robot_radius_m, o->inflation_radius_m);
+    if (!(o->cost_scaling_factor >= 0))
+        return sp_error_set(err, SP_E_ARG, "costmap: cost_scaling_factor %g < 0", o->cost_scaling_factor);
+    if (!(o->occupied_evidence > 0 && o->occupied_evidence < 1))
+        return sp_error_set(err, SP_E_ARG, "costmap: occupied_evidence %g not in (0, 1)", o->occupied_evidence);
+    if (!(o->slice_m > 0) || !(o->pass_veto >= 0))
+        return sp_error_set(err, SP_E_ARG, "costmap: slice_m %g (> 0), pass_veto %g (>= 0)", o->slice_m, o->pass_veto);
+    if (o->carve_downscale < 1 || !(o->footprint_sigmas > 0) || !(o->max_range_m > 0) || o->max_cells < 1)
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_downscale %d, footprint_sigmas %g, "
+                            "max_range_m %g, max_cells %d must be positive", o->carve_downscale,
+                            o->footprint_sigmas, o->max_range_m, o->max_cells);
+    return SP_OK;
+}
+
+int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                      const sp_costmap_opts *opts, sp_raster *r, uint16_t *view_counts,
+                      const sp_log *log, sp_error *err)
+{
+    memset(cm, 0, sizeof *cm);
+    sp_costmap_opts o = opts ? *opts : sp_costmap_opts_default();
+    int rc = check_opts(&o, err);
+    if (rc) return rc;
+    if (!s || !s->n || !cams || !n_cams || !r)
+        return sp_error_set(err, SP_E_ARG, "costmap: needs a splat with Gaussians, at least one "
+                            "training camera and a raster (got %zu Gaussians, %zu cameras)",
+                            s ? s->n : 0, n_cams);
+    if ((rc = sp_splat_check_finite(s, err))) return sp_error_prefix(err, "costmap: ");
+    for (size_t c = 0; c < n_cams; c++) {
+        const sp_camera *k = &cams[c];
+        int ok = k->width > 0 && k->height > 0 && k->fx > 0 && k->fy > 0 && isfinite(k->cx) && isfinite(k->cy);
+        for (int j = 0; j < 9; j++) ok &= isfinite(k->R[j]);
+        for (int j = 0; j < 3; j++) ok &= isfinite(k->t[j]);
+        if (!ok)
+            return sp_error_set(err, SP_E_ARG, "costmap: training camera %zu has a non-finite pose or bad "
+                                "intrinsics (%dx%d, fx %g)", c, k->width, k->height, k->fx);
+    }
+    double t0 = sp_time_now();
+    float floor_z = o.floor_z, floor_sd = 0;
+    if (isnan(floor_z) && (rc = detect_floor(s, cams, n_cams, &floor_z, &floor_sd, err))) return rc;
+    /* Nothing lower than twice the floor's own roughness can be told from the floor: the band
+     * starts there when that is above band_lo_m (a trained floor is centimetres thick). */
+    if (o.band_lo_m < 2 * floor_sd && 2 * floor_sd < o.band_hi_m - o.slice_m) {
+        sp_logf(log, SP_LOG_INFO, "costmap: the floor's Gaussians spread %.3f m: the band starts at %.2f m, not %.2f",
+                floor_sd, 2 * floor_sd, o.band_lo_m);
+        o.band_lo_m = 2 * floor_sd;
+    }
+    cm->floor_z = floor_z;
+    cm->band[0] = floor_z + o.band_lo_m;
+    cm->band[1] = floor_z + o.band_hi_m;
+    cm->opts = o;
+    if ((rc = map_bounds(cm, s, cams, n_cams, &o, err))) return rc;
+    size_t n = (size_t)cm->nx * cm->ny;
+    nav_carve_out co;
+    memset(&co, 0, sizeof co);
+    co.sl.n = (int)ceilf((o.band_hi_m - o.band_lo_m) / o.slice_m - 1e-4f);
+    if (co.sl.n < 1) co.sl.n = 1;
+    if (co.sl.n > NAV_MAX_SLICES) co.sl.n = NAV_MAX_SLICES;
+    co.sl.z0 = cm->band[0];
+    co.sl.dz = (cm->band[1] - cm->band[0]) / co.sl.n;
+    co.sl.cells = (long)n;
+    size_t nv = n * co.sl.n;
+    float *log_free = calloc(nv, sizeof(float));
+    co.passes = calloc(nv, sizeof(uint16_t));
+    co.hits = calloc(nv, sizeof(uint16_t));
+    co.floor_seen = calloc(n, sizeof(uint16_t));
+    co.view_counts = view_counts ? view_counts : calloc(s->n, sizeof(uint16_t));
+    cm->occ = malloc(n);
+    cm->cost = malloc(n);
+    cm->dist = malloc(n * sizeof(float));
+    cm->seen = calloc(n, sizeof(uint16_t));
+    if (!log_free || !co.passes || !co.hits || !co.floor_seen || !co.view_counts || !cm->occ ||
+        !cm->cost || !cm->dist || !cm->seen) {
+        rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells x %d slices",
+                          cm->nx, cm->ny, co.sl.n);
+        goto done;
+    }
+    memset(co.view_counts, 0, s->n * sizeof(uint16_t));
+    double t1 = sp_time_now();
+    if ((rc = nav_carve(cm, s, cams, n_cams, &o, r, &co, log, err))) goto done;
+    double t2 = sp_time_now();
+    splat_footprints(cm, s, &o, &co.sl, co.view_counts, log_free);
+    mark_floor(cm, s, &o, co.floor_seen);
+    uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
+    if (stood) mark_stands(cm, cams, n_cams, o.robot_radius_m, stood);
+    classify(cm, &o, &co, log_free, stood);
+    free(stood);
+    sp_logf(log, SP_LOG_DEBUG, "costmap: carving %.0f ms, footprints %.0f ms", 1e3 * (t2 - t1),
+            1e3 * (sp_time_now() - t2));
+    if (despeckle(cm, o.despeckle_cells) || fill_pockets(cm, o.fill_max_area_m2)) {
+        rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
+        goto done;
+    }
+    if ((rc = sp_costmap_inflate(cm, &o, err))) goto done;
+    long n_occ = 0, n_free = 0;
+    for (size_t i = 0; i < n; i++) n_occ += cm->occ[i] == SP_CELL_OCCUPIED, n_free += cm->occ[i] == SP_CELL_FREE;
+    sp_logf(log, SP_LOG_INFO,
+            "costmap: %dx%d cells at %.3f m, floor z %.3f, band %.2f..%.2f m: %ld occupied, %ld "
+            "free, %ld unknown (%.0f ms)", cm->nx, cm->ny, cm->res, cm->floor_z, o.band_lo_m,
+            o.band_hi_m, n_occ, n_free, (long)n - n_occ - n_free, 1e3 * (sp_time_now() - t0));
+done:
+    free(log_free), free(co.passes), free(co.hits), free(co.floor_seen);
+    if (!view_counts) free(co.view_counts);
+    if (rc) sp_costmap_free(cm);
+    return rc;
+}
+
+int sp_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                     const sp_costmap_opts *opts, sp_raster *r, const sp_log *log, sp_error *err)
+{
+    return nav_costmap_build(cm, s, cams, n_cams, opts, r, NULL, log, err);
+}

@@ -1,0 +1,94 @@
+/* Private helpers of the nav module: grid indexing, the distance transform, the free-space
+ * carving pass, segment traversal and the planner's cost terms. */
+#ifndef SP_NAV_INTERNAL_H
+#define SP_NAV_INTERNAL_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "semsplat/nav.h"
+
+static inline int nav_inside(const sp_costmap *cm, int ix, int iy)
+{
+    return ix >= 0 && iy >= 0 && ix < cm->nx && iy < cm->ny;
+}
+static inline long nav_idx(const sp_costmap *cm, int ix, int iy) { return (long)iy * cm->nx + ix; }
+
+#define NAV_MAX_SLICES 32
+
+/* The height band is split into n_slices slices of (band height / n_slices); voxel (slice v,
+ * cell i) is index v * cells + i. */
+typedef struct nav_slices {
+    int n;
+    float z0, dz;          /* world z of slice 0's bottom, slice height */
+    long cells;            /* nx * ny */
+} nav_slices;
+
+static inline int nav_slice_of(const nav_slices *sl, float z)
+{
+    int v = (int)floorf((z - sl->z0) / sl->dz);
+    return v < 0 ? 0 : v >= sl->n ? sl->n - 1 : v;
+}
+
+/* What the carving renders measure, per voxel and per Gaussian. */
+typedef struct nav_carve_out {
+    nav_slices sl;
+    uint16_t *passes;      /* [slices][cells] rays that crossed the voxel (carved it) */
+    uint16_t *hits;        /* [slices][cells] rays whose surface point lies in the voxel */
+    uint16_t *floor_seen;  /* [cells] rays that ended on the floor there */
+    uint16_t *view_counts; /* [n Gaussians] training views that see each Gaussian, or NULL */
+} nav_carve_out;
+
+/* Carves free space along the training cameras' rendered depth into out (the grid of cm and
+ * out->sl must be set up, the counters zeroed) and, when out->view_counts is not NULL, counts
+ * per Gaussian the training views in which its centre is in front of the rendered surface. */
+int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+              const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
+              sp_error *err);
+
+/* The costmap build with the carving outputs exposed (view_counts may be NULL). */
+int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
+                      const sp_costmap_opts *opts, sp_raster *r, uint16_t *view_counts,
+                      const sp_log *log, sp_error *err);
+
+/* Cost-term of a cell for the planner: (cost/252)^2 (Nav2 Theta*'s traversal term). */
+static inline float nav_cost_term(uint8_t c)
+{
+    float q = (float)c / 252.0f;
+    return q * q;
+}
+
+/* Calls fn(ctx, cell, t0, t1) for every cell of the map the segment a -> b (world xy) passes
+ * through, in order, with the segment's parameter interval inside it (t in [0, 1]); at an exact
+ * corner crossing both side cells are visited (with an empty interval). Stops early when fn
+ * returns nonzero and returns that value. */
+typedef int (*nav_cell_fn)(void *ctx, long cell, float t0, float t1);
+int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
+                 void *ctx);
+
+/* Distance from point p to segment a-b and to an axis-aligned box (0 inside). */
+float nav_point_segment_dist(const float p[2], const float a[2], const float b[2]);
+float nav_box_dist(const sp_nav_box *b, const float p[2]);
+/* The point of box b nearest to p. */
+void nav_box_nearest(const sp_nav_box *b, const float p[2], float out[2]);
+
+/* A cell mask of the goal (traversable cells that satisfy it); returns the count. */
+long nav_goal_mask(const sp_costmap *cm, const sp_nav_goal *g, uint8_t *mask);
+/* Admissible lower bound (metres) from a point to the goal. */
+float nav_goal_bound(const sp_nav_goal *g, const float p[2]);
+
+/* One planner run: A* with an additive per-cell penalty [n cells] (or NULL), then string
+ * pulling and waypoints. */
+int nav_plan_once(const sp_costmap *cm, const float start[3], const sp_nav_goal *goal,
+                  const sp_planner_opts *o, const float *penalty, const uint8_t *goal_mask,
+                  sp_path *path, sp_error *err);
+
+/* The path's cost without penalties (INFINITY when a segment lost its line of sight). */
+float nav_path_cost(const sp_costmap *cm, const sp_planner_opts *o, const sp_path *p);
+int nav_check_planner_opts(const sp_planner_opts *o, sp_error *err);
+/* Validates start, goal and options and builds the goal mask (*mask_out, caller frees); on a
+ * goal no cell satisfies, fails with SP_E_NOTFOUND and *status saying why. */
+int nav_goal_prepare(const sp_costmap *cm, const float start[3], const sp_nav_goal *goal,
+                     const sp_planner_opts *o, uint8_t **mask_out, int *status, sp_error *err);
+
+#endif

@@ -1,0 +1,252 @@
+/* The costmap: floor detection, footprints and carving against the room's boxes, Nav2's inflation
+ * formula on core's distance transform, the map_server round trip (unknown
+ * stays unknown; the 0.25 trap shown), the OccupancyGrid table, the goal check and bad input. */
+#include <stdio.h>
+
+#include "nav/nav_internal.h"
+#include "nav_scene.h"
+#include "semsplat/nav.h"
+#include "test.h"
+
+static sp_costmap g_cm; /* the room's costmap, built once */
+static sp_splat g_splat;
+
+static void build_room(void)
+{
+    sp_error err = {0};
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    CHECK_OK(ns_make_splat(&g_splat, 1, &err), &err);
+    CHECK(ns_make_cams(&cams, &n, 160, 120) == 0);
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    sp_costmap_opts o = sp_costmap_opts_default();
+    CHECK_OK(sp_costmap_build(&g_cm, &g_splat, cams, n, &o, r, NULL, &err), &err);
+    sp_raster_free(r);
+    sp_device_free(dev);
+    free(cams);
+}
+
+static void test_floor_and_cells(void)
+{
+    CHECK_NEAR(g_cm.floor_z, 0.0f, 0.01f);
+    CHECK_NEAR(g_cm.res, 0.05f, 1e-6);
+    /* inside the room, away from edges: free; the pillar and walls: occupied; outside: unknown */
+    long agree = 0, known = 0, occ_marked_free = 0, occ_total = 0;
+    for (int iy = 0; iy < g_cm.ny; iy++)
+        for (int ix = 0; ix < g_cm.nx; ix++) {
+            float p[2];
+            sp_costmap_cell_center(&g_cm, ix, iy, p);
+            uint8_t v = g_cm.occ[nav_idx(&g_cm, ix, iy)];
+            float x = p[0] - NS_OFFX, y = p[1] - NS_OFFY, h = 0.5f * g_cm.res;
+            int inside = x > 0 && x < 6 && y > 0 && y < 4;
+            if (!inside) {
+                /* behind the walls nobody looked */
+                if (x < -0.1f || x > 6.1f || y < -0.1f || y > 4.1f)
+                    CHECK_MSG(v != SP_CELL_FREE, "cell (%.2f, %.2f) outside the room is free", p[0], p[1]);
+                continue;
+            }
+            int truth = ns_truth_cell(p[0] - h, p[1] - h, p[0] + h, p[1] + h, 1);
+            if (truth) occ_total++;
+            if (v == SP_CELL_UNKNOWN) continue;
+            known++;
+            if ((v == SP_CELL_OCCUPIED) == truth) agree++;
+            else if (getenv("NAV_DEBUG")) fprintf(stderr, "disagree (%.3f, %.3f) ours %d truth %d dist %.3f\n", x, y, v, truth, g_cm.dist[nav_idx(&g_cm, ix, iy)]);
+            if (truth && v == SP_CELL_FREE) occ_marked_free++;
+        }
+    fprintf(stderr, "room: %ld of %ld known cells agree, %ld of %ld occupied marked free\n", agree,
+            known, occ_marked_free, occ_total);
+    CHECK(known > 0.9 * 6 / 0.05 * 4 / 0.05 * 0.85);
+    CHECK(agree >= 0.95 * known);
+    CHECK(occ_marked_free <= 0.01 * occ_total);
+    int ix, iy;
+    CHECK(sp_costmap_cell(&g_cm, 1.5f, 1.0f, &ix, &iy) == 0);
+    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_FREE);
+    CHECK(sp_costmap_cell(&g_cm, 3.0f, 2.0f, &ix, &iy) == 0);
+    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_OCCUPIED);
+    /* the table top (0.7 m) is inside the 0.05..1.0 m band */
+    CHECK(sp_costmap_cell(&g_cm, 4.8f, 0.9f, &ix, &iy) == 0);
+    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_OCCUPIED);
+}
+
+static void test_inflation_formula(void)
+{
+    /* cost of each cell equals Nav2's computeCost of its distance */
+    const sp_costmap_opts *o = &g_cm.opts;
+    long checked = 0;
+    for (long i = 0; i < (long)g_cm.nx * g_cm.ny; i++) {
+        if (g_cm.occ[i] != SP_CELL_FREE) continue;
+        float d = g_cm.dist[i];
+        int expect = d <= o->robot_radius_m ? 253
+                     : d > o->inflation_radius_m ? 0
+                     : (int)(252 * exp(-o->cost_scaling_factor * (d - o->robot_radius_m)));
+        if (g_cm.cost[i] == 253 && expect < 253) continue; /* near unknown: keep_clear_of_unknown */
+        CHECK_MSG(g_cm.cost[i] == expect, "cell %ld: d %.3f cost %d, expected %d", i, d, g_cm.cost[i], expect);
+        checked++;
+    }
+    CHECK(checked > 1000);
+    for (long i = 0; i < (long)g_cm.nx * g_cm.ny; i++) {
+        if (g_cm.occ[i] == SP_CELL_OCCUPIED) CHECK(g_cm.cost[i] == SP_COST_LETHAL);
+        if (g_cm.occ[i] == SP_CELL_UNKNOWN) CHECK(g_cm.cost[i] == SP_COST_UNKNOWN);
+    }
+    /* the worked table of the reference: inscribed 0.2 m, csf 10 */
+    sp_costmap_opts t = sp_costmap_opts_default();
+    t.cost_scaling_factor = 10;
+    t.inflation_radius_m = 2.0f;
+    const float d[6] = {0.25f, 0.30f, 0.40f, 0.50f, 0.75f, 1.00f};
+    const int expect[6] = {152, 92, 34, 12, 1, 0};
+    for (int k = 0; k < 6; k++)
+        CHECK_NEAR((int)(252 * exp(-t.cost_scaling_factor * (d[k] - t.robot_radius_m))), expect[k], 0);
+}
+
+static void test_map_roundtrip(void)
+{
+    sp_error err = {0};
+    char yaml[1024];
+    snprintf(yaml, sizeof yaml, "%s/map.yaml", test_tmpdir("nav_map"));
+    CHECK_OK(sp_costmap_write_map(&g_cm, yaml, &err), &err);
+    sp_costmap back;
+    CHECK_OK(sp_costmap_read_map(&back, yaml, &g_cm.opts, &err), &err);
+    CHECK(back.nx == g_cm.nx && back.ny == g_cm.ny);
+    CHECK_NEAR(back.origin[0], g_cm.origin[0], 1e-5);
+    CHECK_NEAR(back.origin[1], g_cm.origin[1], 1e-5);
+    long diff = 0, unknown = 0;
+    for (long i = 0; i < (long)g_cm.nx * g_cm.ny; i++) {
+        diff += back.occ[i] != g_cm.occ[i];
+        unknown += g_cm.occ[i] == SP_CELL_UNKNOWN;
+    }
+    CHECK(diff == 0);
+    CHECK(unknown > 100);
+    sp_costmap_free(&back);
+    /* the map_saver trap: the same image with free_thresh 0.25 reads unknown (205) as free */
+    char yaml2[1024], text[512];
+    snprintf(yaml2, sizeof yaml2, "%s", yaml);
+    snprintf(strrchr(yaml2, '/'), 16, "/trap.yaml");
+    snprintf(text, sizeof text, "image: map.pgm\nresolution: %g\norigin: [%g, %g, 0]\nnegate: 0\n"
+             "occupied_thresh: 0.65\nfree_thresh: 0.25\n", g_cm.res, g_cm.origin[0], g_cm.origin[1]);
+    CHECK_OK(sp_write_file_atomic(yaml2, text, strlen(text), &err), &err);
+    CHECK_OK(sp_costmap_read_map(&back, yaml2, NULL, &err), &err);
+    long became_free = 0;
+    for (long i = 0; i < (long)g_cm.nx * g_cm.ny; i++)
+        became_free += g_cm.occ[i] == SP_CELL_UNKNOWN && back.occ[i] == SP_CELL_FREE;
+    CHECK(became_free == unknown);
+    sp_costmap_free(&back);
+    /* block-style origin, negate as a bool, scale mode */
+    snprintf(text, sizeof text, "image: \"map.pgm\"\nmode: scale\nresolution: 0.05\norigin:\n  - 1.5\n"
+             "  - -2\n  - 0\nnegate: false\noccupied_thresh: 0.65\nfree_thresh: 0.19\n");
+    CHECK_OK(sp_write_file_atomic(yaml2, text, strlen(text), &err), &err);
+    CHECK_OK(sp_costmap_read_map(&back, yaml2, NULL, &err), &err);
+    CHECK_NEAR(back.origin[0], 1.5, 1e-6);
+    CHECK_NEAR(back.origin[1], -2.0, 1e-6);
+    sp_costmap_free(&back);
+}
+
+static void test_bad_maps(void)
+{
+    sp_error err = {0};
+    const char *dir = test_tmpdir("nav_badmap");
+    char yaml[1024];
+    snprintf(yaml, sizeof yaml, "%s/bad.yaml", dir);
+    const char *cases[][2] = {
+        {"image: map.pgm\nresolution: 0.05\norigin: [0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "3 elements"},
+        {"image: map.pgm\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "resolution"},
+        {"image: map.pgm\nresolution: abc\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "not a number"},
+        {"image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0.5]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "yaw"},
+        {"image: missing.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "missing.pgm"},
+        {"image: trunc.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "truncated"},
+    };
+    char pgm[1024];
+    snprintf(pgm, sizeof pgm, "%s/trunc.pgm", dir);
+    CHECK_OK(sp_write_file_atomic(pgm, "P5\n10 10\n255\n\x01\x02", 15, &err), &err);
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        CHECK_OK(sp_write_file_atomic(yaml, cases[k][0], strlen(cases[k][0]), &err), &err);
+        sp_costmap cm;
+        int rc = sp_costmap_read_map(&cm, yaml, NULL, &err);
+        CHECK_MSG(rc < 0 && strstr(err.msg, cases[k][1]), "case %zu: rc %d, '%s'", k, rc, err.msg);
+        CHECK(cm.occ == NULL);
+    }
+}
+
+static void test_occupancy_grid(void)
+{
+    size_t n = (size_t)g_cm.nx * g_cm.ny;
+    int8_t *map = malloc(n), *costs = malloc(n);
+    sp_costmap_to_occupancy_grid(&g_cm, 0, map);
+    sp_costmap_to_occupancy_grid(&g_cm, 1, costs);
+    for (size_t i = 0; i < n; i++) {
+        int8_t e = g_cm.occ[i] == SP_CELL_UNKNOWN ? -1 : g_cm.occ[i] == SP_CELL_OCCUPIED ? 100 : 0;
+        CHECK(map[i] == e);
+        uint8_t c = g_cm.cost[i];
+        int ec = c == 255 ? -1 : c == 254 ? 100 : c == 253 ? 99 : c == 0 ? 0 : 1 + 97 * (c - 1) / 251;
+        CHECK(costs[i] == ec);
+        CHECK(costs[i] >= -1 && costs[i] <= 100);
+    }
+    free(map), free(costs);
+}
+
+static void test_goal_check(void)
+{
+    char why[256];
+    float s[2] = {1.0f, 1.0f};
+    float ok[2] = {5.0f, 3.0f}, wall[2] = {3.0f, 2.0f}, outside[2] = {-3.0f, 0.5f}, behind[2] = {6.3f, 2.0f};
+    CHECK(sp_costmap_check_goal(&g_cm, s, ok, why, sizeof why) == SP_NAV_OK);
+    CHECK(sp_costmap_check_goal(&g_cm, s, wall, why, sizeof why) == SP_NAV_GOAL_OCCUPIED);
+    CHECK(strstr(why, "occupied") != NULL);
+    CHECK(sp_costmap_check_goal(&g_cm, s, outside, why, sizeof why) == SP_NAV_GOAL_OUTSIDE_MAP);
+    int st = sp_costmap_check_goal(&g_cm, s, behind, why, sizeof why);
+    CHECK_MSG(st == SP_NAV_GOAL_OCCUPIED || st == SP_NAV_GOAL_OUTSIDE_MAP, "%d %s", st, why);
+    CHECK(sp_costmap_check_goal(&g_cm, wall, ok, why, sizeof why) == SP_NAV_START_OCCUPIED);
+}
+
+static void test_bad_build(void)
+{
+    sp_error err = {0};
+    sp_costmap cm;
+    sp_costmap_opts o = sp_costmap_opts_default();
+    sp_camera cam;
+    memset(&cam, 0, sizeof cam);
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 0, &o, NULL, NULL, &err), SP_E_ARG, &err, "camera");
+    o.band_hi_m = o.band_lo_m;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "band");
+    o = sp_costmap_opts_default();
+    o.resolution_m = 0.0005f;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "resolution");
+    o = sp_costmap_opts_default();
+    o.robot_radius_m = 2.0f;
+    CHECK_FAILS(sp_costmap_inflate(&g_cm, &o, &err), SP_E_ARG, &err, "radius");
+    /* a NaN in the splat, a camera with a broken pose */
+    sp_device *dev = NULL;
+    sp_raster *r = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 1, &err), &err);
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    CHECK(ns_make_cams(&cams, &n, 32, 24) == 0);
+    o = sp_costmap_opts_default();
+    float keep = g_splat.means[7];
+    g_splat.means[7] = NAN;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, cams, n, &o, r, NULL, &err), SP_E_NUMERIC, &err, "costmap");
+    g_splat.means[7] = keep;
+    cams[3].t[1] = INFINITY;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, cams, n, &o, r, NULL, &err), SP_E_ARG, &err, "camera 3");
+    free(cams);
+    sp_raster_free(r);
+    sp_device_free(dev);
+}
+
+int main(void)
+{
+    build_room();
+    RUN(test_floor_and_cells);
+    RUN(test_inflation_formula);
+    RUN(test_map_roundtrip);
+    RUN(test_bad_maps);
+    RUN(test_occupancy_grid);
+    RUN(test_goal_check);
+    RUN(test_bad_build);
+    sp_costmap_free(&g_cm);
+    sp_splat_free(&g_splat);
+    return TEST_EXIT();
+}
