@@ -5,12 +5,21 @@
     r = q.query("refrigerator")
     r.position          # np.array([x, y, z]) in r.frame, or None when not found
     r.frame             # {"name": "world"|"colmap", "source": "synth"|"align"|"colmap", "units", "up"}
-    r.source            # {"encoder": "clip"|"exact", "features": "clip"|"npy"|"labels", "note", ...}
-    r.confidence        # largest raw cosine (above ~0.25 a match, below ~0.15 noise)
+    r.source            # {"encoder": "clip"|"lexical"|"exact", "features": "clip"|"npy"|"labels", "note", ...}
+    r.encoder           # the text encoder that answered ("lexical" on label scenes without weights)
+    r.confidence        # clip/exact: largest raw cosine (above ~0.25 a match); lexical: the calibrated
+                        # WordNet score (r.threshold = 0.5 is a match)
+    r.explanation       # lexical: which classes matched and why (synonym, hypernym path, definitions)
+    r.matches           # [{"class", "role", "score", "kind", "path", "gloss_words", "definition", ...}]
+    r.region, r.anchor  # {"name", "extent_min", "extent_max", "centre", "instances"} or None
     r.relevancy_image   # np.ndarray (H, W, 3) uint8: turbo relevancy over the rendered view
-    r.instances         # [{"position": np.array, "extent_min", "extent_max", "score", ...}]
+    r.instances         # [{"position": np.array, "extent_min", "extent_max", "score", "class", ...}]
     q.relevancy("chair")                 # per-Gaussian relevancy, np.float32 [n]
     rgb, rel = q.heatmap("chair", q.camera(3))   # from any camera (a Camera, or a view index)
+
+The text encoder is the model folder's (semantic.json "encoder"), or SemanticSplatQuery(...,
+encoder="clip"|"lexical"|"exact"). The lexical encoder matches text against the scene's known
+class names with WordNet: it cannot find what the world file does not name.
 
 Positions, Gaussians and cameras are in the model folder's frame (frame.json: the world frame for
 synth captures and aligned models); `source["note"]` says when the features come from
@@ -37,7 +46,7 @@ import numpy as np
 __all__ = ["SemanticSplatQuery", "QueryResult", "Camera", "SemsplatError", "SemsplatNotFoundError",
            "SemsplatValueError", "SemsplatMemoryError", "load_library"]
 
-ABI_VERSION = 2  # SP_SEMANTIC_ABI_VERSION in include/semsplat/semantic.h
+ABI_VERSION = 3  # SP_SEMANTIC_ABI_VERSION in include/semsplat/semantic.h
 
 
 class SemsplatError(RuntimeError):
@@ -94,7 +103,25 @@ class _Instance(ctypes.Structure):  # sp_query_instance
         ("score", ctypes.c_float),
         ("confidence", ctypes.c_float),
         ("n_points", ctypes.c_int),
+        ("label", ctypes.c_char * 128),
+        ("relation_m", ctypes.c_float),
     ]
+
+
+class _Match(ctypes.Structure):  # sp_query_match
+    _fields_ = [("label", ctypes.c_char * 128), ("role", ctypes.c_char * 8), ("score", ctypes.c_float),
+                ("kind", ctypes.c_char * 16), ("query_sense", ctypes.c_char * 64),
+                ("class_sense", ctypes.c_char * 64), ("path", ctypes.c_char * 256),
+                ("gloss_words", ctypes.c_char * 192), ("definition", ctypes.c_char * 192)]
+
+
+class _Region(ctypes.Structure):  # sp_query_region
+    _fields_ = [("valid", ctypes.c_int), ("name", ctypes.c_char * 64), ("extent_min", ctypes.c_float * 3),
+                ("extent_max", ctypes.c_float * 3), ("centre", ctypes.c_float * 3), ("n_instances", ctypes.c_int)]
+
+
+class _EncoderOpts(ctypes.Structure):  # sp_encoder_opts
+    _fields_ = [("encoder", ctypes.c_char_p), ("wordnet_dir", ctypes.c_char_p), ("regions_path", ctypes.c_char_p)]
 
 
 class _Source(ctypes.Structure):  # sp_query_source
@@ -130,6 +157,15 @@ class _Result(ctypes.Structure):  # sp_query_result
         ("ms_total", ctypes.c_double),
         ("source", _Source),
         ("frame", _Frame),
+        ("threshold", ctypes.c_float),
+        ("n_matches", ctypes.c_int),
+        ("matches", ctypes.POINTER(_Match)),
+        ("relation", ctypes.c_char * 24),
+        ("region", _Region),
+        ("anchor", _Region),
+        ("n_ignored", ctypes.c_int),
+        ("ignored", (ctypes.c_char * 32) * 8),
+        ("explanation", ctypes.c_char_p),
     ]
 
 
@@ -155,8 +191,10 @@ class _Image(ctypes.Structure):  # sp_image (include/semsplat/io.h)
 
 _STRUCTS = {"sp_query_opts": _Opts, "sp_query_instance": _Instance, "sp_query_source": _Source,
             "sp_query_frame": _Frame, "sp_query_result": _Result, "sp_error": _Error,
+            "sp_query_match": _Match, "sp_query_region": _Region, "sp_encoder_opts": _EncoderOpts,
             "sp_camera": _Camera, "sp_splat": _Splat, "sp_image": _Image}
 _METHODS = {"3d": 0, "multiview": 1, "multi-view": 1}
+ENCODERS = ("clip", "lexical", "exact")
 _DEVICES = {"cpu": 0, "cuda": 1, "auto": 2}
 _lib = None
 _lib_lock = threading.Lock()
@@ -214,6 +252,8 @@ def _declare(lib):
         "sp_device_name": ([P], ctypes.c_char_p),
         "sp_query_opts_default": ([], _Opts),
         "sp_query_engine_open": ([ctypes.POINTER(P), ctypes.c_char_p, ctypes.POINTER(_Opts), P, P, E], ctypes.c_int),
+        "sp_query_engine_open_with": ([ctypes.POINTER(P), ctypes.c_char_p, ctypes.POINTER(_EncoderOpts),
+                                       ctypes.POINTER(_Opts), P, P, E], ctypes.c_int),
         "sp_query_engine_free": ([P], None),
         "sp_query_engine_defaults": ([P], ctypes.POINTER(_Opts)),
         "sp_query_engine_query": ([P, ctypes.c_char_p, ctypes.POINTER(_Opts), ctypes.POINTER(_Result), E], ctypes.c_int),
@@ -230,6 +270,7 @@ def _declare(lib):
         "sp_query_engine_splat": ([P], ctypes.POINTER(_Splat)),
         "sp_query_result_free": ([ctypes.POINTER(_Result)], None),
         "sp_query_source_note": ([ctypes.POINTER(_Source)], ctypes.c_char_p),
+        "sp_query_engine_source": ([P], ctypes.POINTER(_Source)),
         "sp_image_write_png": ([ctypes.c_char_p, ctypes.POINTER(_Image), E], ctypes.c_int),
     }
     for name, (args, res) in sigs.items():
@@ -274,6 +315,31 @@ def _frame_dict(f):
     return {"name": _str(f.name), "source": _str(f.source), "units": _str(f.units), "up": _str(f.up)}
 
 
+def _region_dict(g):
+    if not g.valid:
+        return None
+    return {"name": _str(g.name), "extent_min": _vec(g.extent_min), "extent_max": _vec(g.extent_max),
+            "centre": _vec(g.centre), "instances": int(g.n_instances)}
+
+
+_MATCH_KEYS = ("role", "kind", "query_sense", "class_sense", "path", "gloss_words", "definition")
+
+
+def _match_dict(m, threshold):
+    d = {"class": _str(m.label), "score": float(m.score), "match": float(m.score) >= threshold}
+    for k in _MATCH_KEYS:
+        d[k] = _str(getattr(m, k))
+    return d
+
+
+def _plain(v):
+    if isinstance(v, np.ndarray):
+        return v.tolist()
+    if isinstance(v, dict):
+        return {k: _plain(x) for k, x in v.items()}
+    return v
+
+
 class Camera:
     """A pinhole camera in the engine's frame: intrinsics in pixels, world-to-camera R (3x3), t.
     OpenCV axes (x right, y down, z forward): x_cam = R x_world + t."""
@@ -316,7 +382,15 @@ class QueryResult:
         self.view_index = int(r.view_index) if r.view_index >= 0 else None
         self.view_name = _str(r.view_name) if r.view_index >= 0 else None
         self.source = _source_dict(r.source)
+        self.encoder = self.source["encoder"]
         self.frame = _frame_dict(r.frame)
+        self.threshold = float(r.threshold)
+        self.matches = [_match_dict(r.matches[k], self.threshold) for k in range(r.n_matches)]
+        self.relation = _str(r.relation) or None
+        self.region = _region_dict(r.region)
+        self.anchor = _region_dict(r.anchor)
+        self.ignored = [_str(r.ignored[k].value) for k in range(r.n_ignored)]
+        self.explanation = _str(r.explanation) if r.explanation else None
         if r.relevancy_image and r.width > 0 and r.height > 0:
             n = r.width * r.height
             self.relevancy_image = np.ctypeslib.as_array(r.relevancy_image, shape=(n * 3,)).reshape(
@@ -336,6 +410,8 @@ class QueryResult:
                 "score": float(it.score),
                 "confidence": float(it.confidence),
                 "points": int(it.n_points),
+                "class": _str(it.label) or None,
+                "relation_m": float(it.relation_m) if np.isfinite(it.relation_m) else None,
             })
         self.timings_ms = {"embed": r.ms_embed, "relevancy": r.ms_relevancy, "localize": r.ms_localize,
                            "heatmap": r.ms_heatmap, "total": r.ms_total}
@@ -349,14 +425,16 @@ class QueryResult:
     def to_dict(self):
         """The same keys as `semsplat query --json` (heatmap left out)."""
         return {
-            "text": self.text, "method": self.method, "found": self.found,
+            "text": self.text, "encoder": self.encoder, "method": self.method, "found": self.found,
             "position": None if self.position is None else self.position.tolist(),
-            "confidence": self.confidence, "relevancy_max": self.relevancy_max,
+            "confidence": self.confidence, "threshold": self.threshold, "relevancy_max": self.relevancy_max,
             "view": None if self.view_index is None else {"index": self.view_index, "name": self.view_name},
-            "instances": [{k: (v.tolist() if isinstance(v, np.ndarray) else v) for k, v in i.items()}
-                          for i in self.instances],
+            "instances": [_plain(i) for i in self.instances],
             "source": dict(self.source), "frame": dict(self.frame),
             "timings_ms": dict(self.timings_ms),
+            "matches": [dict(m) for m in self.matches], "relation": self.relation,
+            "region": _plain(self.region), "anchor": _plain(self.anchor), "ignored": list(self.ignored),
+            "explanation": self.explanation,
         }
 
     def __repr__(self):
@@ -380,11 +458,13 @@ class SemanticSplatQuery:
     model_path: folder with splat.ply (f_sem_* fields), semantic.json and the PCA files.
     device: "auto" (GPU when usable), "cpu" or "cuda". method: "3d" or "multiview" (the default
     of query(); each call may pass its own). heatmap: render relevancy_image for each query.
-    threads: CPU threads (0 = all).
+    threads: CPU threads (0 = all). encoder: "clip", "lexical" or "exact" (None = the folder's,
+    semantic.json "encoder"); wordnet_dir, regions: the lexical encoder's WordNet database and
+    region table (None = the defaults).
     """
 
     def __init__(self, model_path, device="auto", method="3d", heatmap=True, threads=0,
-                 negatives=None, min_confidence=None):
+                 negatives=None, min_confidence=None, encoder=None, wordnet_dir=None, regions=None):
         self._lock = threading.RLock()
         self._dev = ctypes.c_void_p()
         self._eng = ctypes.c_void_p()
@@ -392,6 +472,8 @@ class SemanticSplatQuery:
             raise ValueError("device must be one of %s" % sorted(_DEVICES))
         if method not in _METHODS:
             raise ValueError("method must be one of %s" % sorted(_METHODS))
+        if encoder is not None and encoder not in ENCODERS:
+            raise ValueError("encoder must be one of %s" % (ENCODERS,))
         self._lib = load_library()
         err = _Error()
         _check(self._lib.sp_device_create(ctypes.byref(self._dev), _DEVICES[device], int(threads),
@@ -406,8 +488,12 @@ class SemanticSplatQuery:
             opts.negatives = text.encode()
         if min_confidence is not None:
             opts.min_confidence = float(min_confidence)
-        rc = self._lib.sp_query_engine_open(ctypes.byref(self._eng), os.fsencode(model_path),
-                                            ctypes.byref(opts), self._dev, None, ctypes.byref(err))
+        enc = _EncoderOpts(encoder.encode() if encoder else None,
+                           os.fsencode(wordnet_dir) if wordnet_dir is not None else None,
+                           os.fsencode(regions) if regions is not None else None)
+        rc = self._lib.sp_query_engine_open_with(ctypes.byref(self._eng), os.fsencode(model_path),
+                                                 ctypes.byref(enc), ctypes.byref(opts), self._dev, None,
+                                                 ctypes.byref(err))
         if rc != 0:
             self._lib.sp_device_free(self._dev)
             self._dev = ctypes.c_void_p()
@@ -449,6 +535,12 @@ class SemanticSplatQuery:
             pass
 
     # -- facts ---------------------------------------------------------------------------------
+
+    @property
+    def encoder(self):
+        """The text encoder this engine answers with ("clip", "lexical" or "exact")."""
+        with self._lock:
+            return _source_dict(self._lib.sp_query_engine_source(self._engine()).contents)["encoder"]
 
     @property
     def device(self):

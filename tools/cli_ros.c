@@ -15,6 +15,7 @@ const char cli_ros_help[] =
     "  --odom-topic T      odometry topic (default odom)\n"
     "  --nav-action A      NavigateToPose action (default navigate_to_pose)\n"
     "  --path-action A     ComputePathToPose action (default compute_path_to_pose)\n"
+    "  --server-timeout S  how long to wait for an action server to appear (default 5)\n"
     "  --loopback          Cyclone DDS on 127.0.0.1 only, no multicast (one machine)\n"
     "  --dds-config XML    Cyclone configuration (XML text or file://path; default\n"
     "                      $CYCLONEDDS_URI)\n";
@@ -43,6 +44,11 @@ int cli_ros_flag(const char *cmd, int argc, char **argv, int *i, sp_ros_options 
     else if ((v = cli_flag_value(argc, argv, i, "--nav-action", bad))) o->navigate_action = v;
     else if ((v = cli_flag_value(argc, argv, i, "--path-action", bad))) o->compute_path_action = v;
     else if ((v = cli_flag_value(argc, argv, i, "--dds-config", bad))) o->dds_config = v;
+    else if ((v = cli_flag_value(argc, argv, i, "--server-timeout", bad))) {
+        if (cli_parse_float(cmd, "--server-timeout", v, &o->server_timeout_s)) *bad = 1;
+        else if (!(o->server_timeout_s > 0) || o->server_timeout_s > 3600)
+            *bad = 1, cli_usage_error(cmd, "--server-timeout: %s s not in (0, 3600]", v);
+    }
     else if (!strcmp(argv[*i], "--loopback")) o->loopback_only = 1;
     else return *bad;
     return 1;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "cli.h"
+#include "cli_ros.h"
 #include "semsplat/agent.h"
 
 static void help(void)
@@ -24,10 +25,12 @@ static void help(void)
            "  --confirm             ask before every motion\n"
            "  --max-speed M/S       robot speed limit (default 0.4, at most %.1f)\n"
            "  --start X,Y,YAW       the offline robot's start pose\n"
-           "  --ros                 drive a ROS 2 robot instead of the offline one\n"
-           "  --json                print each answer as JSON; --quiet\n"
-           "API keys come only from OPENAI_API_KEY / ANTHROPIC_API_KEY.\n",
-           SP_AGENT_SPEED_LIMIT);
+           "  --ros                 drive a ROS 2 robot (Nav2 NavigateToPose over DDS) instead of\n"
+           "                        the offline one; --ros-wait S for its first pose (default 10)\n"
+           "  --device cpu|cuda|auto, --threads N   where the map is queried and rendered\n"
+           "  --json                print each answer as JSON; --quiet, --verbose\n"
+           "API keys come only from OPENAI_API_KEY / ANTHROPIC_API_KEY.\n\nROS flags (with --ros):\n%s",
+           SP_AGENT_SPEED_LIMIT, cli_ros_help);
 }
 
 static sp_agent_session *g_session; /* for the Ctrl-C handler */
@@ -113,12 +116,16 @@ int cmd_agent(int argc, char **argv)
     cli_common c = cli_common_default();
     cfg.out_dir = "agent-out";
     cfg.confirm_fn = confirm;
+    cli_ros_defaults(&cfg.ros);
+    cfg.ros.node_name = "semsplat_agent";
     for (int i = 1; i < argc; i++) {
         long n;
         double d;
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
-        if ((r = cli_common_flag("agent", argc, argv, &i, CLI_QUIET | CLI_VERBOSE, &c))) {
+        if ((r = cli_common_flag("agent", argc, argv, &i, CLI_ALL, &c))) {
             if (r == 2) return 2;
+        } else if (cli_ros_flag("agent", argc, argv, &i, &cfg.ros, &bad)) {
+            if (bad) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) cfg.model_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) cfg.out_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--llm-preset", &bad))) cfg.llm.preset = v;
@@ -138,6 +145,8 @@ int cmd_agent(int argc, char **argv)
         } else if ((v = cli_flag_value(argc, argv, &i, "--max-speed", &bad))) {
             if (cli_parse_float("agent", "--max-speed", v, &d)) return 2;
             cfg.max_speed_mps = d;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--ros-wait", &bad))) {
+            if (cli_parse_float("agent", "--ros-wait", v, &cfg.ros_wait_s)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--start", &bad))) {
             if (parse_start(v, &cfg)) return 2;
         } else if (!strcmp(argv[i], "--confirm")) cfg.confirm = 1;
@@ -172,12 +181,17 @@ int cmd_agent(int argc, char **argv)
     cfg.log = &log;
     sp_error err = {0};
     sp_agent_session *s = NULL;
-    if (sp_agent_session_open(&s, &cfg, &err)) return cli_fail("agent", &err);
+    if (cli_device_open("agent", &c, &cfg.device)) return 1;
+    if (sp_agent_session_open(&s, &cfg, &err)) {
+        sp_device_free(cfg.device);
+        return cli_fail("agent", &err);
+    }
     g_session = s;
     int failed = 0;
     for (int i = 0; i < n_texts; i++) failed |= answer(s, texts[i], json);
     if (n_texts == 0) failed = interactive(s, json);
     g_session = NULL;
     sp_agent_session_close(s);
+    sp_device_free(cfg.device);
     return failed ? 1 : 0;
 }

@@ -22,7 +22,8 @@ static void help(void)
            "  --regions FILE   region table (default data/semantic/regions.json)\n"
            "  --device cpu|cuda|auto, --threads N, --quiet\n\n"
            "Matching against the scene's known class names, not recognition: what the world file\n"
-           "does not name cannot be found. Confidence >= %.2f is a match.\n",
+           "does not name cannot be found. Confidence >= %.2f is a match. `semsplat query` answers\n"
+           "label-feature model folders through this encoder by default (--explain, --json).\n",
            SP_LEX_DEFAULT_WORDNET, (double)SP_LEX_THRESHOLD);
 }
 

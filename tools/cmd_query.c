@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "cli_query.h"
 #include "semsplat/io.h"
 #include "semsplat/render.h"
 #include "semsplat/semantic.h"
@@ -14,7 +15,14 @@
 static void help(void)
 {
     printf("usage: semsplat query --model DIR [flags] \"text\" [\"text\" ...]\n\n"
-           "  --json                print one JSON object per query (an array for several)\n"
+           "  --json                print one JSON object per query (an array for several), with\n"
+           "                        the encoder's matches (class, score, kind, path, definitions)\n"
+           "  --explain             print which classes the text matched and why (synonym, hypernym\n"
+           "                        path, definition words); in --json always\n"
+           "  --encoder NAME        text encoder: clip, lexical or exact (default: the model\n"
+           "                        folder's, semantic.json \"encoder\"; lexical for label scenes)\n"
+           "  --wordnet DIR         lexical: WordNet 3.0 database files (default %s)\n"
+           "  --regions FILE        lexical: region table (default data/semantic/regions.json)\n"
            "  --heatmap FILE.png    relevancy overlay of the best view (one query)\n"
            "  --heatmap-dir DIR     one PNG per query, named after the text\n"
            "  --method 3d|multiview localization (default 3d)\n"
@@ -22,12 +30,14 @@ static void help(void)
            "  --views N             multi-view: at least N views rendered and back-projected\n"
            "                        (default 4; up to 3N while under 97%% of the relevant set is seen)\n"
            "  --negatives a,b,c     canonical negatives (default %s)\n"
-           "  --min-confidence C    raw cosine below which nothing is found (default 0.2)\n"
+           "  --min-confidence C    clip, exact: raw cosine below which nothing is found (default\n"
+           "                        0.2); lexical answers at its calibrated score >= %.2f\n"
            "  --device cpu|cuda|auto, --threads N, --quiet\n\n"
            "Positions are in the model folder's frame (frame.json: world for synth captures and\n"
            "aligned models, else COLMAP's); the output names the frame, the text encoder and the\n"
-           "feature source.\n",
-           SP_SEM_DEFAULT_NEGATIVES);
+           "feature source. The lexical encoder matches text against the scene's known class names\n"
+           "(WordNet): it cannot find what the world file does not name.\n",
+           SP_LEX_DEFAULT_WORDNET, SP_SEM_DEFAULT_NEGATIVES, (double)SP_LEX_THRESHOLD);
 }
 
 static void slug(const char *text, char *out, size_t cap)
@@ -38,19 +48,12 @@ static void slug(const char *text, char *out, size_t cap)
     out[j] = 0;
 }
 
-/* Once, above the results: what produced them and which frame the positions are in. */
-static void print_provenance(const sp_query_source *s, const sp_frame *f)
-{
-    const char *note = sp_query_source_note(s);
-    printf("source: text encoder %s, features %s%s%s\n", s->encoder, s->features, note[0] ? "; " : "", note);
-    printf("frame:  %s (%s; units %s, up %s)\n", sp_frame_name(f), f->source, f->units, f->up);
-}
-
 int cmd_query(int argc, char **argv)
 {
     const char *model = NULL, *heatmap = NULL, *heatmap_dir = NULL, *v;
     const char *texts[256];
-    int n_texts = 0, json = 0, bad = 0, r;
+    int n_texts = 0, json = 0, explain = 0, bad = 0, r;
+    sp_encoder_opts enc = {0};
     long view = -1;
     cli_common c = cli_common_default();
     sp_query_opts opts = sp_query_opts_default();
@@ -61,6 +64,9 @@ int cmd_query(int argc, char **argv)
         } else if ((v = cli_flag_value(argc, argv, &i, "--model", &bad))) model = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--heatmap-dir", &bad))) heatmap_dir = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--heatmap", &bad))) heatmap = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--encoder", &bad))) enc.encoder = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--wordnet", &bad))) enc.wordnet_dir = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--regions", &bad))) enc.regions_path = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--negatives", &bad)))
             snprintf(opts.negatives, sizeof opts.negatives, "%s", v);
         else if ((v = cli_flag_value(argc, argv, &i, "--method", &bad))) {
@@ -79,6 +85,7 @@ int cmd_query(int argc, char **argv)
             if (cli_parse_float("query", "--min-confidence", v, &c)) return 2;
             opts.min_confidence = (float)c;
         } else if (!strcmp(argv[i], "--json")) json = 1;
+        else if (!strcmp(argv[i], "--explain")) explain = 1;
         else if (argv[i][0] == '-' && argv[i][1] == '-' && !bad)
             return cli_usage_error("query", "unknown flag '%s'", argv[i]);
         else if (!bad) {
@@ -91,6 +98,9 @@ int cmd_query(int argc, char **argv)
     if (n_texts == 0) return cli_usage_error("query", "give the text to find, e.g. \"refrigerator\"");
     if (heatmap && n_texts > 1) return cli_usage_error("query", "--heatmap takes one query; use --heatmap-dir");
     if (heatmap && heatmap_dir) return cli_usage_error("query", "--heatmap and --heatmap-dir exclude each other");
+    if (enc.encoder && strcmp(enc.encoder, SP_ENCODER_CLIP) && strcmp(enc.encoder, SP_ENCODER_LEXICAL) &&
+        strcmp(enc.encoder, SP_ENCODER_EXACT))
+        return cli_usage_error("query", "--encoder: '%s' is not clip, lexical or exact", enc.encoder);
     opts.heatmap = heatmap || heatmap_dir;
     opts.heatmap_view = (int)view;
     sp_error err = {0};
@@ -98,13 +108,13 @@ int cmd_query(int argc, char **argv)
     sp_device *dev = NULL;
     sp_query_engine *e = NULL;
     if (cli_device_open("query", &c, &dev)) return 1;
-    if (sp_query_engine_open(&e, model, &opts, dev, &log, &err)) {
+    if (sp_query_engine_open_with(&e, model, &enc, &opts, dev, &log, &err)) {
         sp_device_free(dev);
         return cli_fail("query", &err);
     }
     int rc = 0;
     if (json && n_texts > 1) printf("[\n");
-    if (!json) print_provenance(sp_query_engine_source(e), sp_query_engine_frame(e));
+    if (!json) cli_query_provenance(sp_query_engine_source(e), sp_query_engine_frame(e));
     for (int q = 0; q < n_texts && !rc; q++) {
         sp_query_result res;
         if (sp_query_engine_query(e, texts[q], &opts, &res, &err)) {
@@ -132,19 +142,7 @@ int cmd_query(int argc, char **argv)
             printf("%s%s\n", s ? s : "null", json && n_texts > 1 && q + 1 < n_texts ? "," : "");
             free(s);
         } else {
-            if (res.valid)
-                printf("%-24s found  (%.3f, %.3f, %.3f)  confidence %.3f  %d instance%s  %.1f ms\n",
-                       texts[q], res.position[0], res.position[1], res.position[2], res.confidence,
-                       res.n_instances, res.n_instances == 1 ? "" : "s", res.ms_total);
-            else
-                printf("%-24s not found  confidence %.3f  %.1f ms\n", texts[q], res.confidence,
-                       res.ms_total);
-            for (int k = 0; k < res.n_instances && res.valid; k++)
-                printf("    instance %d  (%.3f, %.3f, %.3f)  score %.3g  confidence %.3f\n", k,
-                       res.instances[k].position[0], res.instances[k].position[1],
-                       res.instances[k].position[2], res.instances[k].score,
-                       res.instances[k].confidence);
-            if (hm) printf("    heatmap %s (view %s)\n", hm, res.view_name);
+            cli_query_print(&res, hm, explain);
         }
         sp_query_result_free(&res);
     }

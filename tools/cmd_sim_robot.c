@@ -21,12 +21,15 @@ static void help(void)
     printf("usage: semsplat sim-robot (--map MAP.yaml | --model DIR) [--start x,y,yaw]\n"
            "                         [--radius M] [--max-speed M/S] [--max-accel M/S2]\n"
            "                         [--max-yaw-rate RAD/S] [--rate HZ] [--time-scale K]\n"
-           "                         [--duration S] [--ready-file PATH] [ROS flags] [--quiet]\n\n"
+           "                         [--duration S] [--ready-file PATH] [ROS flags]\n"
+           "                         [--device cpu|cuda|auto] [--threads N] [--quiet] [--verbose]\n\n"
            "A differential-drive robot with velocity and acceleration limits, standing in for a\n"
-           "robot running Nav2: it plans on the costmap (a Nav2 map.yaml, or the model folder's\n"
-           "map.yaml), refuses goals in occupied or unknown space, drives the path, and\n"
-           "publishes odom, tf (odom -> base_link) and map. Stops on Ctrl-C or after\n"
-           "--duration seconds. --ros-distro auto means jazzy here.\n\nROS flags:\n%s",
+           "robot running Nav2: it plans on the nav module's costmap (read from a Nav2 map.yaml,\n"
+           "or built from the model folder's splat and training cameras on --device), refuses\n"
+           "goals outside the map, in occupied or unknown space, too close to obstacles or not\n"
+           "reachable, drives the path, and publishes odom, tf (odom -> base_link) and map.\n"
+           "Stops on Ctrl-C or after --duration seconds. --ros-distro auto means jazzy here.\n\n"
+           "ROS flags:\n%s",
            cli_ros_help);
 }
 
@@ -41,7 +44,8 @@ int cmd_sim_robot(int argc, char **argv)
     sp_ros_sim_options_default(&o);
     cli_ros_defaults(&o.ros);
     o.ros.node_name = "semsplat_sim_robot";
-    int quiet = 0, bad = 0;
+    cli_common c = cli_common_default();
+    int bad = 0, r;
     const char *v;
     sp_ros_pose start = {0, 0, 0, 0};
     /* each with its range: beyond it a robot is not simulated but stuck (a rate of 1e30 Hz spins,
@@ -60,6 +64,10 @@ int cmd_sim_robot(int argc, char **argv)
             if (bad) return 2;
             continue;
         }
+        if ((r = cli_common_flag("sim-robot", argc, argv, &i, CLI_ALL, &c))) {
+            if (r == 2) return 2;
+            continue;
+        }
         int used = 0;
         for (size_t k = 0; k < sizeof nums / sizeof nums[0] && !used && !bad; k++)
             if ((v = cli_flag_value(argc, argv, &i, nums[k].flag, &bad))) {
@@ -76,8 +84,7 @@ int cmd_sim_robot(int argc, char **argv)
         else if ((v = cli_flag_value(argc, argv, &i, "--ready-file", &bad))) o.ready_file = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--start", &bad))) {
             if (cli_parse_pose("sim-robot", "--start", v, &start)) return 2;
-        } else if (!strcmp(argv[i], "--quiet")) quiet = 1;
-        else if (!bad) return cli_usage_error("sim-robot", "unknown argument '%s'", argv[i]);
+        } else if (!bad) return cli_usage_error("sim-robot", "unknown argument '%s'", argv[i]);
         if (bad) return 2;
     }
     if (!o.map_yaml && !o.model_dir)
@@ -86,9 +93,13 @@ int cmd_sim_robot(int argc, char **argv)
     o.start_x = start.x, o.start_y = start.y, o.start_yaw = start.yaw;
     signal(SIGINT, on_signal);
     signal(SIGTERM, on_signal);
-    sp_log log = sp_log_stderr(SP_LOG_INFO, quiet);
-    if (quiet) log.min_level = SP_LOG_WARN;
+    sp_log log = cli_log(&c, SP_LOG_INFO);
+    if (c.quiet) log.min_level = SP_LOG_WARN;
+    sp_device *dev = NULL; /* only a model's costmap renders */
+    if (o.model_dir && cli_device_open("sim-robot", &c, &dev)) return 1;
+    o.device = dev;
     sp_error err = {0};
-    if (sp_ros_sim_run(&o, &stop_requested, &log, &err)) return cli_fail("sim-robot", &err);
-    return 0;
+    int rc = sp_ros_sim_run(&o, &stop_requested, &log, &err);
+    sp_device_free(dev);
+    return rc ? cli_fail("sim-robot", &err) : 0;
 }

@@ -28,6 +28,8 @@
 #define SEMSPLAT_AGENT_H
 
 #include "semsplat/core.h"
+#include "semsplat/device.h"
+#include "semsplat/ros.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -200,6 +202,8 @@ typedef struct sp_agent_feedback {
     double distance_remaining_m;
     double eta_s;               /* estimated time remaining */
     double elapsed_s;           /* since the goal was accepted */
+    long feedback_count;        /* feedback messages the robot sent for this goal (the offline
+                                 * robot: its simulation steps) */
     int recoveries;
     char message[200];          /* why a goal was rejected or aborted */
 } sp_agent_feedback;
@@ -281,8 +285,14 @@ typedef struct sp_agent_config {
     double plan_start_m;      /* a plan is stale when the robot is further than this from its start (0.5) */
     double goal_timeout_s;    /* how long a goal is followed before the session stops waiting (300) */
     int use_ros;              /* the ROS 2 bridge instead of the offline robot */
+    sp_ros_options ros;       /* with use_ros: domain, distro, namespace, topics, loopback
+                               * (sp_ros_options_default; the strings are read at open only) */
+    double ros_wait_s;        /* with use_ros: how long open waits for the robot's first pose
+                               * (odometry and the map -> odom transform) (10) */
     sp_agent_pose start;      /* the offline robot's start pose */
     int have_start;
+    sp_device *device;        /* where the map is queried and rendered (borrowed, outlives the
+                               * session); NULL = a CPU device of the session's own */
     const sp_log *log;
 } sp_agent_config;
 

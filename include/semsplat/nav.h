@@ -355,6 +355,8 @@ typedef struct sp_nav_instance {
     float z_min, z_max;
     sp_nav_box box;
     float confidence;
+    float score;           /* the engine's weight of the instance (sp_query_instance.score): how
+                            * much of the scene it is; comparable within one query */
 } sp_nav_instance;
 
 typedef struct sp_nav_target {
@@ -367,6 +369,15 @@ typedef struct sp_nav_target {
 } sp_nav_target;
 
 int sp_nav_resolve(sp_nav *nav, const char *phrase, sp_nav_target *t, sp_error *err);
+
+/* The region of the home a point is in, in words ("kitchen"; "" when none is near or the model
+ * has no semantic field): each region's objects (as sp_nav_resolve finds the region's name) seed
+ * the free cells inside their rectangle hull and beside them, and every other free cell takes the
+ * region nearest on foot (4-connected over free cells, at most 5 m: past a doorway into a room
+ * without such objects it stays none). Open plans split where the walks meet.
+ * A point off free floor (inside furniture) takes the label of the nearest free cell within 1 m.
+ * The regions are resolved once, on the first call. */
+int sp_nav_region_of(sp_nav *nav, float x, float y, char *out, size_t cap, sp_error *err);
 
 /* ---- k ranked trajectories with previews ---- */
 
@@ -488,6 +499,11 @@ typedef struct sp_nav_description {
  * distances and relations. */
 int sp_nav_describe(sp_nav *nav, const char *anchor, float radius_m, const float *robot,
                     sp_nav_description *out, sp_error *err);
+/* The same around one instance of an anchor the caller resolved (sp_nav_resolve): instance is its
+ * index in anchor->inst (the one a user chose among several); out->anchor is a copy with that
+ * instance first. */
+int sp_nav_describe_target(sp_nav *nav, const sp_nav_target *anchor, int instance, float radius_m,
+                           const float *robot, sp_nav_description *out, sp_error *err);
 void sp_nav_description_free(sp_nav_description *d);
 char *sp_nav_description_json(const sp_nav_description *d);
 

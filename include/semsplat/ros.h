@@ -6,7 +6,8 @@
  *     client; publishing our costmap as nav_msgs/OccupancyGrid (transient local, like
  *     map_server) and ranked candidate paths as nav_msgs/Path, for RViz and Foxglove;
  *   - the simulated robot (sp_ros_sim_run): a differential-drive robot that serves
- *     NavigateToPose and ComputePathToPose on a costmap, publishes /odom at 20 Hz and /tf
+ *     NavigateToPose and ComputePathToPose on the nav module's costmap and planner (so ros
+ *     depends on nav), publishes /odom at 20 Hz and /tf
  *     (odom -> base_link at 20 Hz, map -> odom identity at 2 Hz, as a localization would);
  *   - wire decoders (sp_ros_decode_*): bounds-checked CDR readers, one per message type, that
  *     take (bytes, size) and fail with a message naming the field and offset; never a crash.
@@ -63,8 +64,8 @@ void sp_ros_path_free(sp_ros_path *p);
 
 /* An occupancy grid as nav_msgs/OccupancyGrid has it: cells[row * width + col], row 0 at the
  * lowest y (the origin's side), -1 unknown, 0 free .. 100 occupied. origin_* is the pose of cell
- * (0, 0)'s outer corner in the map frame. sp_ros_publish_map borrows cells; the decoder and the
- * map loader allocate them (free with sp_ros_grid_free). */
+ * (0, 0)'s outer corner in the map frame. sp_ros_publish_map borrows cells; the decoder and
+ * sp_ros_grid_from_costmap allocate them (free with sp_ros_grid_free). */
 typedef struct sp_ros_grid {
     int width, height;
     double resolution_m;
@@ -73,6 +74,13 @@ typedef struct sp_ros_grid {
     char frame_id[128];
 } sp_ros_grid;
 void sp_ros_grid_free(sp_ros_grid *g);
+
+/* The nav module's costmap as a grid (sp_costmap_to_occupancy_grid: with use_costs 0 the map,
+ * free 0 / occupied 100 / unknown -1; with 1 the inflated costs as Nav2's costmap publisher
+ * sends them), in frame_id (NULL or "" = "map"). Cells are allocated (sp_ros_grid_free). */
+struct sp_costmap;
+int sp_ros_grid_from_costmap(const struct sp_costmap *cm, int use_costs, const char *frame_id,
+                             sp_ros_grid *out, sp_error *err);
 
 /* Odometry as the robot reports it (nav_msgs/Odometry without the covariances). */
 typedef struct sp_ros_odom {
@@ -220,12 +228,25 @@ int sp_ros_dds_topic_name(const sp_ros_options *opt, const char *ros_name, char 
                           size_t cap, sp_error *err);
 
 /* ---- the simulated robot --------------------------------------------------------------------- */
+/* It plans on the nav module's costmap (include/semsplat/nav.h): built from a model folder's
+ * splat and training cameras (sp_costmap_build_model), read from a Nav2 map.yaml
+ * (sp_costmap_read_map) or given in memory, inflated for robot_radius_m. Goals are checked
+ * with sp_costmap_check_goal and planned with sp_plan_path. NavigateToPose goals that are
+ * outside the map, occupied, unknown, closer than the robot radius to an obstacle or not
+ * reachable are rejected; ComputePathToPose goals are accepted and then aborted with Nav2's
+ * planner error codes (Jazzy: error_code 203..208 = 200 + sp_nav_status, error_msg saying why),
+ * as Nav2's planner server does. The map is published on <ns>/map (transient local). */
+
+struct sp_device;
 
 typedef struct sp_ros_sim_options {
     sp_ros_options ros;        /* domain, distro (AUTO is taken as Jazzy), namespace, topics */
     const char *map_yaml;      /* a Nav2 map.yaml (+ its PGM), or */
-    const char *model_dir;     /* a model folder holding map.yaml (the nav module's costmap) */
-    const sp_ros_grid *grid;   /* or a grid in memory (borrowed) */
+    const char *model_dir;     /* a model folder (splat.ply, train.json naming its capture): the
+                                * costmap is built from the splat, or */
+    const struct sp_costmap *costmap; /* a costmap in memory (copied, re-inflated) */
+    struct sp_device *device;  /* renders the carving for model_dir (borrowed; NULL = a CPU
+                                * device made for it) */
     double start_x, start_y, start_yaw;
     double robot_radius_m;     /* inflation for planning (default 0.2) */
     double max_speed;          /* m/s (default 0.5) */
@@ -244,13 +265,10 @@ void sp_ros_sim_options_default(sp_ros_sim_options *o);
 
 /* Runs the robot until *stop becomes non-zero (a signal handler sets it) or duration_s passes.
  * Logs goals and their outcomes through log (may be NULL). Errors: the costmap could not be
- * loaded, the start pose is not free, DDS could not start. */
+ * loaded or built, the start pose is outside the map, occupied or unknown, DDS could not
+ * start. */
 int sp_ros_sim_run(const sp_ros_sim_options *o, const volatile sig_atomic_t *stop,
                    const sp_log *log, sp_error *err);
-
-/* Loads a Nav2 map_server map (YAML + PGM, mode trinary/scale/raw, negate, thresholds) into a
- * grid (caller frees with sp_ros_grid_free). */
-int sp_ros_grid_load_yaml(const char *yaml_path, sp_ros_grid *out, sp_error *err);
 
 /* ---- wire decoders --------------------------------------------------------------------------- */
 /* Each takes one serialized sample as DDS carries it (the 4-byte encapsulation header, then

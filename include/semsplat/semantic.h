@@ -14,7 +14,8 @@
  *
  * Relevancy (per Gaussian or per pixel, for a text embedding q in the full space):
  *   raw   s = cos(decode(f), q); a result's `confidence` is the largest raw cosine of the object
- *         (above ~0.25 a match, below ~0.15 noise);
+ *         (above ~0.25 a match, below ~0.15 noise) with the clip and exact text encoders, the
+ *         calibrated lexical score with the lexical one (see "Text encoders");
  *   rel   = min_k exp(s/T) / (exp(s/T) + exp(s_k/T)) over canonical negatives k ("object",
  *         "things", "stuff", "texture"), T the temperature: LERF's calibrated relevancy, 0.5 =
  *         no preference, used for thresholds and heatmaps.
@@ -116,9 +117,14 @@ int sp_semantic_lift_features(sp_splat *s, const char *features_dir, const char 
                               sp_device *dev, const sp_log *log, sp_error *err);
 
 /* Writes DIR/semantic.json and the PCA copies for a splat whose features came from
- * features_dir by `method` ("lift" or "distill"). */
+ * features_dir by `method` ("lift" or "distill"). The text encoder recorded is the default for
+ * the features: "lexical" for hashed label features (with their "classes"), else "clip". */
 int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
                               const char *colmap_dir, const char *method, sp_error *err);
+/* Records the text encoder of a model folder in DIR/semantic.json ("clip", "lexical" or "exact";
+ * see "Text encoders"). Refuses one that does not fit the folder's features (SP_E_UNSUPPORTED)
+ * and lexical without class names (SP_E_NOTFOUND). */
+int sp_semantic_set_encoder(const char *model_dir, const char *encoder, sp_error *err);
 
 /* ---- distillation (what `semsplat distill` does) --------------------------------------------- */
 
@@ -184,10 +190,40 @@ typedef struct sp_query_opts {
 
 sp_query_opts sp_query_opts_default(void);
 
+/* Text encoders: how an engine turns text into something its features can be compared with.
+ * One is chosen per model folder (semantic.json "encoder", written by lift: `semsplat lift
+ * --encoder`, sp_semantic_set_encoder) and may be overridden at open (sp_query_engine_open_with;
+ * `semsplat query --encoder`, Python encoder=). Every result names the one that produced it.
+ *   "clip"     CLIP's text tower (real weights). Features in CLIP's space (source clip, npy, or
+ *              labels embedded through CLIP). Open vocabulary; confidence = the robust largest
+ *              raw cosine, found at >= min_confidence.
+ *   "lexical"  WordNet 3.0 matching of the text against the scene's own class names (the
+ *              lexical section below), grounded in the scene: the matched classes are localized
+ *              by their label embeddings, regions and relations resolved as sp_lex_query does.
+ *              Needs hashed label features (source labels without weights), where it is the
+ *              default. Confidence = the calibrated lexical score, found at >= SP_LEX_THRESHOLD
+ *              (min_confidence is not applied). It is matching against KNOWN class names: it
+ *              cannot find what the world's labels do not name.
+ *   "exact"    the text's own hashed embedding (sp_label_embedding): only the exact class string
+ *              (case and spaces aside) matches. Hashed label features; for tests and comparisons.
+ * The class names of a label scene come from semantic.json "classes" (lift copies them from the
+ * features), else from the labels.json beside the capture it names. A folder that records no
+ * encoder gets lexical when its features are hashed labels and the classes and WordNet are there
+ * (else exact, with a warning), clip otherwise. A recorded lexical that cannot be prepared (no
+ * WordNet, no class names) falls back to exact with a warning; an encoder asked for at open
+ * that cannot be prepared, or that does not fit the features, is an error. */
+#define SP_ENCODER_CLIP "clip"
+#define SP_ENCODER_LEXICAL "lexical"
+#define SP_ENCODER_EXACT "exact"
+
+typedef struct sp_encoder_opts {
+    const char *encoder;      /* "clip", "lexical", "exact"; NULL or "" = the model folder's */
+    const char *wordnet_dir;  /* lexical: WordNet's database files (NULL = SP_LEX_DEFAULT_WORDNET) */
+    const char *regions_path; /* lexical: a region table (NULL = the bundled one, "" = none) */
+} sp_encoder_opts;
+
 /* What produced a result: the text encoder and the feature source, named (never a flag).
- *   encoder  "clip"   CLIP's text tower (real weights)
- *            "exact"  hashed class names (sp_label_embedding): only the exact class string can
- *                     match; for tests and label scenes without weights
+ *   encoder  "clip", "lexical" or "exact" (above)
  *   features "clip"   dense CLIP features of the images
  *            "npy"    imported maps (any extractor in the text space)
  *            "labels" ground-truth label images of a synthetic capture: results then measure
@@ -218,15 +254,45 @@ typedef struct sp_query_instance {
                           * multi-view, (relevancy - 0.5) * alpha * the pixel's area at its depth */
     float confidence;    /* largest raw cosine inside it */
     int n_points;        /* Gaussians (3D) or pixels (multi-view) */
+    char label[128];     /* the class it is an instance of, when the encoder knows ("" = unknown:
+                          * clip, or a precomputed embedding) */
+    float relation_m;    /* a relational query's cost of this instance to the anchor in metres
+                          * (the gap between boxes, see sp_lex_query), NaN without one */
 } sp_query_instance;
+
+/* Why a text matched a class (encoders that match class names: lexical, exact). */
+typedef struct sp_query_match {
+    char label[128];       /* the class */
+    char role[8];          /* "target", or "anchor" (the Y of "X near Y") */
+    float score;           /* the encoder's confidence in this class, 0..1 (>= threshold: a match) */
+    char kind[16];         /* "exact", "synonym", "hypernym", "hyponym", "part", "gloss",
+                            * "modifier", "region" (sp_lex_kind_name) */
+    char query_sense[64];  /* the WordNet lemma of the query sense used ("" for gloss matches) */
+    char class_sense[64];  /* the lemma of the class sense used */
+    char path[256];        /* taxonomy path, "armchair > chair > seat" */
+    char gloss_words[192]; /* description words found in definitions, with where */
+    char definition[192];  /* WordNet's definition of the class sense used */
+} sp_query_match;
+
+/* A region the text named ("the kitchen", "area with appliances"), or the anchor of a relation:
+ * the extent of the instances that make it up, in the result's frame. */
+typedef struct sp_query_region {
+    int valid;
+    char name[64];         /* "kitchen"; an anchor: its phrase */
+    float extent_min[3], extent_max[3], centre[3];
+    int n_instances;
+} sp_query_region;
+
+#define SP_QUERY_MAX_IGNORED 8
 
 typedef struct sp_query_result {
     char text[256];
     int method;          /* sp_query_method used */
-    int valid;           /* 1 when confidence >= min_confidence and an instance was found */
+    int valid;           /* 1 when confidence >= threshold and an instance was found */
     float position[3];   /* best instance (in `frame`); NaN when !valid */
-    float confidence;    /* robust largest raw cosine: the 5th largest over Gaussians with
-                          * opacity >= min_opacity */
+    float confidence;    /* clip, exact: robust largest raw cosine, the 5th largest over Gaussians
+                          * with opacity >= min_opacity; lexical: the calibrated lexical score of
+                          * the text (0..1, found at >= threshold) */
     float relevancy_max; /* largest calibrated relevancy */
     int view_index;      /* camera used for the heatmap / best view, -1 = none */
     char view_name[256];
@@ -240,6 +306,19 @@ typedef struct sp_query_result {
     double ms_embed, ms_relevancy, ms_localize, ms_heatmap, ms_total;
     sp_query_source source;      /* what produced it */
     sp_query_frame frame;        /* the frame of position and instances */
+    /* What the encoder understood (--explain, --json "matches", Python .explanation): */
+    float threshold;             /* confidence at or above which this encoder reports a match
+                                  * (clip, exact: min_confidence; lexical: SP_LEX_THRESHOLD) */
+    int n_matches;
+    sp_query_match *matches;     /* lexical: the target's classes at or above the threshold, then
+                                  * the anchor's (when none matched, the nearest one below);
+                                  * exact: the class named, if the engine knows it; clip: none */
+    char relation[24];           /* "" or "near", "next to", "in", "on", "to", "above", ... */
+    sp_query_region region;      /* valid: the text named a region; position is its centre */
+    sp_query_region anchor;      /* valid: the anchor of the relation, as found */
+    int n_ignored;
+    char ignored[SP_QUERY_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
+    char *explanation;           /* human-readable: which classes matched and why (NULL = none) */
 } sp_query_result;
 
 void sp_query_result_free(sp_query_result *res);
@@ -248,9 +327,16 @@ typedef struct sp_query_engine sp_query_engine;
 
 /* Opens a model folder (splat.ply with f_sem_*, semantic.json, PCA, frame.json, cameras from the
  * sidecar's COLMAP folder) once, and puts splat and cameras into the folder's frame; opts NULL =
- * defaults (kept as the engine's defaults). dev is borrowed (must outlive the engine). */
+ * defaults (kept as the engine's defaults). dev is borrowed (must outlive the engine). The text
+ * encoder is the folder's (see "Text encoders" above). */
 int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
                          sp_device *dev, const sp_log *log, sp_error *err);
+/* The same with the text encoder chosen here (enc NULL = as sp_query_engine_open). An encoder that
+ * does not fit the features (clip on hashed labels, lexical or exact on CLIP features) or cannot
+ * be prepared (no WordNet, no class names) fails with SP_E_UNSUPPORTED / SP_E_NOTFOUND. */
+int sp_query_engine_open_with(sp_query_engine **out, const char *model_dir, const sp_encoder_opts *enc,
+                              const sp_query_opts *opts, sp_device *dev, const sp_log *log,
+                              sp_error *err);
 
 /* An engine from memory (tests, tools): everything is copied. */
 typedef struct sp_query_model {
@@ -262,21 +348,31 @@ typedef struct sp_query_model {
     const sp_query_source *source; /* NULL = encoder "exact", features "labels" */
     const sp_frame *frame;        /* NULL = identity, source "colmap" */
     const char *clip_weights;     /* encoder "clip": the CLIP model.safetensors */
+    const char *const *classes;   /* label scenes: the class names ([n_classes]; required for
+                                   * encoder "lexical"; exact uses them to name its match) */
+    int n_classes;
+    const char *wordnet_dir;      /* lexical: NULL = SP_LEX_DEFAULT_WORDNET */
+    const char *regions_path;     /* lexical: NULL = the bundled region table, "" = none */
 } sp_query_model;
 
 int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const sp_query_opts *opts,
                            sp_device *dev, const sp_log *log, sp_error *err);
 void sp_query_engine_free(sp_query_engine *e);
 
-/* Embeds the text (the engine's text encoder) and localizes it with opts (NULL = the engine's
- * defaults). res is filled (free with sp_query_result_free) even when nothing is found; on an
- * error it is left empty (nothing to free). */
+/* Answers the text through the engine's text encoder with opts (NULL = the engine's defaults):
+ * clip and exact embed it and localize the embedding; lexical matches it against the scene's
+ * classes and localizes what matched, resolving regions and relations (sp_lex_query). res is
+ * filled (free with sp_query_result_free) even when nothing is found, with what the encoder
+ * understood (matches, explanation); on an error it is left empty (nothing to free). */
 int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *opts,
                           sp_query_result *res, sp_error *err);
 /* Same with a precomputed full_dim embedding (need not be unit length); label names the result. */
 int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
                                     const sp_query_opts *opts, sp_query_result *res, sp_error *err);
-/* Text -> full_dim unit embedding as the engine does it (out [full_dim]). */
+/* Text -> full_dim unit embedding as the engine does it (out [full_dim]): clip the text tower,
+ * exact the text's hash, lexical the score-weighted label embeddings of the classes it matches
+ * (sp_lex_embed; the text's own hash, which matches nothing, when no class does). Relevancy and
+ * heatmaps score this embedding. */
 int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err);
 /* Per-Gaussian calibrated relevancy [n] (0.5 = no preference .. 1) and, when raw_cos is not
  * NULL, raw cosine [n] of a text, with the engine's default negatives and temperature; n and the
@@ -306,19 +402,22 @@ const char *sp_query_engine_camera_name(const sp_query_engine *e, size_t i);
 const sp_frame *sp_query_engine_frame(const sp_query_engine *e);
 const sp_query_source *sp_query_engine_source(const sp_query_engine *e);
 
-/* The result as JSON text (malloc'd, caller frees with free()): text, method, found (valid),
- * position (array or null), confidence, relevancy_max, view, instances [{position, extent_min,
- * extent_max, score, confidence, points}], heatmap (heatmap_path or null), timings_ms, source
- * {encoder, features, ground_truth, note}, frame {name, source, units, up}. */
+/* The result as JSON text (malloc'd, caller frees with free()): text, encoder, method, found
+ * (valid), position (array or null), confidence, threshold, relevancy_max, view, instances
+ * [{position, extent_min, extent_max, score, confidence, points, class (or null), relation_m (or
+ * null)}], heatmap (heatmap_path or null), timings_ms, source {encoder, features, ground_truth,
+ * note}, frame {name, source, units, up}, matches [{class, role, score, kind, query_sense,
+ * class_sense, path, gloss_words, definition}], relation (or null), region and anchor ({name,
+ * extent_min, extent_max, centre, instances} or null), ignored [words], explanation (or null). */
 char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path);
 
 /* ---- ABI (for bindings: the Python module checks these before any call) ---------------------- */
 
-#define SP_SEMANTIC_ABI_VERSION 2
+#define SP_SEMANTIC_ABI_VERSION 3
 int sp_semantic_abi_version(void);
 /* sizeof of a public struct by name ("sp_query_opts", "sp_query_result", "sp_query_instance",
- * "sp_query_source", "sp_query_frame", "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when
- * unknown. */
+ * "sp_query_source", "sp_query_frame", "sp_query_match", "sp_query_region", "sp_encoder_opts",
+ * "sp_error", "sp_camera", "sp_image", "sp_splat"); 0 when unknown. */
 size_t sp_semantic_abi_sizeof(const char *type_name);
 
 /* ---- the lexical text encoder (WordNet 3.0) -------------------------------------------------- *
@@ -350,8 +449,10 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * Without a head noun (or with a placeholder: "something", "a place") the confidence is G:
  *   G = sum_d w_d m_d / sum_d w_d,  w_d = 1 / (1 + ln(1 + senses(d)))  (polysemy for frequency),
  *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
- *   hypernym's, DELTA^2 two levels up, and 0.8 for a lemma of d's commonest sense found in the
- *   class's own definition (one weak step at most). Location words (room, area) describe nothing.
+ *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
+ *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
+ *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
+ *   step at most). Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
  * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
  * "the area that looks like a kitchen") list the classes that define them: the region table's
@@ -454,7 +555,9 @@ void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, 
  * is each of its classes localized alone, their instances clustered in space (boxes within 2 m),
  * and the cluster holding most of the region's kinds taken: its extent and centre. A target too
  * is each matched class localized alone (the scene must show a cosine of 0.5 with the class's
- * embedding, else the class is named but not seen), instances of the best-scoring class first.
+ * embedding, else the class is named but not seen), instances of the best-scoring class first;
+ * a text that is a class's own name (kind exact) means that class alone ("couch": not also the
+ * bed WordNet calls a couch; "dining chair": not the armchair).
  * A relation then ranks them, within a class score, by their distance to the anchor's instances
  * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
  * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
@@ -481,14 +584,17 @@ typedef struct sp_lex_answer {
 } sp_lex_answer;
 
 /* Answers text on engine e (a label-feature scene whose class names are v's). a is large: put it
- * on the heap; free with sp_lex_answer_free. The engine's options are used as set, except that
- * the lexical score decides what is found (min_confidence is not applied). */
+ * on the heap; free with sp_lex_answer_free. The engine's default options are used, except that
+ * the lexical score decides what is found (min_confidence is not applied). The engine's own
+ * lexical encoder (sp_query_engine_query) runs exactly this with the call's options and hands
+ * the answer back as a plain sp_query_result (matches, region, anchor, explanation). */
 int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
                  sp_error *err);
 void sp_lex_answer_free(sp_lex_answer *a);
 /* The lexical encoder as a text embedding for a label-feature scene: the target's classes
- * matched at or above the threshold, sum of score * sp_label_embedding(class, dim), normalised
- * (all zeros when nothing matches); *confidence (may be NULL) the lexical score. */
+ * matched at or above the threshold (only the exact ones when the text is a class's own name),
+ * sum of score * sp_label_embedding(class, dim), normalised (all zeros when nothing matches);
+ * *confidence (may be NULL) the lexical score. */
 int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
                  sp_error *err);
 /* The answer as JSON: sp_query_result_json's fields plus encoder ("lexical"), lexical (as
@@ -499,8 +605,8 @@ char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const ch
 int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
                              const char *regions_path, sp_error *err);
 /* The vocabulary of a label-feature model folder (semantic.json: source "labels", label_embedding
- * "hash"): the labels.json of the capture it names. Other models fail with SP_E_UNSUPPORTED (their
- * features live beside CLIP's text tower, not label embeddings). */
+ * "hash"): its "classes", else the labels.json of the capture it names. Other models fail with
+ * SP_E_UNSUPPORTED (their features live beside CLIP's text tower, not label embeddings). */
 int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
                            const char *regions_path, sp_error *err);
 

@@ -63,7 +63,7 @@ typedef struct agent_found {
     double min_confidence;/* the threshold the world used */
     int n;                /* instances, best first */
     agent_instance inst[AGENT_MAX_INSTANCES];
-    char source[160];     /* what produced it: encoder, feature source, ground-truth caveat */
+    char source[320];     /* what produced it: encoder, feature source, ground-truth caveat */
     char heatmap[AGENT_PATH_CAP]; /* image path or "" */
 } agent_found;
 
@@ -107,7 +107,7 @@ typedef struct agent_scene {
     int n;
     agent_scene_item items[AGENT_MAX_SCENE];
     char sentence[1024];  /* "" = the tool writes one */
-    char source[160];
+    char source[320];
 } agent_scene;
 
 typedef struct agent_tour {
@@ -141,6 +141,8 @@ typedef struct agent_world_ops {
     /* Up to max names the map holds that are closest to text (for "did you mean"). */
     int (*suggest)(void *ctx, const char *text, char (*names)[64], int max);
     void (*close)(void *ctx);
+    /* Where a robot starts when nobody says (the capture's first standpoint); may be NULL. */
+    int (*default_start)(void *ctx, sp_agent_pose *pose, sp_error *err);
 } agent_world_ops;
 
 typedef struct agent_world {
@@ -148,9 +150,29 @@ typedef struct agent_world {
     void *ctx;
 } agent_world;
 
-/* The real world on a model folder (world_model.c). */
-int agent_world_open_model(agent_world *out, const char *model_dir, const sp_log *log,
-                           sp_error *err);
+/* The real world on a model folder (world_model.c, world_nav.c): the query engine and the nav
+ * scene on cfg->model_dir, images written under cfg->out_dir, on cfg->device (NULL: a CPU device
+ * of its own). On a label-feature model the user's words are matched to the scene's class names
+ * with WordNet (the lexical encoder) when /usr/share/wordnet is there. */
+int agent_world_open_model(agent_world *out, const sp_agent_config *cfg, sp_error *err);
+
+struct sp_query_engine;
+struct sp_nav_opts;
+
+/* The same world from an engine in memory (tests). */
+typedef struct agent_world_parts {
+    struct sp_query_engine *engine; /* required; its splat and cameras in the world frame */
+    int own_engine;                 /* 1: the world frees it (also on error) */
+    sp_device *dev;                 /* borrowed: must outlive the world */
+    const char *const *classes;     /* label scenes: the class names WordNet matches words to
+                                     * (NULL: the engine's own text encoder only) */
+    int n_classes;
+    const struct sp_nav_opts *nav;  /* NULL = sp_nav_opts_default() */
+    const char *out_dir;            /* images (NULL: none) */
+    const sp_log *log;
+} agent_world_parts;
+
+int agent_world_from_parts(agent_world *out, const agent_world_parts *p, sp_error *err);
 /* The ROS 2 robot (robot_ros.c). */
 int agent_robot_open_ros(sp_agent_robot *out, const sp_agent_config *cfg, sp_error *err);
 

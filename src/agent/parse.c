@@ -26,10 +26,11 @@ static const char *const go_particles[] = {"me", "us", "yourself", "to", "toward
                                            "closer", "close", "right", "straight", "your", "way",
                                            "and", "stand", "wait", "stay", "stop", "park", "go",
                                            "there", "all", "the", "until", "till", "along",
-                                           "across", "through", NULL};
+                                           "across", "through", "find", "locate", NULL};
 static const char *const explore_words[] = {"explore", "survey", "scan", "patrol", "inspect",
                                             "map", "sweep", "reconnoiter", "canvass", "search",
-                                            "cover", "tour", "exploration", NULL};
+                                            "cover", "tour", "exploration", "scout", "wander", "roam",
+                                            "investigate", NULL};
 static const char *const explore_skip[] = {"out", "the", "area", "region", "part", "zone",
                                            "surroundings", "space", "around", "near", "of", "in",
                                            "by", "at", "inside", "whole", "entire", "all", "through",
@@ -240,7 +241,10 @@ static void parse_goto(pw_words *t, int verb, sp_agent_intent *o)
     o->kind = SP_AGENT_INTENT_GOTO;
     int i = verb + 1;
     for (;;) {
+        int self = i < t->n && pw_in(t->w[i], pw_determiners) ? i + 1 : i; /* "drive the robot to" */
         if (pw_match(t, i, "in front of")) i += 3;
+        else if (self + 1 < t->n && pw_in(t->w[self], pw_self) && pw_in(t->w[self + 1], go_particles))
+            i = self + 1;
         else if (i < t->n && pw_in(t->w[i], go_particles) && !(!strcmp(t->w[i], "there") && i + 1 >= t->n))
             i++; /* ("go there" is a pronoun) */
         else break;

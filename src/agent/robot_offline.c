@@ -19,6 +19,7 @@ typedef struct offline {
     double *wp; /* [n][4] */
     int n, seg; /* driving from wp[seg] to wp[seg + 1] */
     double goal_yaw, v, vmax, elapsed, remaining;
+    long steps;
     char message[200];
 } offline;
 
@@ -76,6 +77,7 @@ static int off_send(void *ctx, const sp_agent_goal *g, sp_error *err)
     r->vmax = g->max_speed_mps > 0 ? g->max_speed_mps : 0.3;
     r->v = 0;
     r->elapsed = 0;
+    r->steps = 0;
     r->status = SP_AGENT_GOAL_ACTIVE;
     r->message[0] = 0;
     return SP_OK;
@@ -149,12 +151,14 @@ static int off_poll(void *ctx, sp_agent_feedback *fb, sp_error *err)
     if (r->status == SP_AGENT_GOAL_ACTIVE) {
         step(r, r->opts.step_s);
         r->elapsed += r->opts.step_s;
+        r->steps++;
     }
     fb->status = r->status;
     fb->pose = r->pose;
     fb->distance_remaining_m = r->status == SP_AGENT_GOAL_ACTIVE ? remaining_length(r) : 0;
     fb->eta_s = r->vmax > 0 ? fb->distance_remaining_m / r->vmax : 0;
     fb->elapsed_s = r->elapsed;
+    fb->feedback_count = r->steps;
     snprintf(fb->message, sizeof fb->message, "%s", r->message);
     return SP_OK;
 }

@@ -28,6 +28,8 @@ sp_agent_config sp_agent_config_default(void)
     c.goal_match_rad = 0.35;
     c.plan_start_m = 0.5;
     c.goal_timeout_s = 300;
+    sp_ros_options_default(&c.ros);
+    c.ros_wait_s = 10;
     return c;
 }
 
@@ -69,6 +71,7 @@ int agent_session_open_world(sp_agent_session **out, const sp_agent_config *cfg,
     s->cfg.out_dir = s->out_dir[0] ? s->out_dir : NULL;
     s->cfg.model_dir = s->model_dir[0] ? s->model_dir : NULL;
     s->cfg.llm.preset = s->cfg.llm.base_url = s->cfg.llm.model = s->cfg.llm.anthropic_version = NULL;
+    sp_ros_options_default(&s->cfg.ros); /* read by the robot at open; no caller strings kept */
     int rc = SP_OK;
     if (!world.ops || !robot.ops)
         rc = sp_error_set(err, SP_E_ARG, "agent: a world and a robot are needed");
@@ -84,18 +87,21 @@ int agent_session_open_world(sp_agent_session **out, const sp_agent_config *cfg,
     return SP_OK;
 }
 
+static int open_world(const sp_agent_config *cfg, agent_world *w, sp_error *err)
+{
+    memset(w, 0, sizeof *w);
+    if (!cfg->model_dir) return sp_error_set(err, SP_E_ARG, "agent: a model folder is needed (--model DIR)");
+    return agent_world_open_model(w, cfg, err);
+}
+
 int sp_agent_session_open_with_robot(sp_agent_session **out, const sp_agent_config *cfg,
                                      sp_agent_robot robot, sp_error *err)
 {
     sp_error local;
     if (!err) err = &local;
     *out = NULL;
-    agent_world w = {0};
-    if (!cfg->model_dir) {
-        sp_agent_robot_close(&robot);
-        return sp_error_set(err, SP_E_ARG, "agent: a model folder is needed (--model DIR)");
-    }
-    int rc = agent_world_open_model(&w, cfg->model_dir, cfg->log, err);
+    agent_world w;
+    int rc = open_world(cfg, &w, err);
     if (rc) {
         sp_agent_robot_close(&robot);
         return rc;
@@ -103,22 +109,29 @@ int sp_agent_session_open_with_robot(sp_agent_session **out, const sp_agent_conf
     return agent_session_open_world(out, cfg, w, robot, err);
 }
 
+/* The world first: the offline robot starts where the capture started when no start is given. */
 int sp_agent_session_open(sp_agent_session **out, const sp_agent_config *cfg, sp_error *err)
 {
     sp_error local;
     if (!err) err = &local;
     *out = NULL;
+    agent_world w;
     sp_agent_robot robot;
-    int rc;
+    int rc = open_world(cfg, &w, err);
+    if (rc) return rc;
     if (cfg->use_ros) {
         rc = agent_robot_open_ros(&robot, cfg, err);
     } else {
         sp_agent_offline_opts o = sp_agent_offline_opts_default();
         if (cfg->have_start) o.start = cfg->start;
-        rc = sp_agent_robot_offline(&robot, &o, err);
+        else if (w.ops->default_start) rc = w.ops->default_start(w.ctx, &o.start, err);
+        if (!rc) rc = sp_agent_robot_offline(&robot, &o, err);
     }
-    if (rc) return rc;
-    return sp_agent_session_open_with_robot(out, cfg, robot, err);
+    if (rc) {
+        if (w.ops->close) w.ops->close(w.ctx);
+        return rc;
+    }
+    return agent_session_open_world(out, cfg, w, robot, err);
 }
 
 void sp_agent_session_close(sp_agent_session *s)

@@ -302,6 +302,7 @@ static char *tool_send_goal(sp_agent_session *s, const sp_agent_args *a)
     cJSON_AddNumberToObject(d, "distance_to_goal_m", agent_round4(agent_dist2d(fb.pose.x, fb.pose.y, end[0], end[1])));
     cJSON_AddNumberToObject(d, "distance_driven_m", agent_round4(driven));
     cJSON_AddNumberToObject(d, "elapsed_s", agent_round4(fb.elapsed_s));
+    cJSON_AddNumberToObject(d, "feedback_messages", (double)fb.feedback_count);
     cJSON_AddNumberToObject(d, "max_speed_mps", agent_round4(speed));
     cJSON_AddStringToObject(d, "robot", s->robot.ops->name);
     if (fb.message[0]) cJSON_AddStringToObject(d, "message", fb.message);

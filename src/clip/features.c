@@ -222,6 +222,11 @@ static int write_json(extract_ctx *x, const int *mw, const int *mh, const char *
     if (!strcmp(o->source, "labels")) {
         cJSON_AddStringToObject(root, "label_embedding", x->clip ? "clip" : "hash");
         cJSON_AddNumberToObject(root, "map_factor", o->map_factor);
+        /* the class names embedded (what a text encoder can match against) */
+        cJSON *cl = cJSON_AddArrayToObject(root, "classes");
+        for (int k = 0; k < x->labels.n_classes; k++)
+            if (strcmp(x->labels.class_names[k], "background"))
+                cJSON_AddItemToArray(cl, cJSON_CreateString(x->labels.class_names[k]));
     }
     if (!strcmp(o->source, "npy")) cJSON_AddStringToObject(root, "maps_source", o->maps_dir);
     if (x->clip && !strcmp(o->source, "clip")) {

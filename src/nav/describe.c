@@ -52,7 +52,7 @@ static void centre(const sp_nav_box *b, float c[2])
 
 /* The free cells nearest to a footprint (within 1.5 cells of the nearest one, up to SEARCH_M):
  * where one stands beside it. A fixed margin would reach across a wall thinner than itself. */
-static float nearest_free(const sp_costmap *cm, const sp_nav_box *b, int *x0, int *y0, int *x1, int *y1)
+float nav_nearest_free(const sp_costmap *cm, const sp_nav_box *b, int *x0, int *y0, int *x1, int *y1)
 {
     sp_costmap_cell(cm, b->min[0] - SEARCH_M, b->min[1] - SEARCH_M, x0, y0);
     sp_costmap_cell(cm, b->max[0] + SEARCH_M, b->max[1] + SEARCH_M, x1, y1);
@@ -79,7 +79,7 @@ static int walk_field(const sp_costmap *cm, const sp_nav_box *anchor, float *fie
     if (!queue) return -1;
     for (long i = 0; i < n; i++) field[i] = INFINITY;
     int x0, y0, x1, y1;
-    float around = nearest_free(cm, anchor, &x0, &y0, &x1, &y1);
+    float around = nav_nearest_free(cm, anchor, &x0, &y0, &x1, &y1);
     for (int y = y0; y <= y1; y++)
         for (int x = x0; x <= x1; x++) {
             long i = nav_idx(cm, x, y);
@@ -107,7 +107,7 @@ static int walk_field(const sp_costmap *cm, const sp_nav_box *anchor, float *fie
 static float walk_to(const sp_costmap *cm, const float *field, const sp_nav_box *b)
 {
     int x0, y0, x1, y1;
-    float best = INFINITY, around = nearest_free(cm, b, &x0, &y0, &x1, &y1);
+    float best = INFINITY, around = nav_nearest_free(cm, b, &x0, &y0, &x1, &y1);
     for (int y = y0; y <= y1; y++)
         for (int x = x0; x <= x1; x++) {
             float c[2];
@@ -218,12 +218,28 @@ int sp_nav_describe(sp_nav *nav, const char *anchor, float radius_m, const float
                     sp_nav_description *out, sp_error *err)
 {
     memset(out, 0, sizeof *out);
-    float radius = radius_m > 0 ? radius_m : nav->opts.near_m;
-    int rc = sp_nav_resolve(nav, anchor, &out->anchor, err);
+    sp_nav_target t;
+    int rc = sp_nav_resolve(nav, anchor, &t, err);
     if (rc) return rc;
-    if (!out->anchor.found)
+    return sp_nav_describe_target(nav, &t, 0, radius_m, robot, out, err);
+}
+
+int sp_nav_describe_target(sp_nav *nav, const sp_nav_target *anchor, int instance, float radius_m,
+                           const float *robot, sp_nav_description *out, sp_error *err)
+{
+    memset(out, 0, sizeof *out);
+    float radius = radius_m > 0 ? radius_m : nav->opts.near_m;
+    int rc = 0;
+    out->anchor = *anchor;
+    if (!out->anchor.found || out->anchor.n < 1)
         return sp_error_set(err, SP_E_NOTFOUND, "describe: nothing in this model matches '%s' (best "
                             "confidence %.2f)", out->anchor.text, out->anchor.confidence);
+    if (instance < 0 || instance >= out->anchor.n)
+        return sp_error_set(err, SP_E_ARG, "describe: '%s' has %d instances, not %d", out->anchor.text,
+                            out->anchor.n, instance + 1);
+    sp_nav_instance chosen = out->anchor.inst[instance]; /* the anchor instance goes first */
+    out->anchor.inst[instance] = out->anchor.inst[0];
+    out->anchor.inst[0] = chosen;
     if (robot) memcpy(out->robot, robot, sizeof out->robot);
     else if ((rc = sp_nav_default_start(nav, out->robot, err))) return rc;
     int ar = nav_region_of_object(out->anchor.text);

@@ -31,6 +31,8 @@ struct sp_nav {
     int plan_seq;
     nav_issued *issued;
     int n_issued, cap_issued;
+    uint8_t *region_label;    /* [cells] region index per free cell, 255 = none (sp_nav_region_of) */
+    int regions_built;
     char vocab_buf[4096];     /* opts.vocabulary, split */
     const char *vocab[512];
     int n_vocab;
@@ -59,6 +61,10 @@ int nav_region_objects(int r, const char *const **objects);
 int nav_region_of_object(const char *object); /* the region that keeps this object, -1 */
 int nav_n_regions(void);
 int nav_related_concepts(const char *goal, char out[][64], int cap);
+
+/* The free cells where one stands beside footprint b: within 1.5 cells of the nearest free
+ * cell's distance (returned) and inside the window [x0..x1] x [y0..y1] (1 m around b). */
+float nav_nearest_free(const sp_costmap *cm, const sp_nav_box *b, int *x0, int *y0, int *x1, int *y1);
 
 /* Remembers a trajectory under its id (copies the path). */
 int nav_issue(sp_nav *nav, const char *id, const sp_path *path, sp_error *err);

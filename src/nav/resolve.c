@@ -41,6 +41,7 @@ static void add_instances(sp_nav_target *t, const char *label, const sp_query_re
         for (int a = 0; a < 2; a++) in->box.min[a] = q->extent_min[a], in->box.max[a] = q->extent_max[a];
         in->z_min = q->extent_min[2], in->z_max = q->extent_max[2];
         in->confidence = q->confidence;
+        in->score = q->score;
     }
 }
 

@@ -180,7 +180,23 @@ int sp_nav_create(sp_nav **out, struct sp_query_engine *engine, const sp_splat *
     return SP_OK;
 }
 
-/* splat.ply and the pinhole cameras of the capture train.json names. */
+/* Splat and cameras into the model folder's frame (frame.json, else its capture's), as the
+ * query engine puts them: the costmap is then in the same world frame as the engine's answers
+ * whether or not the folder has semantics. Identity frames cost nothing. */
+static int to_world_frame(const char *model_dir, const char *capture, sp_splat *splat,
+                          sp_camera *cams, size_t n_cams, sp_error *err)
+{
+    static const double I[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    sp_frame f;
+    int rc = sp_frame_of_model(model_dir, capture, &f, err);
+    if (!rc) rc = sp_frame_check(&f, "nav: frame", err);
+    if (rc || !memcmp(f.world_from_model, I, sizeof I)) return rc;
+    if ((rc = sp_splat_transform(splat, f.world_from_model, err))) return rc;
+    for (size_t i = 0; i < n_cams; i++) sp_frame_apply_camera(&f, &cams[i]);
+    return SP_OK;
+}
+
+/* splat.ply and the pinhole cameras of the capture train.json names, in the world frame. */
 static int load_geometry(const char *model_dir, sp_splat *splat, sp_camera **cams, size_t *n_cams, sp_error *err)
 {
     char path[2048];
@@ -211,7 +227,7 @@ static int load_geometry(const char *model_dir, sp_splat *splat, sp_camera **cam
         *n_cams = i + 1;
     }
     sp_colmap_free(&m);
-    return rc;
+    return rc ? rc : to_world_frame(model_dir, capture, splat, *cams, *n_cams, err);
 }
 
 int sp_costmap_build_model(sp_costmap *cm, const char *model_dir, const sp_costmap_opts *opts,
@@ -286,6 +302,7 @@ void sp_nav_free(sp_nav *nav)
     free(nav->cams);
     sp_costmap_free(&nav->cm);
     free(nav->view_counts);
+    free(nav->region_label);
     sp_scene_free(nav->scene_rgb);
     sp_scene_free(nav->scene_aux);
     sp_raster_free(nav->raster);

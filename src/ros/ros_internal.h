@@ -1,12 +1,14 @@
 /* Private declarations of the ros module that do not need DDS: ROS names, the simulated robot's
- * planner and drive, and the message encoders the wire tests compare with an independent
- * serializer (implemented over Cyclone in cyclonedds/encode.c; stubs without it). */
+ * map and plans (on the nav module) and its drive, and the message encoders the wire tests
+ * compare with an independent serializer (implemented over Cyclone in cyclonedds/encode.c;
+ * stubs without it). */
 #ifndef SP_ROS_INTERNAL_H
 #define SP_ROS_INTERNAL_H
 
 #include <stddef.h>
 #include <stdint.h>
 
+#include "semsplat/nav.h"
 #include "semsplat/ros.h"
 
 #define ROS_NAME_MAX 256
@@ -24,27 +26,30 @@ double ros_wall_time(void);
 /* Seconds -> (sec, nanosec) with nanosec in [0, 1e9). */
 void ros_split_time(double t, int32_t *sec, uint32_t *nsec);
 
-/* ---- the simulated robot's planner (plan.c): behind a small interface so the nav module's
- * costmap and planner can replace the built-in grid A* without touching the robot ---- */
-typedef struct ros_planner ros_planner;
-typedef enum { ROS_CELL_FREE = 0, ROS_CELL_OCCUPIED, ROS_CELL_UNKNOWN, ROS_CELL_OUTSIDE,
-               ROS_CELL_NEAR_OBSTACLE } ros_cell_class;
-/* A planner over the grid (copied) for a robot of radius robot_radius_m. */
-int ros_planner_create(ros_planner **out, const sp_ros_grid *grid, double robot_radius_m,
-                       sp_error *err);
-void ros_planner_free(ros_planner *p);
-/* Where a point falls: free for the robot's centre, occupied, unknown, outside the map, or free
- * but closer than the robot radius to an obstacle or unknown space. */
-ros_cell_class ros_planner_classify(const ros_planner *p, double x, double y);
-const char *ros_cell_class_name(ros_cell_class c);
-/* A path from (sx, sy) to (gx, gy) through cells the robot fits in: xy[2*i], xy[2*i+1] for
- * i < *n (malloc'd, caller frees), start and goal included. SP_E_NOTFOUND when none exists;
- * SP_E_ARG when start or goal is not free (the message says why). */
-int ros_planner_plan(const ros_planner *p, double sx, double sy, double gx, double gy,
-                     double **xy, size_t *n, sp_error *err);
-/* Is the robot's footprint centre at (x, y) clear of lethal cells (for collision checks)? */
-int ros_planner_is_lethal(const ros_planner *p, double x, double y);
-const sp_ros_grid *ros_planner_grid(const ros_planner *p);
+/* ---- the simulated robot's map and plans (simnav.c), on the nav module ---- */
+/* The costmap the robot drives on: o->costmap (copied), o->map_yaml or o->model_dir (exactly
+ * one), inflated for o->robot_radius_m. */
+int ros_sim_costmap(const sp_ros_sim_options *o, const sp_log *log, sp_costmap *cm,
+                    sp_error *err);
+/* SP_E_ARG (naming the cell and the map's extent) when the robot cannot stand at (x, y):
+ * outside the map, occupied or unknown; within the robot radius of an obstacle is allowed. */
+int ros_sim_check_start(const sp_costmap *cm, double x, double y, sp_error *err);
+/* Checks the goal (sp_costmap_check_goal: outside, occupied, unknown, within the robot radius,
+ * not reachable) and plans from start (x, y, yaw) with sp_plan_path. *status is the
+ * sp_nav_status (ComputePathToPose's codes); SP_NAV_OK with *path filled and 0 returned,
+ * else SP_E_NOTFOUND with err saying why (SP_E_ARG for a non-finite goal, SP_E_NOMEM). */
+int ros_sim_plan(const sp_costmap *cm, const double start[3], const sp_ros_pose *goal,
+                 sp_path *path, int *status, sp_error *err);
+/* 1 when the robot's centre at (x, y) is on an occupied cell or off the map (a collision). */
+int ros_sim_collides(const sp_costmap *cm, double x, double y);
+/* The plan's any-angle polyline as xy pairs for the drive (malloc'd), ending on the goal. */
+int ros_sim_drive_path(const sp_path *p, const sp_ros_pose *goal, double **xy, size_t *n);
+/* The plan's waypoints as a ComputePathToPose result in frame, the last pose the goal's. */
+int ros_sim_path_result(const sp_path *p, const sp_ros_pose *goal, const char *frame,
+                        sp_ros_path *out);
+/* ComputePathToPose's Jazzy error_code for an sp_nav_status (START_OUTSIDE_MAP 203 ..
+ * NO_VALID_PATH 208: 200 + the status; 0 for OK). */
+#define ROS_PATH_ERROR_CODE(status) ((status) ? 200 + (status) : 0)
 
 /* ---- differential drive (drive.c): a unicycle with velocity and acceleration limits following
  * a path (pure pursuit), then turning to the goal heading ---- */

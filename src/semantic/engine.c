@@ -1,8 +1,8 @@
 /* The query engine: opens a language-embedded model folder once (splat with f_sem_*, sidecar,
  * PCA, frame, cameras), puts splat and cameras into the folder's frame, and answers text queries
  * with a position, instances, a confidence and a heatmap; per-Gaussian relevancy and heatmaps
- * from any camera for other modules. Text goes through CLIP's text tower (encoder "clip") or the
- * hashed label embedding (encoder "exact"). Every public call holds the engine's lock. */
+ * from any camera for other modules. Text goes through the folder's text encoder (encoder.c:
+ * clip, lexical or exact). Every public call holds the engine's lock. */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
@@ -39,6 +39,8 @@ void sp_query_result_free(sp_query_result *res)
     free(res->relevancy_image);
     free(res->relevancy);
     free(res->instances);
+    free(res->matches);
+    free(res->explanation);
     memset(res, 0, sizeof *res);
 }
 
@@ -62,6 +64,9 @@ void sp_query_engine_free(sp_query_engine *e)
     sp_grid3_free(&e->occ);
     sp_scene_free(e->scene);
     sp_scene_free(e->scores_scene);
+    sp_lex_vocab_free(e->vocab);
+    sp_lexicon_free(e->lx);
+    free(e->classes);
     if (e->has_mutex) pthread_mutex_destroy(&e->mu);
     free(e);
 }
@@ -153,6 +158,12 @@ static int copy_inputs(sp_query_engine *e, const sp_query_model *m, sp_error *er
         if (m->cam_names && m->cam_names[i]) snprintf(e->cam_names[i], 256, "%s", m->cam_names[i]);
         else snprintf(e->cam_names[i], 256, "view %zu", i);
     }
+    if (m->n_classes > 0 && m->classes) {
+        e->classes = calloc((size_t)m->n_classes, sizeof *e->classes);
+        if (!e->classes) return sp_error_set(err, SP_E_NOMEM, "query engine: out of memory");
+        for (int i = 0; i < m->n_classes; i++)
+            snprintf(e->classes[e->n_classes++], sizeof e->classes[0], "%s", m->classes[i] ? m->classes[i] : "");
+    }
     return 0;
 }
 
@@ -172,6 +183,7 @@ int sp_query_engine_create(sp_query_engine **out, const sp_query_model *m, const
     else sp_frame_init(&e->frame, "colmap");
     if (m->clip_weights) snprintf(e->clip_path, sizeof e->clip_path, "%s", m->clip_weights);
     int rc = copy_inputs(e, m, err);
+    if (!rc) rc = sem_encoder_prepare(e, e->source.encoder, m->wordnet_dir, m->regions_path, err);
     if (!rc) rc = engine_finish(e, opts, err);
     if (rc) {
         sp_query_engine_free(e);
@@ -217,8 +229,56 @@ static int load_cameras(sp_query_engine *e, const char *colmap_dir, sp_error *er
     return rc;
 }
 
+/* Whether the folder's features are hashed label embeddings (else CLIP's text space). */
+static int label_space_of(const cJSON *js)
+{
+    const char *le = jstr(js, "label_embedding"), *enc = jstr(js, "encoder");
+    if (le) return !strcmp(le, "hash");
+    return enc && (!strcmp(enc, SP_ENCODER_EXACT) || !strcmp(enc, SP_ENCODER_LEXICAL));
+}
+
+/* The encoder asked for, else the one the folder records, else the features' default (lexical on
+ * hashed labels, clip otherwise). A lexical encoder the folder records or defaults to but that
+ * cannot be prepared (no WordNet, no class names) falls back to exact with a warning; one asked
+ * for is an error. */
+static int choose_encoder(sp_query_engine *e, const char *model_dir, const cJSON *js,
+                          const sp_encoder_opts *eo, sp_error *err)
+{
+    const char *asked = eo && eo->encoder && eo->encoder[0] ? eo->encoder : NULL;
+    const char *name = asked ? asked : jstr(js, "encoder");
+    int label = label_space_of(js);
+    if (!name) name = label ? SP_ENCODER_LEXICAL : SP_ENCODER_CLIP;
+    const sem_encoder *enc = sem_encoder_find(name);
+    if (!enc)
+        return sp_error_set(err, asked ? SP_E_ARG : SP_E_UNSUPPORTED, "%s/semantic.json: text encoder '%s' is "
+                            "not clip, lexical or exact", model_dir, name);
+    if (enc->label_space != label)
+        return sp_error_set(err, SP_E_UNSUPPORTED, "%s: the text encoder %s does not fit its features (%s): "
+                            "use %s", model_dir, name, label ? "hashed class names" : "CLIP's text space",
+                            label ? "lexical or exact" : "clip");
+    sp_error lerr = {0};
+    int rc = label ? sem_model_classes(model_dir, js, &e->classes, &e->n_classes, &lerr) : 0;
+    if (!rc) rc = sem_encoder_prepare(e, name, eo ? eo->wordnet_dir : NULL, eo ? eo->regions_path : NULL, &lerr);
+    if (rc && (asked || strcmp(name, SP_ENCODER_LEXICAL))) {
+        if (err) *err = lerr;
+        return rc;
+    }
+    if (rc) {
+        sp_logf(e->has_log ? &e->log : NULL, SP_LOG_WARN, "%s: %s; the exact encoder answers instead (only "
+                "exact class names match)", model_dir, lerr.msg);
+        rc = sem_encoder_prepare(e, SP_ENCODER_EXACT, NULL, NULL, err);
+    }
+    return rc;
+}
+
 int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_query_opts *opts,
                          sp_device *dev, const sp_log *log, sp_error *err)
+{
+    return sp_query_engine_open_with(out, model_dir, NULL, opts, dev, log, err);
+}
+
+int sp_query_engine_open_with(sp_query_engine **out, const char *model_dir, const sp_encoder_opts *eo,
+                              const sp_query_opts *opts, sp_device *dev, const sp_log *log, sp_error *err)
 {
     *out = NULL;
     if (!model_dir || !dev) return sp_error_set(err, SP_E_ARG, "query engine: missing argument");
@@ -245,17 +305,10 @@ int sp_query_engine_open(sp_query_engine **out, const char *model_dir, const sp_
     resolve(path, sizeof path, model_dir, mean);
     resolve(p2, sizeof p2, model_dir, basis);
     if ((rc = sp_sem_pca_read(path, p2, &e->pca, err))) goto fail;
-    const char *le = jstr(js, "label_embedding"), *model = jstr(js, "model");
-    const char *enc = jstr(js, "encoder"), *fsrc = jstr(js, "source");
-    /* "encoder" names the text encoder; older sidecars say label_embedding "hash" for exact */
-    source_init(&e->source, enc ? enc : (le && !strcmp(le, "hash")) ? "exact" : "clip",
-                fsrc ? fsrc : "clip");
-    if (strcmp(e->source.encoder, "exact") && strcmp(e->source.encoder, "clip")) {
-        rc = sp_error_set(err, SP_E_UNSUPPORTED, "%s/semantic.json: text encoder '%s' is not "
-                          "clip or exact", model_dir, e->source.encoder);
-        goto fail;
-    }
-    if (!strcmp(e->source.encoder, "clip")) {
+    const char *model = jstr(js, "model"), *fsrc = jstr(js, "source");
+    source_init(&e->source, "", fsrc ? fsrc : "clip");
+    if ((rc = choose_encoder(e, model_dir, js, eo, err))) goto fail;
+    if (!strcmp(e->source.encoder, SP_ENCODER_CLIP)) {
         if (!model || !model[0]) {
             rc = sp_error_set(err, SP_E_NOTFOUND,
                               "%s/semantic.json: features need CLIP text embeddings but name no "
@@ -305,10 +358,10 @@ const sp_camera *sp_query_engine_camera(const sp_query_engine *e, size_t i)
     return i < e->n_cams ? &e->cams[i] : NULL;
 }
 
-static int embed_many(sp_query_engine *e, const char *const *texts, int n, float *out, sp_error *err)
+int sem_embed_base(sp_query_engine *e, const char *const *texts, int n, float *out, sp_error *err)
 {
     int F = e->pca.full_dim;
-    if (!strcmp(e->source.encoder, "exact")) {
+    if (e->enc->label_space) {
         for (int i = 0; i < n; i++) sp_label_embedding(texts[i], F, out + (size_t)i * F);
         return 0;
     }
@@ -327,7 +380,7 @@ static int embed_many(sp_query_engine *e, const char *const *texts, int n, float
 static int embed_text(sp_query_engine *e, const char *text, float *out, sp_error *err)
 {
     if (!text || !text[0]) return sp_error_set(err, SP_E_ARG, "query: empty text");
-    return embed_many(e, &text, 1, out, err);
+    return e->enc->embed(e, text, out, err);
 }
 
 int sp_query_engine_embed(sp_query_engine *e, const char *text, float *out, sp_error *err)
@@ -356,7 +409,7 @@ static int ensure_negatives(sp_query_engine *e, const sp_query_opts *o, sp_error
     }
     float *emb = malloc(sizeof(float) * (size_t)(n ? n : 1) * e->pca.full_dim);
     if (!emb) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
-    int rc = n ? embed_many(e, words, n, emb, err) : 0;
+    int rc = n ? sem_embed_base(e, words, n, emb, err) : 0;
     if (rc) {
         free(emb);
         return rc;
@@ -485,6 +538,8 @@ static int query_embedding(sp_query_engine *e, const float *embedding, const cha
         rc = sem_localize_3d(e, &sc, &th, res, err);
     }
     if (rc) return rc;
+    for (int k = 0; k < res->n_instances; k++) res->instances[k].relation_m = NAN;
+    res->threshold = o->min_confidence;
     double t3 = sp_time_now();
     res->ms_localize = (t3 - t2) * 1e3;
     if (o->heatmap && e->n_cams > 0) {
@@ -518,17 +573,40 @@ static int check_opts(const sp_query_engine *e, const sp_query_opts *o, sp_error
     return 0;
 }
 
+int sem_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
+                        const sp_query_opts *o, sp_query_result *res, sp_error *err)
+{
+    memset(res, 0, sizeof *res);
+    int rc = check_opts(e, o, err);
+    if (!rc) rc = query_embedding(e, embedding, label, o, res, err);
+    if (rc) sp_query_result_free(res); /* nothing half-made is handed back */
+    return rc;
+}
+
 int sp_query_engine_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
                                     const sp_query_opts *opts, sp_query_result *res, sp_error *err)
 {
-    const sp_query_opts *o = opts ? opts : &e->defaults;
-    memset(res, 0, sizeof *res);
-    int rc = check_opts(e, o, err);
-    if (rc) return rc;
     pthread_mutex_lock(&e->mu);
-    rc = query_embedding(e, embedding, label, o, res, err);
+    int rc = sem_query_embedding(e, embedding, label, opts ? opts : &e->defaults, res, err);
     pthread_mutex_unlock(&e->mu);
-    if (rc) sp_query_result_free(res); /* nothing half-made is handed back */
+    return rc;
+}
+
+/* Embed, localize, explain (clip, exact). */
+static int query_text(sp_query_engine *e, const char *text, const sp_query_opts *o, sp_query_result *res,
+                      sp_error *err)
+{
+    float *q = malloc(sizeof(float) * e->pca.full_dim);
+    if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    double t0 = sp_time_now();
+    int rc = embed_text(e, text, q, err);
+    if (!rc) rc = ensure_negatives(e, o, err);
+    double t1 = sp_time_now();
+    if (!rc) rc = query_embedding(e, q, text, o, res, err);
+    free(q);
+    if (!rc && e->enc->explain) rc = e->enc->explain(e, o, res, err);
+    res->ms_embed = (t1 - t0) * 1e3;
+    res->ms_total += res->ms_embed;
     return rc;
 }
 
@@ -539,23 +617,12 @@ int sp_query_engine_query(sp_query_engine *e, const char *text, const sp_query_o
     memset(res, 0, sizeof *res);
     int rc = check_opts(e, o, err);
     if (rc) return rc;
-    float *q = malloc(sizeof(float) * e->pca.full_dim);
-    if (!q) return sp_error_set(err, SP_E_NOMEM, "query: out of memory");
+    if (!text || !text[0]) return sp_error_set(err, SP_E_ARG, "query: empty text");
     pthread_mutex_lock(&e->mu);
-    double t0 = sp_time_now();
-    rc = embed_text(e, text, q, err);
-    if (!rc) rc = ensure_negatives(e, o, err);
-    double t1 = sp_time_now();
-    if (!rc) rc = query_embedding(e, q, text, o, res, err);
+    rc = e->enc->query ? e->enc->query(e, text, o, res, err) : query_text(e, text, o, res, err);
     pthread_mutex_unlock(&e->mu);
-    free(q);
-    if (rc) {
-        sp_query_result_free(res); /* nothing half-made is handed back */
-        return rc;
-    }
-    res->ms_embed = (t1 - t0) * 1e3;
-    res->ms_total += res->ms_embed;
-    return 0;
+    if (rc) sp_query_result_free(res); /* nothing half-made is handed back */
+    return rc;
 }
 
 /* Embeds text and scores every Gaussian with the default negatives and temperature. */

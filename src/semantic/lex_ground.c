@@ -1,7 +1,7 @@
-/* Lexical queries grounded in a label-feature scene through the query engine's public API: the
- * matched classes' label embeddings, weighted by their lexical scores, make the query embedding;
- * regions are the extent of the instances of the classes that define them, clustered in space;
- * relations rank the target's instances by their distance to the anchor. */
+/* Lexical queries grounded in a label-feature scene through the query engine: each matched
+ * class is localized by its label embedding (sem_query_embedding, with the engine's lock held and
+ * the call's options); regions are the extent of the instances of the classes that define them,
+ * clustered in space; relations rank the target's instances by their distance to the anchor. */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "lexical.h"
+#include "sem_internal.h"
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 
@@ -61,40 +62,48 @@ static void not_found(const sp_query_engine *e, sp_query_result *res, const char
  * named but not seen there. Instances are filtered per class (a small dining chair is not
  * dropped because an armchair is big). */
 static int localize_class(sp_query_engine *e, const sp_lex_vocab *v, int cls, float score,
-                          const char *text, int heatmap, sp_query_result *res, sp_error *err)
+                          const char *text, int heatmap, const sp_query_opts *opts,
+                          sp_query_result *res, sp_error *err)
 {
     int F = sp_query_engine_full_dim(e);
     float *q = malloc(sizeof(float) * (size_t)F);
     if (!q) return sp_error_set(err, SP_E_NOMEM, "lexical query: out of memory");
     sp_label_embedding(sp_lex_vocab_class(v, cls), F, q);
-    sp_query_opts o = *sp_query_engine_defaults(e);
+    sp_query_opts o = *opts;
     o.min_confidence = 0.5f;
     o.heatmap = heatmap && o.heatmap;
-    int rc = sp_query_engine_query_embedding(e, q, text, &o, res, err);
+    int rc = sem_query_embedding(e, q, text, &o, res, err);
     free(q);
     if (!rc) {
         snprintf(res->source.encoder, sizeof res->source.encoder, "lexical");
         res->confidence = score;
+        res->threshold = SP_LEX_THRESHOLD;
         if (!res->valid) res->position[0] = res->position[1] = res->position[2] = NAN;
+        for (int k = 0; k < res->n_instances; k++)
+            snprintf(res->instances[k].label, sizeof res->instances[k].label, "%s", sp_lex_vocab_class(v, cls));
     }
     return rc;
 }
 
 /* The target: each class matched at or above the threshold localized alone, their instances
- * together, the best-scoring class's first ("couch": the couch before the bed, which WordNet
- * also calls a couch), heavier first within a class. The best class's heatmap. */
+ * together, the best-scoring class's first, heavier first within a class. A text that is a
+ * class's own name (kind exact) means that class alone: "couch" is the couch, not also the bed
+ * WordNet calls a couch, "dining chair" not the armchair; a general word or a description
+ * ("chair", "something to sit on") covers every class it fits. The best class's heatmap. */
 static int localize_target(sp_query_engine *e, const sp_lex_vocab *v, const sp_lex_phrase *ph,
-                           sp_query_result *res, int **classes, sp_error *err)
+                           const sp_query_opts *o, sp_query_result *res, int **classes, sp_error *err)
 {
     not_found(e, res, ph->text);
     int rc = 0, have = 0;
     float *cls_score = NULL;
     int *cls = NULL;
+    int named = ph->n_matches > 0 && ph->matches[0].kind == SP_LEX_EXACT;
     for (int i = 0; i < ph->n_matches && !rc; i++) {
         const sp_lex_class_match *m = &ph->matches[i];
         if (m->score < SP_LEX_THRESHOLD) break; /* matches are sorted */
+        if (named && m->kind != SP_LEX_EXACT) continue;
         sp_query_result r;
-        if ((rc = localize_class(e, v, m->class_index, m->score, ph->text, !have, &r, err))) break;
+        if ((rc = localize_class(e, v, m->class_index, m->score, ph->text, !have, o, &r, err))) break;
         if (!r.valid) {
             sp_query_result_free(&r);
             continue;
@@ -158,7 +167,8 @@ static int find_root(int *p, int i)
  * REGION_GAP_M), and the cluster holding the most of the region's kinds (by membership score)
  * taken. res gets that cluster's instances; x its extent. */
 static int localize_region(sp_query_engine *e, const sp_lex_vocab *v, const sp_lex_phrase *ph,
-                           sp_query_result *res, sp_lex_extent *x, int **classes, sp_error *err)
+                           const sp_query_opts *o, sp_query_result *res, sp_lex_extent *x, int **classes,
+                           sp_error *err)
 {
     *classes = NULL;
     member_inst *all = NULL;
@@ -167,7 +177,7 @@ static int localize_region(sp_query_engine *e, const sp_lex_vocab *v, const sp_l
         const sp_lex_class_match *m = &ph->matches[i];
         if (m->score < SP_LEX_THRESHOLD) continue;
         sp_query_result r;
-        if ((rc = localize_class(e, v, m->class_index, m->score, ph->text, 0, &r, err))) break;
+        if ((rc = localize_class(e, v, m->class_index, m->score, ph->text, 0, o, &r, err))) break;
         for (int k = 0; k < r.n_instances && r.valid; k++) {
             if (n == cap) {
                 cap = cap ? 2 * cap : 16;
@@ -310,19 +320,19 @@ done:
     return rc;
 }
 
-int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
-                 sp_error *err)
+int sem_lex_answer(sp_query_engine *e, const sp_lex_vocab *v, const char *text, const sp_query_opts *o,
+                   sp_lex_answer *a, sp_error *err)
 {
-    if (!e || !v || !text || !a) return sp_error_set(err, SP_E_ARG, "lexical query: missing argument");
     memset(a, 0, sizeof *a);
+    double t0 = sp_time_now();
     int rc = sp_lex_match(v, text, &a->lex, err);
     if (rc) return rc;
-    double t0 = sp_time_now();
+    double t1 = sp_time_now();
     if (a->lex.target.is_region) {
         a->is_region = 1;
-        rc = localize_region(e, v, &a->lex.target, &a->result, &a->region, &a->instance_class, err);
+        rc = localize_region(e, v, &a->lex.target, o, &a->result, &a->region, &a->instance_class, err);
     } else {
-        rc = localize_target(e, v, &a->lex.target, &a->result, &a->instance_class, err);
+        rc = localize_target(e, v, &a->lex.target, o, &a->result, &a->instance_class, err);
     }
     if (!rc && a->lex.relation[0] && a->result.valid) {
         sp_query_result anchor;
@@ -330,10 +340,10 @@ int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp
         int *anchor_class = NULL;
         a->has_anchor = 1;
         if (a->lex.anchor.is_region) {
-            rc = localize_region(e, v, &a->lex.anchor, &anchor, &region, &anchor_class, err);
+            rc = localize_region(e, v, &a->lex.anchor, o, &anchor, &region, &anchor_class, err);
             if (!rc && anchor.valid) rc = rank_by_relation(a, NULL, 0, &region, err);
         } else {
-            rc = localize_target(e, v, &a->lex.anchor, &anchor, &anchor_class, err);
+            rc = localize_target(e, v, &a->lex.anchor, o, &anchor, &anchor_class, err);
             if (!rc && anchor.valid) rc = rank_by_relation(a, anchor.instances, anchor.n_instances, NULL, err);
         }
         if (!rc && !anchor.valid) { /* the anchor is not there: neither is "X near it" */
@@ -348,8 +358,20 @@ int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp
         return rc;
     }
     snprintf(a->result.text, sizeof a->result.text, "%s", text);
+    a->result.threshold = SP_LEX_THRESHOLD;
+    a->result.ms_embed = (t1 - t0) * 1e3;
     a->result.ms_total = (sp_time_now() - t0) * 1e3;
     return 0;
+}
+
+int sp_lex_query(sp_query_engine *e, const sp_lex_vocab *v, const char *text, sp_lex_answer *a,
+                 sp_error *err)
+{
+    if (!e || !v || !text || !a) return sp_error_set(err, SP_E_ARG, "lexical query: missing argument");
+    pthread_mutex_lock(&e->mu);
+    int rc = sem_lex_answer(e, v, text, &e->defaults, a, err);
+    pthread_mutex_unlock(&e->mu);
+    return rc;
 }
 
 static cJSON *extent_json(const sp_lex_extent *x)
@@ -377,6 +399,8 @@ char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const ch
         cJSON_Delete(lex);
         return NULL;
     }
+    const char *const replaced[] = {"encoder", "region", "anchor"};
+    for (size_t k = 0; k < sizeof replaced / sizeof replaced[0]; k++) cJSON_DeleteItemFromObject(o, replaced[k]);
     cJSON_AddStringToObject(o, "encoder", "lexical");
     cJSON_AddStringToObject(o, "note", "lexical: matching against the scene's known class names, not recognition");
     cJSON_AddItemToObject(o, "lexical", lex);
@@ -395,111 +419,13 @@ char *sp_lex_answer_json(const sp_lex_answer *a, const sp_lex_vocab *v, const ch
     const cJSON *insts = cJSON_GetObjectItem(o, "instances"), *it;
     int k = 0;
     cJSON_ArrayForEach(it, insts) {
-        if (a->instance_class && k < a->result.n_instances)
+        if (a->instance_class && k < a->result.n_instances) {
+            cJSON_DeleteItemFromObject((cJSON *)it, "class");
             cJSON_AddStringToObject((cJSON *)it, "class", sp_lex_vocab_class(v, a->instance_class[k]));
+        }
         k++;
     }
     char *s = cJSON_Print(o);
     cJSON_Delete(o);
     return s;
-}
-
-int sp_lex_vocab_from_labels(sp_lex_vocab **out, const sp_lexicon *lx, const char *labels_json,
-                             const char *regions_path, sp_error *err)
-{
-    *out = NULL;
-    cJSON *js = NULL;
-    int rc = sp_json_read_file(labels_json, &js, err);
-    if (rc) return rc;
-    const cJSON *labs = cJSON_GetObjectItemCaseSensitive(js, "labels"), *it;
-    const char *names[SP_LEX_MAX_CLASSES];
-    int n = 0;
-    if (!labs) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing \"labels\"", labels_json);
-    cJSON_ArrayForEach(it, labs) {
-        const cJSON *c = cJSON_GetObjectItemCaseSensitive(it, "class");
-        if (!cJSON_IsString(c) || !c->valuestring[0]) {
-            rc = sp_error_set(err, SP_E_FORMAT, "%s: label '%s' has no \"class\"", labels_json,
-                              it->string ? it->string : "?");
-            break;
-        }
-        int dup = !strcmp(c->valuestring, "background");
-        for (int k = 0; k < n && !dup; k++) dup = !strcmp(names[k], c->valuestring);
-        if (dup) continue;
-        if (n == SP_LEX_MAX_CLASSES) {
-            rc = sp_error_set(err, SP_E_UNSUPPORTED, "%s: more than %d classes", labels_json, SP_LEX_MAX_CLASSES);
-            break;
-        }
-        names[n++] = c->valuestring;
-    }
-    if (!rc) rc = sp_lex_vocab_create(out, lx, names, n, regions_path, err);
-    cJSON_Delete(js);
-    return rc;
-}
-
-/* labels.json of the capture a model folder was lifted from: beside its COLMAP folder or up to
- * two levels above it (capture/sparse/0). */
-static int find_labels(const char *colmap, char *out, size_t cap)
-{
-    char dir[2048];
-    snprintf(dir, sizeof dir, "%s", colmap);
-    for (int up = 0; up < 3; up++) {
-        snprintf(out, cap, "%s/labels.json", dir);
-        if (sp_file_exists(out)) return 0;
-        char *s = strrchr(dir, '/');
-        if (!s || s == dir) break;
-        *s = 0;
-    }
-    return -1;
-}
-
-int sp_lex_vocab_for_model(sp_lex_vocab **out, const sp_lexicon *lx, const char *model_dir,
-                           const char *regions_path, sp_error *err)
-{
-    *out = NULL;
-    char path[2048], labels[2100];
-    sp_path_join(path, sizeof path, model_dir, "semantic.json");
-    cJSON *js = NULL;
-    int rc = sp_json_read_file(path, &js, err);
-    if (rc) return rc;
-    const cJSON *src = cJSON_GetObjectItem(js, "source"), *le = cJSON_GetObjectItem(js, "label_embedding");
-    const cJSON *colmap = cJSON_GetObjectItem(js, "colmap");
-    if (!cJSON_IsString(src) || strcmp(src->valuestring, "labels") || !cJSON_IsString(le) ||
-        strcmp(le->valuestring, "hash"))
-        rc = sp_error_set(err, SP_E_UNSUPPORTED,
-                          "%s: lexical answers need a label-feature model (source \"labels\", label_embedding "
-                          "\"hash\"); this one has source \"%s\": query it with its CLIP text tower",
-                          path, cJSON_IsString(src) ? src->valuestring : "?");
-    else if (!cJSON_IsString(colmap) || find_labels(colmap->valuestring, labels, sizeof labels))
-        rc = sp_error_set(err, SP_E_NOTFOUND, "%s: no labels.json beside the capture it names (\"colmap\": %s)",
-                          path, cJSON_IsString(colmap) ? colmap->valuestring : "missing");
-    cJSON_Delete(js);
-    return rc ? rc : sp_lex_vocab_from_labels(out, lx, labels, regions_path, err);
-}
-
-int sp_lex_embed(const sp_lex_vocab *v, const char *text, int dim, float *out, float *confidence,
-                 sp_error *err)
-{
-    if (!v || !text || !out || dim < 1) return sp_error_set(err, SP_E_ARG, "lexical embed: bad argument");
-    sp_lex_result *res = malloc(sizeof *res);
-    float *one = malloc(sizeof(float) * (size_t)dim);
-    if (!res || !one) {
-        free(res), free(one);
-        return sp_error_set(err, SP_E_NOMEM, "lexical embed: out of memory");
-    }
-    int rc = sp_lex_match(v, text, res, err);
-    memset(out, 0, sizeof(float) * (size_t)dim);
-    double n2 = 0;
-    for (int i = 0; !rc && i < res->target.n_matches; i++) {
-        const sp_lex_class_match *m = &res->target.matches[i];
-        if (m->score < SP_LEX_THRESHOLD) break;
-        sp_label_embedding(sp_lex_vocab_class(v, m->class_index), dim, one);
-        for (int j = 0; j < dim; j++) out[j] += m->score * one[j];
-    }
-    for (int j = 0; j < dim; j++) n2 += (double)out[j] * out[j];
-    if (n2 > 0)
-        for (int j = 0; j < dim; j++) out[j] = (float)(out[j] / sqrt(n2));
-    if (confidence) *confidence = rc ? 0 : res->confidence;
-    free(res);
-    free(one);
-    return rc;
 }

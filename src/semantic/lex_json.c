@@ -4,8 +4,9 @@
 #include <string.h>
 
 #include "lexical.h"
+#include "sem_internal.h"
 
-static cJSON *phrase_json(const sp_lex_phrase *ph, const sp_lex_vocab *v, float min_score)
+static cJSON *phrase_json(const sp_lex_phrase *ph, const sp_lex_vocab *v, float min_score, const char *role)
 {
     cJSON *o = cJSON_CreateObject();
     cJSON_AddStringToObject(o, "text", ph->text);
@@ -16,17 +17,10 @@ static cJSON *phrase_json(const sp_lex_phrase *ph, const sp_lex_vocab *v, float 
     for (int i = 0; i < ph->n_matches; i++) {
         const sp_lex_class_match *m = &ph->matches[i];
         if (m->score < min_score) continue;
-        cJSON *it = cJSON_CreateObject();
-        cJSON_AddStringToObject(it, "class", sp_lex_vocab_class(v, m->class_index));
+        sp_query_match q;
+        sem_lex_match_copy(&q, m, v, role);
+        cJSON *it = sem_match_json(&q, SP_LEX_THRESHOLD);
         cJSON_AddNumberToObject(it, "class_index", m->class_index);
-        cJSON_AddNumberToObject(it, "score", m->score);
-        cJSON_AddBoolToObject(it, "match", m->score >= SP_LEX_THRESHOLD);
-        cJSON_AddStringToObject(it, "kind", sp_lex_kind_name(m->kind));
-        cJSON_AddStringToObject(it, "query_sense", m->query_sense);
-        cJSON_AddStringToObject(it, "class_sense", m->class_sense);
-        cJSON_AddStringToObject(it, "path", m->path);
-        cJSON_AddStringToObject(it, "gloss_words", m->gloss_words);
-        cJSON_AddStringToObject(it, "definition", m->definition);
         cJSON_AddItemToArray(arr, it);
     }
     return o;
@@ -41,10 +35,10 @@ char *sp_lex_result_json(const sp_lex_result *res, const sp_lex_vocab *v, float 
     cJSON_AddBoolToObject(o, "found", res->found);
     cJSON_AddNumberToObject(o, "confidence", res->confidence);
     cJSON_AddNumberToObject(o, "threshold", SP_LEX_THRESHOLD);
-    cJSON_AddItemToObject(o, "target", phrase_json(&res->target, v, min_score));
+    cJSON_AddItemToObject(o, "target", phrase_json(&res->target, v, min_score, "target"));
     if (res->relation[0]) {
         cJSON_AddStringToObject(o, "relation", res->relation);
-        cJSON_AddItemToObject(o, "anchor", phrase_json(&res->anchor, v, min_score));
+        cJSON_AddItemToObject(o, "anchor", phrase_json(&res->anchor, v, min_score, "anchor"));
     } else {
         cJSON_AddNullToObject(o, "relation");
         cJSON_AddNullToObject(o, "anchor");

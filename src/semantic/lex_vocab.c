@@ -54,11 +54,24 @@ int lex_vocab_has_word(const sp_lex_vocab *v, const char *w)
     return 0;
 }
 
-/* Adds a synset's lemmas and definition to the bag at weight. */
-static int bag_synset(const lex_db *lx, lex_bag *bag, uint32_t off, float weight, sp_error *err)
+static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err);
+
+/* The verbs WordNet derives from the sense ("+" pointers: refrigerator -> refrigerate "make cool
+ * or cold", bicycle -> bicycle "ride a bicycle", computer -> compute): what one does with the
+ * thing, added one step from its own definition (weight * DELTA). */
+static int bag_derived_verbs(const lex_db *lx, lex_bag *bag, const wn_synset *s, float weight, sp_error *err)
+{
+    int rc = 0;
+    for (int p = 0; p < s->n_pointers && !rc; p++)
+        if (!strcmp(s->pointers[p].symbol, "+") && s->pointers[p].target.pos == WN_VERB)
+            rc = bag_synset(lx, bag, s->pointers[p].target, weight * LEX_DELTA, 0, err);
+    return rc;
+}
+
+/* Adds a synset's lemmas and definition to the bag at weight (verbs: and its derived verbs'). */
+static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err)
 {
     wn_synset s;
-    wn_id id = {off, WN_NOUN};
     int rc = wn_read(lx->db, id, &s, err);
     if (rc) return rc;
     char def[512], src[192], lemmas[512];
@@ -71,11 +84,12 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, uint32_t off, float weight
     }
     for (char *p = lemmas; *p; p++)
         if (*p == '_') *p = ' ';
-    snprintf(src, sizeof src, "%s: %s", s.words[0], def);
+    snprintf(src, sizeof src, "%s%s: %s", s.words[0], id.pos == WN_VERB ? " (verb)" : "", def);
     for (char *p = src; *p && *p != ':'; p++)
         if (*p == '_') *p = ' ';
     rc = lex_bag_add_text(lx, bag, def, weight, src, err);
     if (!rc) rc = lex_bag_add_text(lx, bag, lemmas, weight, src, err);
+    if (!rc && verbs) rc = bag_derived_verbs(lx, bag, &s, weight, err);
     wn_synset_free(&s);
     return rc;
 }
@@ -106,7 +120,7 @@ static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_er
         for (int a = 0; a < se->n_anc && !rc; a++) {
             if (se->anc[a].dist > LEX_GLOSS_LEVELS) continue;
             float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
-            rc = bag_synset(lx, &c->bag, se->anc[a].off, w, err);
+            rc = bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
         }
     }
     return rc;

@@ -211,4 +211,12 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
 /* Order of class matches: score, then kind (exact first), then class index. */
 int lex_match_cmp(const void *a, const void *b);
 
+/* ---- grounding (lex_ground.c) ----------------------------------------------------------------- */
+
+/* A class match as the engine's results list it (lex_engine.c). */
+void sem_lex_match_copy(sp_query_match *q, const sp_lex_class_match *m, const sp_lex_vocab *v, const char *role);
+/* sp_lex_query with the call's options o; the caller holds the engine's lock. */
+int sem_lex_answer(sp_query_engine *e, const sp_lex_vocab *v, const char *text, const sp_query_opts *o,
+                   sp_lex_answer *a, sp_error *err);
+
 #endif

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sem_internal.h"
 #include "semsplat/clip.h"
 #include "semsplat/io.h"
 #include "semsplat/semantic.h"
@@ -47,6 +48,29 @@ static int train_colmap_dir(const char *model_dir, char *out, size_t cap)
     return v ? 0 : -1;
 }
 
+/* The class names hashed into label features, as a JSON array: features.json "classes" (written
+ * by `semsplat features --source labels`), else the classes of the capture's labels.json. */
+static cJSON *feature_classes(const char *features_dir, const char *colmap_abs)
+{
+    sp_error lerr = {0}, *err = &lerr; /* no class list is not an error: the exact encoder then answers */
+    char path[2048];
+    cJSON *fjs = NULL, *tmp = cJSON_CreateObject(), *arr = NULL;
+    sp_path_join(path, sizeof path, features_dir, "features.json");
+    if (sp_json_read_file(path, &fjs, err)) fjs = NULL;
+    const cJSON *from = fjs && cJSON_GetObjectItemCaseSensitive(fjs, "classes") ? fjs : tmp;
+    if (tmp) cJSON_AddStringToObject(tmp, "colmap", colmap_abs);
+    char (*names)[128] = NULL;
+    int n = 0;
+    if (tmp && !sem_model_classes(from == fjs ? path : colmap_abs, from, &names, &n, err) && n > 0) {
+        arr = cJSON_CreateArray();
+        for (int i = 0; arr && i < n; i++) cJSON_AddItemToArray(arr, cJSON_CreateString(names[i]));
+    }
+    free(names);
+    cJSON_Delete(fjs);
+    cJSON_Delete(tmp);
+    return arr;
+}
+
 int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
                               const char *colmap_dir, const char *method, sp_error *err)
 {
@@ -75,8 +99,12 @@ int sp_semantic_write_sidecar(const char *model_dir, const char *features_dir,
      * "clip" = the CLIP text tower of `model`. */
     const char *le = f.label_embedding[0] ? f.label_embedding : "clip";
     cJSON_AddStringToObject(o, "label_embedding", le);
-    /* the text encoder by name (what the query engine reads; "exact" = hashed class names) */
-    cJSON_AddStringToObject(o, "encoder", !strcmp(le, "hash") ? "exact" : "clip");
+    /* the text encoder by name (what the query engine reads): hashed class names are answered by
+     * the lexical encoder when their names are known, else by the exact one */
+    cJSON *classes = !strcmp(le, "hash") ? feature_classes(features_dir, absc) : NULL;
+    cJSON_AddStringToObject(o, "encoder", strcmp(le, "hash") ? SP_ENCODER_CLIP : classes ? SP_ENCODER_LEXICAL
+                                                                                  : SP_ENCODER_EXACT);
+    if (classes) cJSON_AddItemToObject(o, "classes", classes);
     if (f.model_path[0]) cJSON_AddStringToObject(o, "model", f.model_path);
     else cJSON_AddNullToObject(o, "model");
     cJSON_AddStringToObject(o, "method", method);
@@ -199,5 +227,36 @@ int sp_semantic_lift_model(const char *model_dir, const char *features_dir,
     if (!rc) rc = sp_ply_write_splat(path, &s, err);
     if (!rc) rc = sp_semantic_write_sidecar(model_dir, features_dir, colmap, "lift", err);
     sp_splat_free(&s);
+    return rc;
+}
+
+int sp_semantic_set_encoder(const char *model_dir, const char *encoder, sp_error *err)
+{
+    char path[2048];
+    sp_path_join(path, sizeof path, model_dir, "semantic.json");
+    const sem_encoder *enc = sem_encoder_find(encoder);
+    if (!enc)
+        return sp_error_set(err, SP_E_ARG, "text encoder '%s' is not clip, lexical or exact", encoder ? encoder : "");
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return rc;
+    const char *le = jstr(js, "label_embedding");
+    int label = le && !strcmp(le, "hash");
+    char (*names)[128] = NULL;
+    int n = 0;
+    if (enc->label_space != label)
+        rc = sp_error_set(err, SP_E_UNSUPPORTED, "%s: the text encoder %s does not fit its features (%s): use %s",
+                          path, encoder, label ? "hashed class names" : "CLIP's text space",
+                          label ? "lexical or exact" : "clip");
+    else if (!strcmp(encoder, SP_ENCODER_LEXICAL) && !(rc = sem_model_classes(model_dir, js, &names, &n, err)) && n == 0)
+        rc = sp_error_set(err, SP_E_NOTFOUND, "%s: the lexical encoder needs the scene's class names (no \"classes\", "
+                          "and no labels.json beside the capture it names)", path);
+    free(names);
+    if (!rc) {
+        cJSON_DeleteItemFromObject(js, "encoder");
+        cJSON_AddStringToObject(js, "encoder", encoder);
+        rc = sp_json_write_file(path, js, err);
+    }
+    cJSON_Delete(js);
     return rc;
 }

@@ -7,6 +7,8 @@
 #include "semsplat/semantic.h"
 
 struct sp_clip;
+struct cJSON;
+typedef struct sem_encoder sem_encoder;
 
 struct sp_query_engine {
     pthread_mutex_t mu;        /* every public call holds it: scratch, caches and rasters below */
@@ -20,7 +22,13 @@ struct sp_query_engine {
     size_t n_cams;
     sp_camera *cams;           /* in the engine's frame */
     char (*cam_names)[256];
-    sp_query_source source;    /* encoder ("exact": sp_label_embedding, "clip": the text tower) */
+    sp_query_source source;    /* encoder ("exact": sp_label_embedding, "clip": the text tower,
+                                * "lexical": WordNet against the classes) */
+    const sem_encoder *enc;    /* the encoder's operations (source.encoder names it) */
+    int n_classes;
+    char (*classes)[128];      /* label scenes: the class names (NULL when unknown) */
+    sp_lexicon *lx;            /* lexical: WordNet and the classes prepared against it */
+    sp_lex_vocab *vocab;
     sp_frame frame;
     sp_query_frame qframe;     /* the frame as results carry it */
     char clip_path[1024];
@@ -41,6 +49,46 @@ struct sp_query_engine {
 
 /* Every numeric query option in its range (opts.c); SP_E_ARG naming the option otherwise. */
 int sem_check_opts(const sp_query_opts *o, sp_error *err);
+/* ---- text encoders (encoder.c): one table of operations per encoder ---------------------------
+ * Every function is called with the engine's lock held. */
+struct sem_encoder {
+    const char *name;
+    int label_space; /* its features are sp_label_embedding vectors (exact, lexical) */
+    /* text -> full_dim unit embedding */
+    int (*embed)(sp_query_engine *e, const char *text, float *out, sp_error *err);
+    /* the whole query (lexical), or NULL: embed, localize, then explain */
+    int (*query)(sp_query_engine *e, const char *text, const sp_query_opts *o, sp_query_result *res,
+                 sp_error *err);
+    /* fills threshold, matches and explanation of an embed-and-localize result */
+    int (*explain)(sp_query_engine *e, const sp_query_opts *o, sp_query_result *res, sp_error *err);
+};
+
+/* The encoder of that name, or NULL. */
+const sem_encoder *sem_encoder_find(const char *name);
+/* Prepares the engine's encoder `name` (lexical: the lexicon and the vocabulary of e->classes);
+ * wordnet_dir / regions_path as in sp_encoder_opts. Sets e->enc and e->source.encoder. */
+int sem_encoder_prepare(sp_query_engine *e, const char *name, const char *wordnet_dir,
+                        const char *regions_path, sp_error *err);
+/* Text embeddings in the feature space itself: hashed names for label features, CLIP's text tower
+ * otherwise (what the canonical negatives are embedded with, for every encoder). */
+int sem_embed_base(sp_query_engine *e, const char *const *texts, int n, float *out, sp_error *err);
+/* sp_query_engine_query_embedding without the lock (callers hold it): options checked, res empty
+ * on error. */
+int sem_query_embedding(sp_query_engine *e, const float *embedding, const char *label,
+                        const sp_query_opts *o, sp_query_result *res, sp_error *err);
+/* The lexical encoder's whole query on the engine (lex_ground.c): sp_lex_query with options o,
+ * turned into a query result with its matches, regions, relation and explanation. */
+int sem_lex_engine_query(sp_query_engine *e, const char *text, const sp_query_opts *o,
+                         sp_query_result *res, sp_error *err);
+/* The class names of a model folder whose sidecar is js (semantic.json "classes", else the
+ * labels.json beside the capture it names; "background" and repeats dropped): *names malloc'd,
+ * *n their count; 0 with *n = 0 when it has none. */
+int sem_model_classes(const char *model_dir, const struct cJSON *sidecar, char (**names)[128], int *n,
+                      sp_error *err);
+
+/* One match as JSON (result.c): class, role, score, match (score >= threshold), kind, senses,
+ * path, gloss_words, definition. */
+struct cJSON *sem_match_json(const sp_query_match *m, float threshold);
 
 /* Points with weights clustered on a voxel grid (26-connected components) into instances,
  * heaviest first, lighter than min_fraction of the heaviest dropped; voxels whose points weigh

@@ -395,7 +395,7 @@ static int fw_suggest(void *ctx, const char *text, char (*names)[64], int max)
 static void fw_close(void *ctx) { free(ctx); }
 
 static const agent_world_ops fw_ops = {"fake", fw_query, fw_plan, fw_render, fw_describe, fw_explore,
-                                       fw_cell, fw_region_of, fw_suggest, fw_close};
+                                       fw_cell, fw_region_of, fw_suggest, fw_close, NULL};
 
 static agent_world fw_world(fake_world **handle)
 {

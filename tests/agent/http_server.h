@@ -48,7 +48,7 @@ typedef struct test_server {
 } test_server;
 
 /* strcasestr is a GNU extension; this is the portable few lines. */
-static const char *ts_strcasestr(const char *h, const char *n)
+static inline const char *ts_strcasestr(const char *h, const char *n)
 {
     size_t k = strlen(n);
     for (; *h; h++)
@@ -56,14 +56,14 @@ static const char *ts_strcasestr(const char *h, const char *n)
     return NULL;
 }
 
-static void ts_sleep_ms(int ms)
+static inline void ts_sleep_ms(int ms)
 {
     struct timespec t = {ms / 1000, (long)(ms % 1000) * 1000000L};
     nanosleep(&t, NULL);
 }
 
 /* Reads until the headers and Content-Length bytes of body are in, or 5 s pass. */
-static int ts_read_request(int c, ts_request *r)
+static inline int ts_read_request(int c, ts_request *r)
 {
     char *buf = malloc(1 << 20);
     size_t n = 0, need = 0, hlen = 0;
@@ -100,7 +100,7 @@ static int ts_read_request(int c, ts_request *r)
     return ok;
 }
 
-static void ts_send_all(int c, const char *p, size_t n)
+static inline void ts_send_all(int c, const char *p, size_t n)
 {
     while (n > 0) {
         ssize_t k = send(c, p, n, MSG_NOSIGNAL);
@@ -109,7 +109,7 @@ static void ts_send_all(int c, const char *p, size_t n)
     }
 }
 
-static void ts_handle(test_server *s, int c)
+static inline void ts_handle(test_server *s, int c)
 {
     ts_request *r = &s->req[s->n_req < TS_MAX_REQ ? s->n_req : TS_MAX_REQ - 1];
     if (!ts_read_request(c, r)) return;
@@ -133,7 +133,7 @@ static void ts_handle(test_server *s, int c)
     free(dyn);
 }
 
-static void *ts_main(void *arg)
+static inline void *ts_main(void *arg)
 {
     test_server *s = arg;
     while (!s->stop) {
@@ -148,7 +148,7 @@ static void *ts_main(void *arg)
     return NULL;
 }
 
-static int ts_start(test_server *s, const ts_response *script, int n, void *user)
+static inline int ts_start(test_server *s, const ts_response *script, int n, void *user)
 {
     memset(s, 0, sizeof *s);
     s->script = script, s->n_script = n, s->user = user;
@@ -170,7 +170,7 @@ static int ts_start(test_server *s, const ts_response *script, int n, void *user
     return pthread_create(&s->thread, NULL, ts_main, s);
 }
 
-static void ts_stop(test_server *s)
+static inline void ts_stop(test_server *s)
 {
     s->stop = 1;
     pthread_join(s->thread, NULL);
@@ -180,7 +180,7 @@ static void ts_stop(test_server *s)
 }
 
 /* A header's value in a recorded request ("" when absent). */
-static const char *ts_header(const ts_request *r, const char *name, char *out, size_t cap)
+static inline const char *ts_header(const ts_request *r, const char *name, char *out, size_t cap)
 {
     char key[128];
     snprintf(key, sizeof key, "\r\n%s:", name);

@@ -196,6 +196,56 @@ static const row held_out[] = {
     {"do an exploration of the dining room", E, "dining room"},
 };
 
+/* Round 2 (a2-agent): forty phrasings written by someone who did not write the parser, without
+ * reading its word lists, and run once before any change. First run: 36/40 (90.0 %; go 8/10,
+ * trajectories 10/10, describe 10/10, explore 8/10). The misses ("drive the robot to the
+ * wardrobe", "go find the microwave and stop next to it", "scout the hallway", "wander around
+ * the bathroom ...") were then fixed by general rules (a self-reference between the verb and
+ * its particle, "find"/"locate" after a go verb, four exploring verbs), so today's 40/40
+ * overstates the parser on unseen phrasings: 90 % is the honest figure. */
+static const row fresh[] = {
+    {"could you please drive the robot to the wardrobe", G, "wardrobe"},
+    {"I'd like you to roll over to the armchair", G, "armchair"},
+    {"get yourself to the bookshelf", G, "bookshelf"},
+    {"proceed to the tv stand", G, "tv stand"},
+    {"go find the microwave and stop next to it", G, "microwave"},
+    {"make your way to the front door", G, "front door"},
+    {"robot, travel to the nearest chair", G, "chair", NEAR},
+    {"go to chair number 2", G, "chair", IDX, 2},
+    {"walk up to the kitchen sink please", G, "kitchen sink"},
+    {"return to the couch", G, "couch"},
+    {"what are the best routes to the bed?", T, "bed"},
+    {"give me three different paths to the stove", T, "stove", 0, 0, 3},
+    {"plot a few candidate trajectories to the front door", T, "front door"},
+    {"list the 2 best ways to get to the wardrobe", T, "wardrobe", 0, 0, 2},
+    {"show all possible paths that lead to the bookshelf", T, "bookshelf"},
+    {"I'd like to see the top 4 trajectories reaching the sink", T, "sink", 0, 0, 4},
+    {"compare routes to the armchair", T, "armchair"},
+    {"which paths could the robot take to the dining table?", T, "dining table"},
+    {"visualize the ranked trajectories toward the tv", T, "tv"},
+    {"display 5 alternative routes to the refrigerator", T, "refrigerator", 0, 0, 5},
+    {"what's around the couch?", D, "couch"},
+    {"which objects are close to the bed?", D, "bed"},
+    {"tell me what is next to the stove", D, "stove"},
+    {"describe the surroundings of the tv stand", D, "tv stand"},
+    {"what can you see near the front door?", D, "front door"},
+    {"list everything within 2 meters of the dining table", D, "dining table", 0, 0, 0, 2.0},
+    {"what furniture is beside the wardrobe?", D, "wardrobe"},
+    {"is there anything near the sink?", D, "sink"},
+    {"what things are in the vicinity of the armchair?", D, "armchair"},
+    {"what objects are within 1.5 m of the bookshelf", D, "bookshelf", 0, 0, 0, 1.5},
+    {"explore the bedroom", E, "bedroom"},
+    {"go explore around the dining table", E, "dining table"},
+    {"take a look around the living room", E, "living room"},
+    {"scout the hallway", E, "hallway"},
+    {"survey the area near the front door", E, "front door"},
+    {"can you explore the kitchen for me?", E, "kitchen"},
+    {"wander around the bathroom and look at everything", E, "bathroom"},
+    {"inspect the region around the couch", E, "couch"},
+    {"do a sweep of the office", E, "office"},
+    {"map out the space around the bed", E, "bed"},
+};
+
 static const char *const ask_back[] = {
     /* nonsense */
     "asdfgh qwerty", "purple monkey dishwasher", "hello", "the quick brown fox jumps over the lazy dog",
@@ -253,6 +303,17 @@ static void test_held_out(void)
     CHECK_MSG(right >= 0.8 * n, "%d of %d", right, n);
 }
 
+static void test_fresh(void)
+{
+    int n = (int)(sizeof fresh / sizeof fresh[0]), per_kind[8] = {0}, kinds[8] = {0};
+    int right = score(fresh, n, per_kind, kinds);
+    fprintf(stderr, "parser, round-2 phrasings: %d/%d right (%.1f%%); go %d/%d, trajectories %d/%d, "
+                    "describe %d/%d, explore %d/%d\n",
+            right, n, 100.0 * right / n, per_kind[G], kinds[G], per_kind[T], kinds[T], per_kind[D],
+            kinds[D], per_kind[E], kinds[E]);
+    CHECK_MSG(right >= 0.95 * n, "%d of %d", right, n);
+}
+
 static void test_ask_back(void)
 {
     int n = (int)(sizeof ask_back / sizeof ask_back[0]);
@@ -301,6 +362,7 @@ int main(void)
 {
     RUN(test_table);
     RUN(test_held_out);
+    RUN(test_fresh);
     RUN(test_ask_back);
     RUN(test_structure);
     RUN(test_garbage);

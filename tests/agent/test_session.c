@@ -4,6 +4,7 @@
  * speed clamp), plus structured errors for invalid arguments. */
 #include <cjson/cJSON.h>
 
+#include "agent_test.h"
 #include "fake_world.h"
 #include "test.h"
 
@@ -25,33 +26,6 @@ static sp_agent_session *open_default(const char *name, fake_world **fw)
 {
     sp_agent_config cfg = sp_agent_config_default();
     return open_session(&cfg, name, 3.0, 1.8, fw);
-}
-
-static cJSON *result_of(const sp_agent_answer *a, const char *tool)
-{
-    for (int i = a->n_trace - 1; i >= 0; i--)
-        if (!strcmp(a->trace[i].tool, tool)) return cJSON_Parse(a->trace[i].result);
-    return NULL;
-}
-
-static const cJSON *data_of(const cJSON *r) { return cJSON_GetObjectItemCaseSensitive(r, "data"); }
-
-static char *run_tool(sp_agent_session *s, const char *name, const char *args, int *is_error)
-{
-    sp_agent_call c = {0};
-    snprintf(c.id, sizeof c.id, "t1");
-    snprintf(c.name, sizeof c.name, "%s", name);
-    c.arguments = (char *)args;
-    return agent_tool_run(s, &c, is_error);
-}
-
-static const char *error_code(const char *result, char *buf, size_t cap)
-{
-    cJSON *r = cJSON_Parse(result);
-    const cJSON *c = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(r, "error"), "code");
-    snprintf(buf, cap, "%s", cJSON_IsString(c) ? c->valuestring : "");
-    cJSON_Delete(r);
-    return buf;
 }
 
 static sp_agent_pose pose_of(sp_agent_session *s)

@@ -1,9 +1,9 @@
-/* Nav2 map_server maps (sp_ros_grid_load_yaml: map.yaml and its PGM): the first byte picks which
- * file the rest is (even: map.yaml beside a fixed 4x3 map.pgm; odd: map.pgm beside a fixed
- * map.yaml naming it). Never a crash, a clear error, and a grid that loads has cells in the
- * occupancy range and a positive resolution. */
+/* Nav2 map_server maps (sp_costmap_read_map: map.yaml and its PGM, then inflation): the first
+ * byte picks which file the rest is (even: map.yaml beside a fixed 4x3 map.pgm; odd: map.pgm
+ * beside a fixed map.yaml naming it). Never a crash, a clear error, and a map that loads has
+ * cells of the three kinds, costs in 0..255, a positive resolution and a finite origin. */
 #include "fuzz_util.h"
-#include "semsplat/ros.h"
+#include "semsplat/nav.h"
 
 static const char yaml[] = "image: map.pgm\nresolution: 0.05\norigin: [-1.0, -2.0, 0.0]\nnegate: 0\n"
                            "occupied_thresh: 0.65\nfree_thresh: 0.196\nmode: trinary\n";
@@ -16,19 +16,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     int fuzz_yaml = data[0] % 2 == 0;
     fz_write("map.yaml", fuzz_yaml ? (const void *)(data + 1) : yaml, fuzz_yaml ? size - 1 : sizeof yaml - 1, yp);
     fz_write("map.pgm", fuzz_yaml ? (const void *)pgm : data + 1, fuzz_yaml ? sizeof pgm - 1 : size - 1, pp);
-    sp_ros_grid g;
+    sp_costmap cm;
     sp_error err = {0};
-    memset(&g, 0, sizeof g);
-    int rc = sp_ros_grid_load_yaml(yp, &g, &err);
+    memset(&cm, 0, sizeof cm);
+    int rc = sp_costmap_read_map(&cm, yp, NULL, &err);
     if (rc) {
-        fz_check_error(rc, &err, "sp_ros_grid_load_yaml");
+        fz_check_error(rc, &err, "sp_costmap_read_map");
     } else {
-        FZ_ASSERT(g.width > 0 && g.height > 0 && g.resolution_m > 0 && isfinite(g.resolution_m), "grid %dx%d at %g",
-                  g.width, g.height, g.resolution_m);
-        FZ_ASSERT(isfinite(g.origin_x) && isfinite(g.origin_y) && isfinite(g.origin_yaw), "origin not finite");
-        for (size_t i = 0; i < (size_t)g.width * g.height; i++)
-            FZ_ASSERT(g.cells[i] >= -1 && g.cells[i] <= 100, "cell %zu = %d", i, g.cells[i]);
+        FZ_ASSERT(cm.nx > 0 && cm.ny > 0 && cm.res > 0 && isfinite(cm.res), "map %dx%d at %g", cm.nx, cm.ny, cm.res);
+        FZ_ASSERT(isfinite(cm.origin[0]) && isfinite(cm.origin[1]), "origin not finite");
+        for (size_t i = 0; i < (size_t)cm.nx * cm.ny; i++)
+            FZ_ASSERT(cm.occ[i] == SP_CELL_FREE || cm.occ[i] == SP_CELL_OCCUPIED || cm.occ[i] == SP_CELL_UNKNOWN,
+                      "cell %zu = %d", i, cm.occ[i]);
     }
-    sp_ros_grid_free(&g);
+    sp_costmap_free(&cm);
     return 0;
 }

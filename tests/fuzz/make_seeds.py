@@ -245,6 +245,21 @@ def main():
         put("labels_json", "real", real("cap/labels.json"))
         put("labels_json", "array", json.dumps({"labels": [{"id": 1, "class": "chair"}, {"id": 7, "model": "table_2"},
                                                            {"id": 3, "name": "lamp"}]}))
+        # frame.json (real, scaled and rotated align frames), ground_truth.json, the region table
+        put("frame_json", "real", real("model/frame.json") if os.path.exists(os.path.join(tmp, "model/frame.json")) else real("cap/frame.json"))
+        put("frame_json", "align_fit", json.dumps({"format": "semsplat-frame-1", "source": "align", "frame": "world",
+                                                   "world_from_model": [[0, -2, 0, 1.5], [2, 0, 0, -3], [0, 0, 2, 0.25], [0, 0, 0, 1]],
+                                                   "up": "+z", "units": "m", "residual_m": 0.02, "note": "semsplat align",
+                                                   "fit": {"inliers": 4, "rms_m": 0.02}}))
+        put("frame_json", "colmap", json.dumps({"format": "semsplat-frame-1", "source": "colmap", "frame": "colmap",
+                                                "world_from_model": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]],
+                                                "up": "unknown", "units": "unknown", "residual_m": None, "note": ""}))
+        put("ground_truth_json", "real", real("cap/ground_truth.json"))
+        put("ground_truth_json", "centre", json.dumps({"world": "w.world", "objects": [
+            {"name": "chair_1", "class": "chair", "aabb_min": [0, 0, 0], "aabb_max": [1, 1, 1], "aabb_center": [0.5, 0.5, 0.5]},
+            {"name": "lamp", "class": "lamp", "aabb_min": [-1, 2, 0], "aabb_max": [-0.5, 2.5, 1.8]}]}))
+        put("regions_json", "bundled", read(os.path.join(ROOT, "data/semantic/regions.json")))
+        put("regions_json", "small", json.dumps({"_comment": "x", "kitchen": ["refrigerator", "oven"], "office": ["desk"]}))
         # CLIP: the tiny fixture config cut to the harness's vocabulary, plus preprocessing keys
         cfg = json.loads(read(os.path.join(ROOT, "tests/fixtures/clip/tiny/config.json")))
         cfg["text_config"]["vocab_size"] = 64

@@ -5,10 +5,12 @@
 #define SP_TEST_NAV_SCENE_H
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "semsplat/core.h"
+#include "semsplat/io.h"
 
 typedef struct {
     float lo[3], hi[3];
@@ -122,6 +124,55 @@ static inline int ns_make_cams(sp_camera **out, size_t *n_out, int w, int h)
     *out = cams;
     *n_out = n;
     return 0;
+}
+
+/* Writes the room as a model folder: <dir>/model/splat.ply and train.json naming the capture
+ * <dir>/capture/sparse/0 (one PINHOLE camera, an image per pose of ns_make_cams at w x h; no
+ * images, which the costmap does not need). model gets the model folder's path. */
+static inline int ns_write_model(const char *dir, int with_pillar, int w, int h, char *model,
+                                 size_t cap, sp_error *err)
+{
+    char capture[1200], path[1300];
+    snprintf(model, cap, "%s/model", dir);
+    snprintf(capture, sizeof capture, "%s/capture", dir);
+    sp_splat s;
+    sp_camera *cams = NULL;
+    size_t n = 0;
+    int rc = ns_make_splat(&s, with_pillar, err);
+    if (rc) return rc;
+    if (ns_make_cams(&cams, &n, w, h)) rc = sp_error_set(err, SP_E_NOMEM, "ns: cameras");
+    snprintf(path, sizeof path, "%s/splat.ply", model);
+    if (!rc) rc = sp_mkdirs(model, err);
+    if (!rc) rc = sp_ply_write_splat(path, &s, err);
+    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, (uint64_t)w, (uint64_t)h, 4, {0}};
+    sp_colmap_image *ims = calloc(n ? n : 1, sizeof *ims);
+    char (*names)[32] = calloc(n ? n : 1, 32);
+    if (!rc && (!ims || !names)) rc = sp_error_set(err, SP_E_NOMEM, "ns: images");
+    if (!rc) {
+        cam.params[0] = cams[0].fx, cam.params[1] = cams[0].fy;
+        cam.params[2] = cams[0].cx, cam.params[3] = cams[0].cy;
+        for (size_t i = 0; i < n; i++) {
+            ims[i].id = (uint32_t)i + 1, ims[i].camera_id = 1;
+            sp_colmap_image_set_pose(&ims[i], &cams[i]);
+            snprintf(names[i], 32, "%05zu.png", i);
+            ims[i].name = names[i];
+        }
+        sp_colmap_model m;
+        memset(&m, 0, sizeof m);
+        m.n_cameras = 1, m.cameras = &cam, m.n_images = n, m.images = ims;
+        snprintf(path, sizeof path, "%s/sparse/0", capture);
+        rc = sp_mkdirs(path, err);
+        if (!rc) rc = sp_colmap_write_bin(path, &m, err);
+    }
+    if (!rc) {
+        char js[1500];
+        snprintf(js, sizeof js, "{\"settings\": {\"colmap\": \"%s\"}}", capture);
+        snprintf(path, sizeof path, "%s/train.json", model);
+        rc = sp_write_file_atomic(path, js, strlen(js), err);
+    }
+    free(ims), free(names), free(cams);
+    sp_splat_free(&s);
+    return rc;
 }
 
 #endif

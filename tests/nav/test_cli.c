@@ -16,40 +16,7 @@ static char g_model[1100];
 static void write_model(void)
 {
     sp_error err = {0};
-    const char *dir = test_tmpdir("nav_cli");
-    char cap[1200], path[1300];
-    snprintf(g_model, sizeof g_model, "%s/model", dir);
-    snprintf(cap, sizeof cap, "%s/capture", dir);
-    sp_splat s;
-    sp_camera *cams = NULL;
-    size_t n = 0;
-    CHECK_OK(ns_make_splat(&s, 1, &err), &err);
-    CHECK(ns_make_cams(&cams, &n, 160, 120) == 0);
-    CHECK_OK(sp_mkdirs(g_model, &err), &err);
-    snprintf(path, sizeof path, "%s/splat.ply", g_model);
-    CHECK_OK(sp_ply_write_splat(path, &s, &err), &err);
-    /* the capture: one PINHOLE camera, an image per pose */
-    snprintf(path, sizeof path, "%s/sparse/0", cap);
-    CHECK_OK(sp_mkdirs(path, &err), &err);
-    sp_colmap_model m;
-    memset(&m, 0, sizeof m);
-    sp_colmap_camera cam = {1, SP_COLMAP_PINHOLE, 160, 120, 4, {cams[0].fx, cams[0].fy, cams[0].cx, cams[0].cy}};
-    sp_colmap_image *ims = calloc(n, sizeof *ims);
-    char (*names)[32] = calloc(n, 32);
-    for (size_t i = 0; i < n; i++) {
-        ims[i].id = (uint32_t)i + 1, ims[i].camera_id = 1;
-        sp_colmap_image_set_pose(&ims[i], &cams[i]);
-        snprintf(names[i], 32, "%05zu.png", i);
-        ims[i].name = names[i];
-    }
-    m.n_cameras = 1, m.cameras = &cam, m.n_images = n, m.images = ims;
-    CHECK_OK(sp_colmap_write_bin(path, &m, &err), &err);
-    char js[1500];
-    snprintf(js, sizeof js, "{\"settings\": {\"colmap\": \"%s\"}}", cap);
-    snprintf(path, sizeof path, "%s/train.json", g_model);
-    CHECK_OK(sp_write_file_atomic(path, js, strlen(js), &err), &err);
-    free(ims), free(names), free(cams);
-    sp_splat_free(&s);
+    CHECK_OK(ns_write_model(test_tmpdir("nav_cli"), 1, 160, 120, g_model, sizeof g_model, &err), &err);
 }
 
 static void test_plan_to_point(void)

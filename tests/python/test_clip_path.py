@@ -62,6 +62,24 @@ def main():
         want = {"encoder": "clip", "features": "clip", "ground_truth": False, "note": None}
         check(r.source == want and j["source"] == want, "source: Python %s, CLI %s" % (r.source, j["source"]))
         check(r.frame["name"] == "world" and r.frame == j["frame"], "frame: Python %s, CLI %s" % (r.frame, j["frame"]))
+        # the encoder that answered is named at the top of the result too, with what it understood
+        check(sem["encoder"] == "clip", "semantic.json records encoder clip: %s" % sem.get("encoder"))
+        check(q.encoder == "clip" and r.encoder == "clip" and j["encoder"] == "clip",
+              "encoder: engine %s, Python %s, CLI %s" % (q.encoder, r.encoder, j["encoder"]))
+        check(r.matches == [] and j["matches"] == [], "clip matches no class list")
+        check(abs(r.threshold - 0.2) < 1e-6 and abs(j["threshold"] - 0.2) < 1e-6, "clip threshold = min_confidence")
+        check(r.explanation is not None and "CLIP" in r.explanation and r.explanation == j["explanation"],
+              "clip explanation: %r" % r.explanation)
+    # a CLIP folder refuses the encoders of hashed labels, naming why
+    p = subprocess.run([binary, "query", "--model", model, "--device", "cpu", "--encoder", "lexical", text],
+                       capture_output=True, text=True)
+    check(p.returncode == 1 and "does not fit its features" in p.stderr, "query --encoder lexical on CLIP "
+          "features: exit %d, %s" % (p.returncode, p.stderr.strip()))
+    try:
+        gq.SemanticSplatQuery(model_path=model, device="cpu", encoder="exact")
+        check(False, "encoder='exact' on CLIP features raises")
+    except ValueError as e:
+        check("does not fit" in str(e), "Python names why: %s" % e)
     print("clip path: found %s, confidence %.3f, %d instances (random tiny weights)"
           % (r.found, r.confidence, len(r.instances)))
     return 1 if checks.failures else 0

@@ -27,7 +27,8 @@ def test_closed(model):
                      ("relevancy", lambda: q.relevancy("table")), ("heatmap", lambda: q.heatmap("table", 0)),
                      ("camera", lambda: q.camera(0)), ("n_cameras", lambda: q.n_cameras),
                      ("query_embedding", lambda: q.query_embedding(np.zeros(512, np.float32))),
-                     ("gaussian_positions", lambda: q.gaussian_positions()), ("device", lambda: q.device)]:
+                     ("gaussian_positions", lambda: q.gaussian_positions()), ("device", lambda: q.device),
+                     ("encoder", lambda: q.encoder)]:
         e = raises(ValueError, fn, "after close: " + name)
         check(e is None or "closed" in str(e), "after close: %s says closed: %s" % (name, e))
     with gq.SemanticSplatQuery(model_path=model, device="cpu") as q2:
@@ -47,6 +48,10 @@ def test_errors(model):
         raises(ValueError, lambda: q.query_embedding(np.zeros(3, np.float32)), "bad embedding shape")
         raises(IndexError, lambda: q.camera(q.n_cameras), "camera out of range")
     raises(ValueError, lambda: gq.SemanticSplatQuery(model_path=model, device="tpu"), "bad device")
+    raises(ValueError, lambda: gq.SemanticSplatQuery(model_path=model, device="cpu", encoder="bert"), "bad encoder")
+    e = raises(FileNotFoundError, lambda: gq.SemanticSplatQuery(model_path=model, device="cpu", encoder="lexical",
+                                                                wordnet_dir="/nonexistent"), "no WordNet")
+    check(e is None or "wordnet" in str(e), "names the missing WordNet: %s" % e)
 
 
 class FakeLib:

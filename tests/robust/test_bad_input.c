@@ -330,6 +330,7 @@ static int bad_values(kind k, bad_value *v)
 /* ---- running a case ------------------------------------------------------------------------------ */
 
 static int n_cases, n_failed;
+static double case_seconds;
 
 /* argv of the command's valid invocation, file placeholders expanded, OUT = out. */
 static int base_argv(const command *c, const char *out, char *buf, size_t cap, char **argv)
@@ -418,6 +419,10 @@ static void expect_failure(const command *c, char **argv, const char *flag, cons
     rb_result r;
     rb_run_argv(argv, NULL, 60, -1, &r);
     n_cases++;
+    case_seconds += r.seconds;
+    if (r.seconds > 2) { /* what makes the table slow (CI time) */
+        fprintf(stderr, "slow case %.1f s: %s %s (%s)\n", r.seconds, c->name, flag ? flag : "(argument)", what);
+    }
     int named = names_flag(r.out, flag) || (needle[0] && strstr(r.out, needle)) ||
                 (value && value[0] && strlen(value) < 200 && strstr(r.out, value)) ||
                 (value && !value[0] && strstr(r.out, "''"));
@@ -441,6 +446,7 @@ static void one_command(const command *c)
 {
     char buf[8192], *argv[128], out[1200];
     int before = n_failed, cases = n_cases;
+    double t0 = sp_time_now();
     snprintf(out, sizeof out, "%s/out-%s", base_dir, c->name);
     /* the valid invocation works, or its bad cases prove nothing */
     fresh_out(c, out, 0);
@@ -470,13 +476,14 @@ static void one_command(const command *c)
             expect_failure(c, argv, fl->flag, v[i].needle, v[i].what, v[i].value, v[i].may_succeed);
         }
     }
-    fprintf(stderr, "%-11s %3d cases, %d not handled\n", c->name, n_cases - cases, n_failed - before);
+    fprintf(stderr, "%-11s %3d cases, %d not handled, %.1f s\n", c->name, n_cases - cases, n_failed - before,
+            sp_time_now() - t0);
 }
 
 int main(void)
 {
     if (make_fixtures()) return 1;
     for (size_t i = 0; i < N_COMMANDS; i++) one_command(&commands[i]);
-    fprintf(stderr, "%d bad-input cases, %d not handled\n", n_cases, n_failed);
+    fprintf(stderr, "%d bad-input cases, %d not handled, %.0f s in the cases\n", n_cases, n_failed, case_seconds);
     return TEST_EXIT();
 }

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -18,7 +19,8 @@
 #include "semsplat/ros.h"
 
 /* An 8 m x 6 m room at 5 cm: walls 0.2 m thick around it, an inner wall at x = 4 with a door
- * at 4 < y < 5, and a block of unknown space at 6.5..7.5 x 0.5..1.5. */
+ * at 4 < y < 5, a block of unknown space at 6.5..7.5 x 0.5..1.5, and a closed closet (walls
+ * 0.1 m thick around 6.6..7.6 x 3.0..4.0) whose free inside nobody can reach. */
 #define ROOM_W 160
 #define ROOM_H 120
 #define ROOM_RES 0.05
@@ -28,6 +30,8 @@ static inline int8_t room_cell_at(double x, double y)
     if (x < 0.2 || x > 7.8 || y < 0.2 || y > 5.8) return 100;
     if (x > 3.9 && x < 4.1 && !(y > 4.0 && y < 5.0)) return 100;
     if (x > 6.5 && x < 7.5 && y > 0.5 && y < 1.5) return -1;
+    if (x > 6.6 && x < 7.6 && y > 3.0 && y < 4.0 && !(x > 6.7 && x < 7.5 && y > 3.1 && y < 3.9))
+        return 100;
     return 0;
 }
 
@@ -71,7 +75,11 @@ static inline const char *room_write_yaml(const char *dir)
 }
 
 /* A domain id in 1..230 and a namespace unique to this run, so parallel runs (other tests,
- * other people on the machine) never see each other's robots. */
+ * other people on the machine) never see each other's robots. The domain is also reserved on
+ * this machine for as long as the process lives (an flock on /tmp/semsplat-ros-domain-<d>.lock,
+ * released by the kernel when it exits, however it exits): the namespace keeps topics apart,
+ * but ros_discovery_info and the peers' distro are domain-wide, and a test sharing its domain
+ * with another run saw that run's nodes (test_rmw failed so). */
 static inline int test_random_domain(char *ns, size_t cap)
 {
     struct timespec ts;
@@ -80,7 +88,16 @@ static inline int test_random_domain(char *ns, size_t cap)
     s ^= s >> 17;
     s *= 0x9e3779b97f4a7c15ull;
     snprintf(ns, cap, "/t%ld_%llu", (long)getpid(), (s >> 40) % 100000);
-    return 1 + (int)((s >> 32) % 230);
+    int first = (int)((s >> 32) % 230);
+    for (int k = 0; k < 230; k++) {
+        int d = 1 + (first + k) % 230;
+        char lock[64];
+        snprintf(lock, sizeof lock, "/tmp/semsplat-ros-domain-%d.lock", d);
+        int fd = open(lock, O_RDONLY | O_CREAT | O_CLOEXEC, 0666);
+        if (fd >= 0 && flock(fd, LOCK_EX | LOCK_NB) == 0) return d; /* fd stays open: held */
+        if (fd >= 0) close(fd);
+    }
+    return 1 + first; /* every domain taken (or /tmp unwritable): share one */
 }
 
 /* Starts argv[0] with argv, stdout and stderr to log_path. Returns the pid (or -1). */
@@ -120,6 +137,21 @@ static inline void test_stop(pid_t pid)
         kill(pid, SIGKILL);
         test_wait_pid(pid, 3.0);
     }
+}
+
+/* Sends a NavigateToPose goal at (x, y) and returns the state it was answered with (REJECTED,
+ * ACCEPTED, ...), or UNKNOWN when sending failed (err says why). The goal is let go. */
+static inline sp_ros_goal_state test_goal_answer(sp_ros_bridge *b, double x, double y,
+                                                 sp_error *err)
+{
+    sp_ros_pose goal = {x, y, 0, 0};
+    sp_ros_goal *g = NULL;
+    sp_ros_goal_status st;
+    st.state = SP_ROS_GOAL_UNKNOWN;
+    if (sp_ros_navigate_to(b, &goal, NULL, &g, err) == 0 && sp_ros_goal_poll(g, &st, err))
+        st.state = SP_ROS_GOAL_UNKNOWN;
+    sp_ros_goal_free(g);
+    return st.state;
 }
 
 static inline int test_wait_file(const char *path, double timeout_s)

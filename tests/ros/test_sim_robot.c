@@ -23,9 +23,9 @@ static pid_t start_robot(const char *distro, const char *tag)
     char *argv[] = {SP_BUILD_DIR "/semsplat", "sim-robot", "--map", yaml, "--start", "1,1,0",
                     "--loopback", "--domain", dom, "--namespace", ns, "--ros-distro",
                     (char *)distro, "--max-speed", "1.0", "--time-scale", "2", "--duration",
-                    "120", "--ready-file", ready, NULL};
+                    "300", "--ready-file", ready, NULL}; /* the test stops it; 300 s if it dies */
     pid_t pid = test_spawn(argv, log);
-    if (test_wait_file(ready, 20.0)) {
+    if (test_wait_file(ready, 60.0)) {
         fprintf(stderr, "sim-robot did not get ready; its log:\n");
         test_print_file(log);
         test_stop(pid);
@@ -62,11 +62,12 @@ static void on_feedback(void *user, const sp_ros_goal_status *st)
     f->last_dist = st->feedback.distance_remaining_m;
 }
 
-/* Fresh odometry, waiting for the robot to settle (twist ~ 0). */
+/* Fresh odometry, waiting for the robot to settle (twist ~ 0): it brakes in about 1 s, the
+ * rest is room for a loaded machine. */
 static int settled_odom(sp_ros_bridge *b, sp_ros_odom *o)
 {
     sp_error err = {0};
-    double until = sp_time_now() + 5.0;
+    double until = sp_time_now() + 15.0;
     while (sp_time_now() < until) {
         if (sp_ros_odom_wait(b, 2.0, o, &err) == 0 && fabs(o->vx) < 1e-3 && fabs(o->wz) < 1e-3)
             return 0;
@@ -91,8 +92,10 @@ static void goal_succeeds(sp_ros_bridge *b, double gx, double gy, double gyaw)
     CHECK_MSG(st.state == SP_ROS_GOAL_SUCCEEDED && st.have_result, "ended %s (%s)",
               sp_ros_goal_state_name(st.state), st.error_msg);
     CHECK_MSG(st.feedback_count >= 5 && fl.calls >= 3, "%ld feedback messages", st.feedback_count);
-    CHECK_MSG(fl.first_dist > 2.0 && fl.last_dist < 0.3, "distance remaining %.2f -> %.2f",
-              fl.first_dist, fl.last_dist);
+    /* the distance remaining falls to the goal (the route is about 8 m, 4 s; the first feedback
+     * taken is the newest then: later when this process was held up) */
+    CHECK_MSG(fl.first_dist > fl.last_dist + 0.5 && fl.last_dist < 0.3,
+              "distance remaining %.2f -> %.2f", fl.first_dist, fl.last_dist);
     sp_ros_odom o;
     CHECK(settled_odom(b, &o) == 0);
     double miss = hypot(o.pose.x - gx, o.pose.y - gy);
@@ -104,75 +107,120 @@ static void goal_succeeds(sp_ros_bridge *b, double gx, double gy, double gyaw)
 
 static void goal_rejected(sp_ros_bridge *b, double gx, double gy, const char *what)
 {
-    sp_ros_pose goal = {gx, gy, 0, 0};
-    sp_ros_goal *g = NULL;
-    sp_ros_goal_status st;
     sp_error err = {0};
-    CHECK_OK(sp_ros_navigate_to(b, &goal, NULL, &g, &err), &err);
-    if (!g) return;
-    sp_ros_goal_poll(g, &st, &err);
-    CHECK_MSG(st.state == SP_ROS_GOAL_REJECTED, "a goal %s was %s", what,
-              sp_ros_goal_state_name(st.state));
-    sp_ros_goal_free(g);
+    sp_ros_goal_state st = test_goal_answer(b, gx, gy, &err);
+    CHECK_MSG(st == SP_ROS_GOAL_REJECTED, "a goal %s was %s %s", what, sp_ros_goal_state_name(st), err.msg);
 }
 
-static void cancel_stops_robot(sp_ros_bridge *b)
+/* The other side of the inner wall from where the robot stands: 5 to 6 m away through the door,
+ * 3 s or more at the robot's 2 m/s (wall clock). */
+static sp_ros_pose far_side(const sp_ros_odom *o)
+{
+    sp_ros_pose p = {o->pose.x > 4 ? 1.0 : 6.5, 4.5, 0, 0};
+    return p;
+}
+
+/* Timing races with the robot are lost only when this process is held up for seconds (a loaded
+ * CI machine): such an attempt returns 0 and is tried again, from where the robot now stands, at
+ * most ATTEMPTS times. Everything else is checked as usual. */
+#define ATTEMPTS 3
+
+/* 1 when the cancel was proved (or failed a check), 0 when the goal ended before the cancel
+ * reached the robot, or the cancel came only once it stood at the goal. */
+static int cancel_attempt(sp_ros_bridge *b)
 {
     sp_ros_odom start, o;
     sp_error err = {0};
     CHECK(settled_odom(b, &start) == 0);
-    sp_ros_pose goal = {start.pose.x > 4 ? 1.0 : 6.5, 4.5, 0, 0};
+    sp_ros_pose goal = far_side(&start);
     sp_ros_goal *g = NULL;
     sp_ros_goal_status st;
     CHECK_OK(sp_ros_navigate_to(b, &goal, NULL, &g, &err), &err);
-    if (!g) return;
+    if (!g) return 1;
+    o = start;
     double until = sp_time_now() + 20;
     do { /* mid-way: once the robot has covered a metre */
         sp_ros_goal_wait(g, 0.2, &st, NULL, NULL, &err);
         sp_ros_odom_latest(b, &o, NULL, &err);
     } while (hypot(o.pose.x - start.pose.x, o.pose.y - start.pose.y) < 1.0 && sp_time_now() < until &&
              !sp_ros_goal_state_terminal(st.state));
-    CHECK_MSG(!sp_ros_goal_state_terminal(st.state), "the goal ended before the cancel: %s",
-              sp_ros_goal_state_name(st.state));
-    CHECK_OK(sp_ros_goal_cancel(g, 5.0, &err), &err);
-    CHECK_OK(sp_ros_goal_wait(g, 10.0, &st, NULL, NULL, &err), &err);
+    int late = st.state == SP_ROS_GOAL_SUCCEEDED;
+    if (!late) {
+        CHECK_MSG(!sp_ros_goal_state_terminal(st.state), "the goal ended before the cancel: %s",
+                  sp_ros_goal_state_name(st.state));
+        CHECK_OK(sp_ros_goal_cancel(g, 10.0, &err), &err);
+        CHECK_OK(sp_ros_goal_wait(g, 15.0, &st, NULL, NULL, &err), &err);
+        late = st.state == SP_ROS_GOAL_SUCCEEDED; /* it arrived before the cancel got there */
+    }
+    if (late) {
+        fprintf(stderr, "  the robot arrived before the cancel reached it: trying again\n");
+        sp_ros_goal_free(g);
+        return 0;
+    }
     CHECK_MSG(st.state == SP_ROS_GOAL_CANCELED, "after cancel: %s",
               sp_ros_goal_state_name(st.state));
     sp_ros_odom a, c;
     CHECK(settled_odom(b, &a) == 0);
     usleep(1000000);
-    CHECK_OK(sp_ros_odom_wait(b, 2.0, &c, &err), &err);
+    CHECK_OK(sp_ros_odom_wait(b, 5.0, &c, &err), &err);
     double moved = hypot(c.pose.x - a.pose.x, c.pose.y - a.pose.y);
     double left = hypot(c.pose.x - goal.x, c.pose.y - goal.y);
     CHECK_MSG(moved < 0.01 && fabs(c.vx) < 1e-3, "the robot still moves: %.3f m in 1 s", moved);
-    CHECK_MSG(left > 1.0, "stopped %.2f m from the goal: the cancel came too late to tell", left);
-    fprintf(stderr, "  canceled: stopped %.2f m short of the goal\n", left);
     sp_ros_goal_free(g);
+    if (left < 0.5) { /* canceled while turning on the spot at the goal: proves no stopping short */
+        fprintf(stderr, "  canceled only %.2f m from the goal: trying again\n", left);
+        return 0;
+    }
+    fprintf(stderr, "  canceled: stopped %.2f m short of the goal\n", left);
+    return 1;
+}
+
+static void cancel_stops_robot(sp_ros_bridge *b)
+{
+    int done = 0;
+    for (int k = 0; k < ATTEMPTS && !done; k++) done = cancel_attempt(b);
+    CHECK_MSG(done, "in %d attempts the robot always arrived before the cancel", ATTEMPTS);
 }
 
 /* A second goal preempts the first (aborted, with Jazzy's error_msg); both handles get their own
- * results from the one pump. */
-static void preemption(sp_ros_bridge *b)
+ * results from the one pump. 0 when the first goal was over before the second was sent. */
+static int preemption_attempt(sp_ros_bridge *b)
 {
     sp_ros_odom o;
     sp_error err = {0};
     CHECK(settled_odom(b, &o) == 0);
-    sp_ros_pose far = {o.pose.x > 4 ? 1.0 : 6.5, 4.5, 0, 0};
+    sp_ros_pose far = far_side(&o);
     sp_ros_pose near = {o.pose.x > 4 ? 5.0 : 2.5, o.pose.y > 3 ? 2.5 : 3.5, 0, 0};
     sp_ros_goal *a = NULL, *c = NULL;
     sp_ros_goal_status sa, sc;
     CHECK_OK(sp_ros_navigate_to(b, &far, NULL, &a, &err), &err);
-    usleep(500000);
+    if (!a) return 1;
+    CHECK_OK(sp_ros_goal_poll(a, &sa, &err), &err);
+    if (sp_ros_goal_state_terminal(sa.state)) {
+        CHECK_MSG(sa.state == SP_ROS_GOAL_SUCCEEDED, "first goal: %s", sp_ros_goal_state_name(sa.state));
+        sp_ros_goal_free(a);
+        return sa.state != SP_ROS_GOAL_SUCCEEDED;
+    }
     CHECK_OK(sp_ros_navigate_to(b, &near, NULL, &c, &err), &err);
-    if (a && c) {
-        CHECK_OK(sp_ros_goal_wait(a, 10, &sa, NULL, NULL, &err), &err);
-        CHECK_MSG(sa.state == SP_ROS_GOAL_ABORTED && strstr(sa.error_msg, "preempted"),
-                  "first goal: %s (%s)", sp_ros_goal_state_name(sa.state), sa.error_msg);
+    CHECK_OK(sp_ros_goal_wait(a, 15, &sa, NULL, NULL, &err), &err);
+    int late = sa.state == SP_ROS_GOAL_SUCCEEDED;
+    if (late) fprintf(stderr, "  the first goal ended before the second came: trying again\n");
+    else CHECK_MSG(sa.state == SP_ROS_GOAL_ABORTED && strstr(sa.error_msg, "preempted"),
+                   "first goal: %s (%s)", sp_ros_goal_state_name(sa.state), sa.error_msg);
+    if (c) {
         CHECK_OK(sp_ros_goal_wait(c, 40, &sc, NULL, NULL, &err), &err);
         CHECK_MSG(sc.state == SP_ROS_GOAL_SUCCEEDED, "second goal: %s", sp_ros_goal_state_name(sc.state));
     }
     sp_ros_goal_free(a);
     sp_ros_goal_free(c);
+    return !late;
+}
+
+static void preemption(sp_ros_bridge *b)
+{
+    int done = 0;
+    for (int k = 0; k < ATTEMPTS && !done; k++) done = preemption_attempt(b);
+    CHECK_MSG(done, "in %d attempts the first goal always ended before the second", ATTEMPTS);
 }
 
 static void compute_path(sp_ros_bridge *b)
@@ -192,8 +240,13 @@ static void compute_path(sp_ros_bridge *b)
     CHECK_OK(sp_ros_compute_path(b, &start, &goal, "GridBased", 10.0, &p, NULL, &err), &err);
     if (p.n) CHECK(fabs(p.poses[0].x - 2) < 1e-9 && fabs(p.poses[0].y - 2) < 1e-9);
     sp_ros_path_free(&p);
+    /* As Nav2's planner server: accepted, then aborted with the planner's error code */
     CHECK_FAILS(sp_ros_compute_path(b, NULL, &wall, NULL, 10.0, &p, NULL, &err), SP_E_NOTFOUND,
-                &err, "rejected");
+                &err, "error_code 206: goal occupied");
+    sp_ros_pose closet = {7.1, 3.5, 0, 0};
+    CHECK_FAILS(sp_ros_compute_path(b, NULL, &closet, NULL, 10.0, &p, NULL, &err), SP_E_NOTFOUND,
+                &err, "error_code 208: no valid path");
+    CHECK_MSG(strstr(err.msg, "aborted") && strstr(err.msg, "not reachable"), "%s", err.msg);
 }
 
 static void cli_goal(void)
@@ -202,9 +255,10 @@ static void cli_goal(void)
     snprintf(dom, sizeof dom, "%d", domain);
     snprintf(log, sizeof log, "%s/ros_goal.log", dir);
     char *argv[] = {SP_BUILD_DIR "/semsplat", "ros-goal", "--to", "2,2,0", "--loopback",
-                    "--domain", dom, "--namespace", ns, "--timeout", "30", NULL};
+                    "--domain", dom, "--namespace", ns, "--server-timeout", "15", "--timeout",
+                    "40", NULL};
     pid_t pid = test_spawn(argv, log);
-    int rc = test_wait_pid(pid, 45.0);
+    int rc = test_wait_pid(pid, 70.0);
     if (rc < 0) test_stop(pid);
     char *text = NULL;
     size_t n;
@@ -237,6 +291,8 @@ static void test_jazzy_robot(void)
         CHECK(sp_ros_bridge_distro(b) == SP_ROS_DISTRO_JAZZY); /* detected from the robot */
         goal_rejected(b, 4.0, 2.0, "inside a wall");
         goal_rejected(b, 7.0, 1.0, "in unknown space");
+        goal_rejected(b, 3.75, 2.0, "closer to a wall than the robot's radius");
+        goal_rejected(b, 7.1, 3.5, "in a closet nobody can reach");
         cancel_stops_robot(b);
         preemption(b);
         compute_path(b);
@@ -283,7 +339,8 @@ static void test_no_server(void)
     CHECK_FAILS(sp_ros_navigate_to(b, &goal, NULL, &g, &err), SP_E_NOTFOUND, &err,
                 "no NavigateToPose action server");
     double took = sp_time_now() - t0;
-    CHECK_MSG(took >= 1.4 && took < 3.0, "gave up after %.2f s (timeout 1.5 s)", took);
+    /* bounded: the timeout, plus making the client's endpoints, plus room for a loaded machine */
+    CHECK_MSG(took >= 1.4 && took < 6.0, "gave up after %.2f s (timeout 1.5 s)", took);
     fprintf(stderr, "  no server: reported after %.2f s: %s\n", took, err.msg);
     sp_ros_path p;
     CHECK_FAILS(sp_ros_compute_path(b, NULL, &goal, NULL, 1.0, &p, NULL, &err), SP_E_NOTFOUND,

@@ -204,6 +204,55 @@ static inline int sc_write_colmap(const char *model_dir, const sp_camera *cams, 
     return sc_write_colmap_camera(model_dir, &cam, cams, n, name_fmt, err);
 }
 
+/* A model folder of the tiny scene as lift writes it: splat.ply with f_sem_*, the PCA files, a
+ * COLMAP model of 12 ring cameras (160x120) in sparse/0, and semantic.json (source labels,
+ * hashed label embeddings); encoder (NULL = none recorded) and the class names when with_classes. */
+static inline int sc_write_model(const char *dir, const char *encoder, int with_classes, sp_error *err)
+{
+    float (*emb)[SC_FULL] = malloc(sizeof(float) * SC_CLASSES * SC_FULL);
+    if (!emb) return sp_error_set(err, SP_E_NOMEM, "sc_write_model: out of memory");
+    sp_sem_pca pca;
+    sc_make_pca(&pca, emb);
+    sp_splat s;
+    int *cls;
+    sc_make_splat(&s, &cls, &pca, emb);
+    enum { N = 12, W = 160, H = 120 };
+    sp_camera cams[N];
+    sc_make_cams(cams, N, W, H);
+    char path[1400], colmap[1200];
+    int rc = sp_mkdirs(dir, err);
+    snprintf(path, sizeof path, "%s/splat.ply", dir);
+    if (rc || (rc = sp_ply_write_splat(path, &s, err))) goto done;
+    size_t sh1[1] = {SC_FULL}, sh2[2] = {SC_DIM, SC_FULL};
+    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, sh1, pca.mean, err))) goto done;
+    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
+    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, sh2, pca.basis, err))) goto done;
+    snprintf(colmap, sizeof colmap, "%s/sparse/0", dir);
+    if ((rc = sc_write_colmap(colmap, cams, N, W, H, "view_%02d.png", err))) goto done;
+    cJSON *o = cJSON_CreateObject();
+    cJSON_AddStringToObject(o, "source", "labels");
+    cJSON_AddNumberToObject(o, "dim", SC_DIM);
+    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
+    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
+    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
+    cJSON_AddStringToObject(o, "label_embedding", "hash");
+    if (encoder) cJSON_AddStringToObject(o, "encoder", encoder);
+    if (with_classes) cJSON_AddItemToObject(o, "classes", cJSON_CreateStringArray(sc_class_names, SC_CLASSES));
+    cJSON_AddNullToObject(o, "model");
+    cJSON_AddStringToObject(o, "method", "lift");
+    cJSON_AddStringToObject(o, "colmap", "sparse/0");
+    snprintf(path, sizeof path, "%s/semantic.json", dir);
+    rc = sp_json_write_file(path, o, err);
+    cJSON_Delete(o);
+done:
+    sp_splat_free(&s);
+    sp_sem_pca_free(&pca);
+    free(cls);
+    free(emb);
+    return rc;
+}
+
 /* The view of a capture's maps: cams[v] downscaled by 2, through `lens` (a camera whose
  * distortion and dist[] are used, NULL = pinhole). */
 static inline sp_camera sc_map_camera(const sp_camera *cam, const sp_camera *lens)

@@ -1,7 +1,7 @@
 /* Runs tests/python/test_query.py (the Python module against `semsplat query --json`) and
  * tests/python/test_module.py (safety after close, ABI checks, error classes, threads, per-call
  * options) on a model folder built here from the tiny labelled scene: splat.ply with f_sem_*,
- * semantic.json, the PCA files, a COLMAP model of the cameras and a frame.json that moves the
+ * semantic.json (with the class names, so the default text encoder is lexical), the PCA files, a COLMAP model of the cameras and a frame.json that moves the
  * model into a "world" (rotation, translation, scale), with expect.json naming where the table
  * must come out. Skips when /usr/bin/python3 has no numpy. */
 #include <cjson/cJSON.h>
@@ -42,46 +42,9 @@ static int write_frame(const char *dir, sp_error *err)
 
 static int build_model(const char *dir, sp_error *err)
 {
-    float emb[SC_CLASSES][SC_FULL];
-    sp_sem_pca pca;
-    sc_make_pca(&pca, emb);
-    sp_splat s;
-    int *cls;
-    sc_make_splat(&s, &cls, &pca, emb);
-    enum { N = 12, W = 160, H = 120 };
-    sp_camera cams[N];
-    sc_make_cams(cams, N, W, H);
-    char path[1400], colmap[1200];
-    int rc;
-    snprintf(path, sizeof path, "%s/splat.ply", dir);
-    if ((rc = sp_ply_write_splat(path, &s, err))) goto done;
-    size_t sh1[1] = {SC_FULL}, sh2[2] = {SC_DIM, SC_FULL};
-    snprintf(path, sizeof path, "%s/semantic_pca_mean.npy", dir);
-    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 1, sh1, pca.mean, err))) goto done;
-    snprintf(path, sizeof path, "%s/semantic_pca_basis.npy", dir);
-    if ((rc = sp_npy_write(path, SP_DTYPE_F32, 2, sh2, pca.basis, err))) goto done;
-    /* COLMAP model of the cameras */
-    snprintf(colmap, sizeof colmap, "%s/sparse/0", dir);
-    if ((rc = sc_write_colmap(colmap, cams, N, W, H, "view_%02d.png", err))) goto done;
-    cJSON *o = cJSON_CreateObject();
-    cJSON_AddStringToObject(o, "source", "labels");
-    cJSON_AddNumberToObject(o, "dim", SC_DIM);
-    cJSON_AddNumberToObject(o, "full_dim", SC_FULL);
-    cJSON_AddStringToObject(o, "pca_mean", "semantic_pca_mean.npy");
-    cJSON_AddStringToObject(o, "pca_basis", "semantic_pca_basis.npy");
-    cJSON_AddStringToObject(o, "label_embedding", "hash");
-    cJSON_AddNullToObject(o, "model");
-    cJSON_AddStringToObject(o, "method", "lift");
-    cJSON_AddStringToObject(o, "colmap", "sparse/0");
-    snprintf(path, sizeof path, "%s/semantic.json", dir);
-    rc = sp_json_write_file(path, o, err);
-    cJSON_Delete(o);
-    if (!rc) rc = write_frame(dir, err);
-done:
-    sp_splat_free(&s);
-    sp_sem_pca_free(&pca);
-    free(cls);
-    return rc;
+    /* with the class names, as lift records them: the folder answers through the lexical encoder */
+    int rc = sc_write_model(dir, NULL, 1, err);
+    return rc ? rc : write_frame(dir, err);
 }
 
 static char g_dir[1024];

@@ -2,7 +2,9 @@
  * 64x48) -> features --source clip with the tiny CLIP fixture (tests/fixtures/clip/tiny, random
  * weights of the real architecture) -> train (30 steps) -> lift -> query --json, then the Python
  * module on the same model folder (tests/python/test_clip_path.py): shapes, the recorded source
- * and weights, Python and CLI agreeing. Skips without numpy for /usr/bin/python3. */
+ * and weights, the text encoder "clip" recorded in semantic.json and named in `query --json` and
+ * Python results (with its explanation, no class matches), the label encoders (lexical, exact)
+ * refused on CLIP features, Python and CLI agreeing. Skips without numpy for /usr/bin/python3. */
 #include <stdlib.h>
 
 #include "test.h"

@@ -1,5 +1,8 @@
 /* The issue's seed queries on the house through the lexical encoder and the query engine, each
- * within 0.5 m of the right object or region. A LABEL-FEATURE scene: a small synth capture of the
+ * within 0.5 m of the right object or region: through sp_lex_query on an engine made in memory,
+ * and through the ENGINE'S PLAIN QUERY (sp_query_engine_query(e, text, NULL, ...)) on the model
+ * folder, whose semantic.json makes lexical the default text encoder, as every caller (CLI query,
+ * Python, eval, the agent) uses it. A LABEL-FEATURE scene: a small synth capture of the
  * house (120 views, 120x90, 60000 points), label features (each pixel's class -> sp_label_embedding, PCA 32),
  * Gaussians initialised on the capture's points3D (not trained: opacity raised to 0.9), and the
  * features lifted into them. It measures localization given a perfect 2D segmentation plus the
@@ -196,6 +199,57 @@ static void test_tables_match_worlds(void)
     }
 }
 
+/* Runs the CLI; its stdout (and stderr) in out, the exit status returned. */
+static int cli(const char *args, char *out, size_t cap)
+{
+    char cmd[4096];
+    snprintf(cmd, sizeof cmd, "'%s/semsplat' %s 2>&1", SP_BUILD_DIR, args);
+    FILE *p = popen(cmd, "r");
+    size_t n = p ? fread(out, 1, cap - 1, p) : 0;
+    out[n] = 0;
+    int st = p ? pclose(p) : -1;
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* semsplat query on the label-feature folder: the lexical encoder by default (JSON with matches,
+ * regions, instance classes; --explain), exact on request, bad encoders refused. */
+static void test_query_cli(const char *dir)
+{
+    static char out[1 << 20];
+    char args[2048];
+    snprintf(args, sizeof args, "query --model '%s/model' --device cpu --quiet --json \"the fridge\" \"the kitchen\" "
+             "\"giraffe\"", dir);
+    int st = cli(args, out, sizeof out);
+    cJSON *js = cJSON_Parse(out);
+    CHECK_MSG(st == 0 && cJSON_GetArraySize(js) == 3, "query exited %d: %.2000s", st, out);
+    const cJSON *fridge = cJSON_GetArrayItem(js, 0), *kitchen = cJSON_GetArrayItem(js, 1), *giraffe = cJSON_GetArrayItem(js, 2);
+    const cJSON *m0 = cJSON_GetArrayItem(cJSON_GetObjectItem(fridge, "matches"), 0);
+    const cJSON *i0 = cJSON_GetArrayItem(cJSON_GetObjectItem(fridge, "instances"), 0);
+    CHECK(cJSON_IsTrue(cJSON_GetObjectItem(fridge, "found")) &&
+          !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(fridge, "encoder")), "lexical"));
+    CHECK(m0 && !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(m0, "class")), "refrigerator"));
+    CHECK(i0 && !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(i0, "class")), "refrigerator"));
+    const cJSON *reg = cJSON_GetObjectItem(kitchen, "region");
+    CHECK(cJSON_IsObject(reg) && !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(reg, "name")), "kitchen") &&
+          cJSON_GetArraySize(cJSON_GetObjectItem(reg, "centre")) == 3);
+    CHECK(cJSON_IsFalse(cJSON_GetObjectItem(giraffe, "found")) && cJSON_IsNull(cJSON_GetObjectItem(giraffe, "position")));
+    cJSON_Delete(js);
+    snprintf(args, sizeof args, "query --model '%s/model' --device cpu --quiet --explain \"something to sit on\"", dir);
+    st = cli(args, out, sizeof out);
+    CHECK_MSG(st == 0 && strstr(out, "text encoder lexical") && strstr(out, "gloss") && strstr(out, "sit") &&
+              strstr(out, "not recognition"), "query --explain exited %d: %.3000s", st, out);
+    snprintf(args, sizeof args, "query --model '%s/model' --device cpu --quiet --encoder exact --json fridge", dir);
+    st = cli(args, out, sizeof out);
+    js = cJSON_Parse(out);
+    CHECK_MSG(st == 0 && cJSON_IsFalse(cJSON_GetObjectItem(js, "found")) &&
+              !strcmp(cJSON_GetStringValue(cJSON_GetObjectItem(js, "encoder")), "exact"), "exact: %.2000s", out);
+    cJSON_Delete(js);
+    snprintf(args, sizeof args, "query --model '%s/model' --encoder clip fridge", dir);
+    CHECK_MSG(cli(args, out, sizeof out) == 1 && strstr(out, "does not fit"), "clip on labels: %s", out);
+    snprintf(args, sizeof args, "query --model '%s/model' --encoder bogus fridge", dir);
+    CHECK_MSG(cli(args, out, sizeof out) == 2 && strstr(out, "bogus"), "bogus encoder: %s", out);
+}
+
 /* The CLI on the model folder: semsplat lexical --model DIR --json, read back as JSON. */
 static void test_cli(const char *dir)
 {
@@ -239,6 +293,64 @@ static void test_cli(const char *dir)
     CHECK(WEXITSTATUS(system(cmd)) == 2);
 }
 
+/* Checks one answer against its seed; prints it. Returns 1 when right. */
+static int check_seed(const char *path, const cJSON *gt, const seed *s, size_t i, const sp_query_result *r,
+                      const char *relation, const float *relation_m)
+{
+    float c = INFINITY, d = r->valid ? error_m(gt, s, r->position, &c) : INFINITY;
+    printf("%s %s%-30s %-6s confidence %.2f  (%.2f, %.2f, %.2f)  %.2f m from the %s's box, %.2f from its "
+           "centre%s%s\n", path, i < N_SEEDS ? "seed " : "more ", s->text, r->valid ? "found" : "NOT",
+           (double)r->confidence, (double)r->position[0], (double)r->position[1], (double)r->position[2],
+           (double)d, s->region ? "region" : "object", (double)c, relation[0] ? ", relation " : "", relation);
+    int ok = r->valid && d <= 0.5f;
+    CHECK_MSG(ok, "%s '%s': %.2f m from the right %s", path, s->text, (double)d, s->region ? "region" : "object");
+    for (int k = 0; !ok && k < r->n_instances; k++)
+        printf("    instance %d %s (%.2f, %.2f, %.2f) confidence %.2f score %.3g%s%.2f\n", k, r->instances[k].label,
+               (double)r->instances[k].position[0], (double)r->instances[k].position[1],
+               (double)r->instances[k].position[2], (double)r->instances[k].confidence,
+               (double)r->instances[k].score, relation_m ? "  relation cost " : "",
+               relation_m ? (double)relation_m[k] : 0.0);
+    return ok;
+}
+
+static const char *const absent[] = {"piano", "dishwasher", "giraffe"};
+
+/* The engine's plain query on the model folder: the lexical encoder by default, every seed within
+ * 0.5 m, the result naming its encoder and what it matched; absent things not found. */
+static void engine_plain_query(const char *dir, const cJSON *gt, sp_device *dev)
+{
+    char model[1300];
+    snprintf(model, sizeof model, "%s/model", dir);
+    sp_error err = {0};
+    sp_query_engine *e = NULL;
+    CHECK_OK(sp_query_engine_open(&e, model, NULL, dev, NULL, &err), &err);
+    if (!e) return;
+    CHECK(!strcmp(sp_query_engine_source(e)->encoder, "lexical"));
+    int right = 0;
+    for (size_t i = 0; i < sizeof seeds / sizeof seeds[0]; i++) {
+        sp_query_result r;
+        int rc = sp_query_engine_query(e, seeds[i].text, NULL, &r, &err);
+        CHECK_MSG(rc == 0, "'%s': %s", seeds[i].text, err.msg);
+        if (rc) continue;
+        right += check_seed("engine", gt, &seeds[i], i, &r, r.relation, NULL);
+        CHECK_MSG(!strcmp(r.source.encoder, "lexical") && r.threshold == SP_LEX_THRESHOLD && r.n_matches > 0 &&
+                  r.explanation && strstr(r.explanation, "lexical encoder"), "'%s': encoder %s, %d matches",
+                  seeds[i].text, r.source.encoder, r.n_matches);
+        CHECK_MSG(!seeds[i].region || r.region.valid, "'%s': no region", seeds[i].text);
+        CHECK_MSG(r.n_instances > 0 && r.instances[0].label[0], "'%s': instances without their class", seeds[i].text);
+        sp_query_result_free(&r);
+    }
+    printf("engine's plain query (lexical encoder, label features): %d/%zu right within 0.5 m\n", right,
+           sizeof seeds / sizeof seeds[0]);
+    for (int i = 0; i < 3; i++) {
+        sp_query_result r;
+        CHECK_OK(sp_query_engine_query(e, absent[i], NULL, &r, &err), &err);
+        CHECK_MSG(!r.valid && isnan(r.position[0]) && r.confidence < SP_LEX_THRESHOLD, "engine: '%s' found", absent[i]);
+        sp_query_result_free(&r);
+    }
+    sp_query_engine_free(e);
+}
+
 static void test_seed_queries(void)
 {
     sp_error err = {0};
@@ -260,40 +372,27 @@ static void test_seed_queries(void)
     if (v) CHECK_OK(sp_json_read_file(gtp, &gt, &err), &err);
     sp_lex_answer *a = malloc(sizeof *a);
     for (size_t i = 0; gt && a && i < sizeof seeds / sizeof seeds[0]; i++) {
-        const seed *s = &seeds[i];
-        int rc = sp_lex_query(e, v, s->text, a, &err);
-        CHECK_MSG(rc == 0, "'%s': %s", s->text, err.msg);
+        int rc = sp_lex_query(e, v, seeds[i].text, a, &err);
+        CHECK_MSG(rc == 0, "'%s': %s", seeds[i].text, err.msg);
         if (rc) continue;
-        float c = INFINITY, d = a->result.valid ? error_m(gt, s, a->result.position, &c) : INFINITY;
-        printf("%s%-30s %-6s confidence %.2f  (%.2f, %.2f, %.2f)  %.2f m from the %s's box, %.2f from its "
-               "centre%s%s\n", i < N_SEEDS ? "seed " : "more ", s->text, a->result.valid ? "found" : "NOT",
-               (double)a->result.confidence, (double)a->result.position[0], (double)a->result.position[1],
-               (double)a->result.position[2], (double)d, s->region ? "region" : "object", (double)c,
-               a->lex.relation[0] ? ", relation " : "", a->lex.relation);
-        CHECK_MSG(a->result.valid && d <= 0.5f, "'%s': %.2f m from the right %s", s->text, (double)d,
-                  s->region ? "region" : "object");
-        for (int k = 0; !(a->result.valid && d <= 0.5f) && k < a->result.n_instances; k++)
-            printf("    instance %d (%.2f, %.2f, %.2f) confidence %.2f score %.3g%s%.2f\n", k,
-                   (double)a->result.instances[k].position[0], (double)a->result.instances[k].position[1],
-                   (double)a->result.instances[k].position[2], (double)a->result.instances[k].confidence,
-                   (double)a->result.instances[k].score, a->relation_m ? "  relation cost " : "",
-                   a->relation_m ? (double)a->relation_m[k] : 0.0);
+        check_seed("lex   ", gt, &seeds[i], i, &a->result, a->lex.relation, a->relation_m);
         sp_lex_answer_free(a);
     }
     /* Absent things stay absent in the scene too, and say so without a position. */
-    const char *absent[] = {"piano", "dishwasher", "giraffe"};
     for (int i = 0; a && v && i < 3; i++) {
         CHECK_OK(sp_lex_query(e, v, absent[i], a, &err), &err);
         CHECK_MSG(!a->result.valid && isnan(a->result.position[0]), "'%s' found", absent[i]);
         sp_lex_answer_free(a);
     }
     free(a);
-    cJSON_Delete(gt);
     sp_lex_vocab_free(v);
     sp_lexicon_free(lx);
     sp_query_engine_free(e);
+    if (gt) engine_plain_query(dir, gt, dev);
+    cJSON_Delete(gt);
     sp_device_free(dev);
     if (v) test_cli(dir);
+    if (v) test_query_cli(dir);
 }
 
 int main(void)

@@ -140,8 +140,11 @@ int ros_server_init(ros_server *s, ros_node *n, const char *service_fq, ros_type
 void ros_server_fini(ros_server *s, ros_node *n);
 int ros_server_take(ros_server *s, ros_sample_fn fn, void *ctx);
 /* Writes a reply once the requesting client's reply reader is matched (its clientid= names it),
- * waiting up to 100 ms as rmw_send_response does; a client without clientid is answered at
- * once. Returns 0, or SP_E_NET when the client never showed its reader or is gone. */
+ * waiting up to ROS_REPLY_WAIT_S for it (rmw_send_response waits 100 ms; the simulated robot
+ * gives a loaded machine's discovery more room, blocking only while the reader is missing); a
+ * client without clientid is answered at once. Returns 0, or SP_E_NET when the client never
+ * showed its reader or is gone. */
+#define ROS_REPLY_WAIT_S 0.5
 int ros_server_reply(ros_server *s, dds_instance_handle_t request_writer, const void *sample);
 
 /* The {guid, seq} at the front of a request or reply body. */

@@ -79,10 +79,14 @@ static int finished(sp_ros_bridge *b, path_call *c, sp_ros_path *path, double *p
 {
     sp_ros_result_response *r = &c->result;
     if (r->status != SP_ROS_GOAL_SUCCEEDED) {
+        /* Jazzy's planner codes 203..208 are 200 + nav's status (nav.h mirrors them) */
+        int named = r->error_code >= 203 && r->error_code <= 208;
         int rc = sp_error_set(err, SP_E_NOTFOUND, "the planner on %s found no path: goal %s%s%s "
-                              "(error_code %d)", b->path_fq,
+                              "(error_code %d%s%s)", b->path_fq,
                               sp_ros_goal_state_name((sp_ros_goal_state)r->status),
-                              r->error_msg[0] ? ": " : "", r->error_msg, r->error_code);
+                              r->error_msg[0] ? ": " : "", r->error_msg, r->error_code,
+                              named ? ": " : "",
+                              named ? sp_nav_status_name(r->error_code - 200) : "");
         sp_ros_result_response_free(r);
         return rc;
     }

@@ -146,7 +146,7 @@ static client_present reply_reader_present(ros_server *s, dds_instance_handle_t 
 
 int ros_server_reply(ros_server *s, dds_instance_handle_t request_writer, const void *sample)
 {
-    double until = ros_now() + 0.1;
+    double until = ros_now() + ROS_REPLY_WAIT_S;
     client_present st;
     while ((st = reply_reader_present(s, request_writer)) == CLIENT_MAYBE && ros_now() < until)
         dds_sleepfor(DDS_MSECS(5));

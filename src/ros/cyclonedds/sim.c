@@ -1,4 +1,4 @@
-/* The simulated robot (sp_ros_sim_run): loads the costmap, creates the endpoints a Nav2 robot
+/* The simulated robot (sp_ros_sim_run): loads or builds the nav costmap (simnav.c), creates the endpoints a Nav2 robot
  * offers (odom, tf, map, navigate_to_pose, compute_path_to_pose), then runs a fixed-rate loop:
  * serve requests as they come (every 5 ms), step the differential drive, publish odometry and
  * the odom -> base_link transform every tick and action feedback every other tick. */
@@ -24,30 +24,6 @@ static int check_options(const sp_ros_sim_options *o, sp_error *err)
         !isfinite(o->start_yaw) || !(o->duration_s >= 0))
         return sp_error_set(err, SP_E_ARG, "sim-robot: radius, start pose or duration invalid");
     return 0;
-}
-
-/* The costmap: a grid given in memory, a map.yaml, or the model folder's map.yaml. */
-static int load_grid(const sp_ros_sim_options *o, sp_ros_grid *g, sp_error *err)
-{
-    if (o->grid) {
-        size_t n = (size_t)o->grid->width * (size_t)o->grid->height;
-        *g = *o->grid;
-        g->cells = malloc(n ? n : 1);
-        if (!g->cells) return sp_error_set(err, SP_E_NOMEM, "sim-robot: grid");
-        memcpy(g->cells, o->grid->cells, n);
-        return 0;
-    }
-    if (o->map_yaml) return sp_ros_grid_load_yaml(o->map_yaml, g, err);
-    if (o->model_dir) {
-        char path[2048];
-        sp_path_join(path, sizeof path, o->model_dir, "map.yaml");
-        if (sp_file_exists(path)) return sp_ros_grid_load_yaml(path, g, err);
-        return sp_error_set(err, SP_E_NOTFOUND,
-                            "sim-robot: %s has no map.yaml; building a costmap from the splat "
-                            "needs the nav module (issue 18): pass --map FILE.yaml (Nav2 "
-                            "map_server format) meanwhile", o->model_dir);
-    }
-    return sp_error_set(err, SP_E_ARG, "sim-robot: no costmap (--map FILE.yaml or --model DIR)");
 }
 
 static int make_endpoints(sim *s, sp_error *err)
@@ -159,7 +135,20 @@ static void sim_free(sim *s)
     for (int i = 0; i < s->n_goals; i++) sp_ros_result_response_free(&s->goals[i].result);
     ros_drive_free(&s->drive);
     ros_node_free(s->node);
-    ros_planner_free(s->planner);
+    sp_costmap_free(&s->cm);
+}
+
+/* The map as map_server publishes it (free 0, occupied 100, unknown -1), latched. */
+static int publish_map(sim *s, sp_error *err)
+{
+    sp_ros_grid g;
+    int rc = sp_ros_grid_from_costmap(&s->cm, 0, s->map_frame, &g, err);
+    if (rc) return rc;
+    nav_msgs_msg_dds__OccupancyGrid_ m;
+    ros_fill_occupancy_grid(&m, &g, s->map_frame, ros_wall_time());
+    rc = dds_write(s->map_w, &m) < 0 ? sp_error_set(err, SP_E_NET, "sim-robot: writing the map") : 0;
+    sp_ros_grid_free(&g);
+    return rc;
 }
 
 int sp_ros_sim_run(const sp_ros_sim_options *o, const volatile sig_atomic_t *stop,
@@ -177,36 +166,25 @@ int sp_ros_sim_run(const sp_ros_sim_options *o, const volatile sig_atomic_t *sto
     snprintf(s.map_frame, sizeof s.map_frame, "%s", o->ros.map_frame && o->ros.map_frame[0] ? o->ros.map_frame : "map");
     s.lim = (ros_drive_limits){o->max_speed, o->max_accel, o->max_yaw_rate, o->max_yaw_accel,
                                o->goal_tolerance_m, o->yaw_tolerance_rad, 0.35};
-    sp_ros_grid grid;
-    int rc = load_grid(o, &grid, err);
-    if (rc) return rc;
-    rc = ros_planner_create(&s.planner, &grid, o->robot_radius_m, err);
-    if (rc == 0) {
-        ros_cell_class k = ros_planner_classify(s.planner, o->start_x, o->start_y);
-        if (k != ROS_CELL_FREE && k != ROS_CELL_NEAR_OBSTACLE)
-            rc = sp_error_set(err, SP_E_ARG, "sim-robot: the start (%.2f, %.2f) is %s",
-                              o->start_x, o->start_y, ros_cell_class_name(k));
-    }
+    int rc = ros_sim_costmap(o, log, &s.cm, err);
+    if (rc == 0) rc = ros_sim_check_start(&s.cm, o->start_x, o->start_y, err);
     sp_ros_options ropt = o->ros;
     ropt.distro = s.distro;
     if (!ropt.node_name || !ropt.node_name[0]) ropt.node_name = "semsplat_sim_robot";
     if (rc == 0) rc = ros_node_create(&s.node, &ropt, err);
     ros_drive_init(&s.drive, o->start_x, o->start_y, o->start_yaw);
     if (rc == 0) rc = make_endpoints(&s, err);
+    if (rc == 0) rc = publish_map(&s, err);
     if (rc == 0) {
-        nav_msgs_msg_dds__OccupancyGrid_ m;
-        ros_fill_occupancy_grid(&m, &grid, s.map_frame, ros_wall_time());
-        dds_write(s.map_w, &m);
         publish_odometry(&s);
         rc = write_ready(o->ready_file, err);
     }
     if (rc == 0) {
         sp_logf(log, SP_LOG_INFO, "sim-robot: %s, domain %d, %dx%d map at %.3f m, start (%.2f, "
-                "%.2f, %.2f)", sp_ros_distro_name(s.distro), o->ros.domain_id, grid.width,
-                grid.height, grid.resolution_m, o->start_x, o->start_y, o->start_yaw);
+                "%.2f, %.2f)", sp_ros_distro_name(s.distro), o->ros.domain_id, s.cm.nx, s.cm.ny,
+                s.cm.res, o->start_x, o->start_y, o->start_yaw);
         run_loop(&s, stop);
     }
-    sp_ros_grid_free(&grid);
     sim_free(&s);
     return rc;
 }

@@ -1,5 +1,7 @@
-/* The simulated robot's action servers, with rclcpp_action's semantics: SendGoal accepts or
- * rejects (a goal in occupied, unknown or unreachable space is rejected), a new NavigateToPose
+/* The simulated robot's action servers, with rclcpp_action's semantics: NavigateToPose's
+ * SendGoal accepts or rejects (sp_costmap_check_goal: a goal outside the map, occupied, unknown,
+ * within the robot radius of an obstacle or unreachable is rejected); ComputePathToPose accepts
+ * and aborts with Nav2's planner error codes when there is no path; a new NavigateToPose
  * goal preempts the running one (aborted), GetResult is answered when the goal is terminal (held
  * until then; unknown goals get STATUS_UNKNOWN), CancelGoal follows action_msgs' rules, and
  * GoalStatusArray is republished on every change. */
@@ -65,6 +67,14 @@ static void publish_status(sim *s, ros_action_kind k)
     ros_unfill_status_array(&m);
 }
 
+/* A lost reply leaves the client waiting out its timeout: say so in the robot's log. */
+static void reply(sim *s, ros_server *srv, dds_instance_handle_t writer, const void *m)
+{
+    if (ros_server_reply(srv, writer, m))
+        sp_logf(s->log, SP_LOG_WARN, "%s: reply dropped: the client is gone or its reply reader "
+                "was not discovered within %.1f s", srv->fq, ROS_REPLY_WAIT_S);
+}
+
 static void send_result(sim *s, const sim_goal *g, const sim_waiting *w)
 {
     sp_ros_result_response r = g->result;
@@ -74,20 +84,20 @@ static void send_result(sim *s, const sim_goal *g, const sim_waiting *w)
     if (g->kind == ROS_ACTION_NAV && jazzy) {
         jazzy_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
         ros_fill_nav_result_jazzy(&m, &r);
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
     } else if (g->kind == ROS_ACTION_NAV) {
         humble_nav2_msgs_action_dds__NavigateToPose_GetResult_Response_ m;
         ros_fill_nav_result_humble(&m, &r);
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
     } else if (jazzy) {
         jazzy_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
         if (ros_fill_path_result_jazzy(&m, &r, ros_wall_time())) return;
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
         ros_unfill_path(&m.result.path);
     } else {
         humble_nav2_msgs_action_dds__ComputePathToPose_GetResult_Response_ m;
         if (ros_fill_path_result_humble(&m, &r, ros_wall_time())) return;
-        ros_server_reply(srv, w->writer, &m);
+        reply(s, srv, w->writer, &m);
         ros_unfill_path(&m.result.path);
     }
 }
@@ -112,13 +122,12 @@ static void reply_goal(sim *s, ros_server *srv, const sp_ros_rpc_header *h,
 {
     /* NavigateToPose_ and ComputePathToPose_SendGoal_Response_ have the same layout. */
     nav2_msgs_action_dds__NavigateToPose_SendGoal_Response_ m;
-    (void)s;
     memset(&m, 0, sizeof m);
     m.guid = h->guid;
     m.seq = h->seq;
     m.accepted = accepted != 0;
     ros_fill_time(&m.stamp, ros_wall_time());
-    ros_server_reply(srv, writer, &m);
+    reply(s, srv, writer, &m);
 }
 
 /* Goals are in the map frame, which the simulator takes as its odom frame; others are refused. */
@@ -127,6 +136,17 @@ static int frame_refused(const sim *s, const char *frame, sp_error *e)
     if (!frame[0] || !strcmp(frame, s->map_frame) || !strcmp(frame, s->odom_frame)) return 0;
     sp_error_set(e, SP_E_ARG, "frame '%s' is neither %s nor %s", frame, s->map_frame, s->odom_frame);
     return 1;
+}
+
+/* Plans from where the robot stands (or start) to the goal; *status is 0 with *path filled, or
+ * the sp_nav_status why not (e says it). */
+static void plan(sim *s, const sp_ros_pose *start, const sp_ros_pose *goal, sp_path *path,
+                 int *status, sp_error *e)
+{
+    double from[3] = {s->drive.x, s->drive.y, s->drive.yaw};
+    if (start) from[0] = start->x, from[1] = start->y, from[2] = start->yaw;
+    if (ros_sim_plan(&s->cm, from, goal, path, status, e) && *status == SP_NAV_OK)
+        *status = SP_NAV_NO_VALID_PATH; /* a bad argument or no memory: no path either way */
 }
 
 static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
@@ -140,12 +160,17 @@ static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sam
     }
     double *xy = NULL;
     size_t np = 0;
-    if (!frame_refused(s, r.frame_id, &e))
-        ros_planner_plan(s->planner, s->drive.x, s->drive.y, r.pose.x, r.pose.y, &xy, &np, &e);
+    sp_path p = {0};
+    int status = SP_NAV_OK;
+    if (!frame_refused(s, r.frame_id, &e)) plan(s, NULL, &r.pose, &p, &status, &e);
+    if (!e.code && ros_sim_drive_path(&p, &r.pose, &xy, &np))
+        sp_error_set(&e, SP_E_NOMEM, "out of memory");
+    sp_path_free(&p);
     sim_goal *g = e.code ? NULL : new_goal(s, ROS_ACTION_NAV, r.goal_id);
     if (!g) {
-        sp_logf(s->log, SP_LOG_INFO, "NavigateToPose goal (%.2f, %.2f) rejected: %s", r.pose.x,
-                r.pose.y, e.code ? e.msg : "too many goals");
+        sp_logf(s->log, SP_LOG_INFO, "NavigateToPose goal (%.2f, %.2f) rejected: %s%s%s", r.pose.x,
+                r.pose.y, status ? sp_nav_status_name(status) : "", status ? ": " : "",
+                e.code ? e.msg : "too many goals");
         free(xy);
         reply_goal(s, &s->nav.send_goal, &r.header, info->publication_handle, 0);
         return;
@@ -158,27 +183,11 @@ static void on_nav_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sam
     g->status = SP_ROS_GOAL_EXECUTING;
     publish_status(s, ROS_ACTION_NAV);
     sp_logf(s->log, SP_LOG_INFO, "NavigateToPose goal (%.2f, %.2f, yaw %.2f) accepted: %zu "
-            "waypoints, %.2f m", r.pose.x, r.pose.y, r.pose.yaw, np, ros_drive_remaining(&s->drive));
+            "corners, %.2f m", r.pose.x, r.pose.y, r.pose.yaw, np, ros_drive_remaining(&s->drive));
 }
 
-/* The planner's polyline as poses heading along it, the last with the goal's yaw. */
-static int path_result(sp_ros_path *out, const double *xy, size_t n, double goal_yaw,
-                       const char *frame)
-{
-    memset(out, 0, sizeof *out);
-    out->poses = calloc(n ? n : 1, sizeof *out->poses);
-    if (!out->poses) return SP_E_NOMEM;
-    out->n = n;
-    snprintf(out->frame_id, sizeof out->frame_id, "%s", frame);
-    for (size_t i = 0; i < n; i++) {
-        out->poses[i].x = xy[2 * i];
-        out->poses[i].y = xy[2 * i + 1];
-        out->poses[i].yaw = i + 1 < n ? atan2(xy[2 * i + 3] - xy[2 * i + 1], xy[2 * i + 2] - xy[2 * i])
-                                      : goal_yaw;
-    }
-    return 0;
-}
-
+/* As Nav2's planner server: every goal is accepted, then it succeeds with the path or aborts
+ * with the planner's error code (Jazzy) and a message saying why. */
 static void on_path_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sample_info_t *info)
 {
     sim *s = ctx;
@@ -188,26 +197,28 @@ static void on_path_goal(void *ctx, const uint8_t *bytes, size_t n, const dds_sa
         sp_logf(s->log, SP_LOG_WARN, "ComputePathToPose: malformed goal ignored: %s", e.msg);
         return;
     }
-    double sx = r.use_start ? r.start.x : s->drive.x, sy = r.use_start ? r.start.y : s->drive.y;
-    double *xy = NULL, t0 = ros_now();
-    size_t np = 0;
-    sim_goal *g = NULL;
-    if (!frame_refused(s, r.frame_id, &e) &&
-        !ros_planner_plan(s->planner, sx, sy, r.pose.x, r.pose.y, &xy, &np, &e))
-        g = new_goal(s, ROS_ACTION_PATH, r.goal_id);
-    if (!g || path_result(&g->result.path, xy, np, r.pose.yaw, s->map_frame)) {
-        sp_logf(s->log, SP_LOG_INFO, "ComputePathToPose goal (%.2f, %.2f) rejected: %s", r.pose.x,
-                r.pose.y, e.code ? e.msg : "too many goals");
-        if (g) s->n_goals--;
-        free(xy);
+    sim_goal *g = new_goal(s, ROS_ACTION_PATH, r.goal_id);
+    if (!g) {
+        sp_logf(s->log, SP_LOG_INFO, "ComputePathToPose goal (%.2f, %.2f) rejected: too many goals",
+                r.pose.x, r.pose.y);
         reply_goal(s, &s->path.send_goal, &r.header, info->publication_handle, 0);
         return;
     }
-    free(xy);
     g->target = r.pose;
-    g->result.planning_time_s = ros_now() - t0;
     reply_goal(s, &s->path.send_goal, &r.header, info->publication_handle, 1);
-    finish(s, g, SP_ROS_GOAL_SUCCEEDED, 0, "");
+    double t0 = ros_now();
+    sp_path p = {0};
+    int status = SP_NAV_OK, code = 0;
+    if (frame_refused(s, r.frame_id, &e) || (r.use_start && frame_refused(s, r.start_frame_id, &e)))
+        code = 202; /* TF_ERROR */
+    else plan(s, r.use_start ? &r.start : NULL, &r.pose, &p, &status, &e);
+    if (!code && status) code = ROS_PATH_ERROR_CODE(status);
+    if (!code && ros_sim_path_result(&p, &r.pose, s->map_frame, &g->result.path))
+        code = 200, sp_error_set(&e, SP_E_NOMEM, "out of memory"); /* UNKNOWN */
+    sp_path_free(&p);
+    g->result.planning_time_s = ros_now() - t0;
+    if (code) finish(s, g, SP_ROS_GOAL_ABORTED, code, e.msg);
+    else finish(s, g, SP_ROS_GOAL_SUCCEEDED, 0, "");
 }
 
 typedef struct {
@@ -278,8 +289,8 @@ static void on_cancel_request(void *ctx, const uint8_t *bytes, size_t n,
     m.return_code = k ? 0 : found_terminal ? 3 : by_id ? 2 : 1;
     m.goals_canceling._buffer = canceling;
     m.goals_canceling._length = m.goals_canceling._maximum = k;
-    ros_server_reply(c->kind == ROS_ACTION_NAV ? &s->nav.cancel : &s->path.cancel,
-                     info->publication_handle, &m);
+    reply(s, c->kind == ROS_ACTION_NAV ? &s->nav.cancel : &s->path.cancel,
+          info->publication_handle, &m);
     if (k) {
         publish_status(s, c->kind);
         sp_logf(s->log, SP_LOG_INFO, "%s: canceling %u goal(s)", ros_action_type_name(c->kind), k);
@@ -310,7 +321,7 @@ void sim_goal_progress(sim *s, ros_drive_event ev)
     } else if (ev == ROS_DRIVE_STOPPED) {
         s->active = -1;
         finish(s, g, SP_ROS_GOAL_ABORTED, 0, "the robot stopped before an obstacle");
-    } else if (ros_planner_is_lethal(s->planner, s->drive.x, s->drive.y) && !s->drive.stopping) {
+    } else if (ros_sim_collides(&s->cm, s->drive.x, s->drive.y) && !s->drive.stopping) {
         ros_drive_stop(&s->drive); /* collision: stop; the goal aborts once at rest */
         sp_logf(s->log, SP_LOG_WARN, "collision at (%.2f, %.2f): stopping", s->drive.x, s->drive.y);
     }

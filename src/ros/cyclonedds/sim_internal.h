@@ -34,7 +34,7 @@ typedef struct sim {
     const sp_log *log;
     sp_ros_distro distro;
     ros_node *node;
-    ros_planner *planner;
+    sp_costmap cm;             /* what it plans and collides on */
     ros_drive drive;
     ros_drive_limits lim;
     ros_action_server nav, path;

@@ -257,7 +257,7 @@ static int run_distro(const char *dir)
                     (char *)sp_ros_distro_name(distro), "--duration", "60", "--ready-file",
                     ready, "--quiet", NULL};
     pid_t robot = test_spawn(argv, log);
-    CHECK(test_wait_file(ready, 20) == 0);
+    CHECK(test_wait_file(ready, 60) == 0);
     sp_ros_options o;
     sp_ros_options_default(&o);
     o.domain_id = domain, o.ns = ns, o.loopback_only = 1, o.server_timeout_s = 10;
