@@ -6,16 +6,24 @@
 #   3. build-fuzz/: every libFuzzer harness (tests/fuzz/) for SP_FUZZ_SECONDS (default 10) on its
 #      corpus, two at a time (scripts/fuzz.sh; a crash, hang or leak fails CI).
 # Extra arguments go to both ctest runs. SP_SKIP_SANITIZE=1 / SP_SKIP_FUZZ=1 leave out 2 / 3.
+# Each stage's wall time is printed as "test.sh: <stage> <seconds> s" (CI cost).
 set -e
 cd "$(dirname "$0")/.."
+T0=$(date +%s)
+stage() { T1=$(date +%s); echo "test.sh: $1 $((T1 - T0)) s"; T0=$T1; }
 ./scripts/install-deps.sh
 ./scripts/build.sh
+stage build
 (cd build && ctest --output-on-failure -j"$(nproc)" "$@")
+stage suite
 if [ "${SP_SKIP_SANITIZE:-0}" != 1 ]; then
     SP_BUILD_DIR=build-asan ./scripts/build.sh -DSP_SANITIZE=ON -DSP_CUDA=OFF
+    stage asan-build
     (cd build-asan && ctest --output-on-failure -j"$(nproc)" "$@")
+    stage asan-suite
 fi
 if [ "${SP_FUZZ_SECONDS:-10}" -gt 0 ] && [ "${SP_SKIP_FUZZ:-0}" != 1 ]; then
     rm -rf build-fuzz/ci
     ./scripts/fuzz.sh -t "${SP_FUZZ_SECONDS:-10}" -j 2 -o build-fuzz/ci
+    stage fuzz
 fi
