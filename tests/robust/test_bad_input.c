@@ -142,6 +142,7 @@ static const command commands[] = {
 /* ---- fixtures ---------------------------------------------------------------------------------- */
 
 static char base_dir[1024];
+static int part_k, part_n = 1; /* SP_BAD_INPUT_PART (main) */
 static rb_paths in;
 static char f_ply[1200], f_png[1200], f_npy[1200], f_st[1200], f_cfg[1200], f_world[1200], f_matches[1200],
     f_xform[1200], f_text[1200], f_empty[1200], f_zeros[1200], f_regular[1200], f_emptydir[1200], f_yaml[1200],
@@ -166,7 +167,9 @@ static void truncated_copy(const char *src, const char *dst)
 
 static int make_fixtures(void)
 {
-    snprintf(base_dir, sizeof base_dir, "%s", test_tmpdir("robust_bad_input"));
+    char tag[64]; /* one folder per share: the shares run at once */
+    snprintf(tag, sizeof tag, "robust_bad_input_%d", part_k);
+    snprintf(base_dir, sizeof base_dir, "%s", test_tmpdir(tag));
     if (rb_inputs(base_dir, &in)) return -1;
     rb_result r;
     rb_paths p = in;
@@ -502,19 +505,26 @@ static void one_command(const command *c)
             sp_time_now() - t0);
 }
 
-/* Arguments: only these commands (while working on one); none: all of them. */
-static int wanted(const command *c, int argc, char **argv)
+/* Arguments: only these commands (while working on one); none: all of them, or with
+ * SP_BAD_INPUT_PART=k/n the k-th of n interleaved shares (CTest runs the table as two tests side
+ * by side: it is the suite's longest). */
+static int wanted(size_t i, int argc, char **argv)
 {
-    for (int i = 1; i < argc; i++)
-        if (!strcmp(argv[i], c->name)) return 1;
-    return argc < 2;
+    for (int a = 1; a < argc; a++)
+        if (!strcmp(argv[a], commands[i].name)) return 1;
+    return argc < 2 && (int)(i % (size_t)part_n) == part_k;
 }
 
 int main(int argc, char **argv)
 {
+    const char *part = getenv("SP_BAD_INPUT_PART");
+    if (part && (sscanf(part, "%d/%d", &part_k, &part_n) != 2 || part_n < 1 || part_k < 0 || part_k >= part_n)) {
+        fprintf(stderr, "SP_BAD_INPUT_PART '%s': expected k/n with 0 <= k < n\n", part);
+        return 2;
+    }
     if (make_fixtures()) return 1;
     for (size_t i = 0; i < N_COMMANDS; i++)
-        if (wanted(&commands[i], argc, argv)) one_command(&commands[i]);
+        if (wanted(i, argc, argv)) one_command(&commands[i]);
     fprintf(stderr, "%d bad-input cases, %d not handled, %.0f s in the cases\n", n_cases, n_failed, case_seconds);
     return TEST_EXIT();
 }
