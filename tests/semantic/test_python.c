@@ -52,13 +52,7 @@ static char g_dir[1024];
 static void run_script(const char *script)
 {
     char cmd[4096];
-    /* A sanitizer build's library needs its runtime loaded first into python (which leaks by
-     * design, so leak checks are off there). */
-#ifdef SP_ASAN_RUNTIME
-    const char *pre = "LD_PRELOAD='" SP_ASAN_RUNTIME "' ASAN_OPTIONS=detect_leaks=0 ";
-#else
-    const char *pre = "";
-#endif
+    const char *pre = TEST_PYTHON_ENV;
     snprintf(cmd, sizeof cmd,
              "%sSEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/%s' '%s' '%s/semsplat'",
              pre, SP_BUILD_DIR, SP_BUILD_DIR, SP_SOURCE_DIR, script, g_dir, SP_BUILD_DIR);
