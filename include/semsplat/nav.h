@@ -4,14 +4,15 @@
  * Costmap (sp_costmap): a grid in the world's xy plane (z up, metres; default 5 cm cells) built
  * from the splat alone:
  *   - the floor is detected (the heaviest band of flat, horizontal Gaussians below the cameras);
- *   - occupied: opacity-weighted Gaussian footprints (each Gaussian's xy marginal over its
- *     extent, not its centre), fused in voxels (cells x 10 cm slices of the robot's height band
- *     above the floor) with the rays of the carving below: a voxel is occupied when the
- *     footprints' evidence 1 - prod(1 - w_i) reaches a threshold and the cameras did not see
- *     through it (a floater); a cell when one of its voxels is;
- *   - free: carved along the training cameras' rays to their rendered depth, where its floor was
- *     seen (a ray ended on it, or the splat has floor there) or rays crossed its whole height
- *     band, so space no camera saw stays UNKNOWN; pockets enclosed by obstacles are filled;
+ *   - scans: every training view's rendered first-surface depth, views from one standpoint one
+ *     scan; per voxel (cells x 10 cm slices of the robot's height band above the floor) the
+ *     scans that hit it and that only saw through it;
+ *   - occupied (occupancy): by default opacity-weighted Gaussian footprints (each Gaussian's xy
+ *     marginal over its extent, not its centre) fused per voxel, evidence 1 - prod(1 - w_i) over
+ *     a threshold, unless the scans saw through it (a floater); or the scans alone as log-odds;
+ *     a cell when one of its voxels is;
+ *   - free: every voxel of the column observed by some scan and none occupied, so space no
+ *     camera saw stays UNKNOWN; pockets enclosed by obstacles are filled;
  *   - costs: Nav2's inflation (LETHAL 254 on obstacles, INSCRIBED 253 within the robot radius,
  *     252 exp(-cost_scaling_factor (d - r)) out to the inflation radius, NO_INFORMATION 255 for
  *     unknown), from an exact Euclidean distance transform.
@@ -65,6 +66,8 @@ enum {
     SP_COST_UNKNOWN = 255
 };
 
+enum { SP_OCCUPANCY_FOOTPRINTS = 0, SP_OCCUPANCY_SCANS = 1 };
+
 typedef struct sp_costmap_opts {
     float resolution_m;        /* cell edge (0.05) */
     float band_lo_m, band_hi_m;/* the robot's body, metres above the floor (0.05, 1.0); the
@@ -77,13 +80,28 @@ typedef struct sp_costmap_opts {
     int keep_clear_of_unknown; /* cells within the robot radius of unknown are INSCRIBED (0, as
                                 * Nav2's inflate_around_unknown: the path itself never enters unknown) */
     float min_opacity;         /* Gaussians fainter than this are ignored (0.15) */
-    int min_views;             /* ... and those fewer training views see (0: the count, from
-                                * low-resolution renders, misses too many real surfaces) */
+    /* The training views as depth sensors: each view's rendered first-surface depth is a depth
+     * image; views from one standpoint (centres within 0.1 m) are one scan. Per voxel (cell x
+     * slice of the band) a scan hit it (a ray's surface ended there), saw through it (rays
+     * crossed it, none ended there) or did not observe it. What makes a voxel occupied: */
+    int occupancy;             /* SP_OCCUPANCY_FOOTPRINTS (default) or SP_OCCUPANCY_SCANS */
+    /* SP_OCCUPANCY_FOOTPRINTS: opacity-weighted Gaussian footprints, 1 - prod(1 - w_i) >=
+     * occupied_evidence, unless more than pass_veto x (1 + scans that hit it) scans saw through
+     * it (a floater the cameras saw past); the splat's floor Gaussians count as floor seen */
     float footprint_sigmas;    /* footprints are evaluated out to this many std devs (3) */
-    float occupied_evidence;   /* a voxel is occupied when 1 - prod(1 - w_i) >= this (0.5) */
-    int free_needs_floor;      /* a cell is free only when its floor was seen (and a ray crossed
-                                * it) or rays crossed all of its slices (1); 0: any ray through
-                                * the band frees it */
+    float occupied_evidence;   /* (0.5) */
+    float pass_veto;           /* (1) */
+    /* SP_OCCUPANCY_SCANS: the scans alone, fused as log-odds (OctoMap's sensor model) */
+    float prob_hit;            /* P(occupied) from one scan's hit (0.7, OctoMap's) */
+    float prob_miss;           /* P(occupied) from one scan seeing through (0.4, OctoMap's) */
+    float occupied_prob;       /* a voxel is occupied at this fused probability (0.5) ... */
+    int min_hit_scans;         /* ... with this many scans hitting it, or all that observed it
+                                * when fewer did (2) */
+    /* Free columns: no voxel occupied and every voxel observed by some scan (a ray passing above
+     * a table top that no ray ended on does not make the table free), */
+    int free_needs_floor;      /* ... and, with 1, the floor seen there (0) */
+    int free_from_floor;       /* with 1 a column whose floor was seen and that some scan observed
+                                * is free too (0: measured, it frees the undersides of tables) */
     int cameras_stand;         /* the robot radius under every training camera is free: the
                                 * capture stood there (1; 0 for cameras held above furniture) */
     int despeckle_cells;       /* occupied specks of at most this many cells amid free space are
@@ -91,11 +109,10 @@ typedef struct sp_costmap_opts {
     float fill_max_area_m2;    /* free pockets enclosed by obstacles up to this area are the
                                 * insides of furniture and become occupied (4) */
     float slice_m;             /* the band is fused in slices this tall (0.1; at most 32 slices) */
-    float pass_veto;           /* ... unless rays passed through it more than this x (1 + rays
-                                * that ended in it) times: a floater the cameras saw through (3) */
-    int carve_downscale;       /* training views rendered at 1/this size for carving (4) */
-    float carve_alpha;         /* rays with less accumulated alpha hit nothing: not carved; the
-                                * first-surface depth is taken at this alpha (0.5) */
+    int carve_downscale;       /* training views rendered at 1/this size for carving (0 = about
+                                * 160 pixels wide) */
+    float carve_alpha;         /* first-surface depth: where the accumulated alpha reaches this
+                                * (0.5); rays that never reach it end on nothing */
     float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */
     float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (0.15:
                                 * rendered depth is that of Gaussian centres, several cm off on
@@ -340,8 +357,9 @@ int sp_nav_create(sp_nav **out, struct sp_query_engine *engine, const sp_splat *
 void sp_nav_free(sp_nav *nav);
 const sp_costmap *sp_nav_costmap(const sp_nav *nav);
 const sp_nav_opts *sp_nav_options(const sp_nav *nav);
-/* The default start: the first training camera's position on the floor (snapped to the nearest
- * traversable cell) and its heading: x, y, yaw. */
+/* The default start: a training camera's position on the floor (snapped to the nearest
+ * traversable cell within 2 m) and its heading, x, y, yaw: the first camera's unless another
+ * stands in a larger connected free region (the one that reaches the most of the map). */
 int sp_nav_default_start(const sp_nav *nav, float start[3], sp_error *err);
 
 /* ---- targets in words ---- */

@@ -1,16 +1,27 @@
-/* Free space from the training cameras: each view is rendered (first-surface depth and alpha)
- * at reduced size, and every ray that hits a surface marks the voxels (cell x height slice of
- * the robot's band) it crosses as passed, up to a little before the surface; the surface point
- * itself is a hit (or a floor sighting). Space no ray crossed stays unknown. The same renders
- * count, per Gaussian, the training views that see it (the coverage behind localizability). */
+/* The training views as depth sensors. Each view is rendered (first-surface depth) at reduced
+ * size and every ray is traced through the voxels (cell x height slice of the robot's band): the
+ * voxels it crosses, up to a little before its surface, are misses, the voxel of its surface
+ * point and those along the depth image's continuous surface between neighbouring pixels are
+ * hits (near the floor: floor sightings). Views taken from one standpoint (a panorama) share
+ * their rays' origin, so they see nothing of depth that one of them does not (no parallax): they
+ * are one scan, and each voxel is updated once per scan, a hit taking precedence over misses
+ * (OctoMap's discretized scan insertion). Each voxel ends with the number of scans that hit it
+ * and the number that only saw through it: the evidence costmap.c fuses as log-odds. Space no
+ * ray crossed stays unknown. Scans are carved in parallel, each thread with its own counters.
+ * With view counts asked for, the same renders tell per Gaussian in how many views it is visible
+ * (the coverage behind localizability). */
 #include <stdlib.h>
 #include <string.h>
 
 #include "nav_internal.h"
 
-#define VIS_MIN_ALPHA 0.3f     /* pixels with less alpha have no usable depth for visibility */
 #define VIS_DEPTH_REL 1.05f    /* a Gaussian in front of rendered depth x this + VIS_DEPTH_ABS */
 #define VIS_DEPTH_ABS 0.05f
+#define SCAN_RADIUS_M 0.1f     /* views whose centres lie this close are one scan */
+#define CULL_MARGIN_M 0.1f     /* Gaussians this far above the highest camera (and the band) */
+
+#define MINF(a, b) ((a) < (b) ? (a) : (b)) /* fminf is a library call without -ffast-math */
+#define MAXF(a, b) ((a) > (b) ? (a) : (b))
 
 int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
                  void *ctx)
@@ -50,104 +61,186 @@ int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_c
     return 0;
 }
 
-typedef struct ray_ctx {
-    uint16_t *passes;
+enum { FLAG_MISS = 1, FLAG_HIT = 2 };
+
+/* One thread's counters and the flags of the scan it is carving. */
+typedef struct carve_thread {
+    uint8_t *flag;         /* [voxels + cells] this scan: FLAG_MISS / FLAG_HIT per voxel, then
+                            * 1 per cell whose floor a ray ended on */
+    int32_t *touched;      /* indices of flag set in this scan */
+    long n_touched;
+    float *pts;            /* [pixels][4] a view's surface points */
+    size_t cap_pts;
+    uint16_t *hit_scans, *miss_scans; /* [voxels] */
+    uint16_t *floor_scans; /* [cells] */
+    uint16_t *view_counts; /* [n Gaussians] or NULL */
+    int failed;            /* out of memory */
+} carve_thread;
+
+/* A batch: views rendered together, in runs of one scan each. */
+typedef struct carve_job {
+    const sp_costmap *cm;
+    const sp_splat *s;     /* the full splat (visibility counts) */
+    const sp_costmap_opts *o;
     const nav_slices *sl;
-    float z0, dz;      /* z(t) = z0 + t dz */
-    float t_stop;      /* carve up to here */
-    float band_lo, band_hi;
-} ray_ctx;
+    const sp_camera *views;
+    const sp_render_request *req;
+    const int *run_start;  /* [n_runs + 1] view index of each run in the batch */
+    carve_thread *th;      /* [threads] */
+} carve_job;
 
 static inline void bump(uint16_t *c)
 {
     if (*c < UINT16_MAX) (*c)++;
 }
 
-/* Marks every slice of the cell the ray's stretch inside it overlaps. */
+static inline void set_flag(carve_thread *t, long i, uint8_t f)
+{
+    if (!t->flag[i]) t->touched[t->n_touched++] = (int32_t)i;
+    t->flag[i] |= f;
+}
+
+typedef struct ray_ctx {
+    carve_thread *t;
+    const nav_slices *sl;
+    float z0, dz;      /* z(t) = z0 + t dz along the traversed stretch */
+    float band_lo, band_hi;
+} ray_ctx;
+
+/* Marks every slice of the cell the ray's stretch inside it overlaps as missed. */
 static int carve_cell(void *vctx, long cell, float t0, float t1)
 {
     ray_ctx *c = vctx;
-    if (t0 >= c->t_stop) return 1;
-    float te = fminf(t1, c->t_stop);
-    float za = c->z0 + t0 * c->dz, zb = c->z0 + te * c->dz;
-    float lo = fmaxf(fminf(za, zb), c->band_lo), hi = fminf(fmaxf(za, zb), c->band_hi);
+    float za = c->z0 + t0 * c->dz, zb = c->z0 + t1 * c->dz;
+    float lo = MAXF(MINF(za, zb), c->band_lo), hi = MINF(MAXF(za, zb), c->band_hi);
     if (hi < lo) return 0;
     int v0 = nav_slice_of(c->sl, lo), v1 = nav_slice_of(c->sl, hi);
-    for (int v = v0; v <= v1; v++) bump(&c->passes[v * c->sl->cells + cell]);
+    for (int v = v0; v <= v1; v++) set_flag(c->t, v * c->sl->cells + cell, FLAG_MISS);
     return 0;
 }
 
-/* The counters one thread carves into (merged after the last view). */
-typedef struct carve_bufs {
-    uint16_t *passes, *hits, *floor_seen;
-} carve_bufs;
+/* Misses along C + s (E - C), s in [0, s_end], clipped to the band's heights first: most of a
+ * ray from a camera above the band never enters it. */
+static void carve_ray(const sp_costmap *cm, ray_ctx *rc, sp_vec3 C, sp_vec3 E, float s_end)
+{
+    float dz = E.z - C.z, s0 = 0, s1 = s_end;
+    if (dz > 1e-9f || dz < -1e-9f) {
+        float a = (cm->band[0] - C.z) / dz, b = (cm->band[1] - C.z) / dz;
+        s0 = MAXF(s0, MINF(a, b)), s1 = MINF(s1, MAXF(a, b));
+    } else if (C.z < cm->band[0] || C.z > cm->band[1]) {
+        return;
+    }
+    if (!(s1 > s0)) return;
+    float a[2] = {C.x + s0 * (E.x - C.x), C.y + s0 * (E.y - C.y)};
+    float b[2] = {C.x + s1 * (E.x - C.x), C.y + s1 * (E.y - C.y)};
+    rc->z0 = C.z + s0 * dz, rc->dz = (s1 - s0) * dz;
+    nav_traverse(cm, a, b, carve_cell, rc);
+}
 
-typedef struct view_job {
-    const sp_costmap *cm;
-    const sp_camera *cam;
-    const float *depth, *alpha;
-    const sp_costmap_opts *o;
-    const nav_slices *sl;
-    carve_bufs *bufs;   /* [threads] */
-    int rows_per_item;
-    const sp_splat *s;
-    uint16_t *counts;   /* visibility */
-    size_t per_item;
-} view_job;
-
-/* Carves the rays of rows [v0, v1) of one rendered view (first-surface depth and alpha). */
-static void carve_rows(const view_job *j, int v0, int v1, carve_bufs *b)
+/* A surface point in the voxels: a hit in the band, a floor sighting near the floor. */
+static void mark_surface(const carve_job *j, carve_thread *t, const float P[3])
 {
     const sp_costmap *cm = j->cm;
-    const sp_camera *cam = j->cam;
+    int ix, iy;
+    if (sp_costmap_cell(cm, P[0], P[1], &ix, &iy)) return;
+    long cell = nav_idx(cm, ix, iy);
+    float dz = P[2] - cm->floor_z;
+    if (dz < j->o->floor_tolerance_m && dz > -j->o->floor_tolerance_m) set_flag(t, j->sl->n * j->sl->cells + cell, 1);
+    else if (P[2] >= cm->band[0] && P[2] <= cm->band[1])
+        set_flag(t, nav_slice_of(j->sl, P[2]) * j->sl->cells + cell, FLAG_HIT);
+}
+
+/* The depth image is a 2.5-D surface: between two neighbouring pixels' surface points that lie
+ * on one surface (depths within SEG_DEPTH_REL of each other and at most SEG_MAX_CELLS cells
+ * apart) the surface continues, so the voxels along the segment are hit too. A table top seen
+ * at a slant has its pixels' points rows of cells apart, and without this the cells between
+ * them would be hit by no view while the rays above them miss. */
+#define SEG_DEPTH_REL 0.1f
+#define SEG_MAX_CELLS 4
+static void mark_segment(const carve_job *j, carve_thread *t, const float *a, const float *b)
+{
+    if (!(a[3] > 0) || !(b[3] > 0)) return;
+    float dd = a[3] - b[3];
+    if (dd > SEG_DEPTH_REL * MINF(a[3], b[3]) || -dd > SEG_DEPTH_REL * MINF(a[3], b[3])) return;
+    float d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), res = j->cm->res;
+    if (len > SEG_MAX_CELLS * res) return;
+    int steps = (int)ceilf(len / (0.5f * res));
+    for (int k = 1; k < steps; k++) {
+        float f = (float)k / steps, P[3] = {a[0] + f * d[0], a[1] + f * d[1], a[2] + f * d[2]};
+        mark_surface(j, t, P);
+    }
+}
+
+/* Traces one rendered view into the thread's flags: misses along every ray up to carve_stop_m
+ * before its surface, then the surface points and the segments between them. A ray with no
+ * surface that rises leaves the band with nothing in it (what it would meet lies above the
+ * cameras, culled from the carving scene, or is nothing at all) and carves the band; one that
+ * falls or runs level into nothing says nothing (an unreconstructed hole). */
+static void trace_view(const carve_job *j, const sp_camera *cam, const float *depth, carve_thread *t)
+{
+    const sp_costmap *cm = j->cm;
     const sp_costmap_opts *o = j->o;
     sp_vec3 C = sp_camera_center(cam);
-    ray_ctx rc = {b->passes, j->sl, C.z, 0, 1, cm->band[0], cm->band[1]};
+    ray_ctx rc = {t, j->sl, 0, 0, cm->band[0], cm->band[1]};
     float Rt[9];
     sp_mat3_transpose(cam->R, Rt);
-    for (int v = v0; v < v1; v++)
+    float *pts = t->pts; /* [H][W] x, y, z, depth (0: no surface point) */
+    for (int v = 0; v < cam->height; v++)
         for (int u = 0; u < cam->width; u++) {
             long p = (long)v * cam->width + u;
-            if (!(j->alpha[p] >= o->carve_alpha)) continue;
-            float d = j->depth[p]; /* first-surface depth along the optical axis */
-            if (!(d > 0)) continue;
+            float *q = pts + 4 * p;
+            q[3] = 0;
+            float d = depth[p]; /* first-surface depth along the optical axis, 0 = none */
             sp_vec3 dc = sp_v3((u + 0.5f - cam->cx) / cam->fx, (v + 0.5f - cam->cy) / cam->fy, 1.0f);
             sp_vec3 dw = sp_mat3_apply(Rt, dc);
-            float len = d * sp_v3_norm(dw);
+            float n = sp_v3_norm(dw);
+            if (!(d > 0)) {
+                if (dw.z > 0) carve_ray(cm, &rc, C, sp_v3_add(C, sp_v3_scale(dw, o->max_range_m / n)), 1.0f);
+                continue;
+            }
+            float len = d * n;
             int cut = len > o->max_range_m;
             if (cut) d *= o->max_range_m / len, len = o->max_range_m;
             sp_vec3 P = sp_v3_add(C, sp_v3_scale(dw, d));
-            rc.dz = P.z - C.z;
-            rc.t_stop = cut ? 1.0f : fmaxf(0.0f, 1.0f - o->carve_stop_m / len);
-            float a[2] = {C.x, C.y}, e[2] = {P.x, P.y};
-            nav_traverse(cm, a, e, carve_cell, &rc);
-            int ix, iy;
-            if (cut || sp_costmap_cell(cm, P.x, P.y, &ix, &iy)) continue;
-            long cell = nav_idx(cm, ix, iy);
-            if (fabsf(P.z - cm->floor_z) < o->floor_tolerance_m) bump(&b->floor_seen[cell]);
-            else if (P.z >= cm->band[0] && P.z <= cm->band[1])
-                bump(&b->hits[nav_slice_of(j->sl, P.z) * j->sl->cells + cell]);
+            carve_ray(cm, &rc, C, P, cut ? 1.0f : MAXF(0.0f, 1.0f - o->carve_stop_m / len));
+            if (!cut) q[0] = P.x, q[1] = P.y, q[2] = P.z, q[3] = d;
+        }
+    for (int v = 0; v < cam->height; v++)
+        for (int u = 0; u < cam->width; u++) {
+            const float *q = pts + 4 * ((long)v * cam->width + u);
+            if (!(q[3] > 0)) continue;
+            mark_surface(j, t, q);
+            if (u + 1 < cam->width) mark_segment(j, t, q, q + 4);
+            if (v + 1 < cam->height) mark_segment(j, t, q, q + 4 * cam->width);
         }
 }
 
-static void carve_item(void *ctx, long i, int thread_id)
+/* One scan's flags into the thread's counters (a voxel hit in this scan counts as a hit only),
+ * clearing them for the next scan. */
+static void count_scan(const nav_slices *sl, carve_thread *t)
 {
-    const view_job *j = ctx;
-    int v0 = (int)i * j->rows_per_item, v1 = v0 + j->rows_per_item;
-    carve_rows(j, v0, v1 < j->cam->height ? v1 : j->cam->height, &j->bufs[thread_id]);
+    long nv = (long)sl->n * sl->cells;
+    for (long k = 0; k < t->n_touched; k++) {
+        long i = t->touched[k];
+        if (i >= nv) bump(&t->floor_scans[i - nv]);
+        else if (t->flag[i] & FLAG_HIT) bump(&t->hit_scans[i]);
+        else bump(&t->miss_scans[i]);
+        t->flag[i] = 0;
+    }
+    t->n_touched = 0;
 }
 
 /* Counts the view for every opaque Gaussian whose centre projects into it in front of the
  * rendered surface: the deepest surface of the 3 x 3 pixels around it (a low-resolution pixel on
  * a floor seen at a slant spans tens of centimetres of depth), with 5 % + 5 cm to spare. */
-static void count_visible(const sp_splat *s, const sp_camera *cam, const float *depth,
-                          const float *alpha, float min_opacity, uint16_t *counts, size_t i0, size_t i1)
+static void count_visible(const carve_job *j, const sp_camera *cam, const float *depth, uint16_t *counts)
 {
-    for (size_t i = i0; i < i1; i++) {
-        if (counts[i] == UINT16_MAX || sp_sigmoid(s->opacity_logits[i]) < min_opacity) continue;
+    const sp_splat *s = j->s;
+    for (size_t i = 0; i < s->n; i++) {
+        if (counts[i] == UINT16_MAX || sp_sigmoid(s->opacity_logits[i]) < j->o->min_opacity) continue;
         const float *m = s->means + 3 * i;
-        sp_vec3 pc = sp_v3_add(sp_mat3_apply(cam->R, sp_v3(m[0], m[1], m[2])),
-                               sp_v3(cam->t[0], cam->t[1], cam->t[2]));
+        sp_vec3 pc = sp_v3_add(sp_mat3_apply(cam->R, sp_v3(m[0], m[1], m[2])), sp_v3(cam->t[0], cam->t[1], cam->t[2]));
         if (pc.z < 0.05f) continue;
         int u = (int)floorf(cam->fx * pc.x / pc.z + cam->cx), v = (int)floorf(cam->fy * pc.y / pc.z + cam->cy);
         if (u < 0 || v < 0 || u >= cam->width || v >= cam->height) continue;
@@ -155,20 +248,31 @@ static void count_visible(const sp_splat *s, const sp_camera *cam, const float *
         for (int dv = -1; dv <= 1; dv++)
             for (int du = -1; du <= 1; du++) {
                 int x = u + du, y = v + dv;
-                if (x < 0 || y < 0 || x >= cam->width || y >= cam->height) continue;
-                long p = (long)y * cam->width + x;
-                if (alpha[p] >= VIS_MIN_ALPHA && depth[p] > deepest) deepest = depth[p];
+                if (x >= 0 && y >= 0 && x < cam->width && y < cam->height) deepest = MAXF(deepest, depth[(long)y * cam->width + x]);
             }
         if (deepest > 0 && pc.z <= deepest * VIS_DEPTH_REL + VIS_DEPTH_ABS) counts[i]++;
     }
 }
 
-static void visible_item(void *ctx, long i, int thread_id)
+static void carve_run(void *ctx, long r, int thread_id)
 {
-    const view_job *j = ctx;
-    size_t i0 = (size_t)i * j->per_item, i1 = i0 + j->per_item;
-    (void)thread_id;
-    count_visible(j->s, j->cam, j->depth, j->alpha, j->o->min_opacity, j->counts, i0, i1 < j->s->n ? i1 : j->s->n);
+    const carve_job *j = ctx;
+    carve_thread *t = &j->th[thread_id];
+    for (int k = j->run_start[r]; k < j->run_start[r + 1]; k++) {
+        size_t np = (size_t)j->views[k].width * j->views[k].height;
+        if (np > t->cap_pts) {
+            free(t->pts);
+            t->pts = malloc(sizeof(float) * 4 * np);
+            t->cap_pts = t->pts ? np : 0;
+        }
+        if (!t->pts) {
+            t->failed = 1;
+            return;
+        }
+        trace_view(j, &j->views[k], j->req[k].depth, t);
+        if (t->view_counts) count_visible(j, &j->views[k], j->req[k].depth, t->view_counts);
+    }
+    count_scan(j->sl, t);
 }
 
 static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
@@ -179,86 +283,178 @@ static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
     }
 }
 
+static void threads_free(carve_thread *th, int T)
+{
+    for (int t = 0; th && t < T; t++) {
+        free(th[t].flag), free(th[t].touched), free(th[t].pts);
+        if (t == 0) continue; /* thread 0 counts into the outputs */
+        free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].floor_scans), free(th[t].view_counts);
+    }
+    free(th);
+}
+
+/* Thread 0 counts straight into out; the others into their own counters, merged at the end. */
+static carve_thread *threads_alloc(int T, const nav_carve_out *out, size_t n_gauss)
+{
+    size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
+    carve_thread *th = calloc((size_t)T, sizeof *th);
+    int ok = th != NULL;
+    for (int t = 0; t < T && ok; t++) {
+        carve_thread *c = &th[t];
+        c->flag = calloc(nv + nc, 1);
+        c->touched = malloc(sizeof(int32_t) * (nv + nc));
+        c->hit_scans = t ? calloc(nv, sizeof(uint16_t)) : out->hit_scans;
+        c->miss_scans = t ? calloc(nv, sizeof(uint16_t)) : out->miss_scans;
+        c->floor_scans = t ? calloc(nc, sizeof(uint16_t)) : out->floor_scans;
+        c->view_counts = !out->view_counts ? NULL : t ? calloc(n_gauss + 1, sizeof(uint16_t)) : out->view_counts;
+        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->floor_scans &&
+             (c->view_counts || !out->view_counts);
+    }
+    if (!ok) threads_free(th, T), th = NULL;
+    return th;
+}
+
+/* Scans: each view joins the scan of the first earlier view whose centre lies within
+ * SCAN_RADIUS_M. order[] lists the views scan by scan (in order of first appearance), scan_of[]
+ * the scan of each; returns the number of scans. */
+static int group_scans(const sp_camera *cams, size_t n, int *order, int *scan_of)
+{
+    int n_scans = 0;
+    for (size_t i = 0; i < n; i++) {
+        sp_vec3 c = sp_camera_center(&cams[i]);
+        scan_of[i] = -1;
+        for (size_t k = 0; k < i && scan_of[i] < 0; k++)
+            if (sp_v3_norm(sp_v3_sub(c, sp_camera_center(&cams[k]))) <= SCAN_RADIUS_M) scan_of[i] = scan_of[k];
+        if (scan_of[i] < 0) scan_of[i] = n_scans++;
+    }
+    size_t at = 0;
+    for (int s = 0; s < n_scans; s++)
+        for (size_t i = 0; i < n; i++)
+            if (scan_of[i] == s) order[at++] = (int)i;
+    return n_scans;
+}
+
+/* The splat the views are rendered from for carving: geometry only (depth needs no colours),
+ * without the Gaussians wholly above the highest camera and the band: a ray can meet those only
+ * after it has risen out of the band (a rising ray with no surface carves the band). */
+static int carving_scene(const sp_splat *s, const sp_camera *cams, size_t n, float band_hi, sp_device *dev,
+                         sp_scene **out, size_t *kept, sp_error *err)
+{
+    float z_cut = band_hi;
+    for (size_t i = 0; i < n; i++) z_cut = MAXF(z_cut, sp_camera_center(&cams[i]).z);
+    z_cut += CULL_MARGIN_M;
+    sp_splat c;
+    int rc = sp_splat_alloc(&c, s->n, 0, 0, err);
+    if (rc) return rc;
+    size_t m = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        float R[9], sz2 = 0;
+        sp_quat_to_mat3(s->quats + 4 * i, R);
+        for (int k = 0; k < 3; k++) sz2 += R[6 + k] * R[6 + k] * expf(2.0f * s->log_scales[3 * i + k]);
+        if (s->means[3 * i + 2] - 3.0f * sqrtf(sz2) > z_cut) continue;
+        memcpy(c.means + 3 * m, s->means + 3 * i, 3 * sizeof(float));
+        memcpy(c.quats + 4 * m, s->quats + 4 * i, 4 * sizeof(float));
+        memcpy(c.log_scales + 3 * m, s->log_scales + 3 * i, 3 * sizeof(float));
+        c.opacity_logits[m] = s->opacity_logits[i];
+        memcpy(c.sh + 3 * m, s->sh + (size_t)i * 3 * sp_sh_coeffs(s->sh_degree), 3 * sizeof(float));
+        m++;
+    }
+    c.n = m;
+    *kept = m;
+    rc = sp_scene_create(out, dev, &c, 0, err);
+    sp_splat_free(&c);
+    return rc;
+}
+
 #define CARVE_BATCH 16 /* views rendered per sp_render_views call */
+
+/* The next batch from order[at]: whole scans while they fit (a scan of more views than a batch
+ * is split, its parts then counting as scans of their own); runs[] gets each scan's first view
+ * within the batch and the end. Returns the batch's view count. */
+static int next_batch(const int *order, const int *scan_of, size_t n, size_t at, int *runs, int *n_runs)
+{
+    int nb = 0;
+    *n_runs = 0;
+    while (at + nb < n) {
+        int s = scan_of[order[at + nb]], len = 0;
+        while (at + nb + len < n && scan_of[order[at + nb + len]] == s) len++;
+        if (nb > 0 && nb + len > CARVE_BATCH) break;
+        runs[(*n_runs)++] = nb;
+        if (len > CARVE_BATCH) len = CARVE_BATCH;
+        nb += len;
+        if (nb >= CARVE_BATCH) break;
+    }
+    runs[*n_runs] = nb;
+    return nb;
+}
 
 int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
               const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
               sp_error *err)
 {
-    /* geometry only: depth and alpha need no colours, so no SH is evaluated per view */
+    sp_device *dev = sp_raster_device(r);
     sp_scene *scene = NULL;
-    int rc = sp_scene_create(&scene, sp_raster_device(r), s, 0, err);
+    size_t kept = 0;
+    int rc = carving_scene(s, cams, n_cams, cm->band[1], dev, &scene, &kept, err);
     if (rc) return sp_error_prefix(err, "costmap: ");
-    sp_pool *pool = sp_device_pool(sp_raster_device(r));
+    sp_pool *pool = sp_device_pool(dev);
     int T = sp_pool_size(pool);
-    size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
-    carve_bufs *bufs = calloc((size_t)T, sizeof *bufs);
-    if (!bufs) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
-    for (int t = 0; t < T && !rc; t++) {
-        bufs[t].passes = t ? calloc(nv, sizeof(uint16_t)) : out->passes;
-        bufs[t].hits = t ? calloc(nv, sizeof(uint16_t)) : out->hits;
-        bufs[t].floor_seen = t ? calloc(nc, sizeof(uint16_t)) : out->floor_seen;
-        if (!bufs[t].passes || !bufs[t].hits || !bufs[t].floor_seen)
-            rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
-    }
+    carve_thread *th = threads_alloc(T, out, s->n);
+    int *order = malloc(sizeof(int) * n_cams * 2);
+    if (!th || !order) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
+    int n_scans = order ? group_scans(cams, n_cams, order, order + n_cams) : 0;
     sp_camera view[CARVE_BATCH];
     sp_render_request req[CARVE_BATCH];
     float *buf[CARVE_BATCH] = {NULL};
     size_t cap[CARVE_BATCH] = {0};
-    double t_render = 0, t_rays = 0, t_vis = 0;
+    int runs[CARVE_BATCH + 1], n_runs;
+    double t_render = 0, t_rays = 0;
     sp_progress pr;
     sp_progress_begin(&pr, log, "carve", (long)n_cams, "views");
-    for (size_t c0 = 0; c0 < n_cams && !rc; c0 += CARVE_BATCH) {
-        size_t nb = n_cams - c0 < CARVE_BATCH ? n_cams - c0 : CARVE_BATCH;
-        for (size_t k = 0; k < nb && !rc; k++) {
-            view[k] = cams[c0 + k];
+    for (size_t at = 0; at < n_cams && !rc;) {
+        int nb = next_batch(order, order + n_cams, n_cams, at, runs, &n_runs);
+        for (int k = 0; k < nb && !rc; k++) {
+            view[k] = cams[order[at + k]];
             view[k].distortion = SP_DIST_NONE;
-            if (o->carve_downscale > 1) sp_camera_downscale(&view[k], o->carve_downscale);
+            int ds = nav_carve_downscale(o, &view[k]);
+            if (ds > 1) sp_camera_downscale(&view[k], ds);
             size_t np = (size_t)(view[k].width > 0 ? view[k].width : 1) * (view[k].height > 0 ? view[k].height : 1);
             if (np > cap[k]) {
                 free(buf[k]);
-                buf[k] = malloc(sizeof(float) * 2 * np);
-                cap[k] = np;
+                buf[k] = malloc(sizeof(float) * np);
+                cap[k] = buf[k] ? np : 0;
                 if (!buf[k]) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu-pixel renders", np);
             }
             /* first-surface depth where the accumulated alpha reaches carve_alpha: expected depth
              * blends a surface's edge with what lies behind it */
-            memset(&req[k], 0, sizeof req[k]);
-            req[k].depth = buf[k];
-            req[k].alpha = buf[k] ? buf[k] + np : NULL;
-            req[k].depth_mode = SP_DEPTH_SURFACE;
-            req[k].depth_alpha = o->carve_alpha;
+            req[k] = (sp_render_request){.depth = buf[k], .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = o->carve_alpha};
         }
-        double t0 = sp_time_now();
-        if (!rc && (rc = sp_render_views(r, scene, view, nb, req, err))) {
-            sp_error_prefix(err, "costmap: rendering training views %zu..%zu for carving: ", c0, c0 + nb - 1);
+        double t0 = nav_cpu_now();
+        if (!rc && (rc = sp_render_views(r, scene, view, (size_t)nb, req, err))) {
+            sp_error_prefix(err, "costmap: rendering training views for carving: ");
             break;
         }
-        t_render += sp_time_now() - t0;
-        for (size_t k = 0; k < nb && !rc; k++) {
-            double t1 = sp_time_now();
-            view_job job = {cm, &view[k], req[k].depth, req[k].alpha, o, &out->sl, bufs, 0, s, out->view_counts, 0};
-            job.rows_per_item = (view[k].height + 4 * T - 1) / (4 * T);
-            if (job.rows_per_item > 0)
-                sp_pool_for(pool, (view[k].height + job.rows_per_item - 1) / job.rows_per_item, carve_item, &job);
-            double t2 = sp_time_now();
-            job.per_item = (s->n + 16 * T - 1) / (16 * T);
-            if (out->view_counts && s->n)
-                sp_pool_for(pool, (long)((s->n + job.per_item - 1) / job.per_item), visible_item, &job);
-            t_rays += t2 - t1, t_vis += sp_time_now() - t2;
-        }
-        sp_progress_update(&pr, (long)(c0 + nb), NULL);
+        double t1 = nav_cpu_now();
+        carve_job job = {cm, s, o, &out->sl, view, req, runs, th};
+        sp_pool_for(pool, n_runs, carve_run, &job);
+        for (int t = 0; t < T; t++)
+            if (th[t].failed) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory carving");
+        t_render += t1 - t0, t_rays += nav_cpu_now() - t1;
+        at += (size_t)nb;
+        sp_progress_update(&pr, (long)at, NULL);
     }
     sp_progress_end(&pr, NULL);
-    sp_logf(log, SP_LOG_DEBUG, "carve: renders %.0f ms, rays %.0f ms, visibility %.0f ms", 1e3 * t_render,
-            1e3 * t_rays, 1e3 * t_vis);
-    for (int t = 1; bufs && t < T; t++) {
-        if (bufs[t].passes) add_sat(out->passes, bufs[t].passes, nv);
-        if (bufs[t].hits) add_sat(out->hits, bufs[t].hits, nv);
-        if (bufs[t].floor_seen) add_sat(out->floor_seen, bufs[t].floor_seen, nc);
-        free(bufs[t].passes), free(bufs[t].hits), free(bufs[t].floor_seen);
+    sp_logf(log, SP_LOG_DEBUG, "carve: %zu views in %d scans, %zu of %zu Gaussians rendered; CPU time: "
+            "renders %.0f ms, rays %.0f ms", n_cams, n_scans, kept, s->n, 1e3 * t_render, 1e3 * t_rays);
+    size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
+    for (int t = 1; th && t < T; t++) {
+        add_sat(out->hit_scans, th[t].hit_scans, nv);
+        add_sat(out->miss_scans, th[t].miss_scans, nv);
+        add_sat(out->floor_scans, th[t].floor_scans, nc);
+        if (out->view_counts) add_sat(out->view_counts, th[t].view_counts, s->n);
     }
-    free(bufs);
+    threads_free(th, T);
+    free(order);
     for (int k = 0; k < CARVE_BATCH; k++) free(buf[k]);
     sp_scene_free(scene);
     return rc;

@@ -1,5 +1,6 @@
-/* The costmap from the splat: floor detection, map bounds, opacity-weighted Gaussian footprints
- * in the robot's height band, then free space from the carving pass (carve.c) and Nav2-style
+/* The costmap from the splat: floor detection, map bounds, then occupancy from the training views
+ * used as depth sensors (carve.c: per voxel of the robot's height band, the scans that hit it and
+ * that saw through it) fused as log-odds, columns classified, pockets filled, and Nav2-style
  * inflation (inflate.c). First stage of navigation, fed by the model folder's splat.ply. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,7 +9,6 @@
 #include "nav_internal.h"
 
 #define FLOOR_BIN_M 0.02f     /* floor histogram bin */
-#define FLOOR_MIN_OPACITY 0.5f
 #define FLOOR_FLATNESS 0.5f   /* smallest scale / middle scale below this is a flat Gaussian */
 #define FLOOR_NZ 0.9f         /* its normal within ~25 degrees of vertical */
 #define BOUNDS_QUANTILE 0.001 /* robust map bounds: drop this share of band Gaussians per side */
@@ -26,16 +26,21 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.cost_scaling_factor = 3.0f;
     o.keep_clear_of_unknown = 0;
     o.min_opacity = 0.15f;
-    o.min_views = 0;
+    o.occupancy = SP_OCCUPANCY_FOOTPRINTS;
     o.footprint_sigmas = 3.0f;
     o.occupied_evidence = 0.5f;
+    o.pass_veto = 1.0f;
+    o.prob_hit = 0.7f;
+    o.prob_miss = 0.4f;
+    o.occupied_prob = 0.5f;
+    o.min_hit_scans = 2;
+    o.free_needs_floor = 0;
+    o.free_from_floor = 0;
     o.slice_m = 0.1f;
-    o.pass_veto = 3.0f;
     o.fill_max_area_m2 = 4.0f;
-    o.free_needs_floor = 1;
     o.cameras_stand = 1;
     o.despeckle_cells = 0;
-    o.carve_downscale = 4;
+    o.carve_downscale = 0;
     o.carve_alpha = 0.5f;
     o.carve_stop_m = 0.03f;
     o.floor_tolerance_m = 0.15f;
@@ -97,19 +102,6 @@ int sp_costmap_traversable(const sp_costmap *cm, int ix, int iy)
 
 /* ---- Gaussian geometry ------------------------------------------------------------------------ */
 
-/* World covariance of Gaussian i (row-major 3x3) and its opacity. */
-static float gauss_cov(const sp_splat *s, size_t i, float C[9])
-{
-    float R[9], sc[3];
-    sp_quat_to_mat3(s->quats + 4 * i, R);
-    for (int k = 0; k < 3; k++) sc[k] = expf(2.0f * s->log_scales[3 * i + k]);
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            C[a * 3 + b] = R[a * 3] * R[b * 3] * sc[0] + R[a * 3 + 1] * R[b * 3 + 1] * sc[1] +
-                           R[a * 3 + 2] * R[b * 3 + 2] * sc[2];
-    return sp_sigmoid(s->opacity_logits[i]);
-}
-
 /* |z component| of the axis of Gaussian i's smallest scale, and flatness (smallest / middle). */
 static void gauss_normal(const sp_splat *s, size_t i, float *nz, float *flat)
 {
@@ -137,7 +129,7 @@ static int flat_horizontal(const sp_splat *s, size_t i, float *op)
 {
     float nz, flat;
     *op = sp_sigmoid(s->opacity_logits[i]);
-    if (*op < FLOOR_MIN_OPACITY) return 0;
+    if (*op < NAV_FLOOR_MIN_OPACITY) return 0;
     gauss_normal(s, i, &nz, &flat);
     return nz >= FLOOR_NZ && flat <= FLOOR_FLATNESS;
 }
@@ -198,14 +190,6 @@ static int detect_floor(const sp_splat *s, const sp_camera *cams, size_t n_cams,
     return SP_OK;
 }
 
-/* Share of a 1-D Gaussian (mean m, std sd) inside [lo, hi]. */
-static float band_fraction(float m, float sd, float lo, float hi)
-{
-    float k = 1.0f / (sd * 1.41421356f);
-    return 0.5f * (erff((hi - m) * k) - erff((lo - m) * k));
-}
-
-
 /* Bounds: the band Gaussians (robust quantiles) and the cameras, plus the margin. */
 static int map_bounds(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
                       const sp_costmap_opts *o, sp_error *err)
@@ -255,106 +239,6 @@ static int map_bounds(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     return SP_OK;
 }
 
-/* Smallest (q - m)^T A (q - m) over q in the box [x0, x1] x [y0, y1], A = [a b; b c] positive
- * definite: 0 when m is inside, else the least over the four edges (a 1-D quadratic each). */
-static float maha_box_min(float a, float b, float c, const float m[2], float x0, float y0, float x1, float y1)
-{
-    if (m[0] >= x0 && m[0] <= x1 && m[1] >= y0 && m[1] <= y1) return 0.0f;
-    const float ex[4][4] = {{x0, y0, x1, y0}, {x1, y0, x1, y1}, {x1, y1, x0, y1}, {x0, y1, x0, y0}};
-    float best = INFINITY;
-    for (int k = 0; k < 4; k++) {
-        float px = ex[k][0] - m[0], py = ex[k][1] - m[1], dx = ex[k][2] - ex[k][0], dy = ex[k][3] - ex[k][1];
-        float ee = a * dx * dx + 2 * b * dx * dy + c * dy * dy, pe = a * px * dx + b * (px * dy + py * dx) + c * py * dy;
-        float t = ee > 0 ? -pe / ee : 0;
-        t = t < 0 ? 0 : t > 1 ? 1 : t;
-        float qx = px + t * dx, qy = py + t * dy, v = a * qx * qx + 2 * b * qx * qy + c * qy * qy;
-        if (v < best) best = v;
-    }
-    return best;
-}
-
-/* Accumulates log(1 - w) per voxel over the band Gaussians' footprints: w = opacity x (share of
- * the Gaussian's vertical mass inside the slice) x exp(-d^2 / 2), d the smallest Mahalanobis
- * distance (xy marginal) from the Gaussian's centre to any point of the cell: the most opaque
- * the Gaussian gets anywhere in the cell, so a cell counts when its footprint covers any part of
- * it, not only its centre, and never for being next to a surface. Out to footprint_sigmas.
- * Fused per slice, a wall's column of tens of Gaussians cannot add its tails up into a phantom
- * obstacle beside it; within a slice, neighbours' tails fill the gaps between them as they do in
- * the rendered image. */
-static void splat_footprints(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o,
-                             const nav_slices *sl, const uint16_t *views, float *log_free)
-{
-    const float k2 = o->footprint_sigmas * o->footprint_sigmas;
-    float wv[NAV_MAX_SLICES];
-    for (size_t i = 0; i < s->n; i++) {
-        if (views[i] < o->min_views) continue;
-        float C[9];
-        float op = gauss_cov(s, i, C);
-        if (op < o->min_opacity) continue;
-        const float *m = s->means + 3 * i;
-        float sz = fmaxf(sqrtf(C[8]), 1e-6f);
-        if (m[2] + 3.0f * sz < cm->band[0] || m[2] - 3.0f * sz > cm->band[1]) continue;
-        int any = 0;
-        for (int v = 0; v < sl->n; v++) {
-            float lo = sl->z0 + v * sl->dz, w = op * band_fraction(m[2], sz, lo, lo + sl->dz);
-            wv[v] = w < 0.02f ? 0.0f : w;
-            any |= wv[v] > 0.0f;
-        }
-        if (!any) continue;
-        /* a floor of 1e-8 m^2 keeps a needle's covariance invertible */
-        float a = C[0] + 1e-8f, b = C[1], c = C[4] + 1e-8f, det = a * c - b * b;
-        if (!(det > 0)) continue;
-        float ia = c / det, ib = -b / det, ic = a / det;
-        float rx = o->footprint_sigmas * sqrtf(a), ry = o->footprint_sigmas * sqrtf(c);
-        int x0, y0, x1, y1;
-        sp_costmap_cell(cm, m[0] - rx, m[1] - ry, &x0, &y0);
-        sp_costmap_cell(cm, m[0] + rx, m[1] + ry, &x1, &y1);
-        if (x0 < 0) x0 = 0;
-        if (y0 < 0) y0 = 0;
-        if (x1 >= cm->nx) x1 = cm->nx - 1;
-        if (y1 >= cm->ny) y1 = cm->ny - 1;
-        for (int iy = y0; iy <= y1; iy++)
-            for (int ix = x0; ix <= x1; ix++) {
-                float bx = cm->origin[0] + ix * cm->res, by = cm->origin[1] + iy * cm->res;
-                float d2 = maha_box_min(ia, ib, ic, m, bx, by, bx + cm->res, by + cm->res);
-                if (d2 > k2) continue;
-                float g = expf(-0.5f * d2);
-                long cell = nav_idx(cm, ix, iy);
-                for (int v = 0; v < sl->n; v++)
-                    if (wv[v] > 0) log_free[v * sl->cells + cell] += log1pf(-fminf(wv[v] * g, 0.999f));
-            }
-    }
-}
-
-/* Floor the splat reconstructed: opaque Gaussians at the floor's height that are thin vertically
- * (sigma_z within half the floor tolerance) mark the cells of their footprint (1.5 sigma) as
- * floor seen: a camera saw the floor there, past whatever stands around it. Denser than the
- * rays' floor hits, whose rendered depth spreads a slanted floor over several centimetres. */
-static void mark_floor(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, uint16_t *floor_seen)
-{
-    for (size_t i = 0; i < s->n; i++) {
-        const float *m = s->means + 3 * i;
-        if (fabsf(m[2] - cm->floor_z) > o->floor_tolerance_m) continue;
-        float C[9];
-        if (gauss_cov(s, i, C) < FLOOR_MIN_OPACITY || sqrtf(C[8]) > 0.5f * o->floor_tolerance_m) continue;
-        float a = 2.25f * C[0], b = 2.25f * C[1], c = 2.25f * C[4], det = a * c - b * b;
-        if (!(det > 0)) continue;
-        float ia = c / det, ib = -b / det, ic = a / det, rx = sqrtf(a), ry = sqrtf(c);
-        int x0, y0, x1, y1;
-        sp_costmap_cell(cm, m[0] - rx, m[1] - ry, &x0, &y0);
-        sp_costmap_cell(cm, m[0] + rx, m[1] + ry, &x1, &y1);
-        for (int iy = y0 < 0 ? 0 : y0; iy <= y1 && iy < cm->ny; iy++)
-            for (int ix = x0 < 0 ? 0 : x0; ix <= x1 && ix < cm->nx; ix++) {
-                float p[2];
-                sp_costmap_cell_center(cm, ix, iy, p);
-                float dx = p[0] - m[0], dy = p[1] - m[1];
-                if (ia * dx * dx + 2 * ib * dx * dy + ic * dy * dy > 1.0f) continue;
-                uint16_t *f = &floor_seen[nav_idx(cm, ix, iy)];
-                if (*f < UINT16_MAX) (*f)++;
-            }
-    }
-}
-
 /* Where the capture stood: a disk of the robot's radius under every training camera is free
  * (the robot or person carrying it was there), though no camera saw that floor: cameras look
  * away from their own feet. Occupancy evidence still wins (a camera held above a table). */
@@ -376,61 +260,66 @@ static void mark_stands(const sp_costmap *cm, const sp_camera *cams, size_t n_ca
     }
 }
 
-/* Fuses the footprints with the rays, voxel by voxel: a voxel is occupied when its footprint
- * evidence 1 - prod(1 - w) reaches occupied_evidence and rays did not pass through it more than
- * pass_veto x (1 + the rays that ended there) times (a floater the cameras saw through). (Rays'
- * end points alone are no evidence: rendered depth scatters a surface over neighbouring cells.)
- * A column is
- * occupied when one of its voxels is; free when none is and its floor was seen (a ray ended on
- * it, or the splat has floor there) with some ray crossing it (floor Gaussians' footprints reach
- * under the walls they meet, where no ray goes), or rays passed through all its slices: a ray
- * passing above a low bed does not make the bed free (free_needs_floor; without it any ray
- * does, like Nav2's voxel layer); unknown otherwise. */
-static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co,
-                     const float *log_free, const uint8_t *stood)
+/* Log-odds of a probability. */
+static inline float logit(float p) { return logf(p / (1.0f - p)); }
+
+/* Is voxel k occupied? SP_OCCUPANCY_SCANS fuses the scans as OctoMap does (Hornung et al.
+ * 2013): every scan that hit the voxel adds logit(prob_hit), every scan that only saw through it
+ * logit(prob_miss); occupied when the sum reaches logit(occupied_prob) and min_hit_scans scans
+ * hit it (fewer when fewer observed it at all): an obstacle is where several standpoints'
+ * rendered surfaces end, not where one view's floater sits. OctoMap's clamping (0.12 .. 0.97)
+ * only matters to incremental updates; every scan is fused at once here, so the sum decides.
+ * SP_OCCUPANCY_FOOTPRINTS: the Gaussians' footprint evidence, unless the scans saw through the
+ * voxel more than pass_veto x (1 + the scans that hit it) times. (Surface points alone are
+ * weak evidence on a trained splat: its rendered surfaces stand centimetres off the true ones.) */
+static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, long k)
 {
-    const float occ_log = logf(1.0f - o->occupied_evidence);
+    int H = co->hit_scans[k], M = co->miss_scans[k];
+    if (log_free) return log_free[k] <= logf(1.0f - o->occupied_evidence) && M <= o->pass_veto * (1.0f + H);
+    float l_hit = logit(o->prob_hit), l_miss = logit(o->prob_miss), l_occ = logit(o->occupied_prob);
+    int need = H + M < o->min_hit_scans ? H + M : o->min_hit_scans;
+    return H > 0 && H >= need && (float)H * l_hit + (float)M * l_miss >= l_occ;
+}
+
+/* A column is occupied when one of its voxels is; free when none is and every one of its voxels
+ * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
+ * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
+ * make the table free; unknown otherwise. log_free: the footprint evidence, or NULL (scans). */
+static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free,
+                     const uint8_t *stood)
+{
     const nav_slices *sl = &co->sl;
     for (long i = 0; i < sl->cells; i++) {
-        int occ = 0, passed = 0;
-        unsigned seen = co->floor_seen[i];
+        int occ = 0, observed = 0;
+        unsigned seen = co->floor_scans[i];
         for (int v = 0; v < sl->n && !occ; v++) {
             long k = v * sl->cells + i;
-            float P = co->passes[k], H = co->hits[k];
-            seen += co->passes[k];
-            passed += co->passes[k] > 0;
-            occ = log_free[k] <= occ_log && P <= o->pass_veto * (1.0f + H);
+            seen += (unsigned)(co->hit_scans[k] + co->miss_scans[k]);
+            observed += co->hit_scans[k] + co->miss_scans[k] > 0;
+            occ = voxel_occupied(o, co, log_free, k);
         }
-        int free_ok = o->free_needs_floor ? (co->floor_seen[i] > 0 && passed > 0) || passed == sl->n : seen > 0;
+        int floor = co->floor_scans[i] > 0;
+        int free_ok = (observed == sl->n && (!o->free_needs_floor || floor)) || (o->free_from_floor && floor && observed);
         free_ok |= stood && stood[i];
         cm->seen[i] = seen > UINT16_MAX ? UINT16_MAX : (uint16_t)seen;
         cm->occ[i] = occ ? SP_CELL_OCCUPIED : free_ok ? SP_CELL_FREE : SP_CELL_UNKNOWN;
     }
 }
 
-/* Pockets enclosed by obstacles are the insides of solid things: a 4-connected component of
- * non-occupied cells that does not reach the map's border, with every cell unknown (the inside
- * of a wall or a cabinet, which no ray reaches and no Gaussian covers) or with an area of at most
- * fill_max_area_m2 (a bed or table whose top the splat reconstructs too thinly, rays passing above
- * and below it). Walls are closed by one cell first so a one-cell gap does not open a pocket. A
- * robot could never reach such a pocket, so filling it changes no plan. */
-static int fill_pockets(sp_costmap *cm, float max_area_m2)
+/* One filling pass: with close, walls are the obstacles grown by one cell (and the closing ring
+ * around a filled pocket is filled too); without, the obstacles themselves, so that holes of a
+ * cell or two inside a table, which the grown walls swallow whole, are filled as well. */
+static void fill_pass(sp_costmap *cm, long max_cells, int close, int32_t *queue, uint8_t *wall, uint8_t *mark)
 {
     size_t n = (size_t)cm->nx * cm->ny;
-    int32_t *queue = malloc(sizeof(int32_t) * n);
-    uint8_t *wall = calloc(n, 1), *mark = calloc(n, 1);
-    if (!queue || !wall || !mark) {
-        free(queue), free(wall), free(mark);
-        return -1;
-    }
+    memset(wall, 0, n), memset(mark, 0, n);
     for (int y = 0; y < cm->ny; y++)
         for (int x = 0; x < cm->nx; x++) {
             if (cm->occ[nav_idx(cm, x, y)] != SP_CELL_OCCUPIED) continue;
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dx = -1; dx <= 1; dx++)
+            for (int dy = -close; dy <= close; dy++)
+                for (int dx = -close; dx <= close; dx++)
                     if (nav_inside(cm, x + dx, y + dy)) wall[nav_idx(cm, x + dx, y + dy)] = 1;
         }
-    long max_cells = (long)(max_area_m2 / (cm->res * cm->res));
     for (size_t seed = 0; seed < n; seed++) {
         if (wall[seed] || mark[seed]) continue;
         long head = 0, tail = 0;
@@ -459,12 +348,32 @@ static int fill_pockets(sp_costmap *cm, float max_area_m2)
             long c = queue[q];
             cm->occ[c] = SP_CELL_OCCUPIED;
             int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
-            for (int k = 0; k < 4; k++) {
+            for (int k = 0; k < 4 && close; k++) {
                 int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
                 if (nav_inside(cm, x, y) && wall[nav_idx(cm, x, y)]) cm->occ[nav_idx(cm, x, y)] = SP_CELL_OCCUPIED;
             }
         }
     }
+}
+
+/* Pockets enclosed by obstacles are the insides of solid things: a 4-connected component of
+ * non-occupied cells that does not reach the map's border, with every cell unknown (the inside
+ * of a wall or a cabinet, which no ray reaches and no Gaussian covers) or with an area of at most
+ * fill_max_area_m2 (a bed or table whose top the splat reconstructs too thinly, rays passing above
+ * and below it). Walls are closed by one cell first so a one-cell gap does not open a pocket. A
+ * robot could never reach such a pocket, so filling it changes no plan. */
+static int fill_pockets(sp_costmap *cm, float max_area_m2)
+{
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *queue = malloc(sizeof(int32_t) * n);
+    uint8_t *wall = malloc(n), *mark = malloc(n);
+    if (!queue || !wall || !mark) {
+        free(queue), free(wall), free(mark);
+        return -1;
+    }
+    long max_cells = (long)(max_area_m2 / (cm->res * cm->res));
+    fill_pass(cm, max_cells, 1, queue, wall, mark);
+    fill_pass(cm, max_cells, 0, queue, wall, mark);
     free(queue), free(wall), free(mark);
     return 0;
 }
@@ -526,14 +435,24 @@ static int check_opts(const sp_costmap_opts *o, sp_error *err)
                             "(need 0 <= robot <= inflation)", o->robot_radius_m, o->inflation_radius_m);
     if (!(o->cost_scaling_factor >= 0))
         return sp_error_set(err, SP_E_ARG, "costmap: cost_scaling_factor %g < 0", o->cost_scaling_factor);
-    if (!(o->occupied_evidence > 0 && o->occupied_evidence < 1))
-        return sp_error_set(err, SP_E_ARG, "costmap: occupied_evidence %g not in (0, 1)", o->occupied_evidence);
-    if (!(o->slice_m > 0) || !(o->pass_veto >= 0))
-        return sp_error_set(err, SP_E_ARG, "costmap: slice_m %g (> 0), pass_veto %g (>= 0)", o->slice_m, o->pass_veto);
-    if (o->carve_downscale < 1 || !(o->footprint_sigmas > 0) || !(o->max_range_m > 0) || o->max_cells < 1)
-        return sp_error_set(err, SP_E_ARG, "costmap: carve_downscale %d, footprint_sigmas %g, "
-                            "max_range_m %g, max_cells %d must be positive", o->carve_downscale,
-                            o->footprint_sigmas, o->max_range_m, o->max_cells);
+    if (!(o->slice_m > 0))
+        return sp_error_set(err, SP_E_ARG, "costmap: slice_m %g must be positive", o->slice_m);
+    if (o->occupancy != SP_OCCUPANCY_FOOTPRINTS && o->occupancy != SP_OCCUPANCY_SCANS)
+        return sp_error_set(err, SP_E_ARG, "costmap: occupancy %d is neither footprints (%d) nor scans (%d)",
+                            o->occupancy, SP_OCCUPANCY_FOOTPRINTS, SP_OCCUPANCY_SCANS);
+    if (!(o->occupied_evidence > 0 && o->occupied_evidence < 1) || !(o->pass_veto >= 0) || !(o->footprint_sigmas > 0))
+        return sp_error_set(err, SP_E_ARG, "costmap: footprints: occupied_evidence %g (in (0, 1)), pass_veto %g "
+                            "(>= 0), footprint_sigmas %g (> 0)", o->occupied_evidence, o->pass_veto, o->footprint_sigmas);
+    if (!(o->prob_hit > 0.5f && o->prob_hit < 1) || !(o->prob_miss > 0 && o->prob_miss < 0.5f) ||
+        !(o->occupied_prob > 0 && o->occupied_prob < 1) || o->min_hit_scans < 1)
+        return sp_error_set(err, SP_E_ARG, "costmap: sensor model prob_hit %g (in (0.5, 1)), prob_miss %g "
+                            "(in (0, 0.5)), occupied_prob %g (in (0, 1)), min_hit_scans %d (>= 1)",
+                            o->prob_hit, o->prob_miss, o->occupied_prob, o->min_hit_scans);
+    if (o->carve_downscale < 0 || !(o->carve_alpha > 0 && o->carve_alpha <= 1) || !(o->max_range_m > 0) ||
+        o->max_cells < 1)
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_downscale %d (>= 0), carve_alpha %g (in (0, 1]), "
+                            "max_range_m %g and max_cells %d (positive)", o->carve_downscale, o->carve_alpha,
+                            o->max_range_m, o->max_cells);
     return SP_OK;
 }
 
@@ -584,33 +503,32 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     co.sl.dz = (cm->band[1] - cm->band[0]) / co.sl.n;
     co.sl.cells = (long)n;
     size_t nv = n * co.sl.n;
-    float *log_free = calloc(nv, sizeof(float));
-    co.passes = calloc(nv, sizeof(uint16_t));
-    co.hits = calloc(nv, sizeof(uint16_t));
-    co.floor_seen = calloc(n, sizeof(uint16_t));
-    co.view_counts = view_counts ? view_counts : calloc(s->n, sizeof(uint16_t));
+    co.hit_scans = calloc(nv, sizeof(uint16_t));
+    co.miss_scans = calloc(nv, sizeof(uint16_t));
+    co.floor_scans = calloc(n, sizeof(uint16_t));
+    co.view_counts = view_counts;
     cm->occ = malloc(n);
     cm->cost = malloc(n);
     cm->dist = malloc(n * sizeof(float));
     cm->seen = calloc(n, sizeof(uint16_t));
-    if (!log_free || !co.passes || !co.hits || !co.floor_seen || !co.view_counts || !cm->occ ||
-        !cm->cost || !cm->dist || !cm->seen) {
+    uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
+    float *log_free = o.occupancy == SP_OCCUPANCY_FOOTPRINTS ? calloc(nv, sizeof(float)) : NULL;
+    if (!co.hit_scans || !co.miss_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen ||
+        (o.cameras_stand && !stood) || (o.occupancy == SP_OCCUPANCY_FOOTPRINTS && !log_free)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells x %d slices",
                           cm->nx, cm->ny, co.sl.n);
         goto done;
     }
-    memset(co.view_counts, 0, s->n * sizeof(uint16_t));
-    double t1 = sp_time_now();
+    if (view_counts) memset(view_counts, 0, s->n * sizeof(uint16_t));
+    double t1 = nav_cpu_now();
     if ((rc = nav_carve(cm, s, cams, n_cams, &o, r, &co, log, err))) goto done;
-    double t2 = sp_time_now();
-    splat_footprints(cm, s, &o, &co.sl, co.view_counts, log_free);
-    mark_floor(cm, s, &o, co.floor_seen);
-    uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
+    double t2 = nav_cpu_now();
+    if (log_free) {
+        nav_footprints(cm, s, &o, &co.sl, log_free);
+        nav_mark_floor(cm, s, &o, co.floor_scans);
+    }
     if (stood) mark_stands(cm, cams, n_cams, o.robot_radius_m, stood);
     classify(cm, &o, &co, log_free, stood);
-    free(stood);
-    sp_logf(log, SP_LOG_DEBUG, "costmap: carving %.0f ms, footprints %.0f ms", 1e3 * (t2 - t1),
-            1e3 * (sp_time_now() - t2));
     if (despeckle(cm, o.despeckle_cells) || fill_pockets(cm, o.fill_max_area_m2)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
         goto done;
@@ -622,9 +540,10 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
             "costmap: %dx%d cells at %.3f m, floor z %.3f, band %.2f..%.2f m: %ld occupied, %ld "
             "free, %ld unknown (%.0f ms)", cm->nx, cm->ny, cm->res, cm->floor_z, o.band_lo_m,
             o.band_hi_m, n_occ, n_free, (long)n - n_occ - n_free, 1e3 * (sp_time_now() - t0));
+    sp_logf(log, SP_LOG_DEBUG, "costmap: CPU time: carving %.0f ms, fusion and inflation %.0f ms",
+            1e3 * (t2 - t1), 1e3 * (nav_cpu_now() - t2));
 done:
-    free(log_free), free(co.passes), free(co.hits), free(co.floor_seen);
-    if (!view_counts) free(co.view_counts);
+    free(co.hit_scans), free(co.miss_scans), free(co.floor_scans), free(stood), free(log_free);
     if (rc) sp_costmap_free(cm);
     return rc;
 }

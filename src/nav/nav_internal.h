@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <time.h>
 
 #include "semsplat/nav.h"
 
@@ -30,18 +31,46 @@ static inline int nav_slice_of(const nav_slices *sl, float z)
     return v < 0 ? 0 : v >= sl->n ? sl->n - 1 : v;
 }
 
-/* What the carving renders measure, per voxel and per Gaussian. */
+/* What the carving renders measure, per voxel and per Gaussian (saturating counts). */
 typedef struct nav_carve_out {
     nav_slices sl;
-    uint16_t *passes;      /* [slices][cells] rays that crossed the voxel (carved it) */
-    uint16_t *hits;        /* [slices][cells] rays whose surface point lies in the voxel */
-    uint16_t *floor_seen;  /* [cells] rays that ended on the floor there */
-    uint16_t *view_counts; /* [n Gaussians] training views that see each Gaussian, or NULL */
+    uint16_t *hit_scans;     /* [slices][cells] scans with a surface point in the voxel */
+    uint16_t *miss_scans;    /* [slices][cells] scans whose rays crossed it, none ending there */
+    uint16_t *floor_scans;   /* [cells] scans with a surface point on the floor there */
+    uint16_t *view_counts;   /* [n Gaussians] training views that see each Gaussian, or NULL */
 } nav_carve_out;
 
-/* Carves free space along the training cameras' rendered depth into out (the grid of cm and
- * out->sl must be set up, the counters zeroed) and, when out->view_counts is not NULL, counts
- * per Gaussian the training views in which its centre is in front of the rendered surface. */
+#define NAV_FLOOR_MIN_OPACITY 0.5f /* floor Gaussians at least this opaque */
+
+/* Footprint evidence (footprints.c): adds log(1 - w) per voxel (log_free [slices][cells]) over
+ * the band Gaussians' footprints; nav_mark_floor bumps floor_seen [cells] under the splat's own
+ * floor Gaussians. */
+void nav_footprints(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, const nav_slices *sl,
+                    float *log_free);
+void nav_mark_floor(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, uint16_t *floor_seen);
+
+/* Process CPU time in seconds (all threads): what the build costs on a shared machine. */
+static inline double nav_cpu_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* Renders for carving are about this wide when carve_downscale is 0 (auto). */
+#define NAV_CARVE_WIDTH 160
+
+static inline int nav_carve_downscale(const sp_costmap_opts *o, const sp_camera *cam)
+{
+    if (o->carve_downscale > 0) return o->carve_downscale;
+    int d = (int)lroundf((float)cam->width / NAV_CARVE_WIDTH);
+    return d < 1 ? 1 : d;
+}
+
+/* Traces the training views' rendered first-surface depth into out (the grid of cm and out->sl
+ * must be set up, the counters zeroed): per voxel the scans that hit it and that only saw
+ * through it, per cell the scans that saw its floor, and (when out->view_counts is not NULL) per
+ * Gaussian the views in which it is visible. */
 int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
               const sp_costmap_opts *o, sp_raster *r, nav_carve_out *out, const sp_log *log,
               sp_error *err);
@@ -50,6 +79,13 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
 int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, size_t n_cams,
                       const sp_costmap_opts *opts, sp_raster *r, uint16_t *view_counts,
                       const sp_log *log, sp_error *err);
+
+/* The default start: the training cameras' positions on the floor (snapped to the nearest
+ * traversable cell within NAV_START_SNAP_M), the one in the largest traversable region (the
+ * earliest camera among equals, so the first camera's when the free space is one piece), with
+ * that camera's heading: x, y, yaw. */
+#define NAV_START_SNAP_M 2.0f
+int nav_pick_start(const sp_costmap *cm, const sp_camera *cams, size_t n_cams, float start[3], sp_error *err);
 
 /* Cost-term of a cell for the planner: (cost/252)^2 (Nav2 Theta*'s traversal term). */
 static inline float nav_cost_term(uint8_t c)

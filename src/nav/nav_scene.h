@@ -51,7 +51,8 @@ int nav_view_scores(sp_nav *nav, const float pos[3], float yaw, float pitch, flo
 /* Renders RGB (uint8) from a pose into pv (allocates pv->rgb). */
 int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, sp_nav_preview *pv,
                        sp_error *err);
-/* Sets the aux relevance channel from the found instances of some targets (3D boxes). */
+/* Sets the aux relevance channel for some found targets: the engine's per-Gaussian relevancy of
+ * their texts, or (no engine) their instances' 3D boxes. */
 int nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n, sp_error *err);
 
 /* Word tables (vocab.c). */

@@ -323,30 +323,82 @@ void sp_nav_free(sp_nav *nav)
 const sp_costmap *sp_nav_costmap(const sp_nav *nav) { return &nav->cm; }
 const sp_nav_opts *sp_nav_options(const sp_nav *nav) { return &nav->opts; }
 
+/* The traversable cell nearest to (x, y) within radius_m, or -1. */
+static long nearest_traversable(const sp_costmap *cm, float x, float y, float radius_m)
+{
+    int r = (int)ceilf(radius_m / cm->res), cx, cy;
+    sp_costmap_cell(cm, x, y, &cx, &cy);
+    float best = INFINITY;
+    long at = -1;
+    for (int iy = cy - r; iy <= cy + r; iy++)
+        for (int ix = cx - r; ix <= cx + r; ix++) {
+            if (!sp_costmap_traversable(cm, ix, iy)) continue;
+            float c[2];
+            sp_costmap_cell_center(cm, ix, iy, c);
+            float d = hypotf(c[0] - x, c[1] - y);
+            if (d < best && d <= radius_m) best = d, at = nav_idx(cm, ix, iy);
+        }
+    return at;
+}
+
+/* Labels the 4-connected traversable component of seed with label (comp [cells], 0 = none yet);
+ * returns its size. */
+static long flood_component(const sp_costmap *cm, long seed, int32_t label, int32_t *comp, int32_t *queue)
+{
+    long head = 0, tail = 0;
+    queue[tail++] = (int32_t)seed;
+    comp[seed] = label;
+    while (head < tail) {
+        long c = queue[head++];
+        int x0 = (int)(c % cm->nx), y0 = (int)(c / cm->nx);
+        for (int k = 0; k < 4; k++) {
+            int x = x0 + (k == 0) - (k == 1), y = y0 + (k == 2) - (k == 3);
+            if (!sp_costmap_traversable(cm, x, y) || comp[nav_idx(cm, x, y)]) continue;
+            comp[nav_idx(cm, x, y)] = label;
+            queue[tail++] = (int32_t)nav_idx(cm, x, y);
+        }
+    }
+    return tail;
+}
+
+int nav_pick_start(const sp_costmap *cm, const sp_camera *cams, size_t n_cams, float start[3], sp_error *err)
+{
+    size_t n = (size_t)cm->nx * cm->ny;
+    int32_t *comp = calloc(n, sizeof(int32_t)), *queue = malloc(sizeof(int32_t) * n);
+    long *size = calloc(n_cams + 1, sizeof(long));
+    if (!comp || !queue || !size) {
+        free(comp), free(queue), free(size);
+        return sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
+    }
+    long best_size = 0, best_cell = -1;
+    size_t best_cam = 0;
+    int32_t labels = 0;
+    for (size_t i = 0; i < n_cams; i++) {
+        sp_vec3 p = sp_camera_center(&cams[i]);
+        long cell = nearest_traversable(cm, p.x, p.y, NAV_START_SNAP_M);
+        if (cell < 0) continue;
+        if (!comp[cell]) size[labels] = flood_component(cm, cell, labels + 1, comp, queue), labels++;
+        if (size[comp[cell] - 1] > best_size) best_size = size[comp[cell] - 1], best_cell = cell, best_cam = i;
+    }
+    free(comp), free(queue), free(size);
+    if (best_cell < 0)
+        return sp_error_set(err, SP_E_NOTFOUND, "nav: no free floor within %.0f m of any of the %zu training "
+                            "cameras: give a start", NAV_START_SNAP_M, n_cams);
+    sp_vec3 p = sp_camera_center(&cams[best_cam]);
+    float c[2];
+    sp_costmap_cell_center(cm, (int)(best_cell % cm->nx), (int)(best_cell / cm->nx), c);
+    int ix, iy;
+    int on = sp_costmap_cell(cm, p.x, p.y, &ix, &iy) == 0 && nav_idx(cm, ix, iy) == best_cell;
+    start[0] = on ? p.x : c[0];
+    start[1] = on ? p.y : c[1];
+    /* heading: the optical axis (third row of world-to-camera R) on the floor */
+    start[2] = atan2f(cams[best_cam].R[7], cams[best_cam].R[6]);
+    return SP_OK;
+}
+
 int sp_nav_default_start(const sp_nav *nav, float start[3], sp_error *err)
 {
-    const sp_camera *c = &nav->cams[0];
-    sp_vec3 p = sp_camera_center(c);
-    const sp_costmap *cm = &nav->cm;
-    float best = INFINITY, q[2] = {0, 0};
-    int r = (int)ceilf(2.0f / cm->res), cx, cy;
-    sp_costmap_cell(cm, p.x, p.y, &cx, &cy);
-    for (int y = cy - r; y <= cy + r; y++)
-        for (int x = cx - r; x <= cx + r; x++) {
-            if (!sp_costmap_traversable(cm, x, y)) continue;
-            float cc[2];
-            sp_costmap_cell_center(cm, x, y, cc);
-            float d = hypotf(cc[0] - p.x, cc[1] - p.y);
-            if (d < best) best = d, q[0] = cc[0], q[1] = cc[1];
-        }
-    if (!isfinite(best))
-        return sp_error_set(err, SP_E_NOTFOUND, "nav: no free floor within 2 m of the first training "
-                            "camera (%.2f, %.2f): give a start", p.x, p.y);
-    start[0] = best < 0.5f * cm->res ? p.x : q[0];
-    start[1] = best < 0.5f * cm->res ? p.y : q[1];
-    /* heading: the optical axis (third row of world-to-camera R) on the floor */
-    start[2] = atan2f(c->R[7], c->R[6]);
-    return SP_OK;
+    return nav_pick_start(&nav->cm, nav->cams, nav->n_cams, start, err);
 }
 
 int nav_issue(sp_nav *nav, const char *id, const sp_path *path, sp_error *err)
@@ -432,20 +484,44 @@ int nav_render_preview(sp_nav *nav, const float pos[3], float yaw, float pitch, 
     return SP_OK;
 }
 
+/* Relevance of Gaussian at m to the found targets from their instances' boxes (the bare splat:
+ * no field to score): the most confident instance containing it. */
+static float box_relevance(const float *m, const sp_nav_target *targets, int n)
+{
+    float r = 0;
+    for (int t = 0; t < n; t++)
+        for (int k = 0; targets[t].found && k < targets[t].n; k++) {
+            const sp_nav_instance *in = &targets[t].inst[k];
+            if (m[0] >= in->box.min[0] && m[0] <= in->box.max[0] && m[1] >= in->box.min[1] &&
+                m[1] <= in->box.max[1] && m[2] >= in->z_min && m[2] <= in->z_max)
+                r = fmaxf(r, fminf(1.0f, in->confidence));
+        }
+    return r;
+}
+
+/* Per Gaussian the most relevant of the found targets: with an engine its calibrated per-Gaussian
+ * relevancy of each target's text (0.5 = no preference .. 1, stretched to 0 .. 1), the field's own
+ * answer in the engine's frame; without one the instances' boxes. */
 int nav_set_relevance(sp_nav *nav, const sp_nav_target *targets, int n, sp_error *err)
 {
     const sp_splat *s = &nav->aux;
-    for (size_t i = 0; i < s->n; i++) {
-        const float *m = s->means + 3 * i;
-        float r = 0;
-        for (int t = 0; t < n; t++)
-            for (int k = 0; t < n && targets[t].found && k < targets[t].n; k++) {
-                const sp_nav_instance *in = &targets[t].inst[k];
-                if (m[0] >= in->box.min[0] && m[0] <= in->box.max[0] && m[1] >= in->box.min[1] &&
-                    m[1] <= in->box.max[1] && m[2] >= in->z_min && m[2] <= in->z_max)
-                    r = fmaxf(r, fminf(1.0f, in->confidence));
-            }
-        nav->aux.features[2 * i + 1] = r;
+    float *rel = nav->engine && n > 0 ? malloc(sizeof(float) * s->n) : NULL;
+    if (nav->engine && n > 0 && !rel) return sp_error_set(err, SP_E_NOMEM, "nav: out of memory");
+    for (size_t i = 0; i < s->n; i++)
+        nav->aux.features[2 * i + 1] = rel ? 0.0f : box_relevance(s->means + 3 * i, targets, n);
+    for (int t = 0; rel && t < n; t++) {
+        if (!targets[t].found) continue;
+        int rc = sp_query_engine_relevancy(nav->engine, targets[t].text, rel, NULL, err);
+        if (rc) {
+            free(rel);
+            return sp_error_prefix(err, "nav: relevance of '%s': ", targets[t].text);
+        }
+        for (size_t i = 0; i < s->n; i++) {
+            float v = 2.0f * (rel[i] - 0.5f);
+            v = v < 0 ? 0 : v > 1 ? 1 : v;
+            if (v > nav->aux.features[2 * i + 1]) nav->aux.features[2 * i + 1] = v;
+        }
     }
+    free(rel);
     return sp_scene_update(nav->scene_aux, &nav->aux, SP_SCENE_CHANGED_FEATURES, err);
 }

@@ -25,7 +25,7 @@ typedef struct sp_raster_pass {
 typedef struct sp_raster_view {
     sp_camera cam;
     sp_raster_pass pass[2];
-    int n_pass;              /* >= 1 */
+    int n_pass;              /* >= 1, or 0 for a view that asks only for surface_depth */
     float *depth;            /* [H][W] sum w z, or NULL */
     float *alpha;            /* [H][W] sum w, or NULL */
     float *surface_depth;    /* [H][W] first-surface depth at surface_alpha, or NULL */

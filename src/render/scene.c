@@ -232,7 +232,7 @@ static view_plan plan_view(const sp_scene *sc, const sp_camera *cam, const sp_re
     /* colours: RGB from SH per view; a depth/alpha-only view composites the opacity logits as
      * one dummy channel (any [n] buffer serves: only the weights matter) */
     p.colors = at, at += p.rgb_pass ? sc->n * 3 : 0;
-    p.image_rgb = at, at += npix * (p.rgb_pass || !p.feat_pass ? 3 : 0);
+    p.image_rgb = at, at += npix * (p.rgb_pass || (!p.feat_pass && (p.want_alpha || p.want_depth)) ? 3 : 0);
     p.image_feat = at, at += p.feat_pass ? npix * (size_t)sc->feat_dim : 0;
     p.depth = at, at += p.want_depth ? npix : 0;
     p.alpha = at, at += p.want_alpha ? npix : 0;
@@ -255,7 +255,9 @@ static int setup_view(sp_scene *sc, const sp_camera *cam, const sp_render_reques
     }
     if (p->feat_pass)
         vw->pass[vw->n_pass++] = (sp_raster_pass){sc->features, sc->feat_dim, NULL, base + p->image_feat};
-    if (vw->n_pass == 0)
+    /* depth or alpha without colours: composite the opacities as one dummy channel for the
+     * weights; first-surface depth alone is its own pass and needs no compositing */
+    if (vw->n_pass == 0 && (p->want_alpha || p->want_depth))
         vw->pass[vw->n_pass++] = (sp_raster_pass){sc->opacity, 1, NULL, base + p->image_rgb};
     vw->depth = p->want_depth ? base + p->depth : NULL;
     vw->alpha = p->want_alpha ? base + p->alpha : NULL;

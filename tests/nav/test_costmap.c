@@ -11,36 +11,43 @@
 static sp_costmap g_cm; /* the room's costmap, built once */
 static sp_splat g_splat;
 
-static void build_room(void)
+static void build_room_with(sp_costmap *cm, const sp_costmap_opts *o)
 {
     sp_error err = {0};
     sp_camera *cams = NULL;
     size_t n = 0;
-    CHECK_OK(ns_make_splat(&g_splat, 1, &err), &err);
     CHECK(ns_make_cams(&cams, &n, 160, 120) == 0);
     sp_device *dev = NULL;
     sp_raster *r = NULL;
     CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
     CHECK_OK(sp_raster_create(&r, dev, &err), &err);
-    sp_costmap_opts o = sp_costmap_opts_default();
-    CHECK_OK(sp_costmap_build(&g_cm, &g_splat, cams, n, &o, r, NULL, &err), &err);
+    CHECK_OK(sp_costmap_build(cm, &g_splat, cams, n, o, r, NULL, &err), &err);
     sp_raster_free(r);
     sp_device_free(dev);
     free(cams);
 }
 
-static void test_floor_and_cells(void)
+static void build_room(void)
 {
-    CHECK_NEAR(g_cm.floor_z, 0.0f, 0.01f);
-    CHECK_NEAR(g_cm.res, 0.05f, 1e-6);
+    sp_error err = {0};
+    CHECK_OK(ns_make_splat(&g_splat, 1, &err), &err);
+    sp_costmap_opts o = sp_costmap_opts_default();
+    build_room_with(&g_cm, &o);
+}
+
+/* The room's costmap against its boxes (what = the occupancy rule, for the messages). */
+static void check_room(const sp_costmap *cm, const char *what)
+{
+    CHECK_NEAR(cm->floor_z, 0.0f, 0.01f);
+    CHECK_NEAR(cm->res, 0.05f, 1e-6);
     /* inside the room, away from edges: free; the pillar and walls: occupied; outside: unknown */
     long agree = 0, known = 0, occ_marked_free = 0, occ_total = 0;
-    for (int iy = 0; iy < g_cm.ny; iy++)
-        for (int ix = 0; ix < g_cm.nx; ix++) {
+    for (int iy = 0; iy < cm->ny; iy++)
+        for (int ix = 0; ix < cm->nx; ix++) {
             float p[2];
-            sp_costmap_cell_center(&g_cm, ix, iy, p);
-            uint8_t v = g_cm.occ[nav_idx(&g_cm, ix, iy)];
-            float x = p[0] - NS_OFFX, y = p[1] - NS_OFFY, h = 0.5f * g_cm.res;
+            sp_costmap_cell_center(cm, ix, iy, p);
+            uint8_t v = cm->occ[nav_idx(cm, ix, iy)];
+            float x = p[0] - NS_OFFX, y = p[1] - NS_OFFY, h = 0.5f * cm->res;
             int inside = x > 0 && x < 6 && y > 0 && y < 4;
             if (!inside) {
                 /* behind the walls nobody looked */
@@ -53,22 +60,35 @@ static void test_floor_and_cells(void)
             if (v == SP_CELL_UNKNOWN) continue;
             known++;
             if ((v == SP_CELL_OCCUPIED) == truth) agree++;
-            else if (getenv("NAV_DEBUG")) fprintf(stderr, "disagree (%.3f, %.3f) ours %d truth %d dist %.3f\n", x, y, v, truth, g_cm.dist[nav_idx(&g_cm, ix, iy)]);
+            else if (getenv("NAV_DEBUG")) fprintf(stderr, "disagree (%.3f, %.3f) ours %d truth %d dist %.3f\n", x, y, v, truth, cm->dist[nav_idx(cm, ix, iy)]);
             if (truth && v == SP_CELL_FREE) occ_marked_free++;
         }
-    fprintf(stderr, "room: %ld of %ld known cells agree, %ld of %ld occupied marked free\n", agree,
+    fprintf(stderr, "room (%s): %ld of %ld known cells agree, %ld of %ld occupied marked free\n", what, agree,
             known, occ_marked_free, occ_total);
     CHECK(known > 0.9 * 6 / 0.05 * 4 / 0.05 * 0.85);
     CHECK(agree >= 0.95 * known);
     CHECK(occ_marked_free <= 0.01 * occ_total);
     int ix, iy;
-    CHECK(sp_costmap_cell(&g_cm, 1.5f, 1.0f, &ix, &iy) == 0);
-    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_FREE);
-    CHECK(sp_costmap_cell(&g_cm, 3.0f, 2.0f, &ix, &iy) == 0);
-    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_OCCUPIED);
+    CHECK(sp_costmap_cell(cm, 1.5f, 1.0f, &ix, &iy) == 0);
+    CHECK(cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_FREE);
+    CHECK(sp_costmap_cell(cm, 3.0f, 2.0f, &ix, &iy) == 0);
+    CHECK(cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_OCCUPIED);
     /* the table top (0.7 m) is inside the 0.05..1.0 m band */
-    CHECK(sp_costmap_cell(&g_cm, 4.8f, 0.9f, &ix, &iy) == 0);
-    CHECK(g_cm.occ[nav_idx(&g_cm, ix, iy)] == SP_CELL_OCCUPIED);
+    CHECK(sp_costmap_cell(cm, 4.8f, 0.9f, &ix, &iy) == 0);
+    CHECK(cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_OCCUPIED);
+}
+
+static void test_floor_and_cells(void) { check_room(&g_cm, "footprints, the default"); }
+
+/* The other occupancy rule: the training views' scans alone, fused as log-odds. */
+static void test_scans_occupancy(void)
+{
+    sp_costmap_opts o = sp_costmap_opts_default();
+    o.occupancy = SP_OCCUPANCY_SCANS;
+    sp_costmap cm;
+    build_room_with(&cm, &o);
+    check_room(&cm, "scans");
+    sp_costmap_free(&cm);
 }
 
 static void test_inflation_formula(void)
@@ -214,6 +234,12 @@ static void test_bad_build(void)
     o.resolution_m = 0.0005f;
     CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "resolution");
     o = sp_costmap_opts_default();
+    o.occupancy = 7;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "occupancy");
+    o = sp_costmap_opts_default();
+    o.prob_miss = 0.6f;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "prob_miss");
+    o = sp_costmap_opts_default();
     o.robot_radius_m = 2.0f;
     CHECK_FAILS(sp_costmap_inflate(&g_cm, &o, &err), SP_E_ARG, &err, "radius");
     /* a NaN in the splat, a camera with a broken pose */
@@ -240,6 +266,7 @@ int main(void)
 {
     build_room();
     RUN(test_floor_and_cells);
+    RUN(test_scans_occupancy);
     RUN(test_inflation_formula);
     RUN(test_map_roundtrip);
     RUN(test_bad_maps);

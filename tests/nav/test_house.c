@@ -7,11 +7,10 @@
 #include <stdio.h>
 
 #include "nav/nav_internal.h"
+#include "nav_truth.h"
 #include "semsplat/nav.h"
 #include "test.h"
 #include "world_splat.h"
-
-#define REACH_M 0.6f
 
 static ws_scene g_sc;
 static sp_device *g_dev;
@@ -35,7 +34,6 @@ static void setup(void)
                                     NULL, g_dev, NULL, &err), &err);
     sp_nav_opts o = sp_nav_opts_default();
     o.preview_width = 160, o.preview_height = 120;
-    if (getenv("NAV_EVIDENCE")) o.costmap.occupied_evidence = (float)atof(getenv("NAV_EVIDENCE"));
     CHECK_OK(sp_nav_create(&g_nav, g_engine, NULL, NULL, 0, &o, g_dev, NULL, &err), &err);
     const sp_costmap *cm = sp_nav_costmap(g_nav);
     size_t n = (size_t)cm->nx * cm->ny;
@@ -44,27 +42,8 @@ static void setup(void)
                                  cm->ny, g_truth, &err), &err);
     CHECK_OK(sp_nav_default_start(g_nav, g_start, &err), &err);
     /* truly reachable: centre at least a robot radius from truly occupied cells, connected */
-    float *d = malloc(sizeof(float) * n);
-    CHECK_OK(sp_edt2(g_truth, cm->nx, cm->ny, cm->res, d, NULL, &err), &err);
     g_reach = calloc(n, 1);
-    long *queue = malloc(sizeof(long) * n), head = 0, tail = 0;
-    int sx, sy;
-    sp_costmap_cell(cm, g_start[0], g_start[1], &sx, &sy);
-    queue[tail++] = nav_idx(cm, sx, sy);
-    g_reach[queue[0]] = 1;
-    while (head < tail) {
-        long c = queue[head++];
-        int cx = (int)(c % cm->nx), cy = (int)(c / cm->nx);
-        for (int k = 0; k < 4; k++) {
-            int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
-            if (!nav_inside(cm, x, y)) continue;
-            long j = nav_idx(cm, x, y);
-            if (g_reach[j] || d[j] <= o.costmap.robot_radius_m) continue;
-            g_reach[j] = 1;
-            queue[tail++] = j;
-        }
-    }
-    free(queue), free(d);
+    CHECK_OK(nt_reach(cm, g_truth, g_start, o.costmap.robot_radius_m, g_reach, &err), &err);
     fprintf(stderr, "setup: %zu Gaussians, %zu cameras, %dx%d cells from (%.3f, %.3f), %.1f s\n", g_sc.splat.n,
             g_sc.n_cams, cm->nx, cm->ny, cm->origin[0], cm->origin[1], sp_time_now() - t0);
 }
@@ -93,48 +72,6 @@ static void test_costmap_vs_floor_plan(void)
     }
 }
 
-typedef struct enter_ctx {
-    const sp_costmap *cm;
-    long start;
-    int bad, truly_occupied;
-    const uint8_t *truth;
-} enter_ctx;
-
-static int enter_cell(void *v, long cell, float t0, float t1)
-{
-    enter_ctx *c = v;
-    (void)t0, (void)t1;
-    if (cell != c->start && !(c->cm->occ[cell] == SP_CELL_FREE && c->cm->cost[cell] < SP_COST_INSCRIBED)) c->bad++;
-    c->truly_occupied += c->truth[cell];
-    return 0;
-}
-
-static void path_cells(const sp_costmap *cm, const sp_path *p, int *bad, int *truly_occupied)
-{
-    int sx, sy;
-    sp_costmap_cell(cm, p->waypoints[0], p->waypoints[1], &sx, &sy);
-    enter_ctx c = {cm, nav_idx(cm, sx, sy), 0, 0, g_truth};
-    for (int k = 0; k + 1 < p->n; k++) {
-        float a[2] = {p->waypoints[4 * k], p->waypoints[4 * k + 1]}, b[2] = {p->waypoints[4 * k + 4], p->waypoints[4 * k + 5]};
-        nav_traverse(cm, a, b, enter_cell, &c);
-    }
-    *bad = c.bad, *truly_occupied = c.truly_occupied;
-}
-
-/* Is some truly reachable cell within REACH_M of the box? */
-static int truly_reachable(const sp_nav_box *b)
-{
-    const sp_costmap *cm = sp_nav_costmap(g_nav);
-    for (int iy = 0; iy < cm->ny; iy++)
-        for (int ix = 0; ix < cm->nx; ix++) {
-            if (!g_reach[nav_idx(cm, ix, iy)]) continue;
-            float c[2];
-            sp_costmap_cell_center(cm, ix, iy, c);
-            if (nav_box_dist(b, c) <= REACH_M) return 1;
-        }
-    return 0;
-}
-
 static void test_every_object(void)
 {
     sp_error err = {0};
@@ -144,7 +81,7 @@ static void test_every_object(void)
         const sp_synth_object *ob = &g_sc.w.objects[o];
         if (ob->is_structure || ob->aabb_min[2] > 0.1f) continue; /* floor-standing objects only */
         sp_nav_box truth = {{ob->aabb_min[0], ob->aabb_min[1]}, {ob->aabb_max[0], ob->aabb_max[1]}};
-        if (!truly_reachable(&truth)) {
+        if (!nt_box_reachable(cm, g_reach, &truth)) {
             fprintf(stderr, "  %-18s not reachable on the floor (ground truth): skipped\n", ob->name);
             skipped++;
             continue;
@@ -168,21 +105,14 @@ static void test_every_object(void)
             misses++;
             continue;
         }
-        int bad, truly;
-        path_cells(cm, &p, &bad, &truly);
-        const float *e = p.waypoints + 4 * (p.n - 1);
-        int ix, iy;
-        sp_costmap_cell(cm, e[0], e[1], &ix, &iy);
-        float dist = nav_box_dist(&truth, e);
-        int end_free = !g_truth[nav_idx(cm, ix, iy)];
-        int pass = bad == 0 && dist <= REACH_M && end_free;
-        ok += pass;
+        nt_verdict v = nt_judge(cm, g_truth, &truth, &p);
+        ok += v.pass;
         fprintf(stderr, "  %-18s %s  %.2f m path, ends %.2f m from its footprint%s, %d non-free cells, %d truly "
-                "occupied\n", ob->name, pass ? "ok  " : "FAIL", p.length_m, dist, end_free ? "" : " (truly occupied)",
-                bad, truly);
-        CHECK(bad == 0);
-        CHECK(dist <= REACH_M);
-        CHECK(end_free);
+                "occupied\n", ob->name, v.pass ? "ok  " : "FAIL", p.length_m, v.end_dist,
+                v.end_free ? "" : " (truly occupied)", v.bad, v.truly_occupied);
+        CHECK(v.bad == 0);
+        CHECK(v.end_dist <= NT_REACH_M);
+        CHECK(v.end_free);
         sp_path_free(&p);
     }
     fprintf(stderr, "objects: %d of %d reachable floor-standing objects reached (%d unreachable skipped)\n", ok,
@@ -205,22 +135,17 @@ static void test_refrigerator_top3(void)
     CHECK_OK(sp_nav_plan_request(g_nav, &req, &plan, &err), &err);
     fprintf(stderr, "refrigerator: %d of 3 (%s)\n", plan.n, plan.note);
     CHECK(plan.n == 3);
-    const sp_planner_opts *po = &sp_nav_options(g_nav)->planner;
-    float shortest = INFINITY;
-    for (int i = 0; i < plan.n; i++) shortest = fminf(shortest, plan.traj[i].path.length_m);
+    const sp_path *paths[3];
     for (int i = 0; i < plan.n; i++) {
-        const sp_path *a = &plan.traj[i].path;
-        fprintf(stderr, "  %s %.2f m score %.3f\n", plan.traj[i].id, a->length_m, plan.traj[i].score.total);
-        CHECK(a->length_m <= po->max_length_ratio * shortest + 1e-3f);
-        for (int j = 0; j < plan.n; j++) {
-            if (j == i) continue;
-            const sp_path *b = &plan.traj[j].path;
-            float sh = sp_path_share(a->waypoints, a->n, 4, b->waypoints, b->n, 4, po->share_radius_m);
-            CHECK_MSG(sh <= po->max_share + 0.02f, "%s shares %.2f with %s", plan.traj[i].id, sh, plan.traj[j].id);
-        }
+        paths[i] = &plan.traj[i].path;
+        fprintf(stderr, "  %s %.2f m score %.3f, semantic %.3f\n", plan.traj[i].id, paths[i]->length_m,
+                plan.traj[i].score.total, plan.traj[i].score.semantic);
+        /* the kitchen's concepts, scored by the engine's per-Gaussian relevancy, seen on the way */
+        CHECK(plan.traj[i].score.semantic > 0 && plan.traj[i].score.semantic <= 1);
         CHECK(plan.traj[i].n_previews == sp_nav_options(g_nav)->n_previews);
         CHECK(sp_nav_lookup(g_nav, plan.traj[i].id) != NULL);
     }
+    CHECK(nt_distinct_violations(paths, plan.n, &sp_nav_options(g_nav)->planner) == 0);
     CHECK(sp_nav_lookup(g_nav, "plan-99.1") == NULL);
     /* the folder plan writes, and its map read back through its own thresholds */
     const char *dir = test_tmpdir("nav_house_plan");
@@ -280,7 +205,7 @@ static void test_explore_kitchen(void)
         CHECK(t.quality[k] >= 0 && t.quality[k] <= 1);
     }
     int bad, truly;
-    path_cells(cm, &t.path, &bad, &truly);
+    nt_path_cells(cm, g_truth, &t.path, &bad, &truly);
     CHECK(bad == 0);
     const char *dir = test_tmpdir("nav_house_explore");
     CHECK_OK(sp_nav_tour_write(g_nav, &t, dir, &err), &err);

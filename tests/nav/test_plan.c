@@ -1,7 +1,8 @@
 /* The planner on hand-drawn maps: paths never enter a lethal, inscribed or unknown cell, end at
  * the goal (point, pose, footprint), are no longer than needed; k distinct alternatives around
  * two obstacles obey the share and length rules, and fewer are returned (with a note) when the
- * map allows fewer; the share and clearance measures; every failure names its reason. */
+ * map allows fewer; the share and clearance measures; every failure names its reason; the
+ * default start (the camera in the largest free region). */
 #include <stdio.h>
 
 #include "nav/nav_internal.h"
@@ -254,6 +255,51 @@ static void test_failures(void)
     sp_costmap_free(&cm);
 }
 
+/* A small island (left) and a large room (right), split by a wall. */
+static const char *const two_rooms[] = {
+    "##############################",
+    "#......#.....................#",
+    "#......#.....................#",
+    "#......#.....................#",
+    "#......#.....................#",
+    "#......#.....................#",
+    "#......#.....................#",
+    "##############################",
+};
+
+static sp_camera camera_at(float x, float y, float look_x, float look_y)
+{
+    sp_camera c;
+    memset(&c, 0, sizeof c);
+    sp_camera_intrinsics_fov(&c, 64, 48, 1.0f);
+    sp_camera_look_at(&c, (sp_vec3){x, y, 1.2f}, (sp_vec3){look_x, look_y, 1.2f}, (sp_vec3){0, 0, 1});
+    return c;
+}
+
+/* The default start: the camera standing in the larger free region, with its heading; none when
+ * no camera has traversable floor within 2 m. */
+static void test_default_start(void)
+{
+    sp_error err = {0};
+    sp_costmap cm;
+    ascii_map(&cm, two_rooms, 8, 0.1f, 0.1f);
+    /* origin (-1, 2), 10 cm cells: the island is x -0.9..-0.3, the room x -0.2..1.9, y 2.1..2.7 */
+    sp_camera cams[3] = {camera_at(-0.6f, 2.4f, -0.6f, 3.4f), camera_at(1.0f, 2.4f, 2.0f, 2.4f),
+                         camera_at(9.0f, 9.0f, 9.0f, 10.0f)};
+    float st[3];
+    CHECK_OK(nav_pick_start(&cm, cams, 3, st, &err), &err);
+    fprintf(stderr, "  start (%.2f, %.2f) yaw %.2f\n", st[0], st[1], st[2]);
+    CHECK(st[0] > -0.2f && st[0] < 1.9f);
+    CHECK_NEAR(st[1], 2.4f, 0.1f);
+    CHECK_NEAR(st[2], 0.0f, 1e-3); /* camera 1 looks along +x */
+    /* the island's camera alone: its own region */
+    CHECK_OK(nav_pick_start(&cm, cams, 1, st, &err), &err);
+    CHECK(st[0] < -0.3f);
+    CHECK_NEAR(st[2], (float)M_PI_2, 1e-3);
+    CHECK_FAILS(nav_pick_start(&cm, cams + 2, 1, st, &err), SP_E_NOTFOUND, &err, "no free floor");
+    sp_costmap_free(&cm);
+}
+
 int main(void)
 {
     RUN(test_point_and_pose);
@@ -261,5 +307,6 @@ int main(void)
     RUN(test_k_distinct);
     RUN(test_share_and_clearance);
     RUN(test_failures);
+    RUN(test_default_start);
     return TEST_EXIT();
 }
