@@ -91,6 +91,11 @@ typedef struct sp_costmap_opts {
     float footprint_sigmas;    /* footprints are evaluated out to this many std devs (3) */
     float occupied_evidence;   /* (0.5) */
     float pass_veto;           /* (1) */
+    int veto_beside;           /* for a voxel some scan hit, a scan that saw through it but hit
+                                * one of the 8 beside it (same slice) does not count as seeing
+                                * through it: a rendered surface point (a Gaussian's depth) is
+                                * good to about a cell, and rays pass beside a thin leg through
+                                * the cell it stands in (1; 0: every such scan counts) */
     /* SP_OCCUPANCY_SCANS: the scans alone, fused as log-odds (OctoMap's sensor model) */
     float prob_hit;            /* P(occupied) from one scan's hit (0.7, OctoMap's) */
     float prob_miss;           /* P(occupied) from one scan seeing through (0.4, OctoMap's) */

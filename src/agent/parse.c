@@ -46,7 +46,8 @@ static const char *const preamble_words[] = {"please", "hey", "hi", "hello", "ro
                                              "so", "now", "kindly", "alright", "well", "semsplat",
                                              "quickly", "just", "and", "then", NULL};
 static const char *const preamble_phrases[] = {
-    "can you", "could you", "would you", "will you", "can u", "i want you to",
+    "would you mind", "do you mind", "how about", "can you", "could you", "would you", "will you",
+    "can u", "i want you to",
     "i would like you to", "i need you to", "i want to", "i would like to", "i need to",
     "i wanna", "let us", "lets", "let me", "go ahead and", "try to", "i would love to",
     "you should", "you can", "i wish to", "be so kind as to", NULL};
@@ -385,11 +386,11 @@ void sp_agent_parse(const char *text, sp_agent_intent *o)
         return;
     }
     int traj = pw_find(&t, 0, traj_words);
-    int go = pw_find(&t, 0, go_verbs);
+    int go = pw_find_verb(&t, 0, go_verbs);
     int hw = pw_find(&t, 0, (const char *const[]){"how", NULL});
     int hgo = hw >= 0 ? pw_find(&t, hw + 1, go_verbs) : -1;
     int how = hgo > hw && hgo <= hw + 4;
-    if (traj >= 0) take_k(&t, o), traj = pw_find(&t, 0, traj_words), go = pw_find(&t, 0, go_verbs);
+    if (traj >= 0) take_k(&t, o), traj = pw_find(&t, 0, traj_words), go = pw_find_verb(&t, 0, go_verbs);
     if ((traj >= 0 && go != 0) || how || (pw_in(t.w[0], (const char *const[]){"preview", "visualize", "visualise", NULL}))) {
         parse_trajectories(&t, traj >= 0 ? traj : how ? hw : 0, o);
         return;

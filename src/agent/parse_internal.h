@@ -20,6 +20,9 @@ void pw_tokenize(const char *text, pw_words *out);
 int pw_in(const char *w, const char *const *list);
 /* Index of the first word at or after `from` that is in list, or -1. */
 int pw_find(const pw_words *t, int from, const char *const *list);
+/* Like pw_find, but a word also matches a list entry's -ing form ("going", "driving",
+ * "getting"): verbs in polite or progressive phrasing ("would you mind heading to ..."). */
+int pw_find_verb(const pw_words *t, int from, const char *const *list);
 /* Matches a space-separated phrase ("next to") at position i; returns its word count or 0. */
 int pw_match(const pw_words *t, int i, const char *phrase);
 /* The first position >= from where one of the phrases (NULL-terminated) matches; *len gets its

@@ -117,6 +117,30 @@ int pw_find(const pw_words *t, int from, const char *const *list)
     return -1;
 }
 
+/* 1 when w is base + "ing", with a final 'e' dropped ("driving") or a final consonant after one
+ * vowel doubled ("getting", "running"). */
+static int is_ing_form(const char *w, const char *base)
+{
+    size_t n = strlen(base), m = strlen(w);
+    if (m < n + 2 || strcmp(w + m - 3, "ing") != 0) return 0;
+    char stem[PW_WORD];
+    if (m - 3 >= sizeof stem) return 0;
+    memcpy(stem, w, m - 3);
+    stem[m - 3] = 0;
+    if (!strcmp(stem, base)) return 1;
+    if (n > 1 && base[n - 1] == 'e' && m - 3 == n - 1 && !strncmp(stem, base, n - 1)) return 1;
+    return m - 3 == n + 1 && !strncmp(stem, base, n) && stem[n] == base[n - 1] &&
+           !strchr("aeiouwy", base[n - 1]);
+}
+
+int pw_find_verb(const pw_words *t, int from, const char *const *list)
+{
+    for (int i = from < 0 ? 0 : from; i < t->n; i++)
+        for (const char *const *b = list; *b; b++)
+            if (!strcmp(t->w[i], *b) || is_ing_form(t->w[i], *b)) return i;
+    return -1;
+}
+
 int pw_match(const pw_words *t, int i, const char *phrase)
 {
     int n = 0;

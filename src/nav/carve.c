@@ -26,39 +26,7 @@
 int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
                  void *ctx)
 {
-    double gx = (a[0] - cm->origin[0]) / cm->res, gy = (a[1] - cm->origin[1]) / cm->res;
-    double dx = (b[0] - cm->origin[0]) / cm->res - gx, dy = (b[1] - cm->origin[1]) / cm->res - gy;
-    int ix = (int)floor(gx), iy = (int)floor(gy);
-    int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-    double tdx = dx != 0 ? fabs(1.0 / dx) : INFINITY, tdy = dy != 0 ? fabs(1.0 / dy) : INFINITY;
-    double tmx = dx != 0 ? ((sx > 0 ? ix + 1 - gx : gx - ix) * tdx) : INFINITY;
-    double tmy = dy != 0 ? ((sy > 0 ? iy + 1 - gy : gy - iy) * tdy) : INFINITY;
-    double t = 0;
-    long steps = (long)(fabs(dx) + fabs(dy)) + 4;
-    for (long k = 0; k <= steps; k++) {
-        double tn = fmin(fmin(tmx, tmy), 1.0);
-        if (nav_inside(cm, ix, iy)) {
-            int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
-            if (rc) return rc;
-        }
-        if (tn >= 1.0) break;
-        t = tn;
-        if (fabs(tmx - tmy) < 1e-9) { /* through a corner: both side cells touch the segment */
-            int rc = 0;
-            if (nav_inside(cm, ix + sx, iy)) rc = fn(ctx, nav_idx(cm, ix + sx, iy), (float)t, (float)t);
-            if (!rc && nav_inside(cm, ix, iy + sy)) rc = fn(ctx, nav_idx(cm, ix, iy + sy), (float)t, (float)t);
-            if (rc) return rc;
-            ix += sx, iy += sy;
-            tmx += tdx, tmy += tdy;
-        } else if (tmx < tmy) {
-            ix += sx;
-            tmx += tdx;
-        } else {
-            iy += sy;
-            tmy += tdy;
-        }
-    }
-    return 0;
+    return nav_traverse_inline(cm, a, b, fn, ctx);
 }
 
 enum { FLAG_MISS = 1, FLAG_HIT = 2 };
@@ -71,7 +39,7 @@ typedef struct carve_thread {
     long n_touched;
     float *pts;            /* [pixels][4] a view's surface points */
     size_t cap_pts;
-    uint16_t *hit_scans, *miss_scans; /* [voxels] */
+    uint16_t *hit_scans, *miss_scans, *near_scans; /* [voxels] */
     uint16_t *floor_scans; /* [cells] */
     uint16_t *view_counts; /* [n Gaussians] or NULL */
     int failed;            /* out of memory */
@@ -108,7 +76,7 @@ typedef struct ray_ctx {
 } ray_ctx;
 
 /* Marks every slice of the cell the ray's stretch inside it overlaps as missed. */
-static int carve_cell(void *vctx, long cell, float t0, float t1)
+static inline int carve_cell(void *vctx, long cell, float t0, float t1)
 {
     ray_ctx *c = vctx;
     float za = c->z0 + t0 * c->dz, zb = c->z0 + t1 * c->dz;
@@ -134,20 +102,28 @@ static void carve_ray(const sp_costmap *cm, ray_ctx *rc, sp_vec3 C, sp_vec3 E, f
     float a[2] = {C.x + s0 * (E.x - C.x), C.y + s0 * (E.y - C.y)};
     float b[2] = {C.x + s1 * (E.x - C.x), C.y + s1 * (E.y - C.y)};
     rc->z0 = C.z + s0 * dz, rc->dz = (s1 - s0) * dz;
-    nav_traverse(cm, a, b, carve_cell, rc);
+    nav_traverse_inline(cm, a, b, carve_cell, rc); /* carve_cell inlined: the rays are most of the time */
+}
+
+/* Where a surface point counts: the flag index of its floor sighting (near the floor) or of its
+ * voxel's hit (in the band), -1 for neither. Each class is a height interval of one cell. */
+static long surface_key(const carve_job *j, const float P[3])
+{
+    const sp_costmap *cm = j->cm;
+    int ix, iy;
+    if (sp_costmap_cell(cm, P[0], P[1], &ix, &iy)) return -1;
+    long cell = nav_idx(cm, ix, iy);
+    float dz = P[2] - cm->floor_z;
+    if (dz < j->o->floor_tolerance_m && dz > -j->o->floor_tolerance_m) return j->sl->n * j->sl->cells + cell;
+    if (P[2] >= cm->band[0] && P[2] <= cm->band[1]) return nav_slice_of(j->sl, P[2]) * j->sl->cells + cell;
+    return -1;
 }
 
 /* A surface point in the voxels: a hit in the band, a floor sighting near the floor. */
 static void mark_surface(const carve_job *j, carve_thread *t, const float P[3])
 {
-    const sp_costmap *cm = j->cm;
-    int ix, iy;
-    if (sp_costmap_cell(cm, P[0], P[1], &ix, &iy)) return;
-    long cell = nav_idx(cm, ix, iy);
-    float dz = P[2] - cm->floor_z;
-    if (dz < j->o->floor_tolerance_m && dz > -j->o->floor_tolerance_m) set_flag(t, j->sl->n * j->sl->cells + cell, 1);
-    else if (P[2] >= cm->band[0] && P[2] <= cm->band[1])
-        set_flag(t, nav_slice_of(j->sl, P[2]) * j->sl->cells + cell, FLAG_HIT);
+    long k = surface_key(j, P);
+    if (k >= 0) set_flag(t, k, k >= j->sl->n * j->sl->cells ? 1 : FLAG_HIT);
 }
 
 /* The depth image is a 2.5-D surface: between two neighbouring pixels' surface points that lie
@@ -165,6 +141,10 @@ static void mark_segment(const carve_job *j, carve_thread *t, const float *a, co
     float d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), res = j->cm->res;
     if (len > SEG_MAX_CELLS * res) return;
+    /* both ends in one cell and one height class: the segment between them is too (convex), and
+     * mark_surface marks the ends themselves */
+    long ka = surface_key(j, a);
+    if (ka >= 0 && ka == surface_key(j, b)) return;
     int steps = (int)ceilf(len / (0.5f * res));
     for (int k = 1; k < steps; k++) {
         float f = (float)k / steps, P[3] = {a[0] + f * d[0], a[1] + f * d[1], a[2] + f * d[2]};
@@ -216,18 +196,33 @@ static void trace_view(const carve_job *j, const sp_camera *cam, const float *de
         }
 }
 
-/* One scan's flags into the thread's counters (a voxel hit in this scan counts as a hit only),
- * clearing them for the next scan. */
-static void count_scan(const nav_slices *sl, carve_thread *t)
+/* Does the scan hit one of the 8 voxels beside voxel i (same slice)? */
+static int hit_beside(const sp_costmap *cm, const nav_slices *sl, const uint8_t *flag, long i)
+{
+    long cell = i % sl->cells, base = i - cell;
+    int cx = (int)(cell % cm->nx), cy = (int)(cell / cm->nx);
+    for (int dy = -1; dy <= 1; dy++)
+        for (int dx = -1; dx <= 1; dx++)
+            if ((dx || dy) && nav_inside(cm, cx + dx, cy + dy) && (flag[base + nav_idx(cm, cx + dx, cy + dy)] & FLAG_HIT))
+                return 1;
+    return 0;
+}
+
+/* One scan's flags into the thread's counters (a voxel hit in this scan counts as a hit only; a
+ * missed one beside a hit voxel counts as near too), then clears them for the next scan. */
+static void count_scan(const sp_costmap *cm, const nav_slices *sl, carve_thread *t)
 {
     long nv = (long)sl->n * sl->cells;
     for (long k = 0; k < t->n_touched; k++) {
         long i = t->touched[k];
         if (i >= nv) bump(&t->floor_scans[i - nv]);
         else if (t->flag[i] & FLAG_HIT) bump(&t->hit_scans[i]);
-        else bump(&t->miss_scans[i]);
-        t->flag[i] = 0;
+        else {
+            bump(&t->miss_scans[i]);
+            if (hit_beside(cm, sl, t->flag, i)) bump(&t->near_scans[i]);
+        }
     }
+    for (long k = 0; k < t->n_touched; k++) t->flag[t->touched[k]] = 0;
     t->n_touched = 0;
 }
 
@@ -272,7 +267,7 @@ static void carve_run(void *ctx, long r, int thread_id)
         trace_view(j, &j->views[k], j->req[k].depth, t);
         if (t->view_counts) count_visible(j, &j->views[k], j->req[k].depth, t->view_counts);
     }
-    count_scan(j->sl, t);
+    count_scan(j->cm, j->sl, t);
 }
 
 static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
@@ -288,7 +283,8 @@ static void threads_free(carve_thread *th, int T)
     for (int t = 0; th && t < T; t++) {
         free(th[t].flag), free(th[t].touched), free(th[t].pts);
         if (t == 0) continue; /* thread 0 counts into the outputs */
-        free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].floor_scans), free(th[t].view_counts);
+        free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].near_scans), free(th[t].floor_scans);
+        free(th[t].view_counts);
     }
     free(th);
 }
@@ -305,9 +301,10 @@ static carve_thread *threads_alloc(int T, const nav_carve_out *out, size_t n_gau
         c->touched = malloc(sizeof(int32_t) * (nv + nc));
         c->hit_scans = t ? calloc(nv, sizeof(uint16_t)) : out->hit_scans;
         c->miss_scans = t ? calloc(nv, sizeof(uint16_t)) : out->miss_scans;
+        c->near_scans = t ? calloc(nv, sizeof(uint16_t)) : out->near_scans;
         c->floor_scans = t ? calloc(nc, sizeof(uint16_t)) : out->floor_scans;
         c->view_counts = !out->view_counts ? NULL : t ? calloc(n_gauss + 1, sizeof(uint16_t)) : out->view_counts;
-        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->floor_scans &&
+        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->near_scans && c->floor_scans &&
              (c->view_counts || !out->view_counts);
     }
     if (!ok) threads_free(th, T), th = NULL;
@@ -336,34 +333,104 @@ static int group_scans(const sp_camera *cams, size_t n, int *order, int *scan_of
 
 /* The splat the views are rendered from for carving: geometry only (depth needs no colours),
  * without the Gaussians wholly above the highest camera and the band: a ray can meet those only
- * after it has risen out of the band (a rising ray with no surface carves the band). */
-static int carving_scene(const sp_splat *s, const sp_camera *cams, size_t n, float band_hi, sp_device *dev,
-                         sp_scene **out, size_t *kept, sp_error *err)
+ * after it has risen out of the band (a rising ray with no surface carves the band). Also each
+ * kept Gaussian's largest standard deviation (sigma_max, for the per-view culling). */
+static int carving_splat(const sp_splat *s, const sp_camera *cams, size_t n, float band_hi, sp_splat *c,
+                         float **sigma_max, sp_error *err)
 {
     float z_cut = band_hi;
     for (size_t i = 0; i < n; i++) z_cut = MAXF(z_cut, sp_camera_center(&cams[i]).z);
     z_cut += CULL_MARGIN_M;
-    sp_splat c;
-    int rc = sp_splat_alloc(&c, s->n, 0, 0, err);
+    int rc = sp_splat_alloc(c, s->n, 0, 0, err);
     if (rc) return rc;
+    *sigma_max = malloc(sizeof(float) * (s->n + 1));
+    if (!*sigma_max) {
+        sp_splat_free(c);
+        return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu Gaussians", s->n);
+    }
     size_t m = 0;
     for (size_t i = 0; i < s->n; i++) {
         float R[9], sz2 = 0;
+        const float *ls = s->log_scales + 3 * i;
         sp_quat_to_mat3(s->quats + 4 * i, R);
-        for (int k = 0; k < 3; k++) sz2 += R[6 + k] * R[6 + k] * expf(2.0f * s->log_scales[3 * i + k]);
+        for (int k = 0; k < 3; k++) sz2 += R[6 + k] * R[6 + k] * expf(2.0f * ls[k]);
         if (s->means[3 * i + 2] - 3.0f * sqrtf(sz2) > z_cut) continue;
-        memcpy(c.means + 3 * m, s->means + 3 * i, 3 * sizeof(float));
-        memcpy(c.quats + 4 * m, s->quats + 4 * i, 4 * sizeof(float));
-        memcpy(c.log_scales + 3 * m, s->log_scales + 3 * i, 3 * sizeof(float));
-        c.opacity_logits[m] = s->opacity_logits[i];
-        memcpy(c.sh + 3 * m, s->sh + (size_t)i * 3 * sp_sh_coeffs(s->sh_degree), 3 * sizeof(float));
+        memcpy(c->means + 3 * m, s->means + 3 * i, 3 * sizeof(float));
+        memcpy(c->quats + 4 * m, s->quats + 4 * i, 4 * sizeof(float));
+        memcpy(c->log_scales + 3 * m, ls, 3 * sizeof(float));
+        c->opacity_logits[m] = s->opacity_logits[i];
+        memcpy(c->sh + 3 * m, s->sh + (size_t)i * 3 * sp_sh_coeffs(s->sh_degree), 3 * sizeof(float));
+        (*sigma_max)[m] = expf(MAXF(ls[0], MAXF(ls[1], ls[2])));
         m++;
     }
-    c.n = m;
-    *kept = m;
-    rc = sp_scene_create(out, dev, &c, 0, err);
-    sp_splat_free(&c);
-    return rc;
+    c->n = m;
+    return SP_OK;
+}
+
+/* The Gaussians of src the renderer can draw in view cam, into dst (src's order kept, so the
+ * render is the same as of all of src). A bound on the renderer's own culling (near plane, then
+ * the 2D mean +- the radius of the alpha >= 1/255 ellipse against the image): the 2D covariance
+ * J W Sigma W^T J^T has its largest eigenvalue below |J|_F^2 sigma_max^2 (rotations keep norms;
+ * the renderer's clamped Jacobian is smaller still), plus the screen dilation; the radius is at
+ * most sqrt(2 ln 255) = 3.33 of its square root. A Gaussian it keeps that the renderer culls is
+ * harmless; none it drops is drawn. Most of a view's Gaussians lie behind it or beside it, and
+ * the renderer's projection of each of them is what rendering costs at carving sizes. */
+#define CULL_EXTENT 3.34f
+#define CULL_NEAR 0.009f  /* the renderer's near plane is 0.01 m */
+static size_t cull_view(const sp_splat *src, const float *sigma_max, const sp_camera *cam, sp_splat *dst)
+{
+    const float *R = cam->R, *t = cam->t;
+    const float fx = cam->fx, fy = cam->fy, cx = cam->cx, cy = cam->cy, W = (float)cam->width, H = (float)cam->height;
+    const float eps = sp_raster_cfg_default().eps2d;
+    size_t m = 0;
+    for (size_t i = 0; i < src->n; i++) {
+        const float *p = src->means + 3 * i;
+        float z = R[6] * p[0] + R[7] * p[1] + R[8] * p[2] + t[2];
+        if (!(z >= CULL_NEAR)) continue;
+        float x = R[0] * p[0] + R[1] * p[1] + R[2] * p[2] + t[0];
+        float y = R[3] * p[0] + R[4] * p[1] + R[5] * p[2] + t[1];
+        float iz = 1.0f / z, u = fx * x * iz + cx, v = fy * y * iz + cy;
+        float j2 = ((fx * fx + fy * fy) + (fx * fx * x * x + fy * fy * y * y) * iz * iz) * iz * iz;
+        float r = CULL_EXTENT * sqrtf(j2 * sigma_max[i] * sigma_max[i] + eps) + 2.0f;
+        if (u + r <= 0.f || u - r >= W || v + r <= 0.f || v - r >= H) continue;
+        memcpy(dst->means + 3 * m, p, 3 * sizeof(float));
+        memcpy(dst->quats + 4 * m, src->quats + 4 * i, 4 * sizeof(float));
+        memcpy(dst->log_scales + 3 * m, src->log_scales + 3 * i, 3 * sizeof(float));
+        dst->opacity_logits[m] = src->opacity_logits[i];
+        m++;
+    }
+    dst->n = m;
+    return m;
+}
+
+/* Crops a carving view to the rows that can tell the band anything. From a camera above the
+ * band, a ray that does not fall never enters it, and its surface point lies above the camera:
+ * no miss, no hit, no floor sighting (carve_ray, mark_surface). The rows whose pixels all rise
+ * (at least one end of each is enough: the ray's rise is linear across a row) are dropped but
+ * one, which keeps the segments between it and the first falling row (mark_segment): the
+ * carving is the same, with fewer pixels rendered. Rows must come off the top or the bottom
+ * (a rolled camera whose rising rows sit in the middle keeps them). Only without view counts,
+ * which every pixel's depth feeds. */
+static void crop_to_band(sp_camera *cam, float band_hi)
+{
+    if (!(sp_camera_center(cam).z > band_hi) || cam->height < 3) return;
+    const float *R = cam->R; /* dw.z = row 2 of R^T . dc = column 2 of R . dc */
+    int H = cam->height, lo = H, hi = -1; /* the rows none of whose rays falls */
+    for (int v = 0; v < H; v++) {
+        float dy = ((float)v + 0.5f - cam->cy) / cam->fy, falls = 0;
+        for (int e = 0; e < 2; e++) {
+            float dx = ((e ? (float)cam->width - 0.5f : 0.5f) - cam->cx) / cam->fx;
+            falls += R[2] * dx + R[5] * dy + R[8] < 0;
+        }
+        if (!falls) lo = v < lo ? v : lo, hi = v;
+    }
+    if (hi < 0) return;
+    if (lo == 0 && hi < H - 1) { /* rising rows on top: keep from row hi (the guard row) down */
+        cam->cy -= (float)hi;
+        cam->height = H - hi;
+    } else if (hi == H - 1 && lo > 0) {
+        cam->height = lo + 1;
+    }
 }
 
 #define CARVE_BATCH 16 /* views rendered per sp_render_views call */
@@ -394,9 +461,17 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
 {
     sp_device *dev = sp_raster_device(r);
     sp_scene *scene = NULL;
-    size_t kept = 0;
-    int rc = carving_scene(s, cams, n_cams, cm->band[1], dev, &scene, &kept, err);
+    sp_splat host, sub;
+    float *sigma_max = NULL;
+    memset(&sub, 0, sizeof sub);
+    int rc = carving_splat(s, cams, n_cams, cm->band[1], &host, &sigma_max, err);
     if (rc) return sp_error_prefix(err, "costmap: ");
+    size_t kept = host.n, drawn = 0;
+    if (!(rc = sp_splat_alloc(&sub, kept, 0, 0, err))) rc = sp_scene_create(&scene, dev, &host, 0, err);
+    if (rc) {
+        sp_splat_free(&host), sp_splat_free(&sub), free(sigma_max);
+        return sp_error_prefix(err, "costmap: ");
+    }
     sp_pool *pool = sp_device_pool(dev);
     int T = sp_pool_size(pool);
     carve_thread *th = threads_alloc(T, out, s->n);
@@ -418,6 +493,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
             view[k].distortion = SP_DIST_NONE;
             int ds = nav_carve_downscale(o, &view[k]);
             if (ds > 1) sp_camera_downscale(&view[k], ds);
+            if (!out->view_counts) crop_to_band(&view[k], cm->band[1]);
             size_t np = (size_t)(view[k].width > 0 ? view[k].width : 1) * (view[k].height > 0 ? view[k].height : 1);
             if (np > cap[k]) {
                 free(buf[k]);
@@ -430,10 +506,19 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
             req[k] = (sp_render_request){.depth = buf[k], .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = o->carve_alpha};
         }
         double t0 = nav_cpu_now();
-        if (!rc && (rc = sp_render_views(r, scene, view, (size_t)nb, req, err))) {
-            sp_error_prefix(err, "costmap: rendering training views for carving: ");
-            break;
+        /* one view at a time, each from the Gaussians it can show */
+        for (int k = 0; k < nb && !rc; k++) {
+            size_t m = cull_view(&host, sigma_max, &view[k], &sub);
+            drawn += m;
+            if (m == 0) { /* nothing in view: no surface anywhere */
+                memset(req[k].depth, 0, sizeof(float) * (size_t)view[k].width * (size_t)view[k].height);
+                continue;
+            }
+            if ((rc = sp_scene_update(scene, &sub, SP_SCENE_CHANGED_GEOMETRY, err)) ||
+                (rc = sp_render_views(r, scene, &view[k], 1, &req[k], err)))
+                sp_error_prefix(err, "costmap: rendering training views for carving: ");
         }
+        if (rc) break;
         double t1 = nav_cpu_now();
         carve_job job = {cm, s, o, &out->sl, view, req, runs, th};
         sp_pool_for(pool, n_runs, carve_run, &job);
@@ -444,12 +529,14 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
         sp_progress_update(&pr, (long)at, NULL);
     }
     sp_progress_end(&pr, NULL);
-    sp_logf(log, SP_LOG_DEBUG, "carve: %zu views in %d scans, %zu of %zu Gaussians rendered; CPU time: "
-            "renders %.0f ms, rays %.0f ms", n_cams, n_scans, kept, s->n, 1e3 * t_render, 1e3 * t_rays);
+    sp_logf(log, SP_LOG_DEBUG, "carve: %zu views in %d scans, %zu of %zu Gaussians below the cameras, %.0f "
+            "per view in its frustum; CPU time: renders %.0f ms, rays %.0f ms", n_cams, n_scans, kept, s->n,
+            n_cams ? (double)drawn / (double)n_cams : 0.0, 1e3 * t_render, 1e3 * t_rays);
     size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
     for (int t = 1; th && t < T; t++) {
         add_sat(out->hit_scans, th[t].hit_scans, nv);
         add_sat(out->miss_scans, th[t].miss_scans, nv);
+        add_sat(out->near_scans, th[t].near_scans, nv);
         add_sat(out->floor_scans, th[t].floor_scans, nc);
         if (out->view_counts) add_sat(out->view_counts, th[t].view_counts, s->n);
     }
@@ -457,5 +544,6 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     free(order);
     for (int k = 0; k < CARVE_BATCH; k++) free(buf[k]);
     sp_scene_free(scene);
+    sp_splat_free(&host), sp_splat_free(&sub), free(sigma_max);
     return rc;
 }

@@ -30,6 +30,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.footprint_sigmas = 3.0f;
     o.occupied_evidence = 0.5f;
     o.pass_veto = 1.0f;
+    o.veto_beside = 1;
     o.prob_hit = 0.7f;
     o.prob_miss = 0.4f;
     o.occupied_prob = 0.5f;
@@ -270,12 +271,17 @@ static inline float logit(float p) { return logf(p / (1.0f - p)); }
  * rendered surfaces end, not where one view's floater sits. OctoMap's clamping (0.12 .. 0.97)
  * only matters to incremental updates; every scan is fused at once here, so the sum decides.
  * SP_OCCUPANCY_FOOTPRINTS: the Gaussians' footprint evidence, unless the scans saw through the
- * voxel more than pass_veto x (1 + the scans that hit it) times. (Surface points alone are
+ * voxel more than pass_veto x (1 + the scans that hit it) times; with veto_beside, once some scan
+ * hit the voxel, the scans that saw through it but hit a voxel beside it do not count (the
+ * surface may be theirs: surface points are good to a cell; measured, counting them also for
+ * voxels no scan hit turns the cells beside walls, where footprints spill over, occupied). (Surface points alone are
  * weak evidence on a trained splat: its rendered surfaces stand centimetres off the true ones.) */
 static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, long k)
 {
     int H = co->hit_scans[k], M = co->miss_scans[k];
-    if (log_free) return log_free[k] <= logf(1.0f - o->occupied_evidence) && M <= o->pass_veto * (1.0f + H);
+    if (log_free)
+        return log_free[k] <= logf(1.0f - o->occupied_evidence) &&
+               M - (o->veto_beside && H > 0 ? co->near_scans[k] : 0) <= o->pass_veto * (1.0f + H);
     float l_hit = logit(o->prob_hit), l_miss = logit(o->prob_miss), l_occ = logit(o->occupied_prob);
     int need = H + M < o->min_hit_scans ? H + M : o->min_hit_scans;
     return H > 0 && H >= need && (float)H * l_hit + (float)M * l_miss >= l_occ;
@@ -505,6 +511,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     size_t nv = n * co.sl.n;
     co.hit_scans = calloc(nv, sizeof(uint16_t));
     co.miss_scans = calloc(nv, sizeof(uint16_t));
+    co.near_scans = calloc(nv, sizeof(uint16_t));
     co.floor_scans = calloc(n, sizeof(uint16_t));
     co.view_counts = view_counts;
     cm->occ = malloc(n);
@@ -513,7 +520,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     cm->seen = calloc(n, sizeof(uint16_t));
     uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
     float *log_free = o.occupancy == SP_OCCUPANCY_FOOTPRINTS ? calloc(nv, sizeof(float)) : NULL;
-    if (!co.hit_scans || !co.miss_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen ||
+    if (!co.hit_scans || !co.miss_scans || !co.near_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen ||
         (o.cameras_stand && !stood) || (o.occupancy == SP_OCCUPANCY_FOOTPRINTS && !log_free)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells x %d slices",
                           cm->nx, cm->ny, co.sl.n);
@@ -543,7 +550,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     sp_logf(log, SP_LOG_DEBUG, "costmap: CPU time: carving %.0f ms, fusion and inflation %.0f ms",
             1e3 * (t2 - t1), 1e3 * (nav_cpu_now() - t2));
 done:
-    free(co.hit_scans), free(co.miss_scans), free(co.floor_scans), free(stood), free(log_free);
+    free(co.hit_scans), free(co.miss_scans), free(co.near_scans), free(co.floor_scans), free(stood), free(log_free);
     if (rc) sp_costmap_free(cm);
     return rc;
 }

@@ -36,6 +36,9 @@ typedef struct nav_carve_out {
     nav_slices sl;
     uint16_t *hit_scans;     /* [slices][cells] scans with a surface point in the voxel */
     uint16_t *miss_scans;    /* [slices][cells] scans whose rays crossed it, none ending there */
+    uint16_t *near_scans;    /* [slices][cells] of those, the scans that hit a voxel beside it (the
+                              * 8 around it in its slice): a rendered surface point is good to about
+                              * a cell, so such a scan may have seen this voxel's surface */
     uint16_t *floor_scans;   /* [cells] scans with a surface point on the floor there */
     uint16_t *view_counts;   /* [n Gaussians] training views that see each Gaussian, or NULL */
 } nav_carve_out;
@@ -101,6 +104,46 @@ static inline float nav_cost_term(uint8_t c)
 typedef int (*nav_cell_fn)(void *ctx, long cell, float t0, float t1);
 int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_cell_fn fn,
                  void *ctx);
+/* The same as an inline function: where fn is a known static inline function the compiler
+ * inlines it into the loop (the carving's rays call it for every cell they cross). */
+static inline int nav_traverse_inline(const sp_costmap *cm, const float a[2], const float b[2],
+                                      nav_cell_fn fn, void *ctx)
+{
+    double gx = (a[0] - cm->origin[0]) / cm->res, gy = (a[1] - cm->origin[1]) / cm->res;
+    double dx = (b[0] - cm->origin[0]) / cm->res - gx, dy = (b[1] - cm->origin[1]) / cm->res - gy;
+    int ix = (int)floor(gx), iy = (int)floor(gy);
+    int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
+    double tdx = dx != 0 ? fabs(1.0 / dx) : INFINITY, tdy = dy != 0 ? fabs(1.0 / dy) : INFINITY;
+    double tmx = dx != 0 ? ((sx > 0 ? ix + 1 - gx : gx - ix) * tdx) : INFINITY;
+    double tmy = dy != 0 ? ((sy > 0 ? iy + 1 - gy : gy - iy) * tdy) : INFINITY;
+    double t = 0;
+    long steps = (long)(fabs(dx) + fabs(dy)) + 4;
+    for (long k = 0; k <= steps; k++) {
+        double tn = fmin(fmin(tmx, tmy), 1.0);
+        if (nav_inside(cm, ix, iy)) {
+            int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
+            if (rc) return rc;
+        }
+        if (tn >= 1.0) break;
+        t = tn;
+        if (fabs(tmx - tmy) < 1e-9) { /* through a corner: both side cells touch the segment */
+            int rc = 0;
+            if (nav_inside(cm, ix + sx, iy)) rc = fn(ctx, nav_idx(cm, ix + sx, iy), (float)t, (float)t);
+            if (!rc && nav_inside(cm, ix, iy + sy)) rc = fn(ctx, nav_idx(cm, ix, iy + sy), (float)t, (float)t);
+            if (rc) return rc;
+            ix += sx, iy += sy;
+            tmx += tdx, tmy += tdy;
+        } else if (tmx < tmy) {
+            ix += sx;
+            tmx += tdx;
+        } else {
+            iy += sy;
+            tmy += tdy;
+        }
+    }
+    return 0;
+}
+
 
 /* Distance from point p to segment a-b and to an axis-aligned box (0 inside). */
 float nav_point_segment_dist(const float p[2], const float a[2], const float b[2]);

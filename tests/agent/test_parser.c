@@ -49,6 +49,11 @@ static const row table[] = {
     {"drive to the second chair", G, "chair", IDX, 2},
     {"go to chair 3", G, "chair", IDX, 3},
     {"robot, go stand by the front door", G, "front door"},
+    /* -ing forms of the go verbs (polite and progressive phrasing) */
+    {"would you mind going to the kitchen?", G, "kitchen"},
+    {"do you mind heading to the sofa", G, "sofa"},
+    {"how about driving over to the front door", G, "front door"},
+    {"start moving towards the bookshelf", G, "bookshelf"},
     {"return to the couch", G, "couch"},
     {"get me to the refrigerator", G, "refrigerator"},
     {"make your way to the bedroom", G, "bedroom"},
