@@ -10,6 +10,15 @@
 #ifndef SEMSPLAT_TEST_H
 #define SEMSPLAT_TEST_H
 
+/* What a shell command running python on this build's library starts with: a sanitizer build's
+ * library needs its runtime loaded first (CMake defines SP_ASAN_RUNTIME), and python leaks by
+ * design, so leak checks are off there. */
+#ifdef SP_ASAN_RUNTIME
+#define TEST_PYTHON_ENV "LD_PRELOAD='" SP_ASAN_RUNTIME "' ASAN_OPTIONS=detect_leaks=0 "
+#else
+#define TEST_PYTHON_ENV ""
+#endif
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -2,6 +2,8 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,7 +52,9 @@ int cli_parse_int(const char *cmd, const char *flag, const char *s, long *out)
     char *end;
     errno = 0;
     long v = strtol(s, &end, 10);
-    if (!*s || *end || errno) return cli_usage_error(cmd, "%s: '%s' is not an integer", flag, s);
+    if (!*s || *end) return cli_usage_error(cmd, "%s: '%s' is not an integer", flag, s);
+    /* every integer flag lands in an int: a larger value would wrap into another one */
+    if (errno || v < INT_MIN || v > INT_MAX) return cli_usage_error(cmd, "%s: '%s' is out of range", flag, s);
     *out = v;
     return 0;
 }
@@ -60,8 +64,8 @@ int cli_parse_float(const char *cmd, const char *flag, const char *s, double *ou
     char *end;
     errno = 0;
     double v = strtod(s, &end);
-    if (!*s || *end || errno || v != v)
-        return cli_usage_error(cmd, "%s: '%s' is not a number", flag, s);
+    if (!*s || *end || errno || !isfinite(v))
+        return cli_usage_error(cmd, "%s: '%s' is not a finite number", flag, s);
     *out = v;
     return 0;
 }

@@ -37,7 +37,8 @@ int cli_is_flag(const char *arg, const char *name);
 /* Prints "semsplat <cmd>: error: <message>" and returns 1. */
 int cli_fail(const char *cmd, const sp_error *err);
 int cli_usage_error(const char *cmd, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-/* Parses ints/floats strictly (whole string), printing an error naming the flag on failure. */
+/* Parses ints/floats strictly (whole string; ints within int's range, floats finite), printing
+ * an error naming the flag on failure. */
 int cli_parse_int(const char *cmd, const char *flag, const char *s, long *out);
 int cli_parse_float(const char *cmd, const char *flag, const char *s, double *out);
 /* "640x480" -> w, h. */

@@ -101,7 +101,8 @@ static int parse_brain(const char *v, int *brain)
 static int parse_start(const char *v, sp_agent_config *cfg)
 {
     char extra;
-    if (sscanf(v, "%lf,%lf,%lf%c", &cfg->start.x, &cfg->start.y, &cfg->start.yaw, &extra) != 3)
+    if (sscanf(v, "%lf,%lf,%lf%c", &cfg->start.x, &cfg->start.y, &cfg->start.yaw, &extra) != 3 ||
+        !isfinite(cfg->start.x) || !isfinite(cfg->start.y) || !isfinite(cfg->start.yaw))
         return cli_usage_error("agent", "--start: '%s' is not X,Y,YAW", v);
     cfg->have_start = 1;
     return 0;
@@ -160,6 +161,22 @@ int cmd_agent(int argc, char **argv)
         if (bad) return 2;
     }
     if (!cfg.model_dir) return cli_usage_error("agent", "--model DIR is required");
+    /* every flag checked before any work (the world, the robot, a server) */
+    if (!(cfg.llm.timeout_s > 0 && cfg.llm.timeout_s <= 3600))
+        return cli_usage_error("agent", "--llm-timeout %g: expected 0..3600 seconds", cfg.llm.timeout_s);
+    if (cfg.llm.max_retries < 0 || cfg.llm.max_retries > 20)
+        return cli_usage_error("agent", "--llm-retries %d: expected 0..20", cfg.llm.max_retries);
+    if (cfg.llm.max_steps < 1 || cfg.llm.max_steps > 100)
+        return cli_usage_error("agent", "--max-steps %d: expected 1..100", cfg.llm.max_steps);
+    if (!(cfg.max_speed_mps > 0 && cfg.max_speed_mps <= SP_AGENT_SPEED_LIMIT))
+        return cli_usage_error("agent", "--max-speed %g: expected above 0, at most %.1f", cfg.max_speed_mps,
+                               SP_AGENT_SPEED_LIMIT);
+    static const char *const presets[] = {"openai", "llama.cpp", "ollama", "vllm"};
+    int known = !cfg.llm.preset;
+    for (size_t k = 0; k < sizeof presets / sizeof presets[0] && !known; k++) known = !strcmp(cfg.llm.preset, presets[k]);
+    if (!known) return cli_usage_error("agent", "--llm-preset '%s': expected openai, llama.cpp, ollama or vllm", cfg.llm.preset);
+    sp_error merr = {0};
+    if (cfg.out_dir && sp_mkdirs(cfg.out_dir, &merr)) return cli_fail("agent", &merr);
     sp_log log = cli_log(&c, SP_LOG_INFO);
     cfg.log = &log;
     sp_error err = {0};

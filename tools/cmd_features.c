@@ -65,12 +65,15 @@ int cmd_features(int argc, char **argv)
             if (parse_scales(v, &o.dense)) return cli_usage_error("features", "--scales: '%s' is not like 2,1", v);
         } else if ((v = cli_flag_value(argc, argv, &i, "--dim", &bad))) {
             if (cli_parse_int("features", "--dim", v, &num)) return 2;
+            if (num < 1) return cli_usage_error("features", "--dim %ld: expected at least 1", num);
             o.dim = (int)num;
         } else if ((v = cli_flag_value(argc, argv, &i, "--factor", &bad))) {
             if (cli_parse_int("features", "--factor", v, &num)) return 2;
+            if (num < 1) return cli_usage_error("features", "--factor %ld: expected at least 1", num);
             o.map_factor = (int)num;
         } else if ((v = cli_flag_value(argc, argv, &i, "--samples", &bad))) {
             if (cli_parse_int("features", "--samples", v, &num)) return 2;
+            if (num < 1) return cli_usage_error("features", "--samples %ld: expected at least 1", num);
             o.pca_samples = num;
         } else if ((v = cli_flag_value(argc, argv, &i, "--tile", &bad))) {
             if (cli_parse_int("features", "--tile", v, &num)) return 2;

@@ -97,6 +97,7 @@ int cmd_query(int argc, char **argv)
     if (!model) return cli_usage_error("query", "--model DIR is required");
     if (n_texts == 0) return cli_usage_error("query", "give the text to find, e.g. \"refrigerator\"");
     if (heatmap && n_texts > 1) return cli_usage_error("query", "--heatmap takes one query; use --heatmap-dir");
+    if (heatmap && heatmap_dir) return cli_usage_error("query", "--heatmap and --heatmap-dir exclude each other");
     if (enc.encoder && strcmp(enc.encoder, SP_ENCODER_CLIP) && strcmp(enc.encoder, SP_ENCODER_LEXICAL) &&
         strcmp(enc.encoder, SP_ENCODER_EXACT))
         return cli_usage_error("query", "--encoder: '%s' is not clip, lexical or exact", enc.encoder);

@@ -65,7 +65,8 @@ int cmd_render(int argc, char **argv)
                 return cli_usage_error(cmd, "--downscale %ld: must be 1..64", downscale);
         } else if ((v = cli_flag_value(argc, argv, &i, "--background", &bad))) {
             char tail;
-            if (sscanf(v, "%f,%f,%f%c", &bg[0], &bg[1], &bg[2], &tail) != 3)
+            if (sscanf(v, "%f,%f,%f%c", &bg[0], &bg[1], &bg[2], &tail) != 3 || !(bg[0] >= 0 && bg[0] <= 1) ||
+                !(bg[1] >= 0 && bg[1] <= 1) || !(bg[2] >= 0 && bg[2] <= 1))
                 return cli_usage_error(cmd, "--background '%s': expected R,G,B in [0,1]", v);
         } else if (!strcmp(argv[i], "--all")) all = 1;
         else if (!bad)

@@ -126,6 +126,9 @@ int cmd_ros_goal(int argc, char **argv)
         if (bad) return 2;
     }
     if (!mode) return cli_usage_error("ros-goal", "one of --to, --plan or --pose is needed");
+    if (!(timeout > 0 && timeout <= 86400)) return cli_usage_error("ros-goal", "--timeout %g: expected 0..86400 s", timeout);
+    if (!(cancel_after >= 0 && cancel_after <= 86400))
+        return cli_usage_error("ros-goal", "--cancel-after %g: expected 0..86400 s", cancel_after);
     sp_ros_bridge *b;
     sp_error err = {0};
     if (sp_ros_bridge_create(&b, &o, &err)) return cli_fail("ros-goal", &err);

@@ -48,14 +48,16 @@ int cmd_sim_robot(int argc, char **argv)
     int bad = 0, r;
     const char *v;
     sp_ros_pose start = {0, 0, 0, 0};
-    static const struct { const char *flag; size_t off; } nums[] = {
-        {"--radius", offsetof(sp_ros_sim_options, robot_radius_m)},
-        {"--max-speed", offsetof(sp_ros_sim_options, max_speed)},
-        {"--max-accel", offsetof(sp_ros_sim_options, max_accel)},
-        {"--max-yaw-rate", offsetof(sp_ros_sim_options, max_yaw_rate)},
-        {"--rate", offsetof(sp_ros_sim_options, rate_hz)},
-        {"--time-scale", offsetof(sp_ros_sim_options, time_scale)},
-        {"--duration", offsetof(sp_ros_sim_options, duration_s)}};
+    /* each with its range: beyond it a robot is not simulated but stuck (a rate of 1e30 Hz spins,
+     * a duration of 1e30 s never ends) */
+    static const struct { const char *flag; size_t off; double lo, hi; } nums[] = {
+        {"--radius", offsetof(sp_ros_sim_options, robot_radius_m), 0, 10},
+        {"--max-speed", offsetof(sp_ros_sim_options, max_speed), 1e-3, 10},
+        {"--max-accel", offsetof(sp_ros_sim_options, max_accel), 1e-3, 100},
+        {"--max-yaw-rate", offsetof(sp_ros_sim_options, max_yaw_rate), 1e-3, 100},
+        {"--rate", offsetof(sp_ros_sim_options, rate_hz), 0.1, 1000},
+        {"--time-scale", offsetof(sp_ros_sim_options, time_scale), 1e-3, 1000},
+        {"--duration", offsetof(sp_ros_sim_options, duration_s), 0, 1e7}};
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return help(), 0;
         if (cli_ros_flag("sim-robot", argc, argv, &i, &o.ros, &bad)) {
@@ -70,7 +72,11 @@ int cmd_sim_robot(int argc, char **argv)
         for (size_t k = 0; k < sizeof nums / sizeof nums[0] && !used && !bad; k++)
             if ((v = cli_flag_value(argc, argv, &i, nums[k].flag, &bad))) {
                 used = 1;
-                if (parse_number(nums[k].flag, v, (double *)((char *)&o + nums[k].off))) return 2;
+                double *dst = (double *)((char *)&o + nums[k].off);
+                if (parse_number(nums[k].flag, v, dst)) return 2;
+                if (!(*dst >= nums[k].lo && *dst <= nums[k].hi))
+                    return cli_usage_error("sim-robot", "%s %g: expected %g..%g", nums[k].flag, *dst, nums[k].lo,
+                                           nums[k].hi);
             }
         if (used) continue;
         if ((v = cli_flag_value(argc, argv, &i, "--map", &bad))) o.map_yaml = v;
@@ -83,6 +89,7 @@ int cmd_sim_robot(int argc, char **argv)
     }
     if (!o.map_yaml && !o.model_dir)
         return cli_usage_error("sim-robot", "--map or --model is required");
+    if (o.map_yaml && o.model_dir) return cli_usage_error("sim-robot", "--map and --model exclude each other");
     o.start_x = start.x, o.start_y = start.y, o.start_yaw = start.yaw;
     signal(SIGINT, on_signal);
     signal(SIGTERM, on_signal);

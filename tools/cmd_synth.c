@@ -58,7 +58,8 @@ int cmd_synth(int argc, char **argv)
         } else if ((v = cli_flag_value(argc, argv, &i, "--fov-deg", &bad))) {
             if (cli_parse_float("synth", "--fov-deg", v, &fov)) return 2;
         } else if ((v = cli_flag_value(argc, argv, &i, "--heights", &bad))) {
-            if (sscanf(v, "%lf,%lf", &hmin, &hmax) != 2 || !(hmin > 0) || !(hmax >= hmin))
+            char tail;
+            if (sscanf(v, "%lf,%lf%c", &hmin, &hmax, &tail) != 2 || !(hmin > 0) || !(hmax >= hmin) || !(hmax <= 100))
                 return cli_usage_error("synth", "--heights: '%s' is not MIN,MAX in metres", v);
         } else if ((v = cli_flag_value(argc, argv, &i, "--supersample", &bad))) {
             if (cli_parse_int("synth", "--supersample", v, &ss)) return 2;

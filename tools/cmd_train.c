@@ -1,5 +1,7 @@
 /* semsplat train: fits a Gaussian splat to a COLMAP capture (gsplat simple_trainer defaults) into
  * a model folder (sp_train_model: splat.ply, train.json, frame.json, checkpoints/). */
+#include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -37,6 +39,10 @@ static void help(void)
         "  --seed N              random seed (default 42)\n"
         "  --quiet / --verbose\n");
 }
+
+/* Flags not given keep the schedule's defaults; any value given goes to the library's range checks
+ * (a bad one is an error naming it, never silently the default). */
+#define UNSET LONG_MIN
 
 typedef struct {
     long steps, downscale, init_points, sh_degree, sh_interval, max_g, test_every, eval_every;
@@ -92,7 +98,8 @@ static int parse(int argc, char **argv, train_flags *f, cli_common *c)
     if (f->steps < 1) return cli_usage_error("train", "--steps must be >= 1 (got %ld)", f->steps);
     if (f->downscale < 1) return cli_usage_error("train", "--downscale must be >= 1 (got %ld)", f->downscale);
     if (f->sh_degree < 0 || f->sh_degree > 3) return cli_usage_error("train", "--sh-degree must be 0..3");
-    if (f->sh_interval < 0) return cli_usage_error("train", "--sh-interval must be positive");
+    if (f->sh_interval != UNSET && f->sh_interval < 1) return cli_usage_error("train", "--sh-interval must be positive");
+    if (f->ck_every < 1) return cli_usage_error("train", "--checkpoint-every must be >= 1 (got %ld)", f->ck_every);
     if (f->max_g < 0) return cli_usage_error("train", "--max-gaussians must be >= 0");
     if (f->init_points < 1) return cli_usage_error("train", "--init-points must be >= 1");
     if (strcmp(f->init, "points") && strcmp(f->init, "random"))
@@ -112,24 +119,24 @@ static sp_train_model_opts to_opts(const train_flags *f, char *resume, size_t ca
     if (f->want_resume && !f->resume) snprintf(resume, cap, "%s/checkpoints/checkpoint.bin", f->out);
     m.resume = f->want_resume ? resume : NULL;
     o->sh_degree = (int)f->sh_degree;
-    if (f->sh_interval > 0) o->sh_degree_interval = (int)f->sh_interval;
+    if (f->sh_interval != UNSET) o->sh_degree_interval = (int)f->sh_interval;
     o->max_gaussians = (size_t)f->max_g;
     o->densify = !f->no_densify;
     o->random_background = f->random_bg;
     o->seed = (uint64_t)f->seed;
     o->eval_every = (int)f->eval_every;
     o->checkpoint_every = (int)f->ck_every;
-    if (f->refine_start >= 0) o->refine_start = (int)f->refine_start;
-    if (f->refine_stop >= 0) o->refine_stop = (int)f->refine_stop;
-    if (f->refine_every > 0) o->refine_every = (int)f->refine_every;
-    if (f->reset_every > 0) o->reset_every = (int)f->reset_every;
-    if (f->grow > 0) o->grow_grad2d = (float)f->grow;
+    if (f->refine_start != UNSET) o->refine_start = (int)f->refine_start;
+    if (f->refine_stop != UNSET) o->refine_stop = (int)f->refine_stop;
+    if (f->refine_every != UNSET) o->refine_every = (int)f->refine_every;
+    if (f->reset_every != UNSET) o->reset_every = (int)f->reset_every;
+    if (!isnan(f->grow)) o->grow_grad2d = (float)f->grow;
     return m;
 }
 
 int cmd_train(int argc, char **argv)
 {
-    train_flags f = {30000, 1, 100000, 3, 0, 0, 8, 0, 1000, 42, -1, -1, -1, -1, -1,
+    train_flags f = {30000, 1, 100000, 3, UNSET, 0, 8, 0, 1000, 42, UNSET, UNSET, UNSET, UNSET, NAN,
                      NULL, NULL, NULL, "points", NULL, NULL, 0, 0, 0};
     cli_common c = cli_common_default();
     int prc = parse(argc, argv, &f, &c);

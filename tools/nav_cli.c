@@ -1,4 +1,5 @@
 /* Helpers of the nav commands (tools/cmd_plan.c, cmd_explore.c, cmd_describe.c). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,6 +14,8 @@ int nav_cli_floats(const char *cmd, const char *flag, const char *s, float *out,
         char *end;
         double v = strtod(p, &end);
         if (end == p) break;
+        if (!isfinite((float)v)) /* nan, inf, 1e999 and beyond float range */
+            return cli_usage_error(cmd, "%s: '%s' has a number that is not finite", flag, s);
         out[n++] = (float)v;
         p = end;
         if (*p != ',') break;

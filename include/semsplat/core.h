@@ -92,7 +92,9 @@ double sp_time_now(void); /* monotonic seconds */
 
 typedef struct sp_pool sp_pool;
 
-/* n_threads <= 0 means the number of online CPUs. The pool owns its threads. */
+/* n_threads 0 means the number of online CPUs; negative or above SP_MAX_THREADS is an error
+ * (SP_E_ARG naming the value). The pool owns its threads. */
+#define SP_MAX_THREADS 1024
 int sp_pool_create(sp_pool **out, int n_threads, sp_error *err);
 void sp_pool_free(sp_pool *pool);
 int sp_pool_size(const sp_pool *pool);

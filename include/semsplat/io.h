@@ -3,7 +3,10 @@
  *   plus f_sem_* features), PNG/JPEG images, .npy arrays, safetensors (mmap), JSON (cJSON).
  * Readers validate counts against the file size before allocating, reject NaN where a value must
  * be finite, and name the file and record at fault. Writers write to a temporary name and rename.
- * Every struct filled by a reader owns its memory; free it with the matching *_free(). */
+ * Every struct filled by a reader owns its memory; free it with the matching *_free().
+ * Each reader also has an in-memory form (*_parse / sp_image_decode) for bytes that are not a
+ * file (a network body, an archive member, the fuzz harnesses): the same checks and messages,
+ * with `name` standing for the path; the bytes are only read. */
 #ifndef SEMSPLAT_IO_H
 #define SEMSPLAT_IO_H
 
@@ -78,6 +81,14 @@ int sp_colmap_read_txt(const char *dir, sp_colmap_model *m, sp_error *err);
 int sp_colmap_write_bin(const char *dir, const sp_colmap_model *m, sp_error *err);
 int sp_colmap_write_txt(const char *dir, const sp_colmap_model *m, sp_error *err);
 void sp_colmap_free(sp_colmap_model *m);
+/* In memory: one model file (cameras, images or points3D, binary or text) into that part of m,
+ * which must not hold it yet (start from a zeroed model). Does not run the cross-file checks that
+ * sp_colmap_read does (unique ids, cameras that images name). On error free m with sp_colmap_free. */
+typedef enum { SP_COLMAP_CAMERAS = 0, SP_COLMAP_IMAGES = 1, SP_COLMAP_POINTS = 2 } sp_colmap_part;
+int sp_colmap_parse_bin(sp_colmap_part part, const void *data, size_t size, const char *name,
+                        sp_colmap_model *m, sp_error *err);
+int sp_colmap_parse_txt(sp_colmap_part part, const char *text, size_t size, const char *name,
+                        sp_colmap_model *m, sp_error *err);
 /* Resolves `dir` (capture root or model folder) to the folder holding the model files. */
 int sp_colmap_find_model_dir(const char *dir, char *out, size_t cap, sp_error *err);
 
@@ -94,6 +105,7 @@ void sp_colmap_image_set_pose(sp_colmap_image *im, const sp_camera *cam);
  * f_dc_0..2 f_rest_0..(3(K-1)-1) opacity scale_0..2 rot_0..3 [f_sem_0..d-1]; SH degree inferred
  * from the f_rest count (0, 9, 24, 45). Any property order, float or double properties. */
 int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err);
+int sp_ply_parse_splat(const void *data, size_t size, const char *name, sp_splat *s, sp_error *err);
 /* Writes binary little-endian in the same layout (f_sem_* when s->feat_dim > 0), atomically. */
 int sp_ply_write_splat(const char *path, const sp_splat *s, sp_error *err);
 
@@ -107,6 +119,7 @@ typedef struct sp_image {
 
 /* PNG or JPEG by content (not extension). 8-bit output unless the PNG is 16-bit. */
 int sp_image_read(const char *path, sp_image *img, sp_error *err);
+int sp_image_decode(const void *data, size_t size, const char *name, sp_image *img, sp_error *err);
 int sp_image_write_png(const char *path, const sp_image *img, sp_error *err);
 int sp_image_write_jpeg(const char *path, const sp_image *img, int quality, sp_error *err);
 void sp_image_free(sp_image *img);
@@ -140,6 +153,7 @@ typedef struct sp_npy {
 
 /* Reads .npy version 1/2/3, little-endian, C or Fortran order (Fortran is transposed to C). */
 int sp_npy_read(const char *path, sp_npy *a, sp_error *err);
+int sp_npy_parse(const void *data, size_t size, const char *name, sp_npy *a, sp_error *err);
 /* Writes C-order little-endian .npy atomically; dtype F32, F16, U8, I32, U16, F64, I64. */
 int sp_npy_write(const char *path, sp_dtype dtype, int ndim, const size_t *shape, const void *data,
                  sp_error *err);
@@ -172,6 +186,10 @@ typedef struct sp_safetensors {
 
 /* mmaps the file, parses the JSON header, checks every tensor's offsets and sizes. */
 int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err);
+/* The same on bytes in memory: st->map stays NULL and the tensors point into data, which must
+ * outlive st; sp_safetensors_close frees only the table. */
+int sp_safetensors_parse(const void *data, size_t size, const char *name, sp_safetensors *st,
+                         sp_error *err);
 void sp_safetensors_close(sp_safetensors *st);
 const sp_tensor_info *sp_safetensors_find(const sp_safetensors *st, const char *name);
 /* Writes tensors (host data) as a safetensors file atomically. */
@@ -231,6 +249,11 @@ int sp_io_describe(const char *path, int all, char **text, sp_error *err);
 struct cJSON;
 /* Parses a file; errors name the file, line and column. */
 int sp_json_read_file(const char *path, struct cJSON **out, sp_error *err);
+/* text need not be NUL-terminated; a NUL inside the size is an error (as in a file). */
+int sp_json_parse(const char *text, size_t size, const char *name, struct cJSON **out, sp_error *err);
+/* 0 and *out when v is a number holding an integer in [lo, hi] (|lo|, |hi| < 2^53), else -1.
+ * The one way to read an integer field: a plain (int)valuedouble is undefined for 1e300. */
+int sp_json_int(const struct cJSON *v, long lo, long hi, long *out);
 /* Pretty-prints to path atomically. */
 int sp_json_write_file(const char *path, const struct cJSON *json, sp_error *err);
 

@@ -193,7 +193,7 @@ typedef struct sp_synth_capture_opts {
     float psf_px;       /* camera blur sigma in pixels (sp_synth_render_opts); 0 = 0.5, < 0 = none */
     int n_points;       /* points3D sampled on visible surfaces; 0 = 30000 */
     unsigned seed;      /* view planning and point sampling */
-    int n_threads;      /* <= 0: all CPUs */
+    int n_threads;      /* 0: all CPUs (negative: an error) */
     const sp_log *log;  /* progress and warnings (may be NULL) */
     int plan;           /* sp_synth_plan_kind */
     /* The drive (SP_SYNTH_PLAN_DRIVE): a differential-drive robot with its camera at a fixed

@@ -124,7 +124,7 @@ typedef struct sp_train_options {
     /* Evaluation and checkpoints. */
     int eval_every;          /* held-out evaluation every this many steps (0 = only at the end) */
     const char *checkpoint_dir; /* NULL = no checkpoints */
-    int checkpoint_every;    /* steps between checkpoints (default 1000) */
+    int checkpoint_every;    /* steps between checkpoints (default 1000; 0: only the final one) */
     const char *resume;      /* checkpoint file to resume from (NULL = start fresh) */
 
     /* Feature distillation (see the header comment). */

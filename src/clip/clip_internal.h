@@ -118,6 +118,20 @@ int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error 
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
                              int qq, int v1, float *out, sp_error *err);
 
+/* label id -> class name, from a capture's labels.json ({"labels": {"1": {"class": ..}}} as synth
+ * writes it, or {"labels": [{"id": 1, "class": ..}]}); ids 1..65535, each once; id 0 and ids not
+ * listed are "background". Classes are deduplicated (class_of maps an id to its class). */
+typedef struct clip_label_table {
+    int n;                /* ids 0..n-1 */
+    char (*cls)[128];
+    int n_classes;
+    char (*class_names)[128];
+    int *class_of;        /* id -> class index */
+} clip_label_table;
+
+int clip_label_table_read(const char *path, clip_label_table *t, sp_error *err);
+void clip_label_table_free(clip_label_table *t);
+
 static inline void clip_l2_normalize(float *v, int n)
 {
     double s = 0;

@@ -34,7 +34,7 @@ typedef struct extract_ctx {
     char capture[1024], images_dir[1200], labels_dir[1200];
     sp_clip *clip;
     int full_dim;
-    label_table labels;
+    clip_label_table labels;
     float *class_emb; /* [n_classes][full_dim] */
 } extract_ctx;
 
@@ -183,7 +183,7 @@ static int setup(extract_ctx *x, sp_error *err)
         char lj[1300];
         sp_path_join(lj, sizeof lj, x->capture, "labels.json");
         if (!sp_file_exists(lj)) sp_path_join(lj, sizeof lj, x->labels_dir, "labels.json");
-        if ((rc = label_table_read(lj, &x->labels, err))) return rc;
+        if ((rc = clip_label_table_read(lj, &x->labels, err))) return rc;
         if (o->clip_weights) {
             if ((rc = sp_clip_load(&x->clip, o->clip_weights, o->clip_config, o->dev, err))) return rc;
             x->full_dim = sp_clip_embed_dim(x->clip);
@@ -400,6 +400,11 @@ static int write_all_codes(extract_ctx *x, const encoder *enc, const int *mw, co
 int sp_features_extract(const sp_features_opts *opts, sp_error *err)
 {
     sp_features_opts o = *opts;
+    /* 0 picks the default; negative or absurd values are errors, not defaults */
+    if (o.map_factor < 0 || o.map_factor > 64)
+        return sp_error_set(err, SP_E_ARG, "features: map factor %d outside 1..64 (0: 4)", o.map_factor);
+    if (o.pca_samples < 0 || o.pca_samples > 100000000)
+        return sp_error_set(err, SP_E_ARG, "features: PCA samples %ld outside 1..100000000 (0: 50000)", o.pca_samples);
     if (o.dim == 0) o.dim = 32;
     if (o.map_factor <= 0) o.map_factor = 4;
     if (o.pca_samples <= 0) o.pca_samples = 50000;
@@ -492,7 +497,7 @@ done:
     free(enc.table);
     free(enc.offset);
     free(x.class_emb);
-    label_table_free(&x.labels);
+    clip_label_table_free(&x.labels);
     sp_clip_free(x.clip);
     sp_colmap_free(&x.model);
     return rc;

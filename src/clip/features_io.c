@@ -1,5 +1,6 @@
 /* Feature folders: reading features.json + PCA + maps (what lift/distill/query consume), and the
  * PCA encode/decode between the full CLIP space and the stored D dimensions. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,11 +20,12 @@ void sp_features_free(sp_features *f)
     memset(f, 0, sizeof *f);
 }
 
+/* An integer field within int's range (other bounds are checked by the caller). */
 static int json_int(const cJSON *o, const char *key, int *out)
 {
-    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
-    if (!cJSON_IsNumber(v)) return -1;
-    *out = (int)v->valuedouble;
+    long v;
+    if (sp_json_int(cJSON_GetObjectItemCaseSensitive(o, key), INT_MIN, INT_MAX, &v)) return -1;
+    *out = (int)v;
     return 0;
 }
 

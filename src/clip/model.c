@@ -45,11 +45,11 @@ static int cfg_int(const cJSON *o, const char *key, int *out, int lo, int hi, co
 {
     const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
     if (!v) return 0;
-    if (!cJSON_IsNumber(v) || v->valuedouble != (double)(int)v->valuedouble ||
-        v->valuedouble < lo || v->valuedouble > hi)
+    long x;
+    if (sp_json_int(v, lo, hi, &x))
         return sp_error_set(err, SP_E_FORMAT, "%s: %s%s must be an integer in [%d, %d]", path,
                             sect, key, lo, hi);
-    *out = (int)v->valuedouble;
+    *out = (int)x;
     return 0;
 }
 
@@ -121,19 +121,38 @@ static int parse_config(const char *path, sp_clip_config *c, sp_error *err)
     return rc;
 }
 
-static void parse_preprocessor(const char *path, sp_clip_config *c)
+/* image_mean / image_std: absent keeps OpenAI's defaults; present must be 3 finite numbers (std
+ * positive: pixels are divided by it). */
+static int preprocessor_triple(const char *path, const cJSON *root, const char *key, int positive, float out[3],
+                               sp_error *err)
 {
+    const cJSON *a = cJSON_GetObjectItemCaseSensitive(root, key);
+    if (!a) return 0;
+    float v[3];
+    int ok = cJSON_IsArray(a) && cJSON_GetArraySize(a) == 3;
+    for (int i = 0; ok && i < 3; i++) {
+        const cJSON *x = cJSON_GetArrayItem(a, i);
+        ok = cJSON_IsNumber(x) && fabs(x->valuedouble) < 1e30 && (!positive || x->valuedouble > 1e-30);
+        if (ok) v[i] = (float)x->valuedouble;
+    }
+    if (!ok)
+        return sp_error_set(err, SP_E_FORMAT, "%s: %s must be 3 %snumbers", path, key,
+                            positive ? "positive " : "");
+    memcpy(out, v, sizeof v);
+    return 0;
+}
+
+/* preprocessor_config.json beside the weights, when there is one. */
+static int parse_preprocessor(const char *path, sp_clip_config *c, sp_error *err)
+{
+    if (!sp_file_exists(path)) return 0;
     cJSON *root = NULL;
-    sp_error e = {0};
-    if (sp_json_read_file(path, &root, &e)) return;
-    const cJSON *m = cJSON_GetObjectItemCaseSensitive(root, "image_mean");
-    const cJSON *s = cJSON_GetObjectItemCaseSensitive(root, "image_std");
-    if (cJSON_GetArraySize(m) == 3 && cJSON_GetArraySize(s) == 3)
-        for (int i = 0; i < 3; i++) {
-            c->image_mean[i] = (float)cJSON_GetArrayItem(m, i)->valuedouble;
-            c->image_std[i] = (float)cJSON_GetArrayItem(s, i)->valuedouble;
-        }
+    int rc = sp_json_read_file(path, &root, err);
+    if (rc) return rc;
+    if (!(rc = preprocessor_triple(path, root, "image_mean", 0, c->image_mean, err)))
+        rc = preprocessor_triple(path, root, "image_std", 1, c->image_std, err);
     cJSON_Delete(root);
+    return rc;
 }
 
 /* ---- tensors ------------------------------------------------------------------------------------ */
@@ -388,7 +407,7 @@ int sp_clip_load(sp_clip **out, const char *path, const char *config_json, sp_de
         goto fail;
     }
     sp_path_join(cpath, sizeof cpath, dir, "preprocessor_config.json");
-    parse_preprocessor(cpath, &c->cfg);
+    if ((rc = parse_preprocessor(cpath, &c->cfg, err))) goto fail;
     c->text.cfg = c->cfg.text;
     c->vision.cfg = c->cfg.vision;
     c->text.layers = calloc((size_t)c->cfg.text.layers, sizeof *c->text.layers);

@@ -7,6 +7,7 @@
  * (whitespace dropped), and each piece's UTF-8 bytes go through byte-level BPE with '</w>' on
  * the last symbol. Unicode data come from unicode_tables.h (gen_unicode.py). The older Python
  * tokenizer differed (it dropped control characters, spaced CJK ideographs, used final sigma). */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 #include <cJSON.h>
 
 #include "semsplat/clip.h"
+#include "semsplat/io.h"
 #include "unicode_tables.h"
 
 #define N_MERGES 48894 /* 49152 - 256 - 2: what CLIP (and HF) read from merges.txt */
@@ -442,11 +444,12 @@ static int strmap_build(strmap *m, const cJSON *vocab)
     if (!m->keys || !m->ids) return -1;
     const cJSON *it;
     cJSON_ArrayForEach(it, vocab) {
-        if (!cJSON_IsNumber(it) || !it->string) continue;
+        long id;
+        if (!it->string || sp_json_int(it, 0, INT32_MAX, &id)) continue;
         size_t h = hash_str(it->string) & (m->cap - 1);
         while (m->keys[h] && strcmp(m->keys[h], it->string)) h = (h + 1) & (m->cap - 1);
         m->keys[h] = it->string;
-        m->ids[h] = (int32_t)it->valuedouble;
+        m->ids[h] = (int32_t)id;
     }
     return 0;
 }

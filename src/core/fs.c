@@ -51,6 +51,13 @@ int sp_read_file(const char *path, char **data, size_t *size, sp_error *err)
     if (size) *size = 0;
     FILE *f = fopen(path, "rb");
     if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    /* A folder opens but reads nothing; a device such as /dev/zero never ends. Pipes are fine. */
+    struct stat st;
+    if (fstat(fileno(f), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+        fclose(f);
+        return sp_error_set(err, SP_E_IO, "%s: %s, not a file", path,
+                            S_ISDIR(st.st_mode) ? "is a directory" : "is a device or socket");
+    }
     size_t cap = 1 << 16, n = 0;
     char *buf = malloc(cap);
     while (buf) {
@@ -82,19 +89,24 @@ int sp_read_file(const char *path, char **data, size_t *size, sp_error *err)
 int sp_write_file_atomic(const char *path, const void *data, size_t size, sp_error *err)
 {
     char tmp[4200];
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    /* A truncated temporary name could be the final name itself: refuse instead. */
+    if (snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid()) >= (int)sizeof tmp)
+        return sp_error_set(err, SP_E_ARG, "%s: path too long", path);
     FILE *f = fopen(tmp, "wb");
     if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot create: %s", tmp, strerror(errno));
     size_t w = size ? fwrite(data, 1, size, f) : 0;
-    int bad = (w != size) | (fflush(f) != 0);
-    bad |= fclose(f) != 0;
-    if (bad) {
+    int e = w != size ? errno : 0;
+    if (fflush(f) != 0 && !e) e = errno ? errno : EIO;
+    if (fclose(f) != 0 && !e) e = errno ? errno : EIO;
+    if (w != size && !e) e = EIO;
+    if (e) {
         remove(tmp);
-        return sp_error_set(err, SP_E_IO, "%s: write failed (disk full?)", path);
+        return sp_error_set(err, SP_E_IO, "%s: write failed: %s", path, strerror(e));
     }
     if (rename(tmp, path) != 0) {
+        e = errno;
         remove(tmp);
-        return sp_error_set(err, SP_E_IO, "%s: cannot rename into place: %s", path, strerror(errno));
+        return sp_error_set(err, SP_E_IO, "%s: cannot rename into place: %s", path, strerror(e));
     }
     return SP_OK;
 }

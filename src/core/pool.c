@@ -58,7 +58,9 @@ static void *worker(void *arg)
 int sp_pool_create(sp_pool **out, int n_threads, sp_error *err)
 {
     *out = NULL;
-    if (n_threads <= 0) {
+    if (n_threads < 0 || n_threads > SP_MAX_THREADS)
+        return sp_error_set(err, SP_E_ARG, "threads %d: expected 0 (all cores) to %d", n_threads, SP_MAX_THREADS);
+    if (n_threads == 0) {
         long c = sysconf(_SC_NPROCESSORS_ONLN);
         n_threads = c > 0 ? (int)c : 1;
     }

@@ -1,6 +1,7 @@
 /* A capture's ground_truth.json (synth writes it from the world file): each object's name, class
  * and world box. Every field is checked, so a malformed file names the object at fault. */
 #include <cjson/cJSON.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,9 +18,10 @@ static int read_vec3(const cJSON *o, const char *key, float out[3], const char *
         return sp_error_set(err, SP_E_FORMAT, "%s: object %d: \"%s\" is not 3 numbers", path, idx, key);
     for (int k = 0; k < 3; k++) {
         const cJSON *v = cJSON_GetArrayItem(a, k);
-        if (!cJSON_IsNumber(v) || !isfinite(v->valuedouble))
-            return sp_error_set(err, SP_E_FORMAT, "%s: object %d: \"%s\"[%d] is not a finite number",
-                                path, idx, key, k);
+        /* finite as a float too: 1e308 is a finite double but an infinite position */
+        if (!cJSON_IsNumber(v) || !(fabs(v->valuedouble) <= FLT_MAX))
+            return sp_error_set(err, SP_E_FORMAT, "%s: object %d: \"%s\"[%d] is not a finite number "
+                                "(within float range)", path, idx, key, k);
         out[k] = (float)v->valuedouble;
     }
     return 0;
@@ -40,7 +42,7 @@ static int read_object(const cJSON *o, sp_gt_object *g, const char *path, int id
         if (g->aabb_min[k] > g->aabb_max[k])
             return sp_error_set(err, SP_E_FORMAT, "%s: object %d (%s): aabb_min[%d] > aabb_max[%d]",
                                 path, idx, g->name, k, k);
-        g->center[k] = 0.5f * (g->aabb_min[k] + g->aabb_max[k]);
+        g->center[k] = (float)(0.5 * ((double)g->aabb_min[k] + g->aabb_max[k])); /* no float overflow */
     }
     if (cJSON_GetObjectItemCaseSensitive(o, "aabb_center"))
         rc = read_vec3(o, "aabb_center", g->center, path, idx, err);

@@ -130,7 +130,43 @@ int colmap_check_point(const char *file, size_t rec, const sp_colmap_point *p, s
     if (!all_finite(p->xyz, 3))
         return sp_error_set(err, SP_E_NUMERIC, "%s: point3D %llu (record %zu) has a non-finite position (%g %g %g)",
                             file, (unsigned long long)p->id, rec, p->xyz[0], p->xyz[1], p->xyz[2]);
+    if (!isfinite(p->error))
+        return sp_error_set(err, SP_E_NUMERIC, "%s: point3D %llu (record %zu) has a non-finite error (%g)", file,
+                            (unsigned long long)p->id, rec, p->error);
     return SP_OK;
+}
+
+int colmap_check_part(sp_colmap_part part, const char *name, const sp_colmap_model *m, sp_error *err)
+{
+    if ((int)part < SP_COLMAP_CAMERAS || part > SP_COLMAP_POINTS)
+        return sp_error_set(err, SP_E_ARG, "%s: unknown COLMAP model part %d", name, (int)part);
+    const void *held[3] = {m->cameras, m->images, m->points};
+    if (held[part])
+        return sp_error_set(err, SP_E_ARG, "%s: the model already holds its %s", name,
+                            part == SP_COLMAP_CAMERAS ? "cameras" : part == SP_COLMAP_IMAGES ? "images" : "points");
+    return SP_OK;
+}
+
+int colmap_read_dir(const char *dir, const char *ext, colmap_parse_fn parse, sp_colmap_model *m, sp_error *err)
+{
+    static const char *const stems[3] = {"cameras", "images", "points3D"};
+    memset(m, 0, sizeof *m);
+    int rc = SP_OK;
+    for (int part = 0; part < 3 && !rc; part++) {
+        char name[32], path[4200], *buf;
+        size_t size;
+        snprintf(name, sizeof name, "%s.%s", stems[part], ext);
+        if (sp_path_join(path, sizeof path, dir, name)) {
+            rc = sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
+            break;
+        }
+        if ((rc = sp_read_file(path, &buf, &size, err))) break;
+        rc = parse((sp_colmap_part)part, buf, size, path, m, err);
+        free(buf);
+    }
+    if (!rc) rc = colmap_check_model(dir, m, ext, err);
+    if (rc) sp_colmap_free(m);
+    return rc;
 }
 
 static int cmp_u32(const void *a, const void *b)

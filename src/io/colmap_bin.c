@@ -129,30 +129,20 @@ static int read_points(const char *file, const io_cursor *in, sp_colmap_model *m
 }
 
 typedef int (*bin_reader)(const char *file, const io_cursor *c, sp_colmap_model *m, sp_error *err);
+static const bin_reader readers[3] = {read_cameras, read_images, read_points};
 
-static int read_one(const char *dir, const char *name, bin_reader fn, sp_colmap_model *m, sp_error *err)
+int sp_colmap_parse_bin(sp_colmap_part part, const void *data, size_t size, const char *name, sp_colmap_model *m,
+                        sp_error *err)
 {
-    char path[4200];
-    if (sp_path_join(path, sizeof path, dir, name)) return sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
-    char *buf;
-    size_t size;
-    int rc = sp_read_file(path, &buf, &size, err);
+    int rc = colmap_check_part(part, name, m, err);
     if (rc) return rc;
-    io_cursor c = {(const unsigned char *)buf, size, 0};
-    rc = fn(path, &c, m, err);
-    free(buf);
-    return rc;
+    io_cursor c = {data, size, 0};
+    return readers[part](name, &c, m, err);
 }
 
 int sp_colmap_read_bin(const char *dir, sp_colmap_model *m, sp_error *err)
 {
-    memset(m, 0, sizeof *m);
-    int rc = read_one(dir, "cameras.bin", read_cameras, m, err);
-    if (!rc) rc = read_one(dir, "images.bin", read_images, m, err);
-    if (!rc) rc = read_one(dir, "points3D.bin", read_points, m, err);
-    if (!rc) rc = colmap_check_model(dir, m, "bin", err);
-    if (rc) sp_colmap_free(m);
-    return rc;
+    return colmap_read_dir(dir, "bin", sp_colmap_parse_bin, m, err);
 }
 
 /* ---- writing ---------------------------------------------------------------------------------- */

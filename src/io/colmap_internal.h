@@ -21,6 +21,13 @@
 int colmap_check_camera(const char *file, size_t rec, const sp_colmap_camera *c, sp_error *err);
 int colmap_check_image(const char *file, size_t rec, const sp_colmap_image *im, sp_error *err);
 int colmap_check_point(const char *file, size_t rec, const sp_colmap_point *p, sp_error *err);
+/* An in-memory parse may fill `part` of m: a valid part that m does not hold yet. */
+int colmap_check_part(sp_colmap_part part, const char *name, const sp_colmap_model *m, sp_error *err);
+/* Reads the three files <dir>/{cameras,images,points3D}.<ext> with `parse`, then the cross-file
+ * checks; on error m is freed. */
+typedef int (*colmap_parse_fn)(sp_colmap_part part, const void *data, size_t size, const char *name,
+                               sp_colmap_model *m, sp_error *err);
+int colmap_read_dir(const char *dir, const char *ext, colmap_parse_fn parse, sp_colmap_model *m, sp_error *err);
 /* Duplicate camera / image ids and images naming a camera the model lacks. */
 int colmap_check_model(const char *dir, const sp_colmap_model *m, const char *ext, sp_error *err);
 

@@ -104,20 +104,14 @@ static const char *at(char *where, const char *path, int line)
     return where;
 }
 
-/* Reads path into memory and counts its data lines (not comments, not blank). */
-static int load(const char *dir, const char *name, char *path, size_t cap, char **buf, size_t *n_data, sp_error *err)
+/* Checks text (NUL-terminated, `size` bytes before the NUL) and counts its data lines (not
+ * comments, not blank). */
+static int scan(const char *path, char *text, size_t size, size_t *n_data, sp_error *err)
 {
-    if (sp_path_join(path, cap, dir, name)) return sp_error_set(err, SP_E_ARG, "%s: path too long", dir);
-    size_t size;
-    int rc = sp_read_file(path, buf, &size, err);
-    if (rc) return rc;
-    if (memchr(*buf, 0, size)) {
-        free(*buf);
-        *buf = NULL;
+    if (memchr(text, 0, size))
         return sp_error_set(err, SP_E_FORMAT, "%s: contains NUL bytes (a binary file named .txt?)", path);
-    }
     *n_data = 0;
-    for (char *p = *buf; *p;) {
+    for (char *p = text; *p;) {
         char *e = strchr(p, '\n');
         if (e) *e = 0;
         *n_data += is_data(p);
@@ -130,11 +124,11 @@ static int load(const char *dir, const char *name, char *path, size_t cap, char 
 
 /* ---- readers ---------------------------------------------------------------------------------- */
 
-static int read_cameras(const char *dir, sp_colmap_model *m, tokens *t, sp_error *err)
+static int read_cameras(const char *path, char *buf, size_t size, sp_colmap_model *m, tokens *t, sp_error *err)
 {
-    char path[4200], where[4300], *buf;
+    char where[4300];
     size_t n;
-    int rc = load(dir, "cameras.txt", path, sizeof path, &buf, &n, err);
+    int rc = scan(path, buf, size, &n, err);
     if (rc) return rc;
     m->cameras = calloc(n ? n : 1, sizeof *m->cameras);
     if (!m->cameras) rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
@@ -170,7 +164,6 @@ static int read_cameras(const char *dir, sp_colmap_model *m, tokens *t, sp_error
         if (!rc) rc = colmap_check_camera(at(where, path, L.line), m->n_cameras, c, err);
         m->n_cameras++;
     }
-    free(buf);
     return rc;
 }
 
@@ -202,11 +195,11 @@ static int read_points2d(const char *path, int line, char *s, sp_colmap_image *i
     return SP_OK;
 }
 
-static int read_images(const char *dir, sp_colmap_model *m, tokens *t, sp_error *err)
+static int read_images(const char *path, char *buf, size_t size, sp_colmap_model *m, tokens *t, sp_error *err)
 {
-    char path[4200], where[4300], *buf;
+    char where[4300];
     size_t n;
-    int rc = load(dir, "images.txt", path, sizeof path, &buf, &n, err);
+    int rc = scan(path, buf, size, &n, err);
     if (rc) return rc;
     /* At most one image per data line (the POINTS2D lines are data lines too). */
     m->images = calloc(n ? n : 1, sizeof *m->images);
@@ -254,15 +247,14 @@ static int read_images(const char *dir, sp_colmap_model *m, tokens *t, sp_error 
         if (pts && (rc = read_points2d(path, L.line, pts, im, t, err))) break;
         rc = colmap_check_image(at(where, path, L.line), m->n_images - 1, im, err);
     }
-    free(buf);
     return rc;
 }
 
-static int read_points(const char *dir, sp_colmap_model *m, tokens *t, sp_error *err)
+static int read_points(const char *path, char *buf, size_t size, sp_colmap_model *m, tokens *t, sp_error *err)
 {
-    char path[4200], where[4300], *buf;
+    char where[4300];
     size_t n;
-    int rc = load(dir, "points3D.txt", path, sizeof path, &buf, &n, err);
+    int rc = scan(path, buf, size, &n, err);
     if (rc) return rc;
     m->points = calloc(n ? n : 1, sizeof *m->points);
     if (!m->points) rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
@@ -302,21 +294,37 @@ static int read_points(const char *dir, sp_colmap_model *m, tokens *t, sp_error 
             rc = parse_u32(path, L.line, k % 2 ? "POINT2D_IDX" : "IMAGE_ID", t->tok[8 + k], &p->track[k], err);
         if (!rc) rc = colmap_check_point(at(where, path, L.line), m->n_points - 1, p, err);
     }
+    return rc;
+}
+
+typedef int (*txt_reader)(const char *path, char *buf, size_t size, sp_colmap_model *m, tokens *t, sp_error *err);
+static const txt_reader readers[3] = {read_cameras, read_images, read_points};
+
+int sp_colmap_parse_txt(sp_colmap_part part, const char *text, size_t size, const char *name, sp_colmap_model *m,
+                        sp_error *err)
+{
+    int rc = colmap_check_part(part, name, m, err);
+    if (rc) return rc;
+    char *buf = malloc(size + 1);
+    if (!buf) return sp_error_set(err, SP_E_NOMEM, "%s: out of memory for %zu bytes", name, size);
+    if (size) memcpy(buf, text, size);
+    buf[size] = 0;
+    tokens t = {0};
+    rc = readers[part](name, buf, size, m, &t, err);
+    free(t.tok);
     free(buf);
     return rc;
 }
 
+static int parse_txt(sp_colmap_part part, const void *data, size_t size, const char *name, sp_colmap_model *m,
+                     sp_error *err)
+{
+    return sp_colmap_parse_txt(part, data, size, name, m, err);
+}
+
 int sp_colmap_read_txt(const char *dir, sp_colmap_model *m, sp_error *err)
 {
-    memset(m, 0, sizeof *m);
-    tokens t = {0};
-    int rc = read_cameras(dir, m, &t, err);
-    if (!rc) rc = read_images(dir, m, &t, err);
-    if (!rc) rc = read_points(dir, m, &t, err);
-    if (!rc) rc = colmap_check_model(dir, m, "txt", err);
-    free(t.tok);
-    if (rc) sp_colmap_free(m);
-    return rc;
+    return colmap_read_dir(dir, "txt", parse_txt, m, err);
 }
 
 /* ---- writers ---------------------------------------------------------------------------------- */

@@ -232,6 +232,19 @@ static int info_safetensors(sp_strbuf *b, const char *path, int all, sp_error *e
 }
 
 
+/* cameras.bin, images.txt, ...: a file of a COLMAP model folder (any other .bin or .txt is
+ * unknown: describing its folder instead would name the wrong thing). */
+static int is_model_file(const char *path)
+{
+    static const char *const names[] = {"cameras.bin", "images.bin", "points3D.bin",
+                                        "cameras.txt", "images.txt", "points3D.txt"};
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    for (size_t i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(base, names[i])) return 1;
+    return 0;
+}
+
 /* Kind by content: PLY header, PNG/JPEG signature, NUMPY magic, safetensors' 8-byte header
  * length before '{'; .bin/.txt files of a COLMAP model describe the folder around them. */
 static int describe_file(sp_strbuf *b, const char *path, int all, sp_error *err)
@@ -242,8 +255,6 @@ static int describe_file(sp_strbuf *b, const char *path, int all, sp_error *err)
     if (f) fclose(f);
     uint64_t hlen = 0;
     memcpy(&hlen, magic, 8);
-    size_t len = strlen(path);
-    const char *ext = path + (len > 4 ? len - 4 : 0);
     if (got >= 4 && !memcmp(magic, "ply", 3) && (magic[3] == '\n' || magic[3] == '\r'))
         return info_ply(b, path, err);
     if (got >= 8 && (!memcmp(magic, "\x89PNG", 4) || (magic[0] == 0xFF && magic[1] == 0xD8)))
@@ -251,7 +262,7 @@ static int describe_file(sp_strbuf *b, const char *path, int all, sp_error *err)
     if (got >= 6 && !memcmp(magic, "\x93NUMPY", 6)) return info_npy(b, path, err);
     if (got >= 9 && magic[8] == '{' && hlen > 1 && hlen < ((uint64_t)100 << 20))
         return info_safetensors(b, path, all, err);
-    if (!strcmp(ext, ".bin") || !strcmp(ext, ".txt")) {
+    if (is_model_file(path)) {
         char dir[4096];
         snprintf(dir, sizeof dir, "%s", path);
         char *slash = strrchr(dir, '/');

@@ -25,11 +25,13 @@ void sp_image_free(sp_image *img)
 typedef struct {
     jmp_buf jmp;
     char msg[256];
+    int err_no; /* errno when libpng gave up (a failed fwrite's cause) */
 } png_ctx;
 
 static void png_on_error(png_structp png, png_const_charp msg)
 {
     png_ctx *ctx = png_get_error_ptr(png);
+    ctx->err_no = errno;
     snprintf(ctx->msg, sizeof ctx->msg, "%s", msg);
     longjmp(ctx->jmp, 1);
 }
@@ -111,7 +113,8 @@ int sp_image_write_png(const char *path, const sp_image *img, sp_error *err)
     png_infop info = png ? png_create_info_struct(png) : NULL;
     if (!png || !info || setjmp(ctx.jmp)) {
         png_destroy_write_struct(&png, info ? &info : NULL);
-        rc = sp_error_set(err, SP_E_IO, "%s: PNG write failed: %s", path, ctx.msg[0] ? ctx.msg : "no memory");
+        rc = sp_error_set(err, SP_E_IO, "%s: PNG write failed: %s%s%s", path, ctx.msg[0] ? ctx.msg : "no memory",
+                          ctx.err_no ? ": " : "", ctx.err_no ? strerror(ctx.err_no) : "");
         io_tmp_commit(f, tmp, path, 0, NULL);
         return rc;
     }
@@ -138,24 +141,33 @@ typedef struct {
     struct jpeg_error_mgr mgr;
     jmp_buf jmp;
     int truncated;
+    int err_no; /* errno when libjpeg gave up */
     char msg[JMSG_LENGTH_MAX];
 } jpeg_ctx;
 
 static void jpeg_on_error(j_common_ptr cinfo)
 {
     jpeg_ctx *ctx = (jpeg_ctx *)cinfo->err;
+    ctx->err_no = errno;
     cinfo->err->format_message(cinfo, ctx->msg);
     longjmp(ctx->jmp, 1);
 }
 
 static void jpeg_on_message(j_common_ptr cinfo) { (void)cinfo; }
 
-/* libjpeg only warns at a premature end of data and pads the image with grey; a truncated capture
- * image must fail instead. Other warnings (extraneous bytes, ...) are benign and ignored. */
+/* libjpeg only warns at a premature end of data or corrupt entropy-coded data and invents the
+ * missing pixels (grey); a truncated or corrupt capture image must fail instead. Other warnings
+ * (extraneous bytes between markers, unknown JFIF revisions, ...) are benign and ignored. */
 static void jpeg_on_emit(j_common_ptr cinfo, int level)
 {
     jpeg_ctx *ctx = (jpeg_ctx *)cinfo->err;
-    if (level < 0 && cinfo->err->msg_code == JWRN_JPEG_EOF) ctx->truncated = 1;
+    if (level >= 0 || ctx->truncated) return;
+    int code = cinfo->err->msg_code;
+    if (code == JWRN_JPEG_EOF || code == JWRN_HIT_MARKER || code == JWRN_HUFF_BAD_CODE || code == JWRN_ARITH_BAD_CODE ||
+        code == JWRN_MUST_RESYNC || code == JWRN_BOGUS_PROGRESSION || code == JWRN_NOT_SEQUENTIAL) {
+        ctx->truncated = code == JWRN_JPEG_EOF ? 1 : 2;
+        cinfo->err->format_message(cinfo, ctx->msg);
+    }
 }
 
 static int read_jpeg(const char *path, FILE *f, sp_image *img, sp_error *err)
@@ -192,15 +204,18 @@ static int read_jpeg(const char *path, FILE *f, sp_image *img, sp_error *err)
         jpeg_destroy_decompress(&cinfo);
         return sp_error_set(err, SP_E_NOMEM, "%s: out of memory for a %zux%zu image", path, w, h);
     }
-    while (cinfo.output_scanline < cinfo.output_height) {
+    /* Stop at the premature end: libjpeg would pad the rest with grey, which for a corrupt header
+     * declaring 16k x 16k pixels is seconds of decoding nothing. */
+    while (cinfo.output_scanline < cinfo.output_height && !ctx.truncated) {
         JSAMPROW row = data + (size_t)cinfo.output_scanline * w * c;
         jpeg_read_scanlines(&cinfo, &row, 1);
     }
-    jpeg_finish_decompress(&cinfo);
+    if (!ctx.truncated) jpeg_finish_decompress(&cinfo);
     jpeg_destroy_decompress(&cinfo);
     if (ctx.truncated) {
         sp_free(data);
-        return sp_error_set(err, SP_E_FORMAT, "%s: JPEG data is truncated", path);
+        return sp_error_set(err, SP_E_FORMAT, "%s: JPEG data is %s (%s)", path,
+                            ctx.truncated == 1 ? "truncated" : "corrupt", ctx.msg);
     }
     img->width = (int)w;
     img->height = (int)h;
@@ -235,7 +250,8 @@ int sp_image_write_jpeg(const char *path, const sp_image *img, int quality, sp_e
     if (setjmp(ctx.jmp)) {
         jpeg_destroy_compress(&cinfo);
         free(row);
-        rc = sp_error_set(err, SP_E_IO, "%s: JPEG write failed: %s", path, ctx.msg);
+        rc = sp_error_set(err, SP_E_IO, "%s: JPEG write failed: %s%s%s", path, ctx.msg, ctx.err_no ? ": " : "",
+                          ctx.err_no ? strerror(ctx.err_no) : "");
         io_tmp_commit(f, tmp, path, 0, NULL);
         return rc;
     }
@@ -268,11 +284,9 @@ int sp_image_write_jpeg(const char *path, const sp_image *img, int quality, sp_e
 
 /* ---- dispatch and conversions ----------------------------------------------------------------- */
 
-int sp_image_read(const char *path, sp_image *img, sp_error *err)
+/* PNG or JPEG by the first bytes of f; path names it in messages. */
+static int read_stream(FILE *f, const char *path, sp_image *img, sp_error *err)
 {
-    memset(img, 0, sizeof *img);
-    FILE *f = fopen(path, "rb");
-    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
     unsigned char magic[8] = {0};
     size_t got = fread(magic, 1, sizeof magic, f);
     rewind(f);
@@ -284,8 +298,27 @@ int sp_image_read(const char *path, sp_image *img, sp_error *err)
     else
         rc = sp_error_set(err, SP_E_FORMAT, "%s: neither a PNG nor a JPEG (first bytes %02x %02x %02x)",
                           path, magic[0], magic[1], magic[2]);
-    fclose(f);
     if (rc) memset(img, 0, sizeof *img);
+    return rc;
+}
+
+int sp_image_read(const char *path, sp_image *img, sp_error *err)
+{
+    memset(img, 0, sizeof *img);
+    FILE *f = fopen(path, "rb");
+    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    int rc = read_stream(f, path, img, err);
+    fclose(f);
+    return rc;
+}
+
+int sp_image_decode(const void *data, size_t size, const char *name, sp_image *img, sp_error *err)
+{
+    memset(img, 0, sizeof *img);
+    FILE *f = io_memstream(data, size, name, "a PNG or JPEG", err);
+    if (!f) return err ? err->code : SP_E_FORMAT;
+    int rc = read_stream(f, name, img, err);
+    fclose(f);
     return rc;
 }
 

@@ -32,6 +32,10 @@ FILE *io_tmp_open(const char *path, char *tmp, size_t cap, sp_error *err);
  * caller already failed: the file is discarded and SP_E_IO is not reported over its error. */
 int io_tmp_commit(FILE *f, const char *tmp, const char *path, int ok, sp_error *err);
 
+/* A read-only stream over bytes in memory, so an in-memory reader is the file reader unchanged;
+ * NULL with an error naming `name` (what = the format, for "not a PLY file (empty)"). */
+FILE *io_memstream(const void *data, size_t size, const char *name, const char *what, sp_error *err);
+
 /* Last path component, for messages that name a file inside a model folder. */
 const char *io_basename(const char *path);
 

@@ -195,7 +195,17 @@ int sp_npy_read(const char *path, sp_npy *a, sp_error *err)
     size_t size;
     int rc = sp_read_file(path, &buf, &size, err);
     if (rc) return rc;
-    const unsigned char *u = (const unsigned char *)buf;
+    rc = sp_npy_parse(buf, size, path, a, err);
+    free(buf);
+    return rc;
+}
+
+int sp_npy_parse(const void *data, size_t size, const char *path, sp_npy *a, sp_error *err)
+{
+    memset(a, 0, sizeof *a);
+    int rc = SP_OK;
+    const unsigned char *u = data;
+    const char *buf = data;
     size_t hlen, hstart;
     if (size < 10 || memcmp(u, "\x93NUMPY", 6) != 0) {
         rc = sp_error_set(err, SP_E_FORMAT, "%s: not a .npy file (bad magic)", path);
@@ -256,7 +266,6 @@ int sp_npy_read(const char *path, sp_npy *a, sp_error *err)
     }
     free(hdr);
 out:
-    free(buf);
     if (rc) sp_npy_free(a);
     return rc;
 }

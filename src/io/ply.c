@@ -5,6 +5,7 @@
 #include "io_internal.h"
 
 #include <ctype.h>
+#include <float.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <sys/stat.h>
@@ -173,9 +174,11 @@ static int parse_header(FILE *f, ply_header *h, sp_error *err)
             if (!seen_vertex && !in_vertex && elem_count) {
                 if (elem_has_list)
                     return sp_error_set(err, SP_E_UNSUPPORTED, "%s: a list element before 'vertex' is not supported", path);
+                /* Bounded by the file size in check_count; here only kept from wrapping. */
+                if (elem_count > SIZE_MAX - h->skip_lines ||
+                    (elem_stride && elem_count > (SIZE_MAX - h->skip_bytes) / elem_stride))
+                    return sp_error_set(err, SP_E_FORMAT, "%s: header line %d: element counts overflow", path, lineno);
                 h->skip_lines += elem_count;
-                if (elem_stride && elem_count > SIZE_MAX / elem_stride)
-                    return sp_error_set(err, SP_E_FORMAT, "%s: element count overflows", path);
                 h->skip_bytes += elem_count * elem_stride;
             }
             if (in_vertex) seen_vertex = 1;
@@ -245,6 +248,10 @@ static int store_vertex(const ply_header *h, const double *values, sp_splat *s, 
         double v = values[j];
         if (!isfinite(v))
             return sp_error_set(err, SP_E_NUMERIC, "%s: vertex %zu has a non-finite %s (%g)", h->path, i, p->name, v);
+        /* a double beyond float's range would become inf in the splat */
+        if (!(fabs(v) <= FLT_MAX))
+            return sp_error_set(err, SP_E_NUMERIC, "%s: vertex %zu has %s = %g, beyond float range", h->path, i,
+                                p->name, v);
         float fv = (float)v;
         switch (p->dest) {
         case D_MEAN: s->means[i * 3 + p->index] = fv; break;
@@ -264,13 +271,21 @@ static int store_vertex(const ply_header *h, const double *values, sp_splat *s, 
     return SP_OK;
 }
 
-/* Bounds the vertex count by the bytes after the header, before anything is allocated. */
-static int check_count(FILE *f, const ply_header *h, sp_error *err)
+/* Bounds the vertex count (and what precedes the vertices) by the bytes after the header,
+ * before anything is allocated. */
+static int check_count(size_t file_size, const ply_header *h, sp_error *err)
 {
-    struct stat st;
-    if (fstat(fileno(f), &st) != 0) return sp_error_set(err, SP_E_IO, "%s: cannot stat", h->path);
-    size_t file_size = (size_t)st.st_size, start = h->header_size + (h->ascii ? 0 : h->skip_bytes);
-    size_t avail = file_size > start ? file_size - start : 0;
+    size_t after = file_size > h->header_size ? file_size - h->header_size : 0;
+    if (!h->ascii && h->skip_bytes > after)
+        return sp_error_set(err, SP_E_FORMAT,
+                            "%s: the elements before 'vertex' take %zu bytes but only %zu follow the header "
+                            "(truncated?)", h->path, h->skip_bytes, after);
+    /* ascii: every line of an element before the vertices takes at least a digit and a newline. */
+    if (h->ascii && h->skip_lines > after / 2)
+        return sp_error_set(err, SP_E_FORMAT,
+                            "%s: the elements before 'vertex' have %zu lines but only %zu bytes follow the header "
+                            "(truncated?)", h->path, h->skip_lines, after);
+    size_t avail = h->ascii ? after - 2 * h->skip_lines : after - h->skip_bytes;
     /* ascii: each value needs at least a digit and a separator. */
     size_t min_record = h->ascii ? 2 * (size_t)h->n_props : (size_t)h->stride;
     if (min_record == 0 || h->n_vertex > avail / min_record)
@@ -357,16 +372,14 @@ static int read_ascii(FILE *f, const ply_header *h, sp_splat *s, double *values,
     return rc;
 }
 
-int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err)
+/* Reads a splat from f (positioned at 0) holding file_size bytes; path names it in messages. */
+static int read_splat(FILE *f, size_t file_size, const char *path, sp_splat *s, sp_error *err)
 {
-    memset(s, 0, sizeof *s);
-    FILE *f = fopen(path, "rb");
-    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
     ply_header h;
     memset(&h, 0, sizeof h);
     h.path = path;
     int rc = parse_header(f, &h, err);
-    if (!rc) rc = check_count(f, &h, err);
+    if (!rc) rc = check_count(file_size, &h, err);
     double *values = NULL;
     if (!rc) {
         int degree = h.n_rest == 0 ? 0 : h.n_rest == 9 ? 1 : h.n_rest == 24 ? 2 : 3;
@@ -378,8 +391,29 @@ int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err)
     if (!rc) rc = h.ascii ? read_ascii(f, &h, s, values, err) : read_binary(f, &h, s, values, err);
     free(values);
     free(h.props);
-    fclose(f);
     if (rc) sp_splat_free(s);
+    return rc;
+}
+
+int sp_ply_read_splat(const char *path, sp_splat *s, sp_error *err)
+{
+    memset(s, 0, sizeof *s);
+    FILE *f = fopen(path, "rb");
+    if (!f) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    struct stat st;
+    int rc = fstat(fileno(f), &st) != 0 ? sp_error_set(err, SP_E_IO, "%s: cannot stat: %s", path, strerror(errno))
+                                        : read_splat(f, (size_t)st.st_size, path, s, err);
+    fclose(f);
+    return rc;
+}
+
+int sp_ply_parse_splat(const void *data, size_t size, const char *name, sp_splat *s, sp_error *err)
+{
+    memset(s, 0, sizeof *s);
+    FILE *f = io_memstream(data, size, name, "a PLY file", err);
+    if (!f) return err ? err->code : SP_E_FORMAT;
+    int rc = read_splat(f, size, name, s, err);
+    fclose(f);
     return rc;
 }
 

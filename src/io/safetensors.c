@@ -44,12 +44,13 @@ const sp_tensor_info *sp_safetensors_find(const sp_safetensors *st, const char *
     return NULL;
 }
 
-/* A JSON number that is a non-negative integer representable exactly in a double. */
+/* A JSON number that is a non-negative integer below 2^53 (above, a double no longer tells
+ * 2^53 + 1 from 2^53: the file would be read as saying something else). */
 static int json_size(const cJSON *v, size_t *out)
 {
     if (!cJSON_IsNumber(v)) return -1;
     double d = v->valuedouble;
-    if (!(d >= 0) || d > 9007199254740992.0 || d != floor(d)) return -1;
+    if (!(d >= 0) || d >= 9007199254740992.0 || d != floor(d)) return -1;
     *out = (size_t)d;
     return 0;
 }
@@ -57,6 +58,7 @@ static int json_size(const cJSON *v, size_t *out)
 static int parse_tensor(const char *path, const cJSON *item, sp_tensor_info *t, size_t offs[2], sp_error *err)
 {
     const char *name = item->string;
+    if (!name[0]) return sp_error_set(err, SP_E_FORMAT, "%s: a tensor has an empty name", path);
     if (strlen(name) >= sizeof t->name)
         return sp_error_set(err, SP_E_UNSUPPORTED, "%s: tensor name '%.60s...' is longer than %zu bytes", path, name,
                             sizeof t->name - 1);
@@ -109,27 +111,10 @@ static int cmp_span(const void *a, const void *b)
     return x->begin < y->begin ? -1 : x->begin > y->begin ? 1 : (x->end > y->end) - (x->end < y->end);
 }
 
-int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
+/* Parses the header of the bytes [u, u + size) into st->n / st->tensors (pointing into u). */
+static int parse(const unsigned char *u, size_t size, const char *path, sp_safetensors *st, sp_error *err)
 {
-    memset(st, 0, sizeof *st);
-    int fd = open(path, O_RDONLY);
-    if (fd < 0) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
-    struct stat sb;
-    if (fstat(fd, &sb) != 0) {
-        close(fd);
-        return sp_error_set(err, SP_E_IO, "%s: cannot stat: %s", path, strerror(errno));
-    }
-    size_t size = (size_t)sb.st_size;
-    if (size < 8) {
-        close(fd);
-        return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
-    }
-    void *map = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
-    close(fd);
-    if (map == MAP_FAILED) return sp_error_set(err, SP_E_IO, "%s: cannot mmap: %s", path, strerror(errno));
-    st->map = map;
-    st->map_size = size;
-    const unsigned char *u = map;
+    if (size < 8) return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
     uint64_t hlen;
     memcpy(&hlen, u, 8);
     int rc = SP_OK;
@@ -209,8 +194,51 @@ int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
 out:
     free(spans);
     cJSON_Delete(json);
+    return rc;
+}
+
+int sp_safetensors_open(const char *path, sp_safetensors *st, sp_error *err)
+{
+    memset(st, 0, sizeof *st);
+    int fd = open(path, O_RDONLY);
+    if (fd < 0) return sp_error_set(err, SP_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    struct stat sb;
+    if (fstat(fd, &sb) != 0) {
+        int e = errno;
+        close(fd);
+        return sp_error_set(err, SP_E_IO, "%s: cannot stat: %s", path, strerror(e));
+    }
+    size_t size = (size_t)sb.st_size;
+    if (size < 8) {
+        close(fd);
+        return sp_error_set(err, SP_E_FORMAT, "%s: %zu bytes is too short for a safetensors file", path, size);
+    }
+    void *map = mmap(NULL, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    int e = errno;
+    close(fd);
+    if (map == MAP_FAILED) return sp_error_set(err, SP_E_IO, "%s: cannot mmap: %s", path, strerror(e));
+    st->map = map;
+    st->map_size = size;
+    int rc = parse(map, size, path, st, err);
     if (rc) sp_safetensors_close(st);
     return rc;
+}
+
+int sp_safetensors_parse(const void *data, size_t size, const char *name, sp_safetensors *st, sp_error *err)
+{
+    memset(st, 0, sizeof *st);
+    int rc = parse(data, size, name, st, err);
+    if (rc) sp_safetensors_close(st);
+    return rc;
+}
+
+/* An integer as its exact digits: cJSON prints numbers with 15 significant digits when that reads
+ * back within a relative epsilon, so 9007199254740992 would come back as 9007199254740990. */
+static cJSON *json_count(size_t v)
+{
+    char s[32];
+    snprintf(s, sizeof s, "%zu", v);
+    return cJSON_CreateRaw(s);
 }
 
 int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t n, sp_error *err)
@@ -243,10 +271,10 @@ int sp_safetensors_write(const char *path, const sp_tensor_info *tensors, size_t
             break;
         }
         cJSON_AddStringToObject(e, "dtype", tn);
-        for (int k = 0; k < t->ndim; k++) cJSON_AddItemToArray(shape, cJSON_CreateNumber((double)t->shape[k]));
+        for (int k = 0; k < t->ndim; k++) cJSON_AddItemToArray(shape, json_count(t->shape[k]));
         cJSON_AddItemToObject(e, "shape", shape);
-        cJSON_AddItemToArray(offs, cJSON_CreateNumber((double)offset));
-        cJSON_AddItemToArray(offs, cJSON_CreateNumber((double)(offset + nbytes)));
+        cJSON_AddItemToArray(offs, json_count(offset));
+        cJSON_AddItemToArray(offs, json_count(offset + nbytes));
         cJSON_AddItemToObject(e, "data_offsets", offs);
         cJSON_AddItemToObject(root, t->name, e);
         offset += nbytes;

@@ -218,6 +218,8 @@ int sp_nav_describe(sp_nav *nav, const char *anchor, float radius_m, const float
                     sp_nav_description *out, sp_error *err)
 {
     memset(out, 0, sizeof *out);
+    if (!(radius_m <= 100)) /* before the anchor is resolved: the option is wrong whatever it finds */
+        return sp_error_set(err, SP_E_ARG, "describe: radius %g m: expected at most 100", radius_m);
     sp_nav_target t;
     int rc = sp_nav_resolve(nav, anchor, &t, err);
     if (rc) return rc;
@@ -228,6 +230,8 @@ int sp_nav_describe_target(sp_nav *nav, const sp_nav_target *anchor, int instanc
                            const float *robot, sp_nav_description *out, sp_error *err)
 {
     memset(out, 0, sizeof *out);
+    if (!(radius_m <= 100)) /* NaN too; <= 0 picks the default */
+        return sp_error_set(err, SP_E_ARG, "describe: radius %g m: expected at most 100", radius_m);
     float radius = radius_m > 0 ? radius_m : nav->opts.near_m;
     int rc = 0;
     out->anchor = *anchor;

@@ -72,6 +72,15 @@ static int check_nav_opts(const sp_nav_opts *o, sp_error *err)
                             o->k, o->n_previews, o->preview_width, o->preview_height, o->loc_width,
                             o->loc_height, o->loc_spacing_m, o->approach_m, o->camera_height_m,
                             o->preview_hfov_deg, o->loc_views_full, o->clearance_ref_m, o->max_tour_poses);
+    /* upper bounds too: a robot radius of 1e30 m inflated every map into "no free floor", an
+     * approach of 1e30 m made every cell a goal */
+    const sp_costmap_opts *c = &o->costmap;
+    if (!(c->robot_radius_m >= 0 && c->robot_radius_m <= 10) || !(c->inflation_radius_m <= 50))
+        return sp_error_set(err, SP_E_ARG, "nav: robot radius %g m, inflation radius %g m: expected 0..10 and at most 50",
+                            c->robot_radius_m, c->inflation_radius_m);
+    if (!(o->approach_m <= 100) || !(o->near_m >= 0 && o->near_m <= 100))
+        return sp_error_set(err, SP_E_ARG, "nav: approach %g m, describe radius %g m: expected 0..100",
+                            o->approach_m, o->near_m);
     return SP_OK;
 }
 

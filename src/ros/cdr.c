@@ -111,7 +111,7 @@ int cdr_bytes(cdr_in *in, const char *prefix, const char *field, void *out, size
 {
     const uint8_t *p = take(in, prefix, field, 1, n);
     if (!p) return -1;
-    memcpy(out, p, n);
+    if (n) memcpy(out, p, n); /* an empty sequence: out may be NULL */
     return 0;
 }
 

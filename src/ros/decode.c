@@ -21,6 +21,7 @@ static int fail_numeric(cdr_in *in, const char *prefix, const char *field, doubl
 
 int sp_ros_decode_odometry(const uint8_t *bytes, size_t size, sp_ros_odom *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_odom o;
     memset(&o, 0, sizeof o);
@@ -81,6 +82,7 @@ static int read_path(cdr_in *in, const char *prefix, sp_ros_path *out)
 
 int sp_ros_decode_path(const uint8_t *bytes, size_t size, sp_ros_path *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_path path;
     memset(&path, 0, sizeof path);
@@ -130,6 +132,7 @@ static int read_map_info(cdr_in *in, sp_ros_grid *g)
 int sp_ros_decode_occupancy_grid(const uint8_t *bytes, size_t size, sp_ros_grid *out,
                                  sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_grid g;
     double stamp;
@@ -210,6 +213,7 @@ static int decode_tf(const uint8_t *bytes, size_t size, const char *parent, cons
 int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform *out,
                              sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     int found;
     return decode_tf(bytes, size, NULL, NULL, out, &found, err);
 }
@@ -217,6 +221,7 @@ int sp_ros_decode_tf_message(const uint8_t *bytes, size_t size, sp_ros_transform
 int sp_ros_decode_tf_find(const uint8_t *bytes, size_t size, const char *parent,
                           const char *child, sp_ros_transform *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     int found;
     if (!parent || !child) return sp_error_set(err, SP_E_ARG, "tf: parent and child frames needed");
     sp_ros_transform t;
@@ -241,6 +246,7 @@ static int read_status(cdr_in *in, const char *prefix, int *status)
 int sp_ros_decode_nav_goal_request(const uint8_t *bytes, size_t size, sp_ros_goal_request *out,
                                    sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_goal_request r;
     memset(&r, 0, sizeof r);
@@ -258,6 +264,7 @@ int sp_ros_decode_nav_goal_request(const uint8_t *bytes, size_t size, sp_ros_goa
 int sp_ros_decode_path_goal_request(const uint8_t *bytes, size_t size, sp_ros_goal_request *out,
                                     sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_goal_request r;
     memset(&r, 0, sizeof r);
@@ -277,6 +284,7 @@ int sp_ros_decode_path_goal_request(const uint8_t *bytes, size_t size, sp_ros_go
 int sp_ros_decode_goal_response(const uint8_t *bytes, size_t size, sp_ros_goal_response *out,
                                 sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_goal_response r;
     memset(&r, 0, sizeof r);
@@ -292,6 +300,7 @@ int sp_ros_decode_goal_response(const uint8_t *bytes, size_t size, sp_ros_goal_r
 int sp_ros_decode_goal_id_request(const uint8_t *bytes, size_t size, sp_ros_goal_id_request *out,
                                   sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_goal_id_request r;
     memset(&r, 0, sizeof r);
@@ -321,6 +330,7 @@ static void read_error_fields(cdr_in *in, sp_ros_result_response *r)
 int sp_ros_decode_nav_result_response(const uint8_t *bytes, size_t size, sp_ros_distro distro,
                                       sp_ros_result_response *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     const char *type = "nav2_msgs/action/NavigateToPose_GetResult_Response";
     if (check_distro(distro, type, err)) return SP_E_ARG;
     cdr_in in;
@@ -343,6 +353,7 @@ int sp_ros_decode_nav_result_response(const uint8_t *bytes, size_t size, sp_ros_
 int sp_ros_decode_path_result_response(const uint8_t *bytes, size_t size, sp_ros_distro distro,
                                        sp_ros_result_response *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     const char *type = "nav2_msgs/action/ComputePathToPose_GetResult_Response";
     if (check_distro(distro, type, err)) return SP_E_ARG;
     cdr_in in;
@@ -371,6 +382,7 @@ void sp_ros_result_response_free(sp_ros_result_response *r)
 int sp_ros_decode_nav_feedback_message(const uint8_t *bytes, size_t size,
                                        sp_ros_feedback_message *out, sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_feedback_message m;
     memset(&m, 0, sizeof m);
@@ -414,6 +426,7 @@ static int read_goal_info(cdr_in *in, const char *prefix, uint8_t id[16], double
 int sp_ros_decode_goal_status_array(const uint8_t *bytes, size_t size, sp_ros_status_array *out,
                                     sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_status_array a;
     size_t n = 0;
@@ -443,6 +456,7 @@ int sp_ros_decode_goal_status_array(const uint8_t *bytes, size_t size, sp_ros_st
 int sp_ros_decode_cancel_request(const uint8_t *bytes, size_t size, sp_ros_cancel_request *out,
                                  sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_cancel_request r;
     memset(&r, 0, sizeof r);
@@ -458,6 +472,7 @@ int sp_ros_decode_cancel_request(const uint8_t *bytes, size_t size, sp_ros_cance
 int sp_ros_decode_cancel_response(const uint8_t *bytes, size_t size, sp_ros_cancel_response *out,
                                   sp_error *err)
 {
+    memset(out, 0, sizeof *out); /* zeroed whatever happens (ros.h): a failed decode frees nothing unowned */
     cdr_in in;
     sp_ros_cancel_response r;
     int8_t code;

@@ -558,6 +558,8 @@ static int query_embedding(sp_query_engine *e, const float *embedding, const cha
 
 static int check_opts(const sp_query_engine *e, const sp_query_opts *o, sp_error *err)
 {
+    int rc = sem_check_opts(o, err); /* the numeric ranges (opts.c) */
+    if (rc) return rc;
     if (o->heatmap && e->n_cams > 0 && o->heatmap_view >= 0 && (size_t)o->heatmap_view >= e->n_cams)
         return sp_error_set(err, SP_E_ARG, "query: heatmap view %d not in 0..%zu", o->heatmap_view,
                             e->n_cams - 1);

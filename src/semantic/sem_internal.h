@@ -47,6 +47,8 @@ struct sp_query_engine {
     sp_grid3 occ;              /* occupancy of opaque Gaussian centres (1), built on first use */
 };
 
+/* Every numeric query option in its range (opts.c); SP_E_ARG naming the option otherwise. */
+int sem_check_opts(const sp_query_opts *o, sp_error *err);
 /* ---- text encoders (encoder.c): one table of operations per encoder ---------------------------
  * Every function is called with the engine's lock held. */
 struct sem_encoder {

@@ -79,6 +79,14 @@ int wb_init(wbuild *b, sp_world *w, sp_error *err)
     return 0;
 }
 
+void wb_release(wbuild *b)
+{
+    for (size_t i = 0; i < b->n_meshes; i++) mesh_data_free(&b->meshes[i].data);
+    free(b->meshes);
+    b->meshes = NULL;
+    b->n_meshes = b->cap_meshes = 0;
+}
+
 long wb_vertex(wbuild *b, const double pos[3], const double nrm[3], const double uv[2],
                const double pattern[3])
 {
@@ -247,6 +255,17 @@ int wb_finish(wbuild *b, sp_error *err)
     }
     for (size_t t = 0; t < w->n_triangles; t++) {
         const uint32_t *v = &w->tris[t * 3];
+        /* finite inputs can still overflow: a size of 1e300 scaled, or posed far away */
+        for (int j = 0; j < 3; j++) {
+            const float *p = &w->positions[v[j] * 3], *n = &w->normals[v[j] * 3];
+            if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]) || !isfinite(n[0]) || !isfinite(n[1]) ||
+                !isfinite(n[2])) {
+                const sp_synth_object *o = &w->objects[w->tri_object[t]];
+                return sp_error_set(err, SP_E_NUMERIC,
+                                    "%s:%d: model '%s' has geometry beyond float range (a size, scale or pose too large?)",
+                                    w->path, o->sdf_line, o->name);
+            }
+        }
         const float *p0 = &w->pattern[v[0] * 3], *p1 = &w->pattern[v[1] * 3], *p2 = &w->pattern[v[2] * 3];
         float e1[3] = {p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]};
         float e2[3] = {p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]};

@@ -17,14 +17,51 @@ xform xf_from_pose(const double p[6]);
 void xf_apply(const xform *a, const double in[3], double out[3]);
 void xf_apply_dir(const xform *a, const double in[3], double out[3]);
 
+/* A mesh file as assimp reads it, flattened: triangles in the file's root frame, one part per
+ * assimp mesh, with its material's diffuse colour and texture name. Imported in a child process
+ * (mesh_import.c): an assimp crash or hang on a malformed file becomes an error naming it. */
+typedef struct mesh_material {
+    int has_diffuse;
+    float diffuse[3];
+    char texture[1024]; /* "" = none; "*N" = embedded (not used) */
+} mesh_material;
+
+typedef struct mesh_part {
+    uint32_t n_vertices, n_faces;
+    uint32_t material; /* index into materials; out of range = none */
+    float *pos;        /* [n_vertices][3] */
+    float *nrm;        /* [n_vertices][3] or NULL */
+    float *uv;         /* [n_vertices][2] or NULL */
+    uint32_t *tris;    /* [n_faces][3], each < n_vertices (checked) */
+} mesh_part;
+
+typedef struct mesh_data {
+    uint32_t n_materials, n_parts;
+    mesh_material *materials;
+    mesh_part *parts;
+} mesh_data;
+
+int mesh_import(const char *path, mesh_data *m, sp_error *err);
+void mesh_data_free(mesh_data *m);
+
+/* Meshes imported so far, by path: a model included many times is imported once. */
+typedef struct mesh_cache_entry {
+    char path[PATH_MAX];
+    mesh_data data;
+} mesh_cache_entry;
+
 typedef struct wbuild {
     sp_world *w;
     size_t cap_v, cap_t, cap_m, cap_tex, cap_o, cap_l, cap_c;
     const sp_log *log;
     int skip_missing;
+    mesh_cache_entry *meshes;
+    size_t n_meshes, cap_meshes;
 } wbuild;
 
 int wb_init(wbuild *b, sp_world *w, sp_error *err);
+/* Frees what the builder holds besides the world (the mesh cache); the world stays. */
+void wb_release(wbuild *b);
 /* Appends a vertex; returns its index or -1 when out of memory. pattern = object-local point. */
 long wb_vertex(wbuild *b, const double pos[3], const double nrm[3], const double uv[2],
                const double pattern[3]);

@@ -1,15 +1,10 @@
-/* Mesh visuals (.dae, .obj, .stl, ... through libassimp) with their own materials and diffuse
- * textures, and the texture cache. COLLADA files keep their <unit> scale but not their up axis,
+/* Mesh visuals (.dae, .obj, .stl, ... through libassimp, imported by mesh_import.c) with their
+ * own materials and diffuse textures, and the texture cache. COLLADA files keep their <unit> scale but not their up axis,
  * as Gazebo renders them. */
 #include "internal.h"
 
 #include "semsplat/io.h"
 
-#include <assimp/cimport.h>
-#include <assimp/config.h>
-#include <assimp/material.h>
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -118,103 +113,102 @@ static int find_texture(const char *mesh_path, const char *tex, char *out, size_
     return SP_E_NOTFOUND;
 }
 
+/* The world material of one mesh material: its colour unless the SDF set one, its texture. */
+static int mesh_material_index(wbuild *b, const char *path, const mesh_material *mm, const sp_synth_material *fallback,
+                               int sdf_material_set, int *out, sp_error *err)
+{
+    sp_synth_material m = *fallback;
+    if (!sdf_material_set && mm->has_diffuse) {
+        memcpy(m.diffuse, mm->diffuse, sizeof m.diffuse);
+        memcpy(m.ambient, m.diffuse, sizeof m.ambient);
+    }
+    if (mm->texture[0] && mm->texture[0] != '*') {
+        char tpath[PATH_MAX * 2];
+        if (find_texture(path, mm->texture, tpath, sizeof tpath)) {
+            /* As Gazebo: the mesh is drawn in its material colour, with a warning (a texture
+             * changes how a thing looks, not where it is; missing meshes stay errors). */
+            sp_logf(b->log, SP_LOG_WARN, "missing texture %s (used by mesh %s): drawn in its material colour", tpath,
+                    path);
+            b->w->n_missing_textures++;
+        } else {
+            int ti = wb_texture(b, tpath, err);
+            if (ti < 0) return sp_error_prefix(err, "texture of mesh %s: ", path);
+            m.texture = ti;
+            for (int k = 0; k < 3; k++) m.diffuse[k] = m.ambient[k] = 1.0f;
+        }
+    }
+    int idx = wb_material(b, &m);
+    if (idx < 0) return sp_error_set(err, idx, "%s: too many materials", path);
+    *out = idx;
+    return 0;
+}
+
+/* The mesh at path, imported on first use and kept in the builder's cache. */
+static int cached_mesh(wbuild *b, const char *path, const mesh_data **out, sp_error *err)
+{
+    for (size_t i = 0; i < b->n_meshes; i++)
+        if (!strcmp(b->meshes[i].path, path)) {
+            *out = &b->meshes[i].data;
+            return 0;
+        }
+    if (b->n_meshes == b->cap_meshes) {
+        size_t cap = b->cap_meshes ? b->cap_meshes * 2 : 16;
+        mesh_cache_entry *nm = realloc(b->meshes, cap * sizeof *nm);
+        if (!nm) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+        b->meshes = nm, b->cap_meshes = cap;
+    }
+    mesh_cache_entry *e = &b->meshes[b->n_meshes];
+    snprintf(e->path, sizeof e->path, "%s", path);
+    int rc = mesh_import(path, &e->data, err);
+    if (rc) return rc;
+    *out = &b->meshes[b->n_meshes++].data;
+    return 0;
+}
+
 int geom_mesh(wbuild *b, const xform *T, const char *path, const double scale[3],
               const sp_synth_material *fallback, int sdf_material_set, int obj, sp_error *err)
 {
-    struct aiPropertyStore *props = aiCreatePropertyStore();
-    aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, 1);
-    /* Points and lines are dropped; everything else becomes triangles in the file's root frame. */
-    aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const struct aiScene *sc = aiImportFileExWithProperties(
-        path, aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_GenSmoothNormals |
-                  aiProcess_SortByPType,
-        NULL, props);
-    aiReleasePropertyStore(props);
-    if (!sc || !sc->mRootNode)
-        return sp_error_set(err, SP_E_FORMAT, "cannot read mesh %s: %s", path, aiGetErrorString());
-    int rc = 0;
-    /* Material per assimp material index, resolved once. */
-    int *mat_of = malloc((sc->mNumMaterials + 1) * sizeof(int));
-    if (!mat_of) {
-        aiReleaseImport(sc);
-        return sp_error_set(err, SP_E_NOMEM, "out of memory");
-    }
-    for (unsigned mi = 0; mi < sc->mNumMaterials; mi++) {
-        const struct aiMaterial *am = sc->mMaterials[mi];
-        sp_synth_material m = *fallback;
-        struct aiColor4D col;
-        if (!sdf_material_set && aiGetMaterialColor(am, AI_MATKEY_COLOR_DIFFUSE, &col) == aiReturn_SUCCESS) {
-            m.diffuse[0] = col.r; m.diffuse[1] = col.g; m.diffuse[2] = col.b;
-            memcpy(m.ambient, m.diffuse, sizeof m.ambient);
-        }
-        struct aiString tp;
-        if (aiGetMaterialTextureCount(am, aiTextureType_DIFFUSE) > 0 &&
-            aiGetMaterialTexture(am, aiTextureType_DIFFUSE, 0, &tp, NULL, NULL, NULL, NULL, NULL, NULL) ==
-                aiReturn_SUCCESS &&
-            tp.data[0] != '*') {
-            char tpath[PATH_MAX * 2];
-            if (find_texture(path, tp.data, tpath, sizeof tpath)) {
-                /* As Gazebo: the mesh is drawn in its material colour, with a warning (a texture
-                 * changes how a thing looks, not where it is; missing meshes stay errors). */
-                sp_logf(b->log, SP_LOG_WARN,
-                        "missing texture %s (used by mesh %s): drawn in its material colour", tpath, path);
-                b->w->n_missing_textures++;
-            } else {
-                int ti = wb_texture(b, tpath, err);
-                if (ti < 0) {
-                    rc = sp_error_prefix(err, "texture of mesh %s: ", path);
-                    goto done;
-                }
-                m.texture = ti;
-                for (int k = 0; k < 3; k++) m.diffuse[k] = m.ambient[k] = 1.0f;
-            }
-        }
-        int idx = wb_material(b, &m);
-        if (idx < 0) {
-            rc = sp_error_set(err, idx, "%s: too many materials", path);
-            goto done;
-        }
-        mat_of[mi] = idx;
-    }
+    const mesh_data *cached = NULL;
+    int rc = cached_mesh(b, path, &cached, err);
+    if (rc) return rc;
+    const mesh_data md = *cached;
+    /* Material per mesh material, resolved once; the last slot is the fallback. */
+    int *mat_of = malloc((md.n_materials + 1) * sizeof(int));
+    if (!mat_of) return sp_error_set(err, SP_E_NOMEM, "out of memory");
+    for (uint32_t mi = 0; mi < md.n_materials && !rc; mi++)
+        rc = mesh_material_index(b, path, &md.materials[mi], fallback, sdf_material_set, &mat_of[mi], err);
+    if (!rc && (mat_of[md.n_materials] = wb_material(b, fallback)) < 0)
+        rc = sp_error_set(err, mat_of[md.n_materials], "%s: too many materials", path);
     /* Normals go through the inverse-transpose of the scale. */
     double inv_s[3];
     for (int k = 0; k < 3; k++) inv_s[k] = scale[k] != 0 ? 1.0 / scale[k] : 0;
-    for (unsigned i = 0; i < sc->mNumMeshes; i++) {
-        const struct aiMesh *me = sc->mMeshes[i];
-        if (!(me->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
+    for (uint32_t i = 0; i < md.n_parts && !rc; i++) {
+        const mesh_part *me = &md.parts[i];
         size_t base = b->w->n_vertices;
-        for (unsigned v = 0; v < me->mNumVertices; v++) {
-            double p[3] = {me->mVertices[v].x * scale[0], me->mVertices[v].y * scale[1], me->mVertices[v].z * scale[2]};
+        for (uint32_t v = 0; v < me->n_vertices && !rc; v++) {
+            const float *q = me->pos + 3 * (size_t)v;
+            double p[3] = {q[0] * scale[0], q[1] * scale[1], q[2] * scale[2]};
             double n[3] = {0, 0, 1}, uv[2] = {0, 0}, pw[3], nw[3];
-            if (me->mNormals) {
-                n[0] = me->mNormals[v].x * inv_s[0];
-                n[1] = me->mNormals[v].y * inv_s[1];
-                n[2] = me->mNormals[v].z * inv_s[2];
-            }
-            if (me->mTextureCoords[0]) {
-                uv[0] = me->mTextureCoords[0][v].x;
-                uv[1] = me->mTextureCoords[0][v].y;
-            }
+            if (me->nrm)
+                for (int k = 0; k < 3; k++) n[k] = me->nrm[3 * (size_t)v + k] * inv_s[k];
+            if (me->uv) uv[0] = me->uv[2 * (size_t)v], uv[1] = me->uv[2 * (size_t)v + 1];
             xf_apply(T, p, pw);
             xf_apply_dir(T, n, nw);
-            if (wb_vertex(b, pw, nw, uv, p) < 0) {
+            /* normals too: assimp derives them from the positions, and huge ones overflow */
+            if (!isfinite(pw[0]) || !isfinite(pw[1]) || !isfinite(pw[2]) || !isfinite(nw[0]) || !isfinite(nw[1]) ||
+                !isfinite(nw[2]))
+                rc = sp_error_set(err, SP_E_NUMERIC, "mesh %s: vertex %u of mesh %u is not finite or too large (%g %g %g)",
+                                  path, v, i, q[0], q[1], q[2]);
+            else if (wb_vertex(b, pw, nw, uv, p) < 0)
                 rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
-                goto done;
-            }
         }
-        int mat = me->mMaterialIndex < sc->mNumMaterials ? mat_of[me->mMaterialIndex] : wb_material(b, fallback);
-        for (unsigned f = 0; f < me->mNumFaces; f++) {
-            const struct aiFace *fc = &me->mFaces[f];
-            if (fc->mNumIndices != 3) continue;
-            if (wb_triangle(b, (long)(base + fc->mIndices[0]), (long)(base + fc->mIndices[1]),
-                            (long)(base + fc->mIndices[2]), mat, obj)) {
+        int mat = mat_of[me->material < md.n_materials ? me->material : md.n_materials];
+        for (uint32_t f = 0; f < me->n_faces && !rc; f++) {
+            const uint32_t *t = me->tris + 3 * (size_t)f;
+            if (wb_triangle(b, (long)(base + t[0]), (long)(base + t[1]), (long)(base + t[2]), mat, obj))
                 rc = sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
-                goto done;
-            }
         }
     }
-done:
     free(mat_of);
-    aiReleaseImport(sc);
     return rc;
 }

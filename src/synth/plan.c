@@ -232,12 +232,18 @@ int sp_synth_plan_views(const sp_world *w, const sp_synth_capture_opts *o, sp_ca
     if (o->plan == SP_SYNTH_PLAN_DRIVE) return sp_synth_plan(w, o, cams, n_out, NULL, err);
     *cams = NULL;
     *n_out = 0;
-    if (o->n_views <= 0 || o->width <= 0 || o->height <= 0)
-        return sp_error_set(err, SP_E_ARG, "capture: %d views of %dx%d: expected positive numbers",
+    if (o->n_views <= 0 || o->n_views > 100000 || o->width <= 0 || o->height <= 0 || o->width > 16384 ||
+        o->height > 16384)
+        return sp_error_set(err, SP_E_ARG, "capture: %d views of %dx%d: expected 1..100000 views of 1..16384 pixels",
                             o->n_views, o->width, o->height);
+    if (o->n_points < 0 || o->n_points > 100000000)
+        return sp_error_set(err, SP_E_ARG, "capture: points %d outside 1..100000000 (0: 30000)", o->n_points);
+    if (!(o->fov_deg >= 0 && o->fov_deg < 170))
+        return sp_error_set(err, SP_E_ARG, "fov %g degrees: expected 0 (70) or less than 170", o->fov_deg);
     float fov = o->fov_deg > 0 ? o->fov_deg : 70.0f;
-    if (fov >= 170) return sp_error_set(err, SP_E_ARG, "fov %g degrees: expected less than 170", fov);
     float hmin = o->min_height_m, hmax = o->max_height_m;
+    if (!(hmin >= 0 && hmax >= 0 && hmax <= 100))
+        return sp_error_set(err, SP_E_ARG, "camera heights %g..%g m: expected 0..100", hmin, hmax);
     if (hmin <= 0 && hmax <= 0) { hmin = 0.3f; hmax = 1.5f; }
     if (hmax < hmin) return sp_error_set(err, SP_E_ARG, "camera heights %g..%g: max below min", hmin, hmax);
     size_t n = (size_t)o->n_views;

@@ -86,7 +86,9 @@ static int numbers(ctx *c, const char *file, xmlNodePtr n, int min_n, int max_n,
         if (!*s) break;
         char *end;
         double v = strtod(s, &end);
-        if (end == s || k >= max_n || !isfinite(v))
+        /* "1-2" is not two numbers: each ends at a blank or the end */
+        int glued = *end && *end != ' ' && *end != '\t' && *end != '\n' && *end != '\r';
+        if (end == s || glued || k >= max_n || !isfinite(v))
             return sp_error_set(c->err, SP_E_FORMAT, "%s:%ld: <%s>: expected %d%s numbers, got '%s'",
                                 file, xmlGetLineNo(n), (const char *)n->name, min_n,
                                 max_n > min_n ? "+" : "", buf);
@@ -155,6 +157,10 @@ static int pose_of(ctx *c, const char *file, xmlNodePtr el, xform *local, char *
     int k = numbers(c, file, p, 6, 7, v);
     if (k < 0) return k;
     if (k == 7) { /* SDF 1.9 rotation_format="quat_xyz_w": x y z qx qy qz qw */
+        double qn = v[3] * v[3] + v[4] * v[4] + v[5] * v[5] + v[6] * v[6];
+        if (!(qn > 1e-12) || !isfinite(qn))
+            return sp_error_set(c->err, SP_E_FORMAT, "%s:%ld: <pose>: the quaternion (%g %g %g %g) is not a rotation",
+                                file, xmlGetLineNo(p), v[3], v[4], v[5], v[6]);
         float q[4] = {(float)v[6], (float)v[3], (float)v[4], (float)v[5]}, R[9];
         sp_quat_to_mat3(q, R);
         xform a = xf_identity();
@@ -687,6 +693,7 @@ int sp_synth_load_world(const char *path, const sp_synth_load_opts *opts, sp_wor
 fail_doc:
     xmlFreeDoc(doc);
 fail:
+    wb_release(&c->b);
     free(c);
     if (rc) sp_world_free(w);
     return rc;

@@ -92,7 +92,16 @@ int tr_checkpoint_read(const char *path, tr_checkpoint *ck, sp_error *err)
     free(data);
     ck->step = h.step;
     ck->rng = h.rng;
-    if ((rc = sp_splat_check_finite(&ck->params, err))) {
+    /* Adam's moments too: a NaN or a negative second moment poisons the first resumed step. */
+    rc = sp_splat_check_finite(&ck->params, err);
+    if (!rc && (rc = sp_splat_check_finite(&ck->m, err))) sp_error_prefix(err, "first moments: ");
+    if (!rc && (rc = sp_splat_check_finite(&ck->v, err))) sp_error_prefix(err, "second moments: ");
+    const float *vf[6] = {ck->v.means, ck->v.quats, ck->v.log_scales, ck->v.opacity_logits, ck->v.sh, ck->v.features};
+    size_t vn[6] = {3, 4, 3, 1, (size_t)sp_sh_coeffs(h.sh_degree) * 3, (size_t)h.feat_dim};
+    for (int k = 0; k < 6 && !rc; k++)
+        for (size_t i = 0; i < h.n * vn[k] && !rc; i++)
+            if (vf[k][i] < 0) rc = sp_error_set(err, SP_E_FORMAT, "second moment %zu of field %d is negative", i, k);
+    if (rc) {
         tr_checkpoint_free(ck);
         return sp_error_prefix(err, "%s: ", path);
     }

@@ -133,8 +133,9 @@ int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *ima
                        int downscale, int test_every, sp_error *err)
 {
     memset(d, 0, sizeof *d);
-    if (downscale < 1)
-        return sp_error_set(err, SP_E_ARG, "downscale factor %d must be >= 1", downscale);
+    if (downscale < 1 || downscale > 64)
+        return sp_error_set(err, SP_E_ARG, "downscale factor %d is outside 1..64", downscale);
+    if (test_every < 0) return sp_error_set(err, SP_E_ARG, "test_every %d must be >= 0 (0: no held-out views)", test_every);
     char imdir[4096];
     if (images_dir) snprintf(imdir, sizeof imdir, "%s", images_dir);
     else if (sp_path_join(imdir, sizeof imdir, colmap_dir, "images"))
@@ -415,7 +416,8 @@ int sp_train_init_from_points(sp_splat *s, const sp_train_data *d, int sh_degree
 int sp_train_init_random(sp_splat *s, const sp_train_data *d, size_t n, float extent,
                          int sh_degree, uint64_t seed, sp_error *err)
 {
-    if (n == 0) return sp_error_set(err, SP_E_ARG, "init: random init needs at least 1 point");
+    if (n == 0 || n > (size_t)1 << 30)
+        return sp_error_set(err, SP_E_ARG, "init: random init points %zu outside 1..2^30", n);
     float *pts = malloc(n * 3 * sizeof(float)), *rgb = malloc(n * 3 * sizeof(float));
     if (!pts || !rgb) {
         free(pts);

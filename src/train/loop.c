@@ -478,9 +478,8 @@ done:
 static int check_options(const sp_train_data *d, const sp_train_options *o, const sp_splat *sp,
                          sp_error *err)
 {
-    if (o->steps < 1) return sp_error_set(err, SP_E_ARG, "train: steps %d must be >= 1", o->steps);
-    if (o->sh_degree < 0 || o->sh_degree > 3)
-        return sp_error_set(err, SP_E_ARG, "train: SH degree %d is not in 0..3", o->sh_degree);
+    int rc = tr_check_option_ranges(o, err);
+    if (rc) return rc;
     if (o->feature_dim < 0 || (o->feature_dim > 0 && !o->get_feature_target))
         return sp_error_set(err, SP_E_ARG, "train: feature_dim %d needs a get_feature_target callback",
                             o->feature_dim);

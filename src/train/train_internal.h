@@ -47,6 +47,9 @@ typedef struct tr_checkpoint {
     sp_splat params, m, v; /* m, v shaped like params */
 } tr_checkpoint;
 
+/* Every numeric option in its range (options.c); SP_E_ARG naming the option otherwise. */
+int tr_check_option_ranges(const sp_train_options *o, sp_error *err);
+
 int tr_checkpoint_write(const char *path, int step, uint64_t rng, const sp_splat *params,
                         const sp_splat *m, const sp_splat *v, sp_error *err);
 int tr_checkpoint_read(const char *path, tr_checkpoint *ck, sp_error *err);

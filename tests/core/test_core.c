@@ -114,6 +114,7 @@ static void test_splat_buffers(void)
     CHECK_OK(sp_splat_check_finite(&c, &err), &err);
     c.log_scales[7] = NAN;
     CHECK_FAILS(sp_splat_check_finite(&c, &err), SP_E_NUMERIC, &err, "Gaussian 2");
+    sp_splat_free(&c); /* before the failing alloc, which zeroes c */
     CHECK_FAILS(sp_splat_alloc(&c, 1, 4, 0, &err), SP_E_ARG, &err, "SH degree 4");
     sp_splat_free(&s);
     sp_splat_free(&s); /* freeing twice is harmless: free zeroes the struct */

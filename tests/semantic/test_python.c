@@ -52,9 +52,10 @@ static char g_dir[1024];
 static void run_script(const char *script)
 {
     char cmd[4096];
+    const char *pre = TEST_PYTHON_ENV;
     snprintf(cmd, sizeof cmd,
-             "SEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/%s' '%s' '%s/semsplat'",
-             SP_BUILD_DIR, SP_BUILD_DIR, SP_SOURCE_DIR, script, g_dir, SP_BUILD_DIR);
+             "%sSEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/%s' '%s' '%s/semsplat'",
+             pre, SP_BUILD_DIR, SP_BUILD_DIR, SP_SOURCE_DIR, script, g_dir, SP_BUILD_DIR);
     int rc = system(cmd);
     CHECK_MSG(rc == 0, "%s exited with %d", cmd, rc);
 }

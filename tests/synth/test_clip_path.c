@@ -36,7 +36,7 @@ static void test_clip_path(void)
     if (run("'%s/semsplat' lift --model '%s' --features '%s' --device cpu --quiet", model, feat)) return;
     char cmd[8192];
     snprintf(cmd, sizeof cmd,
-             "SEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/test_clip_path.py' "
+             TEST_PYTHON_ENV "SEMSPLAT_LIB='%s' LD_LIBRARY_PATH='%s' /usr/bin/python3 '%s/tests/python/test_clip_path.py' "
              "'%s' '%s' '%s/semsplat'", SP_BUILD_DIR, SP_BUILD_DIR, SP_SOURCE_DIR, model, feat, SP_BUILD_DIR);
     int rc = system(cmd);
     CHECK_MSG(rc == 0, "%s exited with %d", cmd, rc);
