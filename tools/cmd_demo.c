@@ -101,6 +101,7 @@ int cmd_demo(int argc, char **argv)
     if (r.have_video)
         printf("video %s: %.1f s, %d of %d commands arrived, robot: %s (%.1f s)\n", r.video.path, r.video.seconds,
                r.video.n_arrived, r.video.n_commands, r.video.robot, r.t_video);
+    if (r.video_error[0]) printf("no video: %s\n", r.video_error);
     if (o.model) {
         sp_demo_result_free(&r);
         return 0;

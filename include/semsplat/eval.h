@@ -417,6 +417,7 @@ typedef struct sp_demo_result {
     sp_eval_report report;
     int have_video;
     sp_demo_video_result video;
+    char video_error[1024];  /* why there is no video (a warning: the report stands) */
     double t_synth, t_train, t_features, t_lift, t_queries, t_video, t_total;
 } sp_demo_result;
 
