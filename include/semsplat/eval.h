@@ -302,6 +302,11 @@ const sp_eval_query_spec *sp_eval_default_vocab(size_t *n);
 extern const char *const sp_eval_coco_classes[];
 /* Reads {"vocabulary": [...]} (see above); errors name the file and the entry. specs malloc'd. */
 int sp_eval_read_queries(const char *path, sp_eval_query_spec **specs, size_t *n, sp_error *err);
+/* 5.3 commands from the same file: {"navigation": [{"text": "go to the desk", "targets": ["desk"]}]}
+ * (at most 16; targets: the world's classes a right goal is near). No "navigation" key: *n = 0.
+ * Free with sp_eval_free_nav_commands. */
+int sp_eval_read_nav_commands(const char *path, char ***cmds, int *n, sp_error *err);
+void sp_eval_free_nav_commands(char **cmds, int n);
 
 typedef struct sp_eval_vocab_row {
     sp_eval_query_spec spec;
@@ -335,7 +340,8 @@ typedef struct sp_eval_run_opts {
     const char *model_dir;
     const char *world;        /* the ground truth */
     const char *model_path;   /* model:// folders of the world (may be NULL) */
-    const char *queries;      /* 5.2 queries (JSON), NULL = the task's ten */
+    const char *queries;      /* 5.2 queries (JSON), NULL = the task's ten; its "navigation" list, if any,
+                               * replaces 5.3's ten house commands */
     const char *out_dir;
     const char *title;        /* NULL: "semsplat evaluation: <world>" */
     int skip_missing;         /* the world's missing assets skipped */

@@ -71,8 +71,16 @@ static int run_navigation(const sp_eval_run_opts *o, sp_eval_run *r, sp_error *e
     sp_eval_drive_map_opts(&nav);
     sp_drive_opts d = {.model_dir = o->model_dir, .out_dir = o->out_dir, .robot = o->robot, .nav = &nav,
                        .dev = o->dev, .log = o->log};
+    char **cmds = NULL;
+    int n_cmds = 0;
+    if (o->queries) {
+        int rc = sp_eval_read_nav_commands(o->queries, &cmds, &n_cmds, err);
+        if (rc) return rc;
+    }
     sp_error e = {0};
-    int rc = sp_eval_nav_success(&d, &r->gt, NULL, 0, o->match_radius_m, &r->nav, &e);
+    int rc = sp_eval_nav_success(&d, &r->gt, n_cmds ? (const char *const *)cmds : NULL, n_cmds, o->match_radius_m,
+                                 &r->nav, &e);
+    sp_eval_free_nav_commands(cmds, n_cmds);
     if (rc == SP_E_NOMEM) return *err = e, rc;
     r->nav_measured = rc == 0;
     if (rc) snprintf(r->nav_note, sizeof r->nav_note, "%.390s", e.msg);
