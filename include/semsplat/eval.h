@@ -298,8 +298,6 @@ typedef struct sp_eval_query_spec {
 
 /* The task's ten queries (5 in COCO, 5 outside) and their targets; n gets the count. */
 const sp_eval_query_spec *sp_eval_default_vocab(size_t *n);
-/* The 80 COCO class names (NULL-terminated). */
-extern const char *const sp_eval_coco_classes[];
 /* Reads {"vocabulary": [...]} (see above); errors name the file and the entry. specs malloc'd. */
 int sp_eval_read_queries(const char *path, sp_eval_query_spec **specs, size_t *n, sp_error *err);
 /* 5.3 commands from the same file: {"navigation": [{"text": "go to the desk", "targets": ["desk"]}]}

@@ -532,6 +532,8 @@ char *sp_nav_description_json(const sp_nav_description *d);
 
 /* The built-in household vocabulary (COCO's 80 classes and common household objects), n terms. */
 const char *const *sp_nav_vocabulary(int *n);
+/* COCO 2017's 80 detection class names (Lin et al. 2014): the vocabulary's first n terms. */
+const char *const *sp_nav_coco_classes(int *n);
 
 #ifdef __cplusplus
 }

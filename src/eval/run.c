@@ -33,9 +33,9 @@ static int run_vocab(const sp_eval_run_opts *o, sp_query_engine *e, sp_eval_run 
     sp_lex_vocab *scene = NULL, *coco = NULL;
     rc = sp_lexicon_open(&lx, NULL, err);
     if (!rc) {
-        size_t nc = 0;
-        while (sp_eval_coco_classes[nc]) nc++;
-        rc = sp_lex_vocab_create(&coco, lx, sp_eval_coco_classes, (int)nc, "", err);
+        int nc = 0;
+        const char *const *names = sp_nav_coco_classes(&nc);
+        rc = sp_lex_vocab_create(&coco, lx, names, nc, "", err);
     }
     if (!rc && sp_lex_vocab_for_model(&scene, lx, o->model_dir, NULL, NULL)) scene = NULL;
     snprintf(r->vocab_encoder, sizeof r->vocab_encoder, "%s",

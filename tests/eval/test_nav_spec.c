@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "semsplat/eval.h"
+#include "semsplat/nav.h"
 #include "test.h"
 
 static const char *write_json(const char *name, const char *text)
@@ -62,8 +63,17 @@ static void test_bad(void)
     CHECK(sp_eval_read_nav_commands(write_json("many", many), &c, &n, &err) != 0 && strstr(err.msg, "16"));
 }
 
+/* The closed baseline's names: COCO's 80, as detectors name them, first to last. */
+static void test_coco(void)
+{
+    int n = 0;
+    const char *const *c = sp_nav_coco_classes(&n);
+    CHECK(n == 80 && !strcmp(c[0], "person") && !strcmp(c[79], "toothbrush") && !strcmp(c[72], "refrigerator"));
+}
+
 int main(void)
 {
+    RUN(test_coco);
     RUN(test_read);
     RUN(test_bad);
     return TEST_EXIT();
