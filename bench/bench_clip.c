@@ -7,7 +7,8 @@
  * (`_resident`, as the transformers anchor times it: its inputs are on the GPU), and --variants
  * adds batch 128 / text 256 in fp16 with the tiled fused-attention kernel and with neither
  * cuBLASLt epilogues nor fused attention (the previous design); --variants 2 adds each alone.
- * --ncu runs one of each GPU workload only (for Nsight Compute).
+ * --ncu runs one of each GPU workload only (for Nsight Compute). On the GPU, clip_stage_* lines
+ * give the time per stage (CUDA events) of the image batch 128 and text batch 256 forwards.
  *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]
  *              [--variants [2]] [--ncu] */
 #include <stdio.h>
@@ -125,6 +126,41 @@ static int bench_text(sp_clip *c, const char *dev_name, const char *prec, int ba
     return rc;
 }
 
+/* Where the time of a batch goes: 3 forwards with CUDA events after every stage (the image one on
+ * the pixels already on the device); ms per forward summed over the layers, and per layer for the
+ * stages every layer has. Printed as clip_stage_<what>_<prec>_b<batch>_<stage>  ms. */
+static void bench_stages(sp_clip *c, const char *what, const char *prec, int batch)
+{
+    sp_error err = {0};
+    int image = !strcmp(what, "image"), S = 224, P = sp_clip_embed_dim(c), rc = 0;
+    const sp_clip_config *cf = sp_clip_get_config(c);
+    int layers = image ? cf->vision.layers : cf->text.layers;
+    float *px = image ? malloc(sizeof(float) * batch * 3 * S * S) : NULL, *out = malloc(sizeof(float) * batch * P);
+    int32_t *ids = image ? NULL : malloc(sizeof(int32_t) * batch * 77);
+    for (long i = 0; image && i < (long)batch * 3 * S * S; i++) px[i] = (float)((i * 7919) % 1000) / 500.f - 1.f;
+    for (int i = 0; !image && i < batch * 77; i++) ids[i] = (i % 77) == 76 ? SP_CLIP_EOS : (int32_t)((i * 7919) % 49000);
+    double ms[CLIP_STAGES];
+    rc = image ? sp_clip_encode_pixels(c, px, batch, S, S, out, &err) : sp_clip_encode_tokens(c, ids, batch, out, &err);
+    clip_gpu_set_flags(c, CLIP_GPU_PROFILE);
+    clip_gpu_stage_ms(c, ms); /* clear */
+    for (int r = 0; r < 3 && !rc; r++)
+        rc = image ? clip_gpu_vision_again(c, batch, S, S, out, &err) : sp_clip_encode_tokens(c, ids, batch, out, &err);
+    clip_gpu_set_flags(c, 0);
+    int n = clip_gpu_stage_ms(c, ms);
+    if (rc || n < 1) fprintf(stderr, "bench_clip: stage timing: %s\n", rc ? err.msg : "no events");
+    else {
+        double total = 0;
+        for (int s = 0; s < CLIP_STAGES; s++) total += ms[s] / n;
+        for (int s = 0; s < CLIP_STAGES; s++)
+            printf("clip_stage_%s_%s_b%d_%s  %.3f  ms  (%.1f%% of %.3f ms per forward, %.1f us per layer, %d forwards)\n",
+                   what, prec, batch, clip_stage_name(s), ms[s] / n, 100 * ms[s] / n / total, total,
+                   s == CLIP_STAGE_OTHER ? 0 : 1000 * ms[s] / n / layers, n);
+    }
+    free(px);
+    free(ids);
+    free(out);
+}
+
 static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n_img)
 {
     sp_error err = {0};
@@ -218,6 +254,8 @@ int main(int argc, char **argv)
             bench_images(c, name, prec, 32, 1);
             bench_images(c, name, prec, 128, 2);
             bench_text(c, name, prec, 256);
+            bench_stages(c, "image", prec, 128);
+            bench_stages(c, "text", prec, 256);
             bench_dense(c, name, prec, 10);
             /* the same without cuBLASLt epilogues, without the fused attention (--variants 2: also
              * each alone), with the tiled fused kernel instead of the sequence-resident one */

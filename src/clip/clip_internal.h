@@ -108,8 +108,24 @@ int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int
 /* Variants for benchmarks and tests: CLIP_GPU_NO_LT runs the plain cuBLAS products and
  * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax),
  * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits. */
-enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4 };
+enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4, CLIP_GPU_PROFILE = 8 };
 void clip_gpu_set_flags(sp_clip *c, int flags);
+/* Stage timing (benchmarks): with CLIP_GPU_PROFILE set, each text or pooled image forward records
+ * a CUDA event after every stage and adds the stage times (ms, summed over the layers) to a
+ * running total; clip_gpu_stage_ms copies the totals into ms[CLIP_STAGES], clears them and
+ * returns how many forwards they cover (-1 without CUDA). The events cost a little: time the
+ * throughput figures without the flag. */
+enum {
+    CLIP_STAGE_LN, CLIP_STAGE_QKV, CLIP_STAGE_ATTN, CLIP_STAGE_OPROJ, CLIP_STAGE_FC1, CLIP_STAGE_ACT,
+    CLIP_STAGE_FC2, CLIP_STAGE_OTHER, CLIP_STAGES
+};
+static inline const char *clip_stage_name(int s)
+{
+    static const char *const names[CLIP_STAGES] = {"layernorm", "qkv_gemm", "attention", "out_gemm_residual",
+                                                   "fc1_gemm", "gelu", "fc2_gemm_residual", "embed_head_other"};
+    return s >= 0 && s < CLIP_STAGES ? names[s] : "?";
+}
+int clip_gpu_stage_ms(sp_clip *c, double ms[CLIP_STAGES]);
 /* Benchmarks: the last sp_clip_encode_pixels call again on the pixels still on the device (the
  * upload left out, as a framework's timing with inputs on the GPU). */
 int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err);

@@ -442,8 +442,10 @@ static void test_half_host(void)
 }
 
 /* The fused fp16 attention kernel alone against a double reference on the same fp16-rounded
- * inputs: head widths 16/32/64, sequence lengths around the 64-row tiles (1, 63, 64, 65, 77,
- * 197), causal and not, q-q (ClearCLIP) and q-k; every output element written and finite. */
+ * inputs: head widths 16/32/64, sequence lengths around the 64-row tiles and the 16-row chunks
+ * (1, 63, 64, 65, 77, 197, 200, 300, 800: 1 to 8 warps per block, 1 to 3 rounds of chunks in the
+ * resident kernel), causal and not, q-q (ClearCLIP) and q-k, and ViT-B/16's own shape (12 heads
+ * of 64, 197 tokens, 3 images); every output element written and finite. */
 static void ref_attention(const float *qkv, int B, int T, int H, int w, int causal, int qq, double *out)
 {
     int d = w / H;
@@ -479,14 +481,16 @@ static void test_gpu_attention(void)
     if (!dev) return;
     /* 800 keys of width 64 do not fit in shared memory: the sequence-resident kernel hands over
      * to the tiled one */
-    const int Ts[] = {1, 63, 64, 65, 77, 197, 300, 800}, ds[] = {16, 32, 64};
+    const int Ts[] = {1, 63, 64, 65, 77, 197, 200, 300, 800}, ds[] = {16, 32, 64};
     double worst[2] = {0, 0};
     int cases = 0;
-    for (int ti = 0; ti < 8; ti++)
+    for (int ti = 0; ti <= 9; ti++)
         for (int di = 0; di < 3; di++)
             for (int mode = 0; mode < 3; mode++) {
-                int T = Ts[ti], d = ds[di], H = 2, w = H * d, B = 2, causal = mode == 1, qq = mode == 2;
-                if (T == 800 && d != 64) continue;
+                int vit = ti == 9; /* the last case: ViT-B/16 */
+                int T = vit ? 197 : Ts[ti], d = vit ? 64 : ds[di], H = vit ? 12 : 2, w = H * d, B = vit ? 3 : 2;
+                int causal = mode == 1, qq = mode == 2;
+                if ((T == 800 && d != 64) || (vit && (di || mode == 1))) continue;
                 size_t nin = (size_t)B * T * 3 * w, nout = (size_t)B * T * w;
                 float *qkv = malloc(sizeof(float) * nin), *got = malloc(sizeof(float) * nout);
                 double *ref = malloc(sizeof(double) * nout);

@@ -95,6 +95,7 @@ extern "C" void clip_gpu_free(sp_clip *c)
     if (!g) return;
     cudaStreamSynchronize(g->stream);
     clip_lt_free(g);
+    for (int i = 0; i < g->prof.made; i++) cudaEventDestroy(g->prof.ev[i]);
     for (int i = 0; i < 2; i++) {
         if (g->pin.buf[i]) cudaFreeHost(g->pin.buf[i]);
         if (g->pin.done[i]) cudaEventDestroy(g->pin.done[i]);
@@ -215,14 +216,70 @@ static int block(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_layer *L,
     cudaStream_t st = x.g->stream;
     T *h = (T *)bf->h, *qkv = (T *)bf->qkv, *m = (T *)bf->m;
     const T *W = x.W;
+    sp_clip_gpu *g = x.g;
     launch_layernorm<T>(xb, h, M, w, W + L->ln1_w, W + L->ln1_b, cfg->eps, ln_plain(), st);
+    clip_prof_mark(g, CLIP_STAGE_LN);
     if ((rc = lin(x, h, w, M, w, W + L->qkv_w, 3 * w, W + L->qkv_b, qkv, 0))) return rc;
+    clip_prof_mark(g, CLIP_STAGE_QKV);
     if ((rc = attention(x, qkv, B, Tn, cfg->heads, w, causal, 0, h, (T *)bf->s, bf->ptrs))) return rc;
+    clip_prof_mark(g, CLIP_STAGE_ATTN);
     if ((rc = lin(x, h, w, M, w, W + L->o_w, w, W + L->o_b, xb, 1))) return rc;
+    clip_prof_mark(g, CLIP_STAGE_OPROJ);
     launch_layernorm<T>(xb, h, M, w, W + L->ln2_w, W + L->ln2_b, cfg->eps, ln_plain(), st);
+    clip_prof_mark(g, CLIP_STAGE_LN);
     if ((rc = lin(x, h, w, M, w, W + L->fc1_w, cfg->mlp, W + L->fc1_b, m, 0))) return rc;
+    clip_prof_mark(g, CLIP_STAGE_FC1);
     launch_bias_act<T>(m, M, cfg->mlp, NULL, cfg->quick_gelu ? 1 : 2, st);
-    return lin(x, m, cfg->mlp, M, cfg->mlp, W + L->fc2_w, w, W + L->fc2_b, xb, 1);
+    clip_prof_mark(g, CLIP_STAGE_ACT);
+    rc = lin(x, m, cfg->mlp, M, cfg->mlp, W + L->fc2_w, w, W + L->fc2_b, xb, 1);
+    clip_prof_mark(g, CLIP_STAGE_FC2);
+    return rc;
+}
+
+/* ---- stage timing (CLIP_GPU_PROFILE) ------------------------------------------------------------------ */
+
+void clip_prof_begin(sp_clip_gpu *g)
+{
+    g->prof.n = 0;
+    if (!(g->flags & CLIP_GPU_PROFILE)) return;
+    for (; g->prof.made < PROF_EVENTS; g->prof.made++)
+        if (cudaEventCreate(&g->prof.ev[g->prof.made]) != cudaSuccess) break;
+    if (g->prof.made < PROF_EVENTS) return; /* no events: no timing (the forward itself is unaffected) */
+    cudaEventRecord(g->prof.ev[0], g->stream);
+    g->prof.stage[0] = CLIP_STAGE_OTHER;
+    g->prof.n = 1;
+}
+
+void clip_prof_mark(sp_clip_gpu *g, int stage)
+{
+    /* past the last event the time goes into the next stage that gets one (none: lost) */
+    if (!g->prof.n || g->prof.n >= PROF_EVENTS) return;
+    cudaEventRecord(g->prof.ev[g->prof.n], g->stream);
+    g->prof.stage[g->prof.n++] = stage;
+}
+
+void clip_prof_collect(sp_clip_gpu *g)
+{
+    if (g->prof.n < 2) return;
+    for (int i = 1; i < g->prof.n; i++) {
+        float ms = 0;
+        if (cudaEventElapsedTime(&ms, g->prof.ev[i - 1], g->prof.ev[i]) == cudaSuccess)
+            g->prof.ms[g->prof.stage[i]] += ms;
+    }
+    g->prof.forwards++;
+    g->prof.n = 0;
+}
+
+extern "C" int clip_gpu_stage_ms(sp_clip *c, double ms[CLIP_STAGES])
+{
+    sp_clip_gpu *g = c->gpu;
+    int n = g ? g->prof.forwards : 0;
+    for (int i = 0; i < CLIP_STAGES; i++) {
+        ms[i] = g ? g->prof.ms[i] : 0;
+        if (g) g->prof.ms[i] = 0;
+    }
+    if (g) g->prof.forwards = 0;
+    return n;
 }
 
 template <typename T> static ctx<T> ctx_of(sp_clip *c, sp_error *err)
@@ -240,6 +297,7 @@ static int finish(sp_clip_gpu *g, float *out, const float *d_out, size_t n, cons
     if (cudaMemcpyAsync(out, d_out, n * sizeof(float), cudaMemcpyDeviceToHost, g->stream) != cudaSuccess ||
         cudaStreamSynchronize(g->stream) != cudaSuccess)
         return sp_error_set(err, SP_E_DEVICE, "CLIP GPU: %s failed: %s", what, cudaGetErrorString(cudaGetLastError()));
+    clip_prof_collect(g);
     return 0;
 }
 
@@ -286,7 +344,9 @@ static int text_forward(sp_clip *c, const int32_t *ids, int n, float *out, sp_er
             rc = sp_error_set(err, SP_E_DEVICE, "CLIP GPU: upload failed");
             break;
         }
+        clip_prof_begin(g);
         launch_embed_text<T>(d_ids, x.W + off_of(c, c->tok_emb), x.W + off_of(c, c->txt_pos), xb, (int)M, L, w, st);
+        clip_prof_mark(g, CLIP_STAGE_OTHER);
         for (int l = 0; l < cfg->layers && !rc; l++) rc = block(x, cfg, &g->text[l], xb, n, L, 1, &bf);
         if (rc) break;
         ln_rows eos = {d_rows, 1, 1, 0};
@@ -294,6 +354,7 @@ static int text_forward(sp_clip *c, const int32_t *ids, int n, float *out, sp_er
                             eos, st);
         if ((rc = lin(x, fin, w, n, w, x.W + off_of(c, c->text_proj), P, (const T *)NULL, po, 0))) break;
         launch_to_float<T>(po, o32, (long)n * P, st);
+        clip_prof_mark(g, CLIP_STAGE_OTHER);
         rc = finish(g, out, o32, (size_t)n * P, "text forward", err);
         break;
     }
@@ -367,11 +428,13 @@ static int vision_run(sp_clip *c, const void *d_px, int px_half, int n, int H, i
             continue;
         }
         cudaStream_t st = g->stream;
+        clip_prof_begin(g);
         launch_im2col<T>(d_px, px_half, cols, n, H, W, p, st);
         if ((rc = lin(x, cols, K, n * np, K, x.W + off_of(c, c->patch_w), w, (const T *)NULL, pe, 0))) break;
         launch_assemble<T>(pe, x.W + off_of(c, c->cls), d_pos, xb, n, Tn, w, st);
         launch_layernorm<T>(xb, xb, (int)M, w, x.W + off_of(c, c->pre_ln_w), x.W + off_of(c, c->pre_ln_b), cfg->eps,
                             ln_plain(), st);
+        clip_prof_mark(g, CLIP_STAGE_OTHER);
         for (int l = 0; l < layers && !rc; l++) rc = block(x, cfg, &g->vision[l], xb, n, Tn, 0, &bf);
         if (!rc && dense) rc = dense_head(x, cfg, &g->vision[cfg->layers - 1], xb, n, Tn, kind, &bf);
         if (rc) break;
@@ -381,6 +444,7 @@ static int vision_run(sp_clip *c, const void *d_px, int px_half, int n, int H, i
                             cfg->eps, pick, st);
         if ((rc = lin(x, fin, w, (int)n_out, w, x.W + off_of(c, c->vis_proj), P, (const T *)NULL, po, 0))) break;
         if (sizeof(T) == 2) launch_to_float<T>(po, d_out, (long)(n_out * P), st);
+        clip_prof_mark(g, CLIP_STAGE_OTHER);
         CK(cudaGetLastError(), "vision forward");
         break;
     }

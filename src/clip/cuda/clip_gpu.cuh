@@ -30,7 +30,7 @@ struct lt_plan {
     cublasLtMatrixLayout_t a, b, c;
     cublasLtMatmulAlgo_t algo;
 };
-enum { LT_PLANS = 48 };
+enum { LT_PLANS = 48, PROF_EVENTS = 256 };
 
 /* Host pinned staging for uploads: two slots so the copy of one overlaps filling the other. */
 struct pin_stage {
@@ -63,7 +63,18 @@ struct sp_clip_gpu {
     int io_half;                     /* io_in holds fp16 pixels (the last vision call was fp16) */
     sp_device_scratch dense[8];      /* the dense pipeline's buffers (dense_cuda.cu) */
     int flags; /* CLIP_GPU_* (clip_internal.h) */
+    struct {   /* CLIP_GPU_PROFILE: ev[0] at the start, ev[i] after a stage of kind stage[i] */
+        cudaEvent_t ev[PROF_EVENTS];
+        int stage[PROF_EVENTS], n, made, forwards;
+        double ms[CLIP_STAGES];
+    } prof;
 };
+
+/* stage timing (CLIP_GPU_PROFILE): clip_prof_begin before a forward, clip_prof_mark after each
+ * stage, clip_prof_collect after the stream has synchronised */
+void clip_prof_begin(sp_clip_gpu *g);
+void clip_prof_mark(sp_clip_gpu *g, int stage);
+void clip_prof_collect(sp_clip_gpu *g);
 
 #define CK(call, what)                                                                          \
     do {                                                                                        \

@@ -32,6 +32,37 @@ __device__ __forceinline__ void ldmatrix_x4_trans(uint32_t r[4], const __half *p
                  : "r"(a));
 }
 
+/* the same, not transposed (K rows as the B operand of Q K^T); x2: matrices 0 and 1 only */
+__device__ __forceinline__ void ldmatrix_x4(uint32_t r[4], const __half *p)
+{
+    unsigned a = (unsigned)__cvta_generic_to_shared(p);
+    asm volatile("ldmatrix.sync.aligned.m8n8.x4.shared.b16 {%0,%1,%2,%3}, [%4];\n"
+                 : "=r"(r[0]), "=r"(r[1]), "=r"(r[2]), "=r"(r[3])
+                 : "r"(a));
+}
+__device__ __forceinline__ void ldmatrix_x2(uint32_t r[2], const __half *p)
+{
+    unsigned a = (unsigned)__cvta_generic_to_shared(p);
+    asm volatile("ldmatrix.sync.aligned.m8n8.x2.shared.b16 {%0,%1}, [%2];\n" : "=r"(r[0]), "=r"(r[1]) : "r"(a));
+}
+
+/* 16 bytes global -> shared without a register round trip; src_bytes 0 writes zeros */
+__device__ __forceinline__ void cp_async16(__half *dst, const __half *src, int src_bytes)
+{
+    unsigned a = (unsigned)__cvta_generic_to_shared(dst);
+    asm volatile("cp.async.cg.shared.global [%0], [%1], 16, %2;\n" ::"r"(a), "l"(src), "r"(src_bytes));
+}
+__device__ __forceinline__ void cp_async_commit() { asm volatile("cp.async.commit_group;\n" ::); }
+template <int N> __device__ __forceinline__ void cp_async_wait() { asm volatile("cp.async.wait_group %0;\n" ::"n"(N)); }
+/* wait until at most n of this thread's groups are in flight (fewer when n > 3: still correct) */
+__device__ __forceinline__ void cp_async_wait_upto(int n)
+{
+    if (n <= 0) cp_async_wait<0>();
+    else if (n == 1) cp_async_wait<1>();
+    else if (n == 2) cp_async_wait<2>();
+    else cp_async_wait<3>();
+}
+
 __device__ __forceinline__ uint32_t pack_half2(float lo, float hi)
 {
     __half2 h = __floats2half2_rn(lo, hi);
@@ -83,10 +114,20 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
     for (int j = 0; j < FK / 8; j++) {
         s[j][0] = s[j][1] = s[j][2] = s[j][3] = 0.f;
         if (j < nj) {
+            /* lane 8 i + r: key row 8 j + r, dims 8 i.. of a 32-dim pair of k-steps */
+            const __half *kr = Ks + (8 * j + (lane & 7)) * LD + 8 * (lane >> 3);
+            if (D == 16) {
+                uint32_t kf[2];
+                ldmatrix_x2(kf, kr);
+                mma16816(s[j], w.qa[0], kf[0], kf[1]);
+            } else {
 #pragma unroll
-            for (int kk = 0; kk < D / 16; kk++) {
-                const __half *kr = Ks + (8 * j + g) * LD + 16 * kk + 2 * t;
-                mma16816(s[j], w.qa[kk], ld32(kr), ld32(kr + 8));
+                for (int kp = 0; kp < D / 32; kp++) {
+                    uint32_t kf[4];
+                    ldmatrix_x4(kf, kr + 32 * kp);
+                    mma16816(s[j], w.qa[2 * kp], kf[0], kf[1]);
+                    mma16816(s[j], w.qa[2 * kp + 1], kf[2], kf[3]);
+                }
             }
         }
     }
@@ -97,6 +138,7 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
     for (int j = 0; j < FK / 8; j++)
 #pragma unroll
         for (int e = 0; e < 4; e++) {
+            if (j >= nj) continue; /* keys past T: never in the max, set to probability 0 below */
             if (masked) {
                 int key = k0 + 8 * j + 2 * t + (e & 1), q = e < 2 ? w.ra : w.rb;
                 if (key >= T || (causal && key > q)) s[j][e] = -INFINITY;
@@ -126,12 +168,16 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
     }
 #pragma unroll
     for (int j = 0; j < FK / 8; j++) {
-        s[j][0] = exp2f(s[j][0] * scale_log2 - u0);
-        s[j][1] = exp2f(s[j][1] * scale_log2 - u0);
-        s[j][2] = exp2f(s[j][2] * scale_log2 - u1);
-        s[j][3] = exp2f(s[j][3] * scale_log2 - u1);
-        w.l0 += s[j][0] + s[j][1];
-        w.l1 += s[j][2] + s[j][3];
+        if (j < nj) { /* past the last key: probability 0, no exp (the MUFU is a bottleneck) */
+            s[j][0] = exp2f(s[j][0] * scale_log2 - u0);
+            s[j][1] = exp2f(s[j][1] * scale_log2 - u0);
+            s[j][2] = exp2f(s[j][2] * scale_log2 - u1);
+            s[j][3] = exp2f(s[j][3] * scale_log2 - u1);
+            w.l0 += s[j][0] + s[j][1];
+            w.l1 += s[j][2] + s[j][3];
+        } else {
+            s[j][0] = s[j][1] = s[j][2] = s[j][3] = 0.f;
+        }
     }
     /* O += P V, 16 keys per k-step; V fragments by transposed ldmatrix */
     const int mi = lane >> 3, rr = lane & 7;
@@ -219,39 +265,68 @@ __global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict_
     if (active) rows_end(wr, out + (size_t)b * T * w + (size_t)h * D, w, T, lane & 3);
 }
 
-/* v2, short sequences (the whole K and V of one head fit in shared memory): one block of 8 warps
- * per (head, sequence) loads K and V once, then each warp takes 16-query chunks with no further
- * barriers. grid (H, B), dynamic shared memory 2 * Tp * (D + 8) halves, Tp = T rounded up to FK. */
+/* v2, short sequences (the whole K and V of one head fit in shared memory): one block per
+ * (head, sequence) loads K and V once, then each warp takes 16-query chunks. Keys are padded to
+ * Tp = T rounded up to 16 (zeros; tile_step reads no row past that). The loads go out at once as
+ * cp.async groups of 64 keys, so every warp computes its first chunk's tile kt while the later
+ * tiles are still arriving; after the first round no barrier. Warps per block: the fewest that
+ * keep the rounds (ceil(chunks / warps)) minimal, so no warp idles in the last round, e.g. 7 for
+ * ViT-B/16's 197 tokens (13 chunks, 2 rounds). grid (H, B), dynamic shared memory
+ * 2 * Tp * (D + 8) halves. */
 enum { SEQ_WARPS = 8 };
 template <int D>
-__global__ void __launch_bounds__(SEQ_WARPS * 32) k_flash_seq(const __half *__restrict__ qkv, __half *__restrict__ out,
-                                                             int T, int w, float scale_log2, int causal, int qq)
+__global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *__restrict__ qkv,
+                                                                 __half *__restrict__ out, int T, int w,
+                                                                 float scale_log2, int causal, int qq)
 {
-    constexpr int LD = D + 8;
+    constexpr int LD = D + 8, C8 = D / 8; /* 16-byte chunks per row */
     extern __shared__ __align__(16) __half kv_smem[];
-    const int Tp = (T + FK - 1) / FK * FK;
+    const int Tp = (T + 15) & ~15, nt = (Tp + FK - 1) / FK, nwarps = blockDim.x >> 5;
     __half *Ks = kv_smem, *Vs = kv_smem + (size_t)Tp * LD;
     const int lane = threadIdx.x & 31, warp = threadIdx.x >> 5;
     const int h = blockIdx.x, b = blockIdx.y;
     const size_t ld = 3 * (size_t)w;
     const __half *base = qkv + (size_t)b * T * ld + (size_t)h * D;
-    load_kv<D, LD>(Ks, Vs, base + (qq ? 0 : w), base + 2 * (size_t)w, ld, 0, Tp, T);
-    __syncthreads();
+    const __half *kb = base + (qq ? 0 : w), *vb = base + 2 * (size_t)w;
+    for (int kt = 0; kt < nt; kt++) {
+        int end = (kt + 1) * FK < Tp ? (kt + 1) * FK : Tp;
+        for (int i = kt * FK * C8 + threadIdx.x; i < end * C8; i += blockDim.x) {
+            int row = i / C8, c8 = (i % C8) * 8, ok = row < T ? 16 : 0, src = row < T ? row : 0;
+            cp_async16(Ks + row * LD + c8, kb + src * ld + c8, ok);
+            cp_async16(Vs + row * LD + c8, vb + src * ld + c8, ok);
+        }
+        cp_async_commit();
+    }
     __half *ob = out + (size_t)b * T * w + (size_t)h * D;
-    for (int r0 = warp * 16; r0 < T; r0 += SEQ_WARPS * 16) {
+    /* one copy of the loop (one inlined tile_step keeps the registers down); the first round
+     * (every warp has one: see seq_warps) waits for each tile as it lands */
+    for (int r0 = warp * 16, first = 1; r0 < T; r0 += nwarps * 16, first = 0) {
         warp_rows<D> wr;
-        rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3);
-        int n_tiles = Tp / FK;
-        if (causal && r0 / FK + 1 < n_tiles) n_tiles = r0 / FK + 1; /* keys past row r0 + 15 are masked */
-        for (int kt = 0; kt < n_tiles; kt++)
-            tile_step<D, LD>(wr, Ks + (size_t)kt * FK * LD, Vs + (size_t)kt * FK * LD, kt * FK, T, causal, scale_log2,
-                             lane);
+        rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3); /* global loads in flight with the copies */
+        int n_tiles = causal && r0 / FK + 1 < nt ? r0 / FK + 1 : nt; /* keys past row r0 + 15 are masked */
+        int steps = first ? nt : n_tiles;
+        for (int kt = 0; kt < steps; kt++) {
+            if (first) {
+                cp_async_wait_upto(nt - 1 - kt);
+                __syncthreads(); /* every thread's part of tile kt has landed */
+            }
+            if (kt < n_tiles)
+                tile_step<D, LD>(wr, Ks + (size_t)kt * FK * LD, Vs + (size_t)kt * FK * LD, kt * FK, T, causal,
+                                 scale_log2, lane);
+        }
         rows_end(wr, ob, w, T, lane & 3);
     }
 }
 
-static size_t seq_smem(int T, int D) { return (size_t)2 * ((T + FK - 1) / FK * FK) * (D + 8) * sizeof(__half); }
+static size_t seq_smem(int T, int D) { return (size_t)2 * ((T + 15) / 16 * 16) * (D + 8) * sizeof(__half); }
 enum { SEQ_SMEM_MAX = 200 * 1024 }; /* Hopper gives a block up to 227 KB; leave room */
+
+/* warps of the resident kernel for T tokens: as many rounds as 8 warps need, with the fewest warps */
+static int seq_warps(int T)
+{
+    int chunks = (T + 15) / 16, rounds = (chunks + SEQ_WARPS - 1) / SEQ_WARPS;
+    return (chunks + rounds - 1) / rounds;
+}
 
 template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq,
                                          __half *out, int v1, cudaStream_t st)
@@ -262,7 +337,7 @@ template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H
         /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
         if (smem <= 48 * 1024 || cudaFuncSetAttribute(k_flash_seq<D>, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                                       (int)smem) == cudaSuccess) {
-            k_flash_seq<D><<<dim3(H, B), SEQ_WARPS * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+            k_flash_seq<D><<<dim3(H, B), seq_warps(Tn) * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
             return 0;
         }
     }

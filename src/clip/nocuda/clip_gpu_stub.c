@@ -22,6 +22,12 @@ int clip_gpu_dense(sp_clip *c, const float *rgb, int width, int height, const sp
     return clip_gpu_init(c, err);
 }
 void clip_gpu_set_flags(sp_clip *c, int flags) { (void)c; (void)flags; }
+int clip_gpu_stage_ms(sp_clip *c, double ms[CLIP_STAGES])
+{
+    (void)c;
+    for (int i = 0; i < CLIP_STAGES; i++) ms[i] = 0;
+    return -1;
+}
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
                              int qq, int v1, float *out, sp_error *err)
 {
