@@ -8,7 +8,8 @@
  * adds batch 128 / text 256 in fp16 with the tiled fused-attention kernel and with neither
  * cuBLASLt epilogues nor fused attention (the previous design); --variants 2 adds each alone.
  * --ncu runs one of each GPU workload only (for Nsight Compute). On the GPU, clip_stage_* lines
- * give the time per stage (CUDA events) of the image batch 128 and text batch 256 forwards.
+ * give the time per stage (CUDA events) of the image batch 128 and text batch 256 forwards, and
+ * clip_attn_* the fused attention kernel alone.
  *   bench_clip [--cpu-only | --gpu-only] [--threads N] [--reps N] [--dense-cpu] [--anchor FILE]
  *              [--variants [2]] [--ncu] */
 #include <stdio.h>
@@ -161,6 +162,32 @@ static void bench_stages(sp_clip *c, const char *what, const char *prec, int bat
     free(out);
 }
 
+/* The fused attention kernel alone (random fp16 data on the device): ViT-B/16's batch 128
+ * (197 tokens, 12 heads of 64) and the text tower's batch 256 (77 tokens, 8 heads, causal); the
+ * kernel the towers use, the tiled one, and the resident one with 4 / 8 warps per block. */
+static void bench_attention(sp_device *dev)
+{
+    static const struct { const char *what; int B, T, H, w, causal; } shapes[] = {
+        {"image_b128", 128, 197, 12, 768, 0}, {"text_b256", 256, 77, 8, 512, 1}};
+    static const struct { int mode; const char *name; } modes[] = {
+        {0, "auto"}, {1, "tiled"}, {16 + 4, "resident_4warps"}, {16 + 8, "resident_8warps"}};
+    for (int k = 0; k < 2; k++)
+        for (int m = 0; m < 4; m++) {
+            sp_error err = {0};
+            double us = 0;
+            int B = shapes[k].B, T = shapes[k].T, H = shapes[k].H, d = shapes[k].w / H;
+            if (clip_gpu_attention_bench(dev, B, T, H, shapes[k].w, shapes[k].causal, modes[m].mode, 20, &us, &err)) {
+                fprintf(stderr, "bench_clip: %s\n", err.msg);
+                return;
+            }
+            /* 4 T^2 d per head (Q K^T and P V), halved by the causal mask */
+            double flop = 4.0 * T * T * d * H * B * (shapes[k].causal ? 0.5 : 1.0);
+            printf("clip_attn_%s_%s  %.1f  us  (one layer, fp16, %d x %d tokens, %d heads of %d%s, %.0f TFLOP/s)\n",
+                   shapes[k].what, modes[m].name, us, B, T, H, d, shapes[k].causal ? ", causal" : "",
+                   flop / (us * 1e-6) / 1e12);
+        }
+}
+
 static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n_img)
 {
     sp_error err = {0};
@@ -247,6 +274,7 @@ int main(int argc, char **argv)
             sp_device_free(dev);
             return 0;
         }
+        bench_attention(dev);
         for (int half = 0; half <= 1; half++) {
             const char *prec = half ? "fp16" : "fp32";
             if (sp_clip_set_fp16(c, half, &err)) { fprintf(stderr, "bench_clip: %s\n", err.msg); break; }

@@ -329,15 +329,18 @@ static int seq_warps(int T)
 }
 
 template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq,
-                                         __half *out, int v1, cudaStream_t st)
+                                         __half *out, int mode, cudaStream_t st)
 {
     float sl2 = 1.4426950408889634f / sqrtf((float)D);
     size_t smem = seq_smem(Tn, D);
-    if (!v1 && smem <= SEQ_SMEM_MAX) {
+    if (mode != FLASH_TILED && smem <= SEQ_SMEM_MAX) {
         /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
         if (smem <= 48 * 1024 || cudaFuncSetAttribute(k_flash_seq<D>, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                                       (int)smem) == cudaSuccess) {
-            k_flash_seq<D><<<dim3(H, B), seq_warps(Tn) * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+            int warps = seq_warps(Tn), chunks = (Tn + 15) / 16;
+            if (mode > FLASH_WARPS && mode <= FLASH_WARPS + SEQ_WARPS) /* forced (benchmarks, tests) */
+                warps = mode - FLASH_WARPS < chunks ? mode - FLASH_WARPS : chunks;
+            k_flash_seq<D><<<dim3(H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
             return 0;
         }
     }
@@ -345,15 +348,15 @@ template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H
     return 0;
 }
 
-int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out, int v1,
+int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out, int mode,
                     cudaStream_t st)
 {
     int D = w / H;
     /* 16-byte rows of K/V need the fused row (3w halves) and each head to start on 8 halves */
     if (w % H || (D != 16 && D != 32 && D != 64) || w % 8 || B < 1 || Tn < 1 || B > 65535) return 1;
-    if (D == 64) return launch_flash<64>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
-    if (D == 32) return launch_flash<32>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
-    return launch_flash<16>(qkv, B, Tn, H, w, causal, qq, out, v1, st);
+    if (D == 64) return launch_flash<64>(qkv, B, Tn, H, w, causal, qq, out, mode, st);
+    if (D == 32) return launch_flash<32>(qkv, B, Tn, H, w, causal, qq, out, mode, st);
+    return launch_flash<16>(qkv, B, Tn, H, w, causal, qq, out, mode, st);
 }
 
 /* ---- test hook: the kernel alone on host data -------------------------------------------------- */
@@ -365,7 +368,7 @@ __global__ void k_half_to_float(const __half *x, float *y, size_t n)
 }
 
 extern "C" int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
-                                        int qq, int v1, float *out, sp_error *err)
+                                        int qq, int mode, float *out, sp_error *err)
 {
     size_t nin = (size_t)B * T * 3 * w, nout = (size_t)B * T * w;
     int d = H > 0 && w % H == 0 ? w / H : 0;
@@ -382,7 +385,7 @@ extern "C" int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B,
         launch_f32_to_f16(f, h, (long)nin, st);
         /* poison the output: every element must be written */
         cudaMemsetAsync(h + nin, 0xff, nout * sizeof(__half), st);
-        if (flash_attention(h, B, T, H, w, causal, qq, h + nin, v1, st))
+        if (flash_attention(h, B, T, H, w, causal, qq, h + nin, mode, st))
             rc = sp_error_set(err, SP_E_DEVICE, "fused attention check: the kernel refused %d x %d", B, H);
     }
     if (!rc) {
@@ -395,6 +398,49 @@ extern "C" int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B,
         if (e != cudaSuccess) rc = sp_error_set(err, SP_E_DEVICE, "fused attention check: %s", cudaGetErrorString(e));
     }
     sp_device_release(dev, f);
+    sp_device_release(dev, h);
+    return rc;
+}
+
+/* ---- benchmark hook: the kernel alone on random device data ---------------------------------------- */
+
+__global__ void k_fill_random(__half *x, size_t n, uint32_t seed)
+{
+    for (size_t i = blockIdx.x * (size_t)blockDim.x + threadIdx.x; i < n; i += (size_t)gridDim.x * blockDim.x) {
+        uint32_t h = (uint32_t)i * 2654435761u ^ seed;
+        h ^= h >> 15;
+        h *= 2246822519u;
+        h ^= h >> 13;
+        x[i] = __float2half(((float)(h & 0xffff) / 65535.f - 0.5f) * 3.f); /* [-1.5, 1.5] */
+    }
+}
+
+extern "C" int clip_gpu_attention_bench(sp_device *dev, int B, int T, int H, int w, int causal, int mode, int reps,
+                                        double *us, sp_error *err)
+{
+    size_t nin = (size_t)B * T * 3 * w, nout = (size_t)B * T * w;
+    cudaStream_t st = sp_cuda_stream(dev);
+    __half *h = (__half *)sp_device_alloc_scratch(dev, (nin + nout) * sizeof(__half), err);
+    if (!h) return sp_error_prefix(err, "fused attention bench: ");
+    cudaEvent_t e0 = NULL, e1 = NULL;
+    int rc = 0;
+    k_fill_random<<<1024, 256, 0, st>>>(h, nin, 12345u);
+    if (cudaEventCreate(&e0) != cudaSuccess || cudaEventCreate(&e1) != cudaSuccess ||
+        flash_attention(h, B, T, H, w, causal, 0, h + nin, mode, st)) /* warm-up; refusals show here */
+        rc = sp_error_set(err, SP_E_UNSUPPORTED, "fused attention bench: %d x %d heads of width %d refused", B, H, w / H);
+    if (!rc) {
+        cudaEventRecord(e0, st);
+        for (int r = 0; r < reps; r++) flash_attention(h, B, T, H, w, causal, 0, h + nin, mode, st);
+        cudaEventRecord(e1, st);
+        float ms = 0;
+        cudaError_t e = cudaEventSynchronize(e1);
+        if (e == cudaSuccess) e = cudaGetLastError();
+        if (e == cudaSuccess) e = cudaEventElapsedTime(&ms, e0, e1);
+        if (e != cudaSuccess) rc = sp_error_set(err, SP_E_DEVICE, "fused attention bench: %s", cudaGetErrorString(e));
+        *us = 1000.0 * ms / (reps > 0 ? reps : 1);
+    }
+    if (e0) cudaEventDestroy(e0);
+    if (e1) cudaEventDestroy(e1);
     sp_device_release(dev, h);
     return rc;
 }

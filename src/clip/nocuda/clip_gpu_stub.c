@@ -29,8 +29,14 @@ int clip_gpu_stage_ms(sp_clip *c, double ms[CLIP_STAGES])
     return -1;
 }
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
-                             int qq, int v1, float *out, sp_error *err)
+                             int qq, int mode, float *out, sp_error *err)
 {
+    return sp_error_set(err, SP_E_NODEVICE, "CLIP attention on the GPU: semsplat was built without CUDA");
+}
+int clip_gpu_attention_bench(sp_device *dev, int B, int T, int H, int w, int causal, int mode, int reps,
+                             double *us, sp_error *err)
+{
+    *us = 0;
     return sp_error_set(err, SP_E_NODEVICE, "CLIP attention on the GPU: semsplat was built without CUDA");
 }
 int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err)
