@@ -164,27 +164,29 @@ static void bench_stages(sp_clip *c, const char *what, const char *prec, int bat
 
 /* The fused attention kernel alone (random fp16 data on the device): ViT-B/16's batch 128
  * (197 tokens, 12 heads of 64) and the text tower's batch 256 (77 tokens, 8 heads, causal); the
- * kernel the towers use, the tiled one, and the resident one with 4 / 8 warps per block. */
+ * kernel the towers use, the tiled one, and the resident one as q blocks of n warps per head
+ * ("resident_qxn", mode 100 q + n). */
 static void bench_attention(sp_device *dev)
 {
-    static const struct { const char *what; int B, T, H, w, causal; } shapes[] = {
-        {"image_b128", 128, 197, 12, 768, 0}, {"text_b256", 256, 77, 8, 512, 1}};
-    static const struct { int mode; const char *name; } modes[] = {
-        {0, "auto"}, {1, "tiled"}, {16 + 4, "resident_4warps"}, {16 + 8, "resident_8warps"}};
+    static const struct { const char *what; int B, T, H, w, causal, modes[6]; } shapes[] = {
+        {"image_b128", 128, 197, 12, 768, 0, {0, 1, 104, 108, 207, 404}},
+        {"text_b256", 256, 77, 8, 512, 1, {0, 1, 105, 203, 302, 501}}};
     for (int k = 0; k < 2; k++)
-        for (int m = 0; m < 4; m++) {
+        for (int m = 0; m < 6; m++) {
             sp_error err = {0};
             double us = 0;
-            int B = shapes[k].B, T = shapes[k].T, H = shapes[k].H, d = shapes[k].w / H;
-            if (clip_gpu_attention_bench(dev, B, T, H, shapes[k].w, shapes[k].causal, modes[m].mode, 20, &us, &err)) {
+            int B = shapes[k].B, T = shapes[k].T, H = shapes[k].H, d = shapes[k].w / H, mode = shapes[k].modes[m];
+            if (clip_gpu_attention_bench(dev, B, T, H, shapes[k].w, shapes[k].causal, mode, 20, &us, &err)) {
                 fprintf(stderr, "bench_clip: %s\n", err.msg);
                 return;
             }
+            char name[32];
+            if (mode >= 100) snprintf(name, sizeof name, "resident_%dx%d", mode / 100, mode % 100);
+            else snprintf(name, sizeof name, "%s", mode ? "tiled" : "auto");
             /* 4 T^2 d per head (Q K^T and P V), halved by the causal mask */
             double flop = 4.0 * T * T * d * H * B * (shapes[k].causal ? 0.5 : 1.0);
             printf("clip_attn_%s_%s  %.1f  us  (one layer, fp16, %d x %d tokens, %d heads of %d%s, %.0f TFLOP/s)\n",
-                   shapes[k].what, modes[m].name, us, B, T, H, d, shapes[k].causal ? ", causal" : "",
-                   flop / (us * 1e-6) / 1e12);
+                   shapes[k].what, name, us, B, T, H, d, shapes[k].causal ? ", causal" : "", flop / (us * 1e-6) / 1e12);
         }
 }
 

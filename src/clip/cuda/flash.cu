@@ -265,14 +265,15 @@ __global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict_
     if (active) rows_end(wr, out + (size_t)b * T * w + (size_t)h * D, w, T, lane & 3);
 }
 
-/* v2, short sequences (the whole K and V of one head fit in shared memory): one block per
- * (head, sequence) loads K and V once, then each warp takes 16-query chunks. Keys are padded to
- * Tp = T rounded up to 16 (zeros; tile_step reads no row past that). The loads go out at once as
- * cp.async groups of 64 keys, so every warp computes its first chunk's tile kt while the later
- * tiles are still arriving; after the first round no barrier. Warps per block: the fewest that
+/* v2, short sequences (the whole K and V of one head fit in shared memory): nq blocks per
+ * (head, sequence) (grid (nq, H, B); nq = 1 in the towers: K and V read once) each load all of K
+ * and V, then warp i of block q takes the 16-query chunks c = q * warps + i + k * nq * warps. Keys
+ * are padded to Tp = T rounded up to 16 (zeros; tile_step reads no row past that). The loads go
+ * out at once as cp.async groups of 64 keys, so each warp computes its first chunk's tile kt while
+ * the later tiles are still arriving (every warp, with a chunk or not, passes the first round's
+ * barriers); after the first round no barrier. Warps per block in the towers: the fewest that
  * keep the rounds (ceil(chunks / warps)) minimal, so no warp idles in the last round, e.g. 7 for
- * ViT-B/16's 197 tokens (13 chunks, 2 rounds). grid (H, B), dynamic shared memory
- * 2 * Tp * (D + 8) halves. */
+ * ViT-B/16's 197 tokens (13 chunks, 2 rounds). Dynamic shared memory 2 * Tp * (D + 8) halves. */
 enum { SEQ_WARPS = 8 };
 template <int D>
 __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *__restrict__ qkv,
@@ -284,7 +285,7 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
     const int Tp = (T + 15) & ~15, nt = (Tp + FK - 1) / FK, nwarps = blockDim.x >> 5;
     __half *Ks = kv_smem, *Vs = kv_smem + (size_t)Tp * LD;
     const int lane = threadIdx.x & 31, warp = threadIdx.x >> 5;
-    const int h = blockIdx.x, b = blockIdx.y;
+    const int h = blockIdx.y, b = blockIdx.z, stride = (int)gridDim.x * nwarps * 16;
     const size_t ld = 3 * (size_t)w;
     const __half *base = qkv + (size_t)b * T * ld + (size_t)h * D;
     const __half *kb = base + (qq ? 0 : w), *vb = base + 2 * (size_t)w;
@@ -298,9 +299,9 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
         cp_async_commit();
     }
     __half *ob = out + (size_t)b * T * w + (size_t)h * D;
-    /* one copy of the loop (one inlined tile_step keeps the registers down); the first round
-     * (every warp has one: see seq_warps) waits for each tile as it lands */
-    for (int r0 = warp * 16, first = 1; r0 < T; r0 += nwarps * 16, first = 0) {
+    /* one copy of the loop (one inlined tile_step keeps the registers down) */
+    for (int r0 = ((int)blockIdx.x * nwarps + warp) * 16, first = 1; first || r0 < T; r0 += stride, first = 0) {
+        const bool active = r0 < T;
         warp_rows<D> wr;
         rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3); /* global loads in flight with the copies */
         int n_tiles = causal && r0 / FK + 1 < nt ? r0 / FK + 1 : nt; /* keys past row r0 + 15 are masked */
@@ -310,11 +311,11 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
                 cp_async_wait_upto(nt - 1 - kt);
                 __syncthreads(); /* every thread's part of tile kt has landed */
             }
-            if (kt < n_tiles)
+            if (active && kt < n_tiles)
                 tile_step<D, LD>(wr, Ks + (size_t)kt * FK * LD, Vs + (size_t)kt * FK * LD, kt * FK, T, causal,
                                  scale_log2, lane);
         }
-        rows_end(wr, ob, w, T, lane & 3);
+        if (active) rows_end(wr, ob, w, T, lane & 3);
     }
 }
 
@@ -337,10 +338,13 @@ template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H
         /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
         if (smem <= 48 * 1024 || cudaFuncSetAttribute(k_flash_seq<D>, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                                       (int)smem) == cudaSuccess) {
-            int warps = seq_warps(Tn), chunks = (Tn + 15) / 16;
-            if (mode > FLASH_WARPS && mode <= FLASH_WARPS + SEQ_WARPS) /* forced (benchmarks, tests) */
-                warps = mode - FLASH_WARPS < chunks ? mode - FLASH_WARPS : chunks;
-            k_flash_seq<D><<<dim3(H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+            int warps = seq_warps(Tn), nq = 1, chunks = (Tn + 15) / 16;
+            if (mode >= FLASH_RESIDENT && mode % 100 >= 1 && mode % 100 <= SEQ_WARPS) { /* forced */
+                warps = mode % 100 < chunks ? mode % 100 : chunks;
+                nq = mode / 100;
+                if (nq > (chunks + warps - 1) / warps) nq = (chunks + warps - 1) / warps;
+            }
+            k_flash_seq<D><<<dim3(nq, H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
             return 0;
         }
     }
