@@ -63,6 +63,15 @@ __device__ __forceinline__ void cp_async_wait_upto(int n)
     else cp_async_wait<3>();
 }
 
+/* 2^x on the MUFU alone: exp2f without fast math adds the denormal fix-up around it, and these
+ * are probabilities headed for fp16 (ex2(-inf) = 0 still) */
+__device__ __forceinline__ float ex2(float x)
+{
+    float y;
+    asm("ex2.approx.ftz.f32 %0, %1;" : "=f"(y) : "f"(x));
+    return y;
+}
+
 __device__ __forceinline__ uint32_t pack_half2(float lo, float hi)
 {
     __half2 h = __floats2half2_rn(lo, hi);
@@ -115,7 +124,7 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
         s[j][0] = s[j][1] = s[j][2] = s[j][3] = 0.f;
         if (j < nj) {
             /* lane 8 i + r: key row 8 j + r, dims 8 i.. of a 32-dim pair of k-steps */
-            const __half *kr = Ks + (8 * j + (lane & 7)) * LD + 8 * (lane >> 3);
+            const __half *kr = Ks + (8 * j + (lane & 7)) * LD + 8 * (D == 16 ? (lane >> 3) & 1 : lane >> 3);
             if (D == 16) {
                 uint32_t kf[2];
                 ldmatrix_x2(kf, kr);
@@ -154,7 +163,7 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
     float n0 = fmaxf(w.m0, mx0), n1 = fmaxf(w.m1, mx1);
     /* a row with nothing unmasked yet keeps 0 as its reference (no inf - inf) */
     float u0 = n0 == -INFINITY ? 0.f : n0 * scale_log2, u1 = n1 == -INFINITY ? 0.f : n1 * scale_log2;
-    float al0 = exp2f(w.m0 * scale_log2 - u0), al1 = exp2f(w.m1 * scale_log2 - u1);
+    float al0 = ex2(fmaf(w.m0, scale_log2, -u0)), al1 = ex2(fmaf(w.m1, scale_log2, -u1));
     w.m0 = n0;
     w.m1 = n1;
     w.l0 *= al0;
@@ -169,10 +178,10 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
 #pragma unroll
     for (int j = 0; j < FK / 8; j++) {
         if (j < nj) { /* past the last key: probability 0, no exp (the MUFU is a bottleneck) */
-            s[j][0] = exp2f(s[j][0] * scale_log2 - u0);
-            s[j][1] = exp2f(s[j][1] * scale_log2 - u0);
-            s[j][2] = exp2f(s[j][2] * scale_log2 - u1);
-            s[j][3] = exp2f(s[j][3] * scale_log2 - u1);
+            s[j][0] = ex2(fmaf(s[j][0], scale_log2, -u0));
+            s[j][1] = ex2(fmaf(s[j][1], scale_log2, -u0));
+            s[j][2] = ex2(fmaf(s[j][2], scale_log2, -u1));
+            s[j][3] = ex2(fmaf(s[j][3], scale_log2, -u1));
             w.l0 += s[j][0] + s[j][1];
             w.l1 += s[j][2] + s[j][3];
         } else {
