@@ -107,8 +107,14 @@ int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int
 
 /* Variants for benchmarks and tests: CLIP_GPU_NO_LT runs the plain cuBLAS products and
  * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax),
- * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits. */
-enum { CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4, CLIP_GPU_PROFILE = 8 };
+ * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits,
+ * CLIP_GPU_MLP_SLABS each block's MLP (fc1, activation, fc2) in slabs of at most 4096 rows, so
+ * that the fc1 output of a slab is still in L2 for the activation and fc2 (with
+ * CLIP_GPU_SLABS_SMALL slabs of 16 rows: tests on small models). */
+enum {
+    CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4, CLIP_GPU_PROFILE = 8, CLIP_GPU_MLP_SLABS = 16,
+    CLIP_GPU_SLABS_SMALL = 32
+};
 void clip_gpu_set_flags(sp_clip *c, int flags);
 /* Stage timing (benchmarks): with CLIP_GPU_PROFILE set, each text or pooled image forward records
  * a CUDA event after every stage and adds the stage times (ms, summed over the layers) to a

@@ -227,13 +227,25 @@ static int block(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_layer *L,
     clip_prof_mark(g, CLIP_STAGE_OPROJ);
     launch_layernorm<T>(xb, h, M, w, W + L->ln2_w, W + L->ln2_b, cfg->eps, ln_plain(), st);
     clip_prof_mark(g, CLIP_STAGE_LN);
-    if ((rc = lin(x, h, w, M, w, W + L->fc1_w, cfg->mlp, W + L->fc1_b, m, 0))) return rc;
-    clip_prof_mark(g, CLIP_STAGE_FC1);
-    launch_bias_act<T>(m, M, cfg->mlp, NULL, cfg->quick_gelu ? 1 : 2, st);
-    clip_prof_mark(g, CLIP_STAGE_ACT);
-    rc = lin(x, m, cfg->mlp, M, cfg->mlp, W + L->fc2_w, w, W + L->fc2_b, xb, 1);
-    clip_prof_mark(g, CLIP_STAGE_FC2);
-    return rc;
+    /* the MLP at once, or (CLIP_GPU_MLP_SLABS) in slabs of rows whose fc1 output (slab x mlp)
+     * stays in L2 for the activation and fc2 */
+    int slab = M, cap = g->flags & CLIP_GPU_SLABS_SMALL ? 16 : MLP_SLAB_ROWS;
+    if ((g->flags & CLIP_GPU_MLP_SLABS) && M > cap) { /* even slabs, rows a multiple of 16 */
+        int n = (M + cap - 1) / cap;
+        slab = ((M + n - 1) / n + 15) & ~15;
+    }
+    for (int r = 0; r < M; r += slab) {
+        int rows = M - r < slab ? M - r : slab;
+        T *ms = m + (size_t)r * cfg->mlp;
+        if ((rc = lin(x, h + (size_t)r * w, w, rows, w, W + L->fc1_w, cfg->mlp, W + L->fc1_b, ms, 0))) return rc;
+        clip_prof_mark(g, CLIP_STAGE_FC1);
+        launch_bias_act<T>(ms, rows, cfg->mlp, NULL, cfg->quick_gelu ? 1 : 2, st);
+        clip_prof_mark(g, CLIP_STAGE_ACT);
+        if ((rc = lin(x, ms, cfg->mlp, rows, cfg->mlp, W + L->fc2_w, w, W + L->fc2_b, xb + (size_t)r * w, 1)))
+            return rc;
+        clip_prof_mark(g, CLIP_STAGE_FC2);
+    }
+    return 0;
 }
 
 /* ---- stage timing (CLIP_GPU_PROFILE) ------------------------------------------------------------------ */
