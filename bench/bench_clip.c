@@ -166,14 +166,14 @@ static void bench_stages(sp_clip *c, const char *what, const char *prec, int bat
 /* The fused attention kernel alone (random fp16 data on the device): ViT-B/16's batch 128
  * (197 tokens, 12 heads of 64) and the text tower's batch 256 (77 tokens, 8 heads, causal); the
  * kernel the towers use, the tiled one, and the resident one as q blocks of n warps per head
- * ("resident_qxn", mode 100 q + n). */
+ * ("resident_qxn", mode 100 q + n; "_qsmem": + 1000, the queries through shared memory too). */
 static void bench_attention(sp_device *dev)
 {
-    static const struct { const char *what; int B, T, H, w, causal, modes[6]; } shapes[] = {
-        {"image_b128", 128, 197, 12, 768, 0, {0, 1, 104, 108, 207, 404}},
-        {"text_b256", 256, 77, 8, 512, 1, {0, 1, 105, 203, 302, 501}}};
+    static const struct { const char *what; int B, T, H, w, causal, modes[8]; } shapes[] = {
+        {"image_b128", 128, 197, 12, 768, 0, {0, 1, 104, 108, 207, 404, 1107, 1207}},
+        {"text_b256", 256, 77, 8, 512, 1, {0, 1, 105, 203, 302, 501, 1105, 1203}}};
     for (int k = 0; k < 2; k++)
-        for (int m = 0; m < 6; m++) {
+        for (int m = 0; m < 8; m++) {
             sp_error err = {0};
             double us = 0;
             int B = shapes[k].B, T = shapes[k].T, H = shapes[k].H, d = shapes[k].w / H, mode = shapes[k].modes[m];
@@ -182,7 +182,8 @@ static void bench_attention(sp_device *dev)
                 return;
             }
             char name[32];
-            if (mode >= 100) snprintf(name, sizeof name, "resident_%dx%d", mode / 100, mode % 100);
+            if (mode >= 100)
+                snprintf(name, sizeof name, "resident_%dx%d%s", mode % 1000 / 100, mode % 100, mode >= 1000 ? "_qsmem" : "");
             else snprintf(name, sizeof name, "%s", mode ? "tiled" : "auto");
             /* 4 T^2 d per head (Q K^T and P V), halved by the causal mask */
             double flop = 4.0 * T * T * d * H * B * (shapes[k].causal ? 0.5 : 1.0);

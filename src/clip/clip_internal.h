@@ -137,8 +137,8 @@ int clip_gpu_stage_ms(sp_clip *c, double ms[CLIP_STAGES]);
 int clip_gpu_vision_again(sp_clip *c, int n, int H, int W, float *out, sp_error *err);
 /* The fused attention kernel alone on host data: qkv [B*T][3w] (converted to fp16) -> out
  * [B*T][w]; mode 0 the kernel the towers use, 1 the tiled kernel, 100 q + n (q >= 1, n = 1..8)
- * the sequence-resident kernel with q blocks of n warps per head; SP_E_UNSUPPORTED when the
- * kernel does not take this head width. */
+ * the sequence-resident kernel with q blocks of n warps per head (+ 1000: query rows staged
+ * through shared memory); SP_E_UNSUPPORTED when the kernel does not take this head width. */
 int clip_gpu_attention_check(sp_device *dev, const float *qkv, int B, int T, int H, int w, int causal,
                              int qq, int mode, float *out, sp_error *err);
 /* The same kernel alone on random fp16 device data, reps launches: microseconds per launch. */

@@ -449,7 +449,7 @@ static void test_half_host(void)
 /* The fused fp16 attention kernel alone against a double reference on the same fp16-rounded
  * inputs: head widths 16/32/64, sequence lengths around the 64-row tiles and the 16-row chunks
  * (1, 63, 64, 65, 77, 197, 200, 300, 800: 1 to 8 warps per block, 1 to 3 rounds of chunks in the
- * resident kernel), causal and not, q-q (ClearCLIP) and q-k, and ViT-B/16's own shape (12 heads
+ * resident kernel), causal and not, q-q (ClearCLIP) and q-k, 8 kernel modes, ViT-B/16's shape (12 heads
  * of 64, 197 tokens, 3 images); every output element written and finite. */
 static void ref_attention(const float *qkv, int B, int T, int H, int w, int causal, int qq, double *out)
 {
@@ -504,9 +504,10 @@ static void test_gpu_attention(void)
                     qkv[i] = sp_half_to_float(sp_float_to_half((float)test_range(&rng, -1.5, 1.5)));
                 ref_attention(qkv, B, T, H, w, causal, qq, ref);
                 /* the towers' choice, the tiled kernel, the resident one with 1 block of 1 and of
-                 * 8 warps, 2 of 4 and 3 of 2 per head */
-                static const int modes[] = {0, 1, 101, 108, 204, 302};
-                for (int mi = 0; mi < 6; mi++) {
+                 * 8 warps, 2 of 4 and 3 of 2 per head, and with the queries through shared
+                 * memory (1 block of 7, 2 of 4) */
+                static const int modes[] = {0, 1, 101, 108, 204, 302, 1107, 1204};
+                for (int mi = 0; mi < 8; mi++) {
                     int tiled = modes[mi] == 1;
                     CHECK_OK(clip_gpu_attention_check(dev, qkv, B, T, H, w, causal, qq, modes[mi], got, &err), &err);
                     double e = 0;

@@ -151,9 +151,9 @@ size_t attention_score_count(int B, int H, int Tn, int fused);
 /* The flash kernels alone (fp16, d in 16/32/64, w % 8 == 0, B <= 65535): one block per head and
  * sequence with K and V resident in shared memory when they fit, else (or mode FLASH_TILED)
  * 64-query blocks streaming K/V tiles; mode FLASH_RESIDENT * q + n (q >= 1, n = 1..8) forces the
- * resident kernel with q blocks of n warps per head (benchmarks, tests); 0 when launched, 1 when
- * it does not apply. */
-enum { FLASH_AUTO = 0, FLASH_TILED = 1, FLASH_RESIDENT = 100 };
+ * resident kernel with q blocks of n warps per head (benchmarks, tests), FLASH_QSMEM + that with
+ * the query rows staged through shared memory too; 0 when launched, 1 when it does not apply. */
+enum { FLASH_AUTO = 0, FLASH_TILED = 1, FLASH_RESIDENT = 100, FLASH_QSMEM = 1000 };
 int flash_attention(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq, __half *out, int mode,
                     cudaStream_t st);
 

@@ -91,12 +91,14 @@ template <int D> struct warp_rows {
 
 /* rows r0 .. r0+15 of q (rows past T read as zero), accumulators cleared */
 template <int D>
-__device__ __forceinline__ void rows_begin(warp_rows<D> &w, const __half *qb, size_t ld, int r0, int T, int g, int t)
+__device__ __forceinline__ void rows_begin(warp_rows<D> &w, const __half *qb, size_t ld, int r0, int T, int g, int t,
+                                           bool load_q = true)
 {
     w.ra = r0 + g;
     w.rb = r0 + g + 8;
 #pragma unroll
     for (int kk = 0; kk < D / 16; kk++) {
+        if (!load_q) break; /* the caller fills qa (rows_q_smem) */
         int c = 16 * kk + 2 * t;
         w.qa[kk][0] = w.ra < T ? ld32(qb + w.ra * ld + c) : 0u;
         w.qa[kk][1] = w.rb < T ? ld32(qb + w.rb * ld + c) : 0u;
@@ -107,6 +109,15 @@ __device__ __forceinline__ void rows_begin(warp_rows<D> &w, const __half *qb, si
     for (int j = 0; j < D / 8; j++) w.o[j][0] = w.o[j][1] = w.o[j][2] = w.o[j][3] = 0.f;
     w.m0 = w.m1 = -INFINITY;
     w.l0 = w.l1 = 0.f;
+}
+
+/* The 16 query rows as A fragments from a warp's shared copy (row stride LD), by ldmatrix: lane
+ * 8 i + r gives row r + 8 (i & 1), columns 8 (i >> 1).. of each 16-column k-step. */
+template <int D, int LD> __device__ __forceinline__ void rows_q_smem(warp_rows<D> &w, const __half *Qw, int lane)
+{
+    const __half *p = Qw + ((lane & 7) + 8 * ((lane >> 3) & 1)) * LD + 8 * (lane >> 4);
+#pragma unroll
+    for (int kk = 0; kk < D / 16; kk++) ldmatrix_x4(w.qa[kk], p + 16 * kk);
 }
 
 /* One tile of FK keys starting at key k0, its rows in shared memory at Ks / Vs (row stride LD):
@@ -284,7 +295,10 @@ __global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict_
  * keep the rounds (ceil(chunks / warps)) minimal, so no warp idles in the last round, e.g. 7 for
  * ViT-B/16's 197 tokens (13 chunks, 2 rounds). Dynamic shared memory 2 * Tp * (D + 8) halves. */
 enum { SEQ_WARPS = 8 };
-template <int D>
+/* QSM: each warp's query rows also go through shared memory by cp.async (16 rows of D + 8 halves
+ * per warp after K and V), the first chunk's ahead of the K/V groups and the next chunk's while
+ * the current one computes, then by ldmatrix into the A fragments. */
+template <int D, bool QSM>
 __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *__restrict__ qkv,
                                                                  __half *__restrict__ out, int T, int w,
                                                                  float scale_log2, int causal, int qq)
@@ -294,10 +308,21 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
     const int Tp = (T + 15) & ~15, nt = (Tp + FK - 1) / FK, nwarps = blockDim.x >> 5;
     __half *Ks = kv_smem, *Vs = kv_smem + (size_t)Tp * LD;
     const int lane = threadIdx.x & 31, warp = threadIdx.x >> 5;
+    __half *Qw = kv_smem + (size_t)2 * Tp * LD + (size_t)warp * 16 * LD; /* QSM only */
     const int h = blockIdx.y, b = blockIdx.z, stride = (int)gridDim.x * nwarps * 16;
     const size_t ld = 3 * (size_t)w;
     const __half *base = qkv + (size_t)b * T * ld + (size_t)h * D;
     const __half *kb = base + (qq ? 0 : w), *vb = base + 2 * (size_t)w;
+    /* this warp's 16 query rows from r0 into Qw, one cp.async group */
+    auto q_copy = [&](int r0) {
+        for (int i = lane; i < 16 * C8; i += 32) {
+            int row = i / C8, c8 = (i % C8) * 8, q = r0 + row;
+            cp_async16(Qw + row * LD + c8, base + (size_t)(q < T ? q : 0) * ld + c8, q < T ? 16 : 0);
+        }
+        cp_async_commit();
+    };
+    int r0 = ((int)blockIdx.x * nwarps + warp) * 16;
+    if (QSM) q_copy(r0);
     for (int kt = 0; kt < nt; kt++) {
         int end = (kt + 1) * FK < Tp ? (kt + 1) * FK : Tp;
         for (int i = kt * FK * C8 + threadIdx.x; i < end * C8; i += blockDim.x) {
@@ -309,16 +334,33 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
     }
     __half *ob = out + (size_t)b * T * w + (size_t)h * D;
     /* one copy of the loop (one inlined tile_step keeps the registers down) */
-    for (int r0 = ((int)blockIdx.x * nwarps + warp) * 16, first = 1; first || r0 < T; r0 += stride, first = 0) {
+    for (int first = 1; first || r0 < T; r0 += stride, first = 0) {
         const bool active = r0 < T;
         warp_rows<D> wr;
-        rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3); /* global loads in flight with the copies */
+        rows_begin(wr, base, ld, r0, T, lane >> 2, lane & 3, !QSM); /* global loads in flight with the copies */
+        int ahead = 0; /* QSM: the next chunk's query copy is in flight (the newest group) */
+        if (QSM && !first) {
+            cp_async_wait<0>(); /* only this chunk's query copy was pending */
+            __syncwarp();
+            rows_q_smem<D, LD>(wr, Qw, lane);
+            __syncwarp(); /* read before the next copy overwrites it */
+            if (r0 + stride < T) q_copy(r0 + stride);
+        }
         int n_tiles = causal && r0 / FK + 1 < nt ? r0 / FK + 1 : nt; /* keys past row r0 + 15 are masked */
         int steps = first ? nt : n_tiles;
         for (int kt = 0; kt < steps; kt++) {
             if (first) {
-                cp_async_wait_upto(nt - 1 - kt);
+                /* groups: [query,] tiles 0 .. nt - 1[, next query]: tile kt (and what came before) landed */
+                cp_async_wait_upto(nt - 1 - kt + ahead);
                 __syncthreads(); /* every thread's part of tile kt has landed */
+                if (QSM && kt == 0) {
+                    rows_q_smem<D, LD>(wr, Qw, lane);
+                    __syncwarp();
+                    if (r0 + stride < T) {
+                        q_copy(r0 + stride);
+                        ahead = 1;
+                    }
+                }
             }
             if (active && kt < n_tiles)
                 tile_step<D, LD>(wr, Ks + (size_t)kt * FK * LD, Vs + (size_t)kt * FK * LD, kt * FK, T, causal,
@@ -329,6 +371,7 @@ __global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *_
 }
 
 static size_t seq_smem(int T, int D) { return (size_t)2 * ((T + 15) / 16 * 16) * (D + 8) * sizeof(__half); }
+static size_t seq_q_smem(int warps, int D) { return (size_t)warps * 16 * (D + 8) * sizeof(__half); }
 enum { SEQ_SMEM_MAX = 200 * 1024 }; /* Hopper gives a block up to 227 KB; leave room */
 
 /* warps of the resident kernel for T tokens: as many rounds as 8 warps need, with the fewest warps */
@@ -338,24 +381,34 @@ static int seq_warps(int T)
     return (chunks + rounds - 1) / rounds;
 }
 
+template <int D, bool QSM> static int launch_seq(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq,
+                                                __half *out, int warps, int nq, float sl2, cudaStream_t st)
+{
+    size_t smem = seq_smem(Tn, D) + (QSM ? seq_q_smem(warps, D) : 0);
+    if (smem > SEQ_SMEM_MAX) return 1;
+    /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
+    if (smem > 48 * 1024 &&
+        cudaFuncSetAttribute(k_flash_seq<D, QSM>, cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem) != cudaSuccess)
+        return 1;
+    k_flash_seq<D, QSM><<<dim3(nq, H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
+    return 0;
+}
+
 template <int D> static int launch_flash(const __half *qkv, int B, int Tn, int H, int w, int causal, int qq,
                                          __half *out, int mode, cudaStream_t st)
 {
     float sl2 = 1.4426950408889634f / sqrtf((float)D);
-    size_t smem = seq_smem(Tn, D);
-    if (mode != FLASH_TILED && smem <= SEQ_SMEM_MAX) {
-        /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
-        if (smem <= 48 * 1024 || cudaFuncSetAttribute(k_flash_seq<D>, cudaFuncAttributeMaxDynamicSharedMemorySize,
-                                                      (int)smem) == cudaSuccess) {
-            int warps = seq_warps(Tn), nq = 1, chunks = (Tn + 15) / 16;
-            if (mode >= FLASH_RESIDENT && mode % 100 >= 1 && mode % 100 <= SEQ_WARPS) { /* forced */
-                warps = mode % 100 < chunks ? mode % 100 : chunks;
-                nq = mode / 100;
-                if (nq > (chunks + warps - 1) / warps) nq = (chunks + warps - 1) / warps;
-            }
-            k_flash_seq<D><<<dim3(nq, H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
-            return 0;
+    if (mode != FLASH_TILED) {
+        int warps = seq_warps(Tn), nq = 1, chunks = (Tn + 15) / 16, qsm = 0;
+        if (mode >= FLASH_RESIDENT && mode % 100 >= 1 && mode % 100 <= SEQ_WARPS) { /* forced */
+            qsm = mode >= FLASH_QSMEM;
+            warps = mode % 100 < chunks ? mode % 100 : chunks;
+            nq = mode % FLASH_QSMEM / 100;
+            if (nq < 1) nq = 1;
+            if (nq > (chunks + warps - 1) / warps) nq = (chunks + warps - 1) / warps;
         }
+        if (!(qsm ? launch_seq<D, true> : launch_seq<D, false>)(qkv, B, Tn, H, w, causal, qq, out, warps, nq, sl2, st))
+            return 0;
     }
     k_flash<D><<<dim3((Tn + FQ - 1) / FQ, H, B), FWARPS * 32, 0, st>>>(qkv, out, Tn, w, sl2, causal, qq);
     return 0;
