@@ -6,8 +6,9 @@
  * On the GPU the batch-32/128 image figures are also given with the pixels already on the device
  * (`_resident`, as the transformers anchor times it: its inputs are on the GPU), and --variants
  * adds batch 128 / text 256 in fp16 with the tiled fused-attention kernel and with neither
- * cuBLASLt epilogues nor fused attention (the previous design), and with the MLP in L2-sized row
- * slabs (_mlpslabs, both precisions); --variants 2 adds each alone.
+ * cuBLASLt epilogues nor fused attention (the previous design), and with the MLP / the blocks /
+ * both in L2-sized slabs (_mlpslabs, _blockslabs, _bothslabs; both precisions); --variants 2 adds
+ * each alone.
  * --ncu runs one of each GPU workload only (for Nsight Compute). On the GPU, clip_stage_* lines
  * give the time per stage (CUDA events) of the image batch 128 and text batch 256 forwards, and
  * clip_attn_* the fused attention kernel alone.
@@ -294,9 +295,13 @@ int main(int argc, char **argv)
             static const struct { int flags; const char *suffix; } vs[] = {
                 {CLIP_GPU_FLASH_V1, "_flashv1"}, {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"},
                 {CLIP_GPU_NO_LT, "_nolt"}, {CLIP_GPU_NO_FLASH, "_noflash"}};
-            if (variants) { /* the MLP in L2-sized slabs (both precisions) */
-                clip_gpu_set_flags(c, CLIP_GPU_MLP_SLABS);
-                variant = "_mlpslabs";
+            /* the MLP, the whole blocks, or both in L2-sized slabs (both precisions) */
+            static const struct { int flags; const char *suffix; } sl[] = {
+                {CLIP_GPU_MLP_SLABS, "_mlpslabs"}, {CLIP_GPU_BLOCK_SLABS, "_blockslabs"},
+                {CLIP_GPU_MLP_SLABS | CLIP_GPU_BLOCK_SLABS, "_bothslabs"}};
+            for (int v = 0; v < 3 && variants; v++) {
+                clip_gpu_set_flags(c, sl[v].flags);
+                variant = sl[v].suffix;
                 bench_images(c, name, prec, 128, 2);
                 bench_text(c, name, prec, 256);
                 clip_gpu_set_flags(c, 0);

@@ -109,11 +109,13 @@ int clip_pca_fit_dev(sp_device *dev, const float *x, size_t n, int full_dim, int
  * separate bias kernels, CLIP_GPU_NO_FLASH the unfused attention (cuBLAS + softmax),
  * CLIP_GPU_FLASH_V1 the fused attention's tiled kernel even where the sequence-resident one fits,
  * CLIP_GPU_MLP_SLABS each block's MLP (fc1, activation, fc2) in slabs of at most 4096 rows, so
- * that the fc1 output of a slab is still in L2 for the activation and fc2 (with
- * CLIP_GPU_SLABS_SMALL slabs of 16 rows: tests on small models). */
+ * that the fc1 output of a slab is still in L2 for the activation and fc2, CLIP_GPU_BLOCK_SLABS
+ * each whole block over slabs of sequences of at most 6400 rows (a slab's QKV rows still in L2
+ * for the attention); with CLIP_GPU_SLABS_SMALL slabs of 16 rows / one sequence (tests on small
+ * models). */
 enum {
     CLIP_GPU_NO_LT = 1, CLIP_GPU_NO_FLASH = 2, CLIP_GPU_FLASH_V1 = 4, CLIP_GPU_PROFILE = 8, CLIP_GPU_MLP_SLABS = 16,
-    CLIP_GPU_SLABS_SMALL = 32
+    CLIP_GPU_SLABS_SMALL = 32, CLIP_GPU_BLOCK_SLABS = 64
 };
 void clip_gpu_set_flags(sp_clip *c, int flags);
 /* Stage timing (benchmarks): with CLIP_GPU_PROFILE set, each text or pooled image forward records

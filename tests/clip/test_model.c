@@ -396,12 +396,13 @@ static void test_gpu(void)
     enum { NP = 3 * (2 * IMG) * IMG };
     static float px[2 * NP], a[64 * PROJ], b[64 * PROJ];
     for (int i = 0; i < 2 * NP; i++) px[i] = (float)test_range(&rng, -2, 2);
-    /* second pass: the MLP in slabs of 16 rows (CLIP_GPU_MLP_SLABS at a size these shapes reach) */
-    for (int pass = 0; pass < 4; pass++) {
+    /* then with the MLP in slabs of 16 rows and the blocks over one sequence at a time (the slab
+     * variants at sizes these shapes reach) */
+    for (int pass = 0; pass < 6; pass++) {
         int fp16 = pass & 1, slabs = pass >> 1;
         double tol = fp16 ? 3e-2 : 1e-5, wt = 0, wi = 0, wd = 0, ww = 0;
         CHECK_OK(sp_clip_set_fp16(gpu, fp16, &err), &err);
-        clip_gpu_set_flags(gpu, slabs ? CLIP_GPU_MLP_SLABS | CLIP_GPU_SLABS_SMALL : 0);
+        clip_gpu_set_flags(gpu, slabs ? CLIP_GPU_SLABS_SMALL | (slabs == 1 ? CLIP_GPU_MLP_SLABS : CLIP_GPU_BLOCK_SLABS) : 0);
         CHECK_OK(sp_clip_encode_text(cpu, texts, 3, a, &err), &err);
         CHECK_OK(sp_clip_encode_text(gpu, texts, 3, b, &err), &err);
         for (int k = 0; k < 3 * PROJ; k++) wt = fmax(wt, fabs(a[k] - b[k]));
@@ -417,7 +418,7 @@ static void test_gpu(void)
             for (int k = 0; k < 16 * PROJ; k++) wd = fmax(wd, fabs(a[k] - b[k]));
         }
         fprintf(stderr, "GPU %s%s vs CPU: text %.3g image %.3g wide %.3g dense %.3g\n", fp16 ? "fp16" : "fp32",
-                slabs ? " (MLP in slabs)" : "", wt, wi, ww, wd);
+                slabs == 1 ? " (MLP in slabs)" : slabs ? " (blocks in slabs)" : "", wt, wi, ww, wd);
         CHECK(wt < tol && wi < tol && ww < tol && wd < tol);
     }
     clip_gpu_set_flags(gpu, 0);

@@ -248,6 +248,27 @@ static int block(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_layer *L,
     return 0;
 }
 
+/* The block over B sequences at once, or (CLIP_GPU_BLOCK_SLABS) over slabs of sequences of at most
+ * BLOCK_SLAB_ROWS rows, so that a slab's QKV rows are still in L2 for the attention (and its
+ * LayerNorm output for the products); the scratch is reused slab after slab. */
+template <typename T>
+static int block_slabs(ctx<T> &x, const sp_clip_tower_config *cfg, const gpu_layer *L, T *xb, int B, int Tn,
+                       int causal, bufs_t *bf)
+{
+    int per = B, rc = 0;
+    if (x.g->flags & CLIP_GPU_BLOCK_SLABS) {
+        int cap = x.g->flags & CLIP_GPU_SLABS_SMALL ? 1 : BLOCK_SLAB_ROWS / Tn;
+        if (cap < 1) cap = 1;
+        if (B > cap) {
+            int n = (B + cap - 1) / cap;
+            per = (B + n - 1) / n;
+        }
+    }
+    for (int b0 = 0; b0 < B && !rc; b0 += per)
+        rc = block(x, cfg, L, xb + (size_t)b0 * Tn * cfg->width, B - b0 < per ? B - b0 : per, Tn, causal, bf);
+    return rc;
+}
+
 /* ---- stage timing (CLIP_GPU_PROFILE) ------------------------------------------------------------------ */
 
 void clip_prof_begin(sp_clip_gpu *g)
@@ -359,7 +380,7 @@ static int text_forward(sp_clip *c, const int32_t *ids, int n, float *out, sp_er
         clip_prof_begin(g);
         launch_embed_text<T>(d_ids, x.W + off_of(c, c->tok_emb), x.W + off_of(c, c->txt_pos), xb, (int)M, L, w, st);
         clip_prof_mark(g, CLIP_STAGE_OTHER);
-        for (int l = 0; l < cfg->layers && !rc; l++) rc = block(x, cfg, &g->text[l], xb, n, L, 1, &bf);
+        for (int l = 0; l < cfg->layers && !rc; l++) rc = block_slabs(x, cfg, &g->text[l], xb, n, L, 1, &bf);
         if (rc) break;
         ln_rows eos = {d_rows, 1, 1, 0};
         launch_layernorm<T>(xb, fin, n, w, x.W + off_of(c, c->final_ln_w), x.W + off_of(c, c->final_ln_b), cfg->eps,
@@ -447,7 +468,7 @@ static int vision_run(sp_clip *c, const void *d_px, int px_half, int n, int H, i
         launch_layernorm<T>(xb, xb, (int)M, w, x.W + off_of(c, c->pre_ln_w), x.W + off_of(c, c->pre_ln_b), cfg->eps,
                             ln_plain(), st);
         clip_prof_mark(g, CLIP_STAGE_OTHER);
-        for (int l = 0; l < layers && !rc; l++) rc = block(x, cfg, &g->vision[l], xb, n, Tn, 0, &bf);
+        for (int l = 0; l < layers && !rc; l++) rc = block_slabs(x, cfg, &g->vision[l], xb, n, Tn, 0, &bf);
         if (!rc && dense) rc = dense_head(x, cfg, &g->vision[cfg->layers - 1], xb, n, Tn, kind, &bf);
         if (rc) break;
         /* pooled: the CLS row of each image; dense: every patch row (CLS rows skipped) */

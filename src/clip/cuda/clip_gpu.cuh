@@ -30,7 +30,7 @@ struct lt_plan {
     cublasLtMatrixLayout_t a, b, c;
     cublasLtMatmulAlgo_t algo;
 };
-enum { LT_PLANS = 48, PROF_EVENTS = 512, MLP_SLAB_ROWS = 4096 };
+enum { LT_PLANS = 48, PROF_EVENTS = 512, MLP_SLAB_ROWS = 4096, BLOCK_SLAB_ROWS = 6400 };
 
 /* Host pinned staging for uploads: two slots so the copy of one overlaps filling the other. */
 struct pin_stage {
