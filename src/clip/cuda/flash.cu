@@ -122,13 +122,15 @@ template <int D, int LD> __device__ __forceinline__ void rows_q_smem(warp_rows<D
 
 /* One tile of FK keys starting at key k0, its rows in shared memory at Ks / Vs (row stride LD):
  * scores, mask, online softmax, O += P V. Keys past T must read as zero rows. */
-template <int D, int LD>
-__device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, const __half *Vs, int k0, int T,
-                                          int causal, float scale_log2, int lane)
+template <int D, int LD, bool FULL>
+__device__ __forceinline__ void tile_step_k(warp_rows<D> &w, const __half *Ks, const __half *Vs, int k0, int T,
+                                            int causal, float scale_log2, int lane)
 {
     const int g = lane >> 2, t = lane & 3;
-    const int valid = T - k0 < FK ? T - k0 : FK; /* keys of this tile that exist */
-    const int nj = (valid + 7) / 8, nk = (valid + 15) / 16;
+    const int valid = FULL ? FK : T - k0 < FK ? T - k0 : FK; /* keys of this tile that exist */
+    /* FULL: compile-time bounds, so the unrolled loops have no branches and ptxas can interleave
+     * the fragment loads, products and exponentials of all n-tiles (one basic block) */
+    const int nj = FULL ? FK / 8 : (valid + 7) / 8, nk = FULL ? FK / 16 : (valid + 15) / 16;
     float s[FK / 8][4];
 #pragma unroll
     for (int j = 0; j < FK / 8; j++) {
@@ -218,6 +220,16 @@ __device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, con
     }
 }
 
+/* a whole tile (k0 + FK <= T) by the branch-free specialisation, the last partial one by the
+ * general one */
+template <int D, int LD>
+__device__ __forceinline__ void tile_step(warp_rows<D> &w, const __half *Ks, const __half *Vs, int k0, int T,
+                                          int causal, float scale_log2, int lane)
+{
+    if (k0 + FK <= T) tile_step_k<D, LD, true>(w, Ks, Vs, k0, T, causal, scale_log2, lane);
+    else tile_step_k<D, LD, false>(w, Ks, Vs, k0, T, causal, scale_log2, lane);
+}
+
 /* the finished rows (past T not written) into out rows of width w at column offset ob */
 template <int D>
 __device__ __forceinline__ void rows_end(warp_rows<D> &w, __half *ob, int wd, int T, int t)
@@ -294,12 +306,14 @@ __global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict_
  * barriers); after the first round no barrier. Warps per block in the towers: the fewest that
  * keep the rounds (ceil(chunks / warps)) minimal, so no warp idles in the last round, e.g. 7 for
  * ViT-B/16's 197 tokens (13 chunks, 2 rounds). Dynamic shared memory 2 * Tp * (D + 8) halves. */
-enum { SEQ_WARPS = 8 };
+enum { SEQ_WARPS = 7 }; /* 2 blocks of 7 warps leave 144 registers a thread (8: 128, and spills) */
 /* QSM: each warp's query rows also go through shared memory by cp.async (16 rows of D + 8 halves
  * per warp after K and V), the first chunk's ahead of the K/V groups and the next chunk's while
  * the current one computes, then by ldmatrix into the A fragments. */
+/* __maxnreg__ instead of __launch_bounds__ (which cannot go together): 144 registers for 2 blocks of
+ * 7 warps per SM; at 128 the branch-free full-tile step spills */
 template <int D, bool QSM>
-__global__ void __launch_bounds__(SEQ_WARPS * 32, 2) k_flash_seq(const __half *__restrict__ qkv,
+__global__ void __maxnreg__(144) k_flash_seq(const __half *__restrict__ qkv,
                                                                  __half *__restrict__ out, int T, int w,
                                                                  float scale_log2, int causal, int qq)
 {
@@ -386,10 +400,13 @@ template <int D, bool QSM> static int launch_seq(const __half *qkv, int B, int T
 {
     size_t smem = seq_smem(Tn, D) + (QSM ? seq_q_smem(warps, D) : 0);
     if (smem > SEQ_SMEM_MAX) return 1;
-    /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap) */
+    /* past 48 KB a block's dynamic shared memory needs the kernel's limit raised (cheap); the
+     * carveout all shared memory, so that two blocks of ~60 KB fit beside each other */
     if (smem > 48 * 1024 &&
         cudaFuncSetAttribute(k_flash_seq<D, QSM>, cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem) != cudaSuccess)
         return 1;
+    cudaFuncSetAttribute(k_flash_seq<D, QSM>, cudaFuncAttributePreferredSharedMemoryCarveout,
+                         (int)cudaSharedmemCarveoutMaxShared); /* a hint: refused is harmless */
     k_flash_seq<D, QSM><<<dim3(nq, H, B), warps * 32, smem, st>>>(qkv, out, Tn, w, sl2, causal, qq);
     return 0;
 }
