@@ -157,18 +157,19 @@ __device__ __forceinline__ void tile_step_k(warp_rows<D> &w, const __half *Ks, c
     /* mask (only where the tile is partial or the attention causal), running max per row */
     float mx0 = -INFINITY, mx1 = -INFINITY;
     const bool masked = valid < FK || (causal && k0 + FK - 1 > w.ra - g);
+    if (masked) /* one branch around the whole mask (uniform: skipped in whole non-causal tiles) */
 #pragma unroll
-    for (int j = 0; j < FK / 8; j++)
+        for (int j = 0; j < nj; j++)
 #pragma unroll
-        for (int e = 0; e < 4; e++) {
-            if (j >= nj) continue; /* keys past T: never in the max, set to probability 0 below */
-            if (masked) {
+            for (int e = 0; e < 4; e++) {
                 int key = k0 + 8 * j + 2 * t + (e & 1), q = e < 2 ? w.ra : w.rb;
                 if (key >= T || (causal && key > q)) s[j][e] = -INFINITY;
             }
-            if (e < 2) mx0 = fmaxf(mx0, s[j][e]);
-            else mx1 = fmaxf(mx1, s[j][e]);
-        }
+#pragma unroll
+    for (int j = 0; j < nj; j++) { /* columns past nj: never in the max, probability 0 below */
+        mx0 = fmaxf(mx0, fmaxf(s[j][0], s[j][1]));
+        mx1 = fmaxf(mx1, fmaxf(s[j][2], s[j][3]));
+    }
 #pragma unroll
     for (int d = 1; d <= 2; d <<= 1) {
         mx0 = fmaxf(mx0, __shfl_xor_sync(0xffffffffu, mx0, d));
@@ -273,7 +274,7 @@ __device__ __forceinline__ void load_kv(__half *Ks, __half *Vs, const __half *kb
 /* v1, any length: grid (ceil(T / 64), H, B), 4 warps of 16 queries, key/value tiles streamed
  * through shared memory. */
 template <int D>
-__global__ void __launch_bounds__(FWARPS * 32) k_flash(const __half *__restrict__ qkv, __half *__restrict__ out,
+__global__ void __launch_bounds__(FWARPS * 32, 3) k_flash(const __half *__restrict__ qkv, __half *__restrict__ out,
                                                       int T, int w, float scale_log2, int causal, int qq)
 {
     constexpr int LD = D + 8; /* padded smem rows: conflict-free fragment reads and ldmatrix */
