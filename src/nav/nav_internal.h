@@ -41,6 +41,7 @@ typedef struct nav_carve_out {
                               * a cell, so such a scan may have seen this voxel's surface */
     uint16_t *floor_scans;   /* [cells] scans with a surface point on the floor there */
     uint16_t *view_counts;   /* [n Gaussians] training views that see each Gaussian, or NULL */
+    float floor_tol;         /* out: the floor tolerance the scans used (measure_floor_tolerance) */
 } nav_carve_out;
 
 #define NAV_FLOOR_MIN_OPACITY 0.5f /* floor Gaussians at least this opaque */
