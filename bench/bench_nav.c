@@ -158,6 +158,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--slice")) co.slice_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--stop")) co.carve_stop_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--floor-tol")) co.floor_tolerance_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--min-fresh")) co.carve_min_fresh = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--measure-floor")) co.measure_floor_tolerance = atoi(v), i++;
         else if (!strcmp(argv[i], "--carve-alpha")) co.carve_alpha = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--downscale")) co.carve_downscale = atoi(v), i++;

@@ -116,6 +116,10 @@ typedef struct sp_costmap_opts {
     float slice_m;             /* the band is fused in slices this tall (0.1; at most 32 slices) */
     int carve_downscale;       /* training views rendered at 1/this size for carving (0 = about
                                 * 160 pixels wide) */
+    float carve_min_fresh;     /* a view of a scan (shared centre) is carved only when this share
+                                * of its directions (sampled every 8 px) is not shown by the views
+                                * of its scan kept before it, most new first (0: every view that
+                                * adds anything, which with the captures measured is all of them) */
     float carve_alpha;         /* first-surface depth: where the accumulated alpha reaches this
                                 * (0.5); rays that never reach it end on nothing */
     float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */

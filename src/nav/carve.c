@@ -54,6 +54,7 @@ typedef struct carve_job {
     const sp_camera *views;  /* [views] as rendered (downscaled, cropped) */
     float *const *depth;     /* [views] their first-surface depth */
     const int *run_start;    /* [n_runs + 1] first view of each run (one scan, or a part of one) */
+    const uint8_t *keep;     /* [views] 1: traced (select_views); others are rendered only for view counts */
     float floor_tol;         /* surface points this close to the floor are floor sightings */
     carve_thread *th;        /* [threads] */
 } carve_job;
@@ -265,7 +266,7 @@ static void carve_run(void *ctx, long r, int thread_id)
             t->failed = 1;
             return;
         }
-        trace_view(j, &j->views[k], j->depth[k], t);
+        if (j->keep[k]) trace_view(j, &j->views[k], j->depth[k], t);
         if (t->view_counts) count_visible(j, &j->views[k], j->depth[k], t->view_counts);
     }
     count_scan(j->cm, j->sl, t);
@@ -480,7 +481,7 @@ static int split_runs(const int *order, const int *scan_of, size_t n, int *run_s
 #define FT_MAX_BINS 100
 #define FT_SHARE 0.99
 static float floor_tolerance(const sp_costmap *cm, const sp_costmap_opts *o, const sp_camera *views,
-                             float *const *depth, size_t n, long *excess_out)
+                             float *const *depth, const uint8_t *keep, size_t n, long *excess_out)
 {
     float cap = o->floor_tolerance_m;
     int nb = (int)ceilf(cap / FT_BIN_M - 1e-4f);
@@ -488,6 +489,7 @@ static float floor_tolerance(const sp_costmap *cm, const sp_costmap_opts *o, con
     if (nb > FT_MAX_BINS / 2) nb = FT_MAX_BINS / 2;
     long up[FT_MAX_BINS] = {0}, down[FT_MAX_BINS] = {0};
     for (size_t k = 0; k < n; k++) {
+        if (!keep[k]) continue;
         const sp_camera *cam = &views[k];
         const float *R = cam->R, cz = sp_camera_center(cam).z; /* world dz per unit depth: column 2 of R . dc */
         for (int v = 0; v < cam->height; v++) {
@@ -520,6 +522,66 @@ static float floor_tolerance(const sp_costmap *cm, const sp_costmap_opts *o, con
     return t < cap ? t : cap;
 }
 
+/* Views of one scan share their rays' origin: where two overlap they sample the same rays, and
+ * a voxel is updated once per scan, so a view whose directions the scan's other views already
+ * show adds (up to the pixel grid's sampling) nothing. Sample directions every SEL_STEP pixels
+ * of each view (edges included); greedy set cover (the view showing most of the samples not yet
+ * shown, until every sample is shown) keeps views [a, b) in keep[]. Returns how many. */
+#define SEL_STEP 8
+#define SEL_MAX_SAMPLES 8192
+static int sees(const sp_camera *cam, sp_vec3 d)
+{
+    sp_vec3 c = sp_mat3_apply(cam->R, d);
+    if (!(c.z > 1e-6f)) return 0;
+    float u = cam->fx * c.x / c.z + cam->cx, v = cam->fy * c.y / c.z + cam->cy;
+    return u >= 0.f && v >= 0.f && u <= (float)cam->width && v <= (float)cam->height;
+}
+
+static int view_samples(const sp_camera *cam, sp_vec3 *out, int cap)
+{
+    float Rt[9];
+    sp_mat3_transpose(cam->R, Rt);
+    int nu = (cam->width - 1) / SEL_STEP + 2, nv = (cam->height - 1) / SEL_STEP + 2, m = 0;
+    for (int j = 0; j < nv; j++)
+        for (int i = 0; i < nu && m < cap; i++) {
+            float u = i < nu - 1 ? (float)(i * SEL_STEP) + 0.5f : (float)cam->width - 0.5f;
+            float v = j < nv - 1 ? (float)(j * SEL_STEP) + 0.5f : (float)cam->height - 0.5f;
+            out[m++] = sp_mat3_apply(Rt, sp_v3((u - cam->cx) / cam->fx, (v - cam->cy) / cam->fy, 1.0f));
+        }
+    return m;
+}
+
+static int select_views(const sp_camera *views, int a, int b, float min_fresh, uint8_t *keep)
+{
+    for (int k = a; k < b; k++) keep[k] = 1;
+    if (b - a < 2) return b - a;
+    sp_vec3 *d = malloc(sizeof(sp_vec3) * SEL_MAX_SAMPLES);
+    uint8_t *shown = calloc(SEL_MAX_SAMPLES, 1);
+    int own[CARVE_BATCH];
+    if (!d || !shown || b - a > CARVE_BATCH) { /* keep them all */
+        free(d), free(shown);
+        return b - a;
+    }
+    int n = 0;
+    for (int k = a; k < b && n < SEL_MAX_SAMPLES; k++) n += own[k - a] = view_samples(&views[k], d + n, SEL_MAX_SAMPLES - n);
+    for (int k = a; k < b; k++) keep[k] = 0;
+    int kept = 0;
+    for (;;) {
+        int best = -1, best_new = 0;
+        for (int k = a; k < b; k++) {
+            if (keep[k]) continue;
+            int fresh = 0;
+            for (int i = 0; i < n; i++) fresh += !shown[i] && sees(&views[k], d[i]);
+            if (fresh > best_new && fresh >= min_fresh * own[k - a]) best = k, best_new = fresh;
+        }
+        if (best < 0) break;
+        keep[best] = 1, kept++;
+        for (int i = 0; i < n; i++) shown[i] |= sees(&views[best], d[i]);
+    }
+    free(d), free(shown);
+    return kept;
+}
+
 /* A training view as the carving renders it: at carving size, undistorted (depth needs no
  * distortion model), cropped to the band when crop is set (not with view counts). */
 static sp_camera carving_view(const sp_costmap *cm, const sp_costmap_opts *o, const sp_camera *cam, int crop)
@@ -534,13 +596,14 @@ static sp_camera carving_view(const sp_costmap *cm, const sp_costmap_opts *o, co
 
 /* Renders every view's first-surface depth, each from the Gaussians it can show. */
 static int render_views(const sp_splat *host, const float *sigma_max, sp_scene *scene, sp_splat *sub, sp_raster *r,
-                        const sp_costmap_opts *o, sp_camera *views, float *const *depth, size_t n,
-                        size_t *drawn, const sp_log *log, sp_error *err)
+                        const sp_costmap_opts *o, sp_camera *views, float *const *depth, const uint8_t *render,
+                        size_t n, size_t *drawn, const sp_log *log, sp_error *err)
 {
     sp_progress pr;
     int rc = 0;
     sp_progress_begin(&pr, log, "carve", (long)n, "views");
     for (size_t k = 0; k < n && !rc; k++) {
+        if (!render[k]) continue;
         size_t m = cull_view(host, sigma_max, &views[k], sub);
         *drawn += m;
         if (m == 0) { /* nothing in view: no surface anywhere */
@@ -565,31 +628,39 @@ typedef struct carving {
     float **depth;
     float *pixels;
     int *order, *run_start;
-    int n_scans, n_runs;
+    uint8_t *keep, *render; /* [views] traced; rendered (the kept, or all for view counts) */
+    int n_scans, n_runs, n_kept;
 } carving;
 
 static void carving_free(carving *c)
 {
     free(c->views), free(c->depth), free(c->pixels), free(c->order), free(c->run_start);
+    free(c->keep), free(c->render);
 }
 
 static int carving_alloc(carving *c, const sp_costmap *cm, const sp_costmap_opts *o, const sp_camera *cams, size_t n,
-                         int crop, sp_error *err)
+                         int counts, sp_error *err)
 {
     memset(c, 0, sizeof *c);
     c->views = malloc(sizeof(sp_camera) * n);
     c->depth = malloc(sizeof(float *) * n);
     c->order = malloc(sizeof(int) * n * 2);
     c->run_start = malloc(sizeof(int) * (n + 1));
-    if (!c->views || !c->depth || !c->order || !c->run_start)
+    c->keep = malloc(n ? n : 1);
+    c->render = malloc(n ? n : 1);
+    if (!c->views || !c->depth || !c->order || !c->run_start || !c->keep || !c->render)
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu carving views", n);
     c->n_scans = group_scans(cams, n, c->order, c->order + n);
     c->n_runs = split_runs(c->order, c->order + n, n, c->run_start);
     size_t px = 0;
     for (size_t k = 0; k < n; k++) {
-        c->views[k] = carving_view(cm, o, &cams[c->order[k]], crop);
+        c->views[k] = carving_view(cm, o, &cams[c->order[k]], !counts);
         px += (size_t)c->views[k].width * (size_t)c->views[k].height;
     }
+    c->n_kept = 0;
+    for (int r = 0; r < c->n_runs; r++)
+        c->n_kept += select_views(c->views, c->run_start[r], c->run_start[r + 1], o->carve_min_fresh, c->keep);
+    for (size_t k = 0; k < n; k++) c->render[k] = c->keep[k] || counts;
     if (!(c->pixels = malloc(sizeof(float) * (px ? px : 1))))
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu carving pixels", px);
     px = 0;
@@ -624,23 +695,26 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     carving c = {0};
     carve_thread *th = threads_alloc(T, out, s->n);
     if (!th) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
-    if (!rc) rc = carving_alloc(&c, cm, o, cams, n_cams, !out->view_counts, err);
-    double t0 = nav_cpu_now();
-    if (!rc) rc = render_views(&host, sigma_max, scene, &sub, r, o, c.views, c.depth, n_cams, &drawn, log, err);
-    double t1 = nav_cpu_now();
+    if (!rc) rc = carving_alloc(&c, cm, o, cams, n_cams, out->view_counts != NULL, err);
+    double t0 = nav_cpu_now(), w0 = sp_time_now();
+    if (!rc) rc = render_views(&host, sigma_max, scene, &sub, r, o, c.views, c.depth, c.render, n_cams, &drawn, log, err);
+    double t1 = nav_cpu_now(), w1 = sp_time_now();
     long excess = 0;
-    out->floor_tol = rc ? o->floor_tolerance_m : floor_tolerance(cm, o, c.views, c.depth, n_cams, &excess);
+    out->floor_tol = rc ? o->floor_tolerance_m : floor_tolerance(cm, o, c.views, c.depth, c.keep, n_cams, &excess);
     if (!rc) {
-        carve_job job = {cm, s, o, &out->sl, c.views, c.depth, c.run_start, out->floor_tol, th};
+        carve_job job = {cm, s, o, &out->sl, c.views, c.depth, c.run_start, c.keep, out->floor_tol, th};
         sp_pool_for(pool, c.n_runs, carve_run, &job);
         for (int t = 0; t < T; t++)
             if (th[t].failed) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory carving");
     }
-    double t2 = nav_cpu_now();
-    sp_logf(log, SP_LOG_DEBUG, "carve: %zu views in %d scans, %zu of %zu Gaussians below the cameras, %.0f "
-            "per view in its frustum; floor tolerance %.2f m (%ld floor points); CPU time: renders %.0f ms, rays "
-            "%.0f ms", n_cams, c.n_scans, kept, s->n, n_cams ? (double)drawn / (double)n_cams : 0.0,
-            out->floor_tol, excess, 1e3 * (t1 - t0), 1e3 * (t2 - t1));
+    double t2 = nav_cpu_now(), w2 = sp_time_now();
+    size_t n_rendered = 0;
+    for (size_t k = 0; c.render && k < n_cams; k++) n_rendered += c.render[k];
+    sp_logf(log, SP_LOG_DEBUG, "carve: %zu views in %d scans, %d traced (the rest shown by their scan's), %zu of "
+            "%zu Gaussians below the cameras, %.0f per rendered view in its frustum; floor tolerance %.2f m (%ld "
+            "floor points); CPU / wall time: renders %.0f / %.0f ms, rays %.0f / %.0f ms", n_cams, c.n_scans,
+            c.n_kept, kept, s->n, n_rendered ? (double)drawn / (double)n_rendered : 0.0, out->floor_tol, excess, 1e3 * (t1 - t0), 1e3 * (w1 - w0),
+            1e3 * (t2 - t1), 1e3 * (w2 - w1));
     size_t nv = (size_t)out->sl.cells * out->sl.n, nc = (size_t)out->sl.cells;
     for (int t = 1; th && t < T; t++) {
         add_sat(out->hit_scans, th[t].hit_scans, nv);

@@ -43,6 +43,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.despeckle_cells = 0;
     o.carve_downscale = 0;
     o.carve_alpha = 0.5f;
+    o.carve_min_fresh = 0.0f;
     o.carve_stop_m = 0.03f;
     o.floor_tolerance_m = 0.15f;
     o.measure_floor_tolerance = 1;
@@ -455,6 +456,8 @@ static int check_opts(const sp_costmap_opts *o, sp_error *err)
         return sp_error_set(err, SP_E_ARG, "costmap: sensor model prob_hit %g (in (0.5, 1)), prob_miss %g "
                             "(in (0, 0.5)), occupied_prob %g (in (0, 1)), min_hit_scans %d (>= 1)",
                             o->prob_hit, o->prob_miss, o->occupied_prob, o->min_hit_scans);
+    if (!(o->carve_min_fresh >= 0 && o->carve_min_fresh <= 1))
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_min_fresh %g not in [0, 1]", o->carve_min_fresh);
     if (!(o->floor_tolerance_m >= 0 && o->floor_tolerance_m <= 1))
         return sp_error_set(err, SP_E_ARG, "costmap: floor_tolerance_m %g not in [0, 1]", o->floor_tolerance_m);
     if (o->carve_downscale < 0 || !(o->carve_alpha > 0 && o->carve_alpha <= 1) || !(o->max_range_m > 0) ||

@@ -120,7 +120,8 @@ static inline int nav_traverse_inline(const sp_costmap *cm, const float a[2], co
     double t = 0;
     long steps = (long)(fabs(dx) + fabs(dy)) + 4;
     for (long k = 0; k <= steps; k++) {
-        double tn = fmin(fmin(tmx, tmy), 1.0);
+        double tn = tmx < tmy ? tmx : tmy; /* fmin is a library call without -ffast-math */
+        if (!(tn < 1.0)) tn = 1.0;
         if (nav_inside(cm, ix, iy)) {
             int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
             if (rc) return rc;
