@@ -436,7 +436,8 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * the other classes of the scene, after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
  *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
- *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 2 dep(c) / (d + 2 dep(c))           c is a hypernym of h, d levels up: a laptop is a
+ *                                           computer however far down (no decay beyond WuP's)
  *     = 0.6                                 h (a commonly used sense) is a part of c
  *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
  * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe

@@ -107,21 +107,14 @@ static float wup(int depth_lcs, int dq, int dc)
     return 2.0f * (float)depth_lcs / (float)(dq + dc + 2 * depth_lcs);
 }
 
-static float powi(float b, int e)
-{
-    float r = 1;
-    while (e-- > 0) r *= b;
-    return r;
-}
-
 lex_tax lex_compare(const lex_sense *q, const lex_sense *c)
 {
     lex_tax t = {0, SP_LEX_NONE, -1, -1};
     int j = lex_anc_find(q, c->off);
     if (j == 0) return (lex_tax){1.0f, SP_LEX_SYNONYM, 0, 0};
-    if (j > 0) { /* the class is a hypernym of the query */
+    if (j > 0) { /* the class is a hypernym of the query: a laptop IS a computer, at any depth */
         int d = q->anc[j].dist, dep = c->anc[0].depth;
-        t = (lex_tax){powi(LEX_LAMBDA, d) * wup(dep, d, 0), SP_LEX_HYPONYM, j, 0};
+        t = (lex_tax){wup(dep, d, 0), SP_LEX_HYPONYM, j, 0};
     }
     int i = lex_anc_find(c, q->off);
     if (i > 0) { /* the query is a hypernym of the class */

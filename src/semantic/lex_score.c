@@ -2,7 +2,6 @@
  * nouns (synonym, hypernym, hyponym, part, related), modifiers, description words against the
  * classes' definitions, and the modifier-as-referent reading of compounds ("tv monitor"). The
  * formula is documented in semsplat/semantic.h; the constants are in lexical.h. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -142,7 +141,7 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
     dc += 1;
     lex_tax r = t;
     if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
-    else if (dc == 0) r.score = powf(LEX_LAMBDA, (float)dq) * wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
+    else if (dc == 0) r.score = wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
     else r.score = LEX_MU * wup3(dep, dq, dc), r.kind = SP_LEX_RELATED;
     return r;
 }

@@ -8,7 +8,6 @@
 #include "wordnet.h"
 
 /* The scoring constants (semantic.h documents the formula). */
-#define LEX_LAMBDA 0.85f /* per level the class is more general than the query */
 #define LEX_MU 0.45f     /* siblings and cousins: MU * WuP < threshold, always */
 #define LEX_PART 0.6f    /* the query names a part of the class */
 #define LEX_BETA 0.3f    /* a query modifier naming another class of the scene */
