@@ -453,7 +453,9 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
  *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
  *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
- *   step at most). Location words (room, area) describe nothing.
+ *   step at most); when the description ends in a preposition ("something to write on": where
+ *   the verb is done) a verb found only as a past participle ("a written work": what it acts on)
+ *   counts DELTA times its weight. Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
  * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
  * "the area that looks like a kitchen") list the classes that define them: the region table's
