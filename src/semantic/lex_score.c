@@ -74,7 +74,11 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
-    if (best > 0 && why && src >= 0) snprintf(why, cap, "%s (%s)", word, c->bag.src[src]);
+    if (best > 0 && why && src >= 0) {
+        /* say when the match is the participle's, weakened by a stranded preposition */
+        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, NULL, 0) > best;
+        snprintf(why, cap, "%s (%s)%s", word, c->bag.src[src], weak ? " [participle: what it acts on]" : "");
+    }
     return best;
 }
 
