@@ -6,9 +6,11 @@
  * class's derived verbs in its definitions (issue 17 phase 2) to 0.877 / 1.0, the house unchanged
  * at 0.912 / 1.0 (see docs/DESIGN.md). The issue's bar is 0.9 / 0.9: the house meets it, the
  * bookstore does not, and its floor below guards the measured figure against regressions, not
- * the bar.
- * Run with an argument (house | bookstore) to print every phrase of one table, and a query after
- * it to print its explanation. */
+ * the bar. The office table (phrases_office.json, issue 17's blind table: written with its world
+ * data/worlds/office.world by someone who had not read or run the encoder) is a measurement:
+ * printed with its misses, no bar asserted; first run 66/96 = 0.688 present, 31/32 absent.
+ * Run with an argument (house | bookstore | office) to print every phrase of one table, and a
+ * query after it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
 
@@ -275,10 +277,11 @@ int main(int argc, char **argv)
     RUN(test_bad_input);
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
-    const char *worlds[] = {"house", "bookstore"};
+    const char *worlds[] = {"house", "bookstore", "office"};
     const double floor_p1[] = {0.9, 0.87}, floor_absent[] = {0.9, 0.9};
-    for (int w = 0; w < 2; w++) {
+    for (int w = 0; w < 3; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
+        if (!strcmp(worlds[w], "office")) continue; /* the blind table: measured, printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
