@@ -8,7 +8,9 @@
  * participle under a stranded preposition ("something to write on": desk, not "a written work")
  * to 0.908 / 1.0, the house unchanged at 0.912 / 1.0 (see docs/DESIGN.md; every bookstore gain
  * was chosen knowing its misses). The floors below are the issue's bar, 0.9 / 0.9, for both.
- * Run with an argument (house | bookstore) to print every phrase of one table, and a query after
+ * The office table (phrases_office.json, written blind with data/worlds/office.world by someone
+ * who had not read or run the encoder) is a measurement: printed with its misses, no bar.
+ * Run with an argument (house | bookstore | office) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
@@ -276,10 +278,11 @@ int main(int argc, char **argv)
     RUN(test_bad_input);
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
-    const char *worlds[] = {"house", "bookstore"};
-    const double floor_p1[] = {0.9, 0.9}, floor_absent[] = {0.9, 0.9};
-    for (int w = 0; w < 2; w++) {
+    const char *worlds[] = {"house", "bookstore", "office"};
+    const double floor_p1[] = {0.9, 0.9, 0}, floor_absent[] = {0.9, 0.9, 0};
+    for (int w = 0; w < 3; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
+        if (!strcmp(worlds[w], "office")) continue; /* the blind table: measured, printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
