@@ -436,7 +436,8 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * the other classes of the scene, after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
  *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
- *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 2 dep(c) / (d + 2 dep(c))           c is a hypernym of h, d levels up: a laptop is a
+ *                                           computer however far down (no decay beyond WuP's)
  *     = 0.6                                 h (a commonly used sense) is a part of c
  *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
  * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
@@ -452,7 +453,9 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
  *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
  *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
- *   step at most). Location words (room, area) describe nothing.
+ *   step at most); when the description ends in a preposition ("something to write on": where
+ *   the verb is done) a verb found only as a past participle ("a written work": what it acts on)
+ *   counts DELTA times its weight. Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
  * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
  * "the area that looks like a kitchen") list the classes that define them: the region table's

@@ -2,7 +2,6 @@
  * nouns (synonym, hypernym, hyponym, part, related), modifiers, description words against the
  * classes' definitions, and the modifier-as-referent reading of compounds ("tv monitor"). The
  * formula is documented in semsplat/semantic.h; the constants are in lexical.h. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -60,8 +59,10 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
     return 0;
 }
 
-/* Best weight of word (its expansions) in a class's bag; why gets "word (source)". */
-static float bag_match(const lex_class *c, const expansion *e, const char *word, char *why, size_t cap)
+/* Best weight of word (its expansions) in a class's bag, patient entries scaled by pf; why gets
+ * "word (source)". */
+static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, char *why,
+                       size_t cap)
 {
     float best = 0;
     int src = -1;
@@ -70,23 +71,27 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
         int s = -1;
         /* one indirection at most: a synonym counts in the class's own definition only */
-        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, &s) * e->f[i];
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
-    if (best > 0 && why && src >= 0) snprintf(why, cap, "%s (%s)", word, c->bag.src[src]);
+    if (best > 0 && why && src >= 0) {
+        /* say when the match is the participle's, weakened by a stranded preposition */
+        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, NULL, 0) > best;
+        snprintf(why, cap, "%s (%s)%s", word, c->bag.src[src], weak ? " [participle: what it acts on]" : "");
+    }
     return best;
 }
 
-/* Gloss overlap G = sum_d w_d m_d / sum_d w_d. */
+/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
-                           const char (*words)[LEX_WORD], char *why, size_t cap)
+                           const char (*words)[LEX_WORD], float pf, char *why, size_t cap)
 {
     float num = 0, den = 0;
     size_t o = 0;
     if (why && cap) why[0] = 0;
     for (int i = 0; i < n; i++) {
         char one[256];
-        float m = bag_match(c, &exps[i], words[i], one, sizeof one);
+        float m = bag_match(c, &exps[i], words[i], pf, one, sizeof one);
         num += w[i] * m;
         den += w[i];
         if (m > 0 && why && o + 1 < cap) {
@@ -142,7 +147,7 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
     dc += 1;
     lex_tax r = t;
     if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
-    else if (dc == 0) r.score = powf(LEX_LAMBDA, (float)dq) * wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
+    else if (dc == 0) r.score = wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
     else r.score = LEX_MU * wup3(dep, dq, dc), r.kind = SP_LEX_RELATED;
     return r;
 }
@@ -269,17 +274,18 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
-        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], NULL, 0) > 0)
+        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0) > 0)
             use = LEX_MOD_USED;
         if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
     }
     char why[192] = "";
+    float pf = np->stranded ? LEX_PATIENT : 1.0f;
     if (has_head) {
         float s = base * fmod;
         if (np->n_desc) {
-            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, why, sizeof why);
+            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, why, sizeof why);
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
@@ -302,7 +308,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(e.w[0], WN_LEMMA_MAX, "%s", np->head);
             all[n] = e, w[n] = 1.0f, snprintf(words[n++], LEX_WORD, "%s", np->head);
         }
-        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, why, sizeof why);
+        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, why, sizeof why);
         m->score = g;
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);

@@ -2,12 +2,15 @@
  * the scorer was tuned): precision@1 on the present phrasings, rejection of the absent ones, with
  * the one threshold SP_LEX_THRESHOLD for both worlds; plus WordNet reader and morphy checks and
  * bad input. Tuned on the house; the bookstore was measured without retuning (precision@1 0.815,
- * absent 0.92), then three general rules found from its misses raised it to 0.862 / 1.0, and a
- * class's derived verbs in its definitions (issue 17 phase 2) to 0.877 / 1.0, the house unchanged
- * at 0.912 / 1.0 (see docs/DESIGN.md). The issue's bar is 0.9 / 0.9: the house meets it, the
- * bookstore does not, and its floor below guards the measured figure against regressions, not
- * the bar.
- * Run with an argument (house | bookstore) to print every phrase of one table, and a query after
+ * absent 0.92), then three general rules found from its misses raised it to 0.862 / 1.0, a
+ * class's derived verbs in its definitions (issue 17 phase 2) to 0.877 / 1.0, and in phase 3
+ * subsumption without depth decay (laptop -> computer) and the patient reading of a definition's
+ * participle under a stranded preposition ("something to write on": desk, not "a written work")
+ * to 0.908 / 1.0, the house unchanged at 0.912 / 1.0 (see docs/DESIGN.md; every bookstore gain
+ * was chosen knowing its misses). The floors below are the issue's bar, 0.9 / 0.9, for both.
+ * The office table (phrases_office.json, written blind with data/worlds/office.world by someone
+ * who had not read or run the encoder) is a measurement: printed with its misses, no bar.
+ * Run with an argument (house | bookstore | office) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
@@ -275,10 +278,11 @@ int main(int argc, char **argv)
     RUN(test_bad_input);
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
-    const char *worlds[] = {"house", "bookstore"};
-    const double floor_p1[] = {0.9, 0.87}, floor_absent[] = {0.9, 0.9};
-    for (int w = 0; w < 2; w++) {
+    const char *worlds[] = {"house", "bookstore", "office"};
+    const double floor_p1[] = {0.9, 0.9, 0}, floor_absent[] = {0.9, 0.9, 0};
+    for (int w = 0; w < 3; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
+        if (!strcmp(worlds[w], "office")) continue; /* the blind table: measured, printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
