@@ -269,8 +269,7 @@ static void test_bad_build(void)
  * by some views, one Gaussian across each face (as a reconstruction has them). The rays pass
  * beside them through the 5 cm cells they stand in, and their rendered surface points (each
  * Gaussian's depth), good to about a cell, often land in the cell beside; with veto_beside a
- * scan that hit a voxel beside one does not count as having seen through it. Returns the cells
- * the things overlap that are occupied, of *total. */
+ * scan that hit a voxel beside one does not count as having seen through it. */
 static const ns_box thin_things[] = {
     {{1.80f, 2.00f, 0.0f}, {1.83f, 2.03f, 0.45f}}, {{2.20f, 1.20f, 0.0f}, {2.23f, 1.23f, 0.45f}},
     {{4.00f, 2.00f, 0.0f}, {4.03f, 2.03f, 0.45f}}, {{3.80f, 2.80f, 0.0f}, {3.83f, 2.83f, 0.45f}},
@@ -278,20 +277,19 @@ static const ns_box thin_things[] = {
     {{1.40f, 1.50f, 0.0f}, {2.20f, 1.51f, 0.50f}}, {{4.60f, 1.80f, 0.0f}, {4.61f, 2.60f, 0.50f}}};
 #define N_THIN ((int)(sizeof thin_things / sizeof thin_things[0]))
 
-static int thin_occupied(const sp_costmap *cm, int *total)
+/* The cells boxes b[0..n) overlap that are occupied, of *total. */
+static int boxes_occupied(const sp_costmap *cm, const ns_box *b, int n, int *total)
 {
     int occ = 0;
     *total = 0;
-    for (int k = 0; k < N_THIN; k++) {
-        const ns_box *b = &thin_things[k];
+    for (int k = 0; k < n; k++)
         for (int iy = 0; iy < cm->ny; iy++)
             for (int ix = 0; ix < cm->nx; ix++) {
                 float x0 = cm->origin[0] + ix * cm->res - NS_OFFX, y0 = cm->origin[1] + iy * cm->res - NS_OFFY;
-                if (!ns_overlap(b, x0, y0, x0 + cm->res, y0 + cm->res)) continue;
+                if (!ns_overlap(&b[k], x0, y0, x0 + cm->res, y0 + cm->res)) continue;
                 (*total)++;
                 occ += cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_OCCUPIED;
             }
-    }
     return occ;
 }
 
@@ -311,7 +309,7 @@ static void test_thin_things(void)
         sp_costmap_opts o = sp_costmap_opts_default();
         o.veto_beside = beside;
         build_room_at(&cm, &o, 160, 120);
-        occ[beside] = thin_occupied(&cm, &total);
+        occ[beside] = boxes_occupied(&cm, thin_things, N_THIN, &total);
         fprintf(stderr, "thin things (veto_beside %d): %d of %d cells occupied\n", beside, occ[beside], total);
         CHECK_MSG(!beside || occ[beside] == total, "%d of the %d cells under thin things are not occupied",
                   total - occ[beside], total);
@@ -328,20 +326,6 @@ static void test_thin_things(void)
  * window frame). Haze over the floor (faint Gaussians up to 12 cm, a CPU-trained floor) widens
  * the rendered floor and the measured tolerance with it. */
 static const ns_box sill = {{3.8f, 2.40f, 0.0f}, {5.0f, 2.44f, 0.09f}};
-
-static int sill_occupied(const sp_costmap *cm, int *total)
-{
-    int occ = 0;
-    *total = 0;
-    for (int iy = 0; iy < cm->ny; iy++)
-        for (int ix = 0; ix < cm->nx; ix++) {
-            float x0 = cm->origin[0] + ix * cm->res - NS_OFFX, y0 = cm->origin[1] + iy * cm->res - NS_OFFY;
-            if (!ns_overlap(&sill, x0, y0, x0 + cm->res, y0 + cm->res)) continue;
-            (*total)++;
-            occ += cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_OCCUPIED;
-        }
-    return occ;
-}
 
 static void add_haze(sp_splat *s, size_t *n, size_t cap)
 {
@@ -377,7 +361,7 @@ static void test_floor_tolerance(void)
         sp_costmap_opts o = sp_costmap_opts_default();
         o.measure_floor_tolerance = measure;
         build_room_at(&cm, &o, 160, 120);
-        occ[measure] = sill_occupied(&cm, &total);
+        occ[measure] = boxes_occupied(&cm, &sill, 1, &total);
         tol[measure] = cm.opts.floor_tolerance_m;
         fprintf(stderr, "sill (measure_floor_tolerance %d, tolerance %.2f m): %d of %d cells occupied\n", measure,
                 tol[measure], occ[measure], total);
