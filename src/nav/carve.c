@@ -379,30 +379,73 @@ static int carving_splat(const sp_splat *s, const sp_camera *cams, size_t n, flo
  * the renderer's projection of each of them is what rendering costs at carving sizes. */
 #define CULL_EXTENT 3.34f
 #define CULL_NEAR 0.009f  /* the renderer's near plane is 0.01 m */
-static size_t cull_view(const sp_splat *src, const float *sigma_max, const sp_camera *cam, sp_splat *dst)
+#define CULL_CHUNKS 64    /* the culling's parallel chunks */
+typedef struct cull_job {
+    const sp_splat *src;
+    const float *sigma_max;
+    const sp_camera *cam;
+    float eps;
+    sp_splat *dst;
+    size_t chunk;                 /* Gaussians per chunk */
+    size_t count[CULL_CHUNKS + 1]; /* kept per chunk, then (prefix) where each chunk's go */
+} cull_job;
+
+static inline int cull_keeps(const cull_job *c, size_t i)
 {
-    const float *R = cam->R, *t = cam->t;
-    const float fx = cam->fx, fy = cam->fy, cx = cam->cx, cy = cam->cy, W = (float)cam->width, H = (float)cam->height;
-    const float eps = sp_raster_cfg_default().eps2d;
-    size_t m = 0;
-    for (size_t i = 0; i < src->n; i++) {
-        const float *p = src->means + 3 * i;
-        float z = R[6] * p[0] + R[7] * p[1] + R[8] * p[2] + t[2];
-        if (!(z >= CULL_NEAR)) continue;
-        float x = R[0] * p[0] + R[1] * p[1] + R[2] * p[2] + t[0];
-        float y = R[3] * p[0] + R[4] * p[1] + R[5] * p[2] + t[1];
-        float iz = 1.0f / z, u = fx * x * iz + cx, v = fy * y * iz + cy;
-        float j2 = ((fx * fx + fy * fy) + (fx * fx * x * x + fy * fy * y * y) * iz * iz) * iz * iz;
-        float r = CULL_EXTENT * sqrtf(j2 * sigma_max[i] * sigma_max[i] + eps) + 2.0f;
-        if (u + r <= 0.f || u - r >= W || v + r <= 0.f || v - r >= H) continue;
-        memcpy(dst->means + 3 * m, p, 3 * sizeof(float));
+    const sp_camera *cam = c->cam;
+    const float *R = cam->R, *t = cam->t, *p = c->src->means + 3 * i;
+    float z = R[6] * p[0] + R[7] * p[1] + R[8] * p[2] + t[2];
+    if (!(z >= CULL_NEAR)) return 0;
+    float x = R[0] * p[0] + R[1] * p[1] + R[2] * p[2] + t[0];
+    float y = R[3] * p[0] + R[4] * p[1] + R[5] * p[2] + t[1];
+    float fx = cam->fx, fy = cam->fy, iz = 1.0f / z, u = fx * x * iz + cam->cx, v = fy * y * iz + cam->cy;
+    float j2 = ((fx * fx + fy * fy) + (fx * fx * x * x + fy * fy * y * y) * iz * iz) * iz * iz;
+    float r = CULL_EXTENT * sqrtf(j2 * c->sigma_max[i] * c->sigma_max[i] + c->eps) + 2.0f;
+    return !(u + r <= 0.f || u - r >= (float)cam->width || v + r <= 0.f || v - r >= (float)cam->height);
+}
+
+static void cull_count(void *ctx, long k, int thread_id)
+{
+    (void)thread_id;
+    cull_job *c = ctx;
+    size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < c->src->n ? i0 + c->chunk : c->src->n, m = 0;
+    for (size_t i = i0; i < i1; i++) m += (size_t)cull_keeps(c, i);
+    c->count[k] = m;
+}
+
+static void cull_copy(void *ctx, long k, int thread_id)
+{
+    (void)thread_id;
+    cull_job *c = ctx;
+    const sp_splat *src = c->src;
+    sp_splat *dst = c->dst;
+    size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < src->n ? i0 + c->chunk : src->n, m = c->count[k];
+    for (size_t i = i0; i < i1; i++) {
+        if (!cull_keeps(c, i)) continue;
+        memcpy(dst->means + 3 * m, src->means + 3 * i, 3 * sizeof(float));
         memcpy(dst->quats + 4 * m, src->quats + 4 * i, 4 * sizeof(float));
         memcpy(dst->log_scales + 3 * m, src->log_scales + 3 * i, 3 * sizeof(float));
         dst->opacity_logits[m] = src->opacity_logits[i];
         m++;
     }
-    dst->n = m;
-    return m;
+}
+
+/* In parallel over chunks: count, then copy each chunk's kept Gaussians to its place (the test
+ * is cheaper to repeat than to store). */
+static size_t cull_view(sp_pool *pool, const sp_splat *src, const float *sigma_max, const sp_camera *cam, sp_splat *dst)
+{
+    cull_job c = {src, sigma_max, cam, sp_raster_cfg_default().eps2d, dst, (src->n + CULL_CHUNKS - 1) / CULL_CHUNKS, {0}};
+    if (c.chunk == 0) return dst->n = 0;
+    long n_chunks = (long)((src->n + c.chunk - 1) / c.chunk);
+    sp_pool_for(pool, n_chunks, cull_count, &c);
+    size_t at = 0;
+    for (long k = 0; k < n_chunks; k++) {
+        size_t m = c.count[k];
+        c.count[k] = at, at += m;
+    }
+    sp_pool_for(pool, n_chunks, cull_copy, &c);
+    dst->n = at;
+    return at;
 }
 
 /* Crops a carving view to the rows that can tell the band anything. From a camera above the
@@ -604,7 +647,7 @@ static int render_views(const sp_splat *host, const float *sigma_max, sp_scene *
     sp_progress_begin(&pr, log, "carve", (long)n, "views");
     for (size_t k = 0; k < n && !rc; k++) {
         if (!render[k]) continue;
-        size_t m = cull_view(host, sigma_max, &views[k], sub);
+        size_t m = cull_view(sp_device_pool(sp_raster_device(r)), host, sigma_max, &views[k], sub);
         *drawn += m;
         if (m == 0) { /* nothing in view: no surface anywhere */
             memset(depth[k], 0, sizeof(float) * (size_t)views[k].width * (size_t)views[k].height);
