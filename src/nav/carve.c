@@ -387,7 +387,7 @@ typedef struct cull_job {
     float eps;
     sp_splat *dst;
     size_t chunk;                 /* Gaussians per chunk */
-    size_t count[CULL_CHUNKS + 1]; /* kept per chunk, then (prefix) where each chunk's go */
+    size_t count[CULL_CHUNKS];    /* kept per chunk */
 } cull_job;
 
 static inline int cull_keeps(const cull_job *c, size_t i)
@@ -404,22 +404,14 @@ static inline int cull_keeps(const cull_job *c, size_t i)
     return !(u + r <= 0.f || u - r >= (float)cam->width || v + r <= 0.f || v - r >= (float)cam->height);
 }
 
-static void cull_count(void *ctx, long k, int thread_id)
-{
-    (void)thread_id;
-    cull_job *c = ctx;
-    size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < c->src->n ? i0 + c->chunk : c->src->n, m = 0;
-    for (size_t i = i0; i < i1; i++) m += (size_t)cull_keeps(c, i);
-    c->count[k] = m;
-}
-
-static void cull_copy(void *ctx, long k, int thread_id)
+/* Chunk k's kept Gaussians to dst from the chunk's own start (so chunks never overlap). */
+static void cull_chunk(void *ctx, long k, int thread_id)
 {
     (void)thread_id;
     cull_job *c = ctx;
     const sp_splat *src = c->src;
     sp_splat *dst = c->dst;
-    size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < src->n ? i0 + c->chunk : src->n, m = c->count[k];
+    size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < src->n ? i0 + c->chunk : src->n, m = i0;
     for (size_t i = i0; i < i1; i++) {
         if (!cull_keeps(c, i)) continue;
         memcpy(dst->means + 3 * m, src->means + 3 * i, 3 * sizeof(float));
@@ -428,22 +420,28 @@ static void cull_copy(void *ctx, long k, int thread_id)
         dst->opacity_logits[m] = src->opacity_logits[i];
         m++;
     }
+    c->count[k] = m - i0;
 }
 
-/* In parallel over chunks: count, then copy each chunk's kept Gaussians to its place (the test
- * is cheaper to repeat than to store). */
+/* In parallel over chunks, each into its own stretch of dst (which holds all of src), then the
+ * stretches moved together in order. */
 static size_t cull_view(sp_pool *pool, const sp_splat *src, const float *sigma_max, const sp_camera *cam, sp_splat *dst)
 {
     cull_job c = {src, sigma_max, cam, sp_raster_cfg_default().eps2d, dst, (src->n + CULL_CHUNKS - 1) / CULL_CHUNKS, {0}};
     if (c.chunk == 0) return dst->n = 0;
     long n_chunks = (long)((src->n + c.chunk - 1) / c.chunk);
-    sp_pool_for(pool, n_chunks, cull_count, &c);
+    sp_pool_for(pool, n_chunks, cull_chunk, &c);
     size_t at = 0;
     for (long k = 0; k < n_chunks; k++) {
-        size_t m = c.count[k];
-        c.count[k] = at, at += m;
+        size_t from = (size_t)k * c.chunk, m = c.count[k];
+        if (from != at && m) {
+            memmove(dst->means + 3 * at, dst->means + 3 * from, 3 * m * sizeof(float));
+            memmove(dst->quats + 4 * at, dst->quats + 4 * from, 4 * m * sizeof(float));
+            memmove(dst->log_scales + 3 * at, dst->log_scales + 3 * from, 3 * m * sizeof(float));
+            memmove(dst->opacity_logits + at, dst->opacity_logits + from, m * sizeof(float));
+        }
+        at += m;
     }
-    sp_pool_for(pool, n_chunks, cull_copy, &c);
     dst->n = at;
     return at;
 }
