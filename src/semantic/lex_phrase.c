@@ -27,7 +27,9 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
         if (lex_word_class_of(in->w[i]) == LW_CONTENT) {
             for (int k = 4; k >= 2 && !took; k--) {
                 int last = i + k <= in->n ? lex_word_class_of(in->w[i + k - 1]) : -1;
-                if (last != LW_CONTENT && last != LW_PARTITIVE) continue; /* "tv set" */
+                /* a collocation may end in a partitive ("tv set") or in a function word that is
+                 * also a noun ("trash can", "watering can"): WordNet's entry decides */
+                if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) continue;
                 char joined[4 * LEX_WORD];
                 size_t o = 0;
                 for (int j = 0; j < k; j++)
