@@ -65,7 +65,7 @@ void lex_np_free(lex_np *np)
  * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
  * the first sense always; physical_only drops the non-physical ones. */
 static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
-                       lex_np *np, sp_error *err)
+                       int no_person, lex_np *np, sp_error *err)
 {
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = lex_bases(lx, WN_NOUN, lemma, b, err);
@@ -92,6 +92,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
             tmp->attested = i == 0 || i < tagged;
             if (physical_only && !lex_sense_physical(tmp)) continue;
+            if (no_person && lex_sense_person(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
     }
@@ -148,12 +149,15 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
             h = right;
         }
     }
-    rc = load_senses(lx, h, physical_only, physical_only, np, err);
+    /* A class is a thing standing in the scene: a person sense ("monitor" the supervisor,
+     * "printer" the tradesman) only when the name has no other physical one. */
+    rc = load_senses(lx, h, physical_only, physical_only, physical_only, np, err);
     if (!rc && physical_only && np->n_senses == 0) {
         np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
-        rc = load_senses(lx, h, 1, 0, np, err);
+        rc = load_senses(lx, h, 1, 0, 1, np, err);
+        if (!rc && np->n_senses == 0) rc = load_senses(lx, h, 1, 0, 0, np, err);
     }
-    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, np, err);
+    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, 0, np, err);
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = rc ? 0 : lex_bases(lx, WN_NOUN, h, b, err);
     if (nb < 0) return nb;
