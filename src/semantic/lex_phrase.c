@@ -180,6 +180,7 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
             k++;
             continue;
         }
+        if (cls == LW_PARTITIVE) cls = LW_CONTENT; /* without "of" a word like any: "to TYPE on" */
         if (cls == LW_CLAUSE || cls == LW_PREP) {
             /* a preposition closing a description: "something to write on" */
             if (cls == LW_PREP && np->n_desc > 0 && k == to - 1) np->stranded = 1;
