@@ -100,6 +100,32 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
     return rc;
 }
 
+/* A query word whose senses are all groups of the taxonomy ("ficus", the genus) stands for its
+ * members (WordNet's member meronyms, "%m": the fig tree, the rubber plant): they are added as
+ * further senses. */
+static int add_members(const lex_db *lx, lex_np *np, sp_error *err)
+{
+    for (int i = 0; i < np->n_senses; i++)
+        if (lex_sense_physical(&np->senses[i])) return 0;
+    lex_sense *tmp = malloc(sizeof *tmp);
+    if (!tmp) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0, n = np->n_senses;
+    for (int i = 0; i < n && !rc && np->n_senses < LEX_MAX_SENSES; i++) {
+        wn_synset syn;
+        if ((rc = wn_read(lx->db, (wn_id){np->senses[i].off, WN_NOUN}, &syn, err))) break;
+        for (int p = 0; p < syn.n_pointers && !rc && np->n_senses < LEX_MAX_SENSES; p++) {
+            const wn_pointer *pt = &syn.pointers[p];
+            if (strcmp(pt->symbol, "%m") || pt->target.pos != WN_NOUN) continue;
+            if (!(rc = lex_sense_load(lx, pt->target.offset, np->senses[i].rank, tmp, err)) &&
+                lex_sense_physical(tmp))
+                np->senses[np->n_senses++] = *tmp;
+        }
+        wn_synset_free(&syn);
+    }
+    free(tmp);
+    return rc;
+}
+
 /* A closed compound WordNet lacks ("nightstand"): the longest noun it ends in whose rest is a
  * noun or an adjective ("night" + "stand"). Returns 1 and both parts when found. */
 static int split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
@@ -158,6 +184,7 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         if (!rc && np->n_senses == 0) rc = load_senses(lx, h, 1, 0, 0, np, err);
     }
     if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, 0, np, err);
+    if (!rc && !physical_only) rc = add_members(lx, np, err);
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = rc ? 0 : lex_bases(lx, WN_NOUN, h, b, err);
     if (nb < 0) return nb;
