@@ -434,8 +434,8 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * two", "WHAT tells the time").
  * Per class c, the confidence in 0..1 is, from the head h (all its senses; a word whose senses
  * are all taxonomic groups, "ficus", also its members' senses) and the class's head (its
- * physical senses that the tagged corpora attest, persons left out when the name has another
- * physical sense; when none, its physical senses closest to the other classes of the scene,
+ * physical senses that the tagged corpora attest, persons left out when the name also names an
+ * artifact; when none, its physical senses closest to the other classes of the scene,
  * after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
  *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)

@@ -175,13 +175,18 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
             h = right;
         }
     }
-    /* A class is a thing standing in the scene: a person sense ("monitor" the supervisor,
-     * "printer" the tradesman) only when the name has no other physical one. */
-    rc = load_senses(lx, h, physical_only, physical_only, physical_only, np, err);
+    /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
+     * "printer" the tradesman) when the name also names an artifact ("person" keeps its own). */
+    int no_person = 0;
+    rc = 0;
+    if (physical_only) {
+        rc = load_senses(lx, h, 1, 0, 0, np, err);
+        for (int i = 0; !rc && i < np->n_senses; i++) no_person |= lex_sense_artifact(&np->senses[i]);
+    }
+    if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
     if (!rc && physical_only && np->n_senses == 0) {
         np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
-        rc = load_senses(lx, h, 1, 0, 1, np, err);
-        if (!rc && np->n_senses == 0) rc = load_senses(lx, h, 1, 0, 0, np, err);
+        rc = load_senses(lx, h, 1, 0, no_person, np, err);
     }
     if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, 0, np, err);
     if (!rc && !physical_only) rc = add_members(lx, np, err);

@@ -202,6 +202,12 @@ static void test_phase4_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "a writer", res), ""));
     /* 13: a genus stands for its members */
     CHECK(!strcmp(found_class(v, "ficus", res), "plant"));
+    sp_lex_vocab_free(v);
+    /* ... but a name that names no artifact keeps its persons */
+    const char *people[] = {"person", "sofa"};
+    v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, people, 2, NULL, &err), &err);
+    if (v) CHECK(!strcmp(found_class(v, "someone", res), "person"));
     free(res);
     sp_lex_vocab_free(v);
 }
