@@ -455,8 +455,9 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
  *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
  *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
- *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
- *   step at most); when the description ends in a preposition ("something to write on": where
+ *   and 0.8 for a lemma of d's commonest sense, or a noun WordNet derives from that sense when
+ *   it is a verb (type -> typewriter), found in the class's own definition (one weak step at
+ *   most); when the description ends in a preposition ("something to write on": where
  *   the verb is done) a verb found only as a past participle ("a written work": what it acts on)
  *   counts DELTA times its weight. Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores

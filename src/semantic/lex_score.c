@@ -54,7 +54,23 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
             for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
             if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
         }
+        /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
+         * typewriter, store -> storage), the same one weak step */
+        for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
+            const wn_pointer *pt = &s.pointers[k];
+            if (strcmp(pt->symbol, "+") || pt->target.pos != WN_NOUN || !pt->target_word) continue;
+            wn_synset ns;
+            if ((rc = wn_read(lx->db, pt->target, &ns, err))) break;
+            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_')) {
+                char w[WN_LEMMA_MAX];
+                snprintf(w, sizeof w, "%s", ns.words[pt->target_word - 1]);
+                for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+                exp_add(e, w, LEX_SYN);
+            }
+            wn_synset_free(&ns);
+        }
         wn_synset_free(&s);
+        if (rc) return rc;
     }
     return 0;
 }

@@ -10,8 +10,8 @@
  * was chosen knowing its misses). The floors below are the issue's bar, 0.9 / 0.9, for both.
  * The office table (phrases_office.json, written blind with data/worlds/office.world by someone
  * who had not read or run the encoder) measured 0.688 / 0.969 on first run; since phase 4 it is
- * development data (its misses were read and their general causes fixed: 0.844 / 0.969, the house
- * 0.925, the bookstore 0.908), so its floor, 0.84 / 0.9, only guards against regressions.
+ * development data (its misses were read and their general causes fixed: 0.854 / 0.969, the house
+ * 0.925, the bookstore 0.908), so its floor, 0.85 / 0.9, only guards against regressions.
  * Run with an argument (house | bookstore | office) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
@@ -332,8 +332,8 @@ int main(int argc, char **argv)
     test_phase4_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
-     * were read), so its floor only guards against regressions (81/96 when it was set) */
-    const double floor_p1[] = {0.9, 0.9, 0.84}, floor_absent[] = {0.9, 0.9, 0.9};
+     * were read), so its floor only guards against regressions (82/96 when it was set) */
+    const double floor_p1[] = {0.9, 0.9, 0.85}, floor_absent[] = {0.9, 0.9, 0.9};
     for (int w = 0; w < 3; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
