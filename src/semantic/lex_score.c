@@ -386,6 +386,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (a > m->score) {
             m->score = a;
             m->kind = SP_LEX_GLOSS;
+            m->path[0] = 0; /* the taxonomy's comparison lost: not the evidence */
             snprintf(m->gloss_words, sizeof m->gloss_words, "agent noun: %s", awhy);
             if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
             for (int i = 0; mod_use && i < np->n_mods - np->split; i++)
