@@ -54,7 +54,23 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
             for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
             if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
         }
+        /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
+         * typewriter, store -> storage), the same one weak step */
+        for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
+            const wn_pointer *pt = &s.pointers[k];
+            if (strcmp(pt->symbol, "+") || pt->target.pos != WN_NOUN || !pt->target_word) continue;
+            wn_synset ns;
+            if ((rc = wn_read(lx->db, pt->target, &ns, err))) break;
+            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_')) {
+                char w[WN_LEMMA_MAX];
+                snprintf(w, sizeof w, "%s", ns.words[pt->target_word - 1]);
+                for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+                exp_add(e, w, LEX_SYN);
+            }
+            wn_synset_free(&ns);
+        }
         wn_synset_free(&s);
+        if (rc) return rc;
     }
     return 0;
 }
@@ -201,7 +217,54 @@ typedef struct {
     lex_np ref[8]; /* modifier (or first part of a joined head) read as a noun of its own */
     int n_ref;
     char ref_word[8][LEX_WORD];
+    int n_agent;   /* verbs the head is the agent noun of ("dispenser" <- dispense) */
+    char agent[4][WN_LEMMA_MAX];
+    float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
 } query_prep;
+
+/* 1 when noun is an agent noun of verb: the verb's stem (a final 'e' dropped) followed by -er,
+ * -or or -ar, a consonant doubled ("dispenser" <- dispense, "projector" <- project, "shredder" <-
+ * shred). */
+static int agent_of(const char *noun, const char *verb)
+{
+    size_t nv = strlen(verb), nn = strlen(noun);
+    if (nv > 1 && verb[nv - 1] == 'e') nv--;
+    if (nn < nv + 2 || strncmp(noun, verb, nv)) return 0;
+    const char *rest = noun + nv;
+    if (rest[0] == verb[nv - 1] && strlen(rest) == 3) rest++; /* doubled consonant */
+    return !strcmp(rest, "er") || !strcmp(rest, "or") || !strcmp(rest, "ar");
+}
+
+/* The verbs a query head names the doer of: WordNet's derivational links ("+") from the head's
+ * physical senses that are not persons to verbs whose lemma it is the agent noun of. */
+static int agent_verbs(const lex_db *lx, const lex_np *np, query_prep *qp, sp_error *err)
+{
+    qp->n_agent = 0;
+    if (!np->head[0] || np->placeholder || strchr(np->head, '_')) return 0;
+    for (int i = 0; i < np->n_senses; i++) {
+        /* an object that does it: a person ("writer", "keeper") is no object of the scene */
+        if (!lex_sense_physical(&np->senses[i]) || lex_sense_person(&np->senses[i])) continue;
+        wn_synset s;
+        int rc = wn_read(lx->db, (wn_id){np->senses[i].off, WN_NOUN}, &s, err);
+        if (rc) return rc;
+        for (int p = 0; p < s.n_pointers && !rc; p++) {
+            const wn_pointer *pt = &s.pointers[p];
+            if (strcmp(pt->symbol, "+") || pt->target.pos != WN_VERB) continue;
+            wn_synset vs;
+            if ((rc = wn_read(lx->db, pt->target, &vs, err))) break;
+            int k = pt->target_word ? pt->target_word - 1 : 0;
+            if (k < vs.n_words && agent_of(np->head, vs.words[k]) && qp->n_agent < 4) {
+                int dup = 0;
+                for (int j = 0; j < qp->n_agent; j++) dup |= !strcmp(qp->agent[j], vs.words[k]);
+                if (!dup) snprintf(qp->agent[qp->n_agent++], WN_LEMMA_MAX, "%s", vs.words[k]);
+            }
+            wn_synset_free(&vs);
+        }
+        wn_synset_free(&s);
+        if (rc) return rc;
+    }
+    return 0;
+}
 
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
@@ -215,6 +278,9 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         rc = expand(lx, np->mods[i], &qp->mod_exp[i], err);
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+    if (!rc) rc = agent_verbs(lx, np, qp, err);
+    if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
+    for (int i = 0; i < np->n_mods && !rc && qp->n_agent; i++) rc = lex_word_weight(lx, np->mods[i], &qp->mod_w[i], err);
     /* Candidates for the modifier-as-referent reading: modifiers, and the leading words of a
      * joined head ("tv" of "tv_monitor"), that are words of this scene's class names. */
     char cand[8][LEX_WORD];
@@ -238,6 +304,30 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         else lex_np_free(r);
     }
     return rc;
+}
+
+/* The agent reading of a head ("water dispenser"): a class whose own definition says it does the
+ * verb (base or -ing form, not the past participle: "pictures can be PROJECTED" is no projector)
+ * is one weak step (DELTA) away, times the share of the query's modifiers its definitions name.
+ * Returns the score; why gets the evidence, used[i] whether modifier i was found. */
+static float agent_score(const lex_class *c, const lex_np *np, const query_prep *qp, int *used, char *why,
+                         size_t cap)
+{
+    int src = -1;
+    for (int a = 0; a < qp->n_agent && src < 0; a++) {
+        char one[1][WN_LEMMA_MAX];
+        snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, &src) <= 0) src = -1;
+        else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
+    }
+    if (src < 0) return 0;
+    float num = qp->agent_w, den = qp->agent_w;
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0);
+        used[i] = m > 0;
+        num += qp->mod_w[i] * m, den += qp->mod_w[i];
+    }
+    return LEX_DELTA * num / den;
 }
 
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
@@ -290,6 +380,18 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
         m->score = s;
+        int used[8] = {0};
+        char awhy[192] = "";
+        float a = qp->n_agent ? agent_score(c, np, qp, used, awhy, sizeof awhy) : 0;
+        if (a > m->score) {
+            m->score = a;
+            m->kind = SP_LEX_GLOSS;
+            m->path[0] = 0; /* the taxonomy's comparison lost: not the evidence */
+            snprintf(m->gloss_words, sizeof m->gloss_words, "agent noun: %s", awhy);
+            if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+            for (int i = 0; mod_use && i < np->n_mods - np->split; i++)
+                if (used[i]) mod_use[i] = LEX_MOD_USED;
+        }
     } else {
         /* Description only: every content word counts against the definitions. */
         expansion all[24];

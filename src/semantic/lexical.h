@@ -93,6 +93,10 @@ typedef struct lex_sense {
 int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_error *err);
 /* 1 when the sense is a physical entity (under physical_entity.n.01). */
 int lex_sense_physical(const lex_sense *s);
+/* 1 when the sense is a person (under person.n.01: "monitor" the supervisor). */
+int lex_sense_person(const lex_sense *s);
+/* 1 when the sense is an artifact (under artifact.n.01). */
+int lex_sense_artifact(const lex_sense *s);
 /* Index of off in s's closure, or -1. */
 int lex_anc_find(const lex_sense *s, uint32_t off);
 /* The hypernym path from s up to its closure entry a: "s > ... > a". */
