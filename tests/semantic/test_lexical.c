@@ -12,7 +12,10 @@
  * who had not read or run the encoder) measured 0.688 / 0.969 on first run; since phase 4 it is
  * development data (its misses were read and their general causes fixed: 0.854 / 0.969, the house
  * 0.925, the bookstore 0.908), so its floor, 0.85 / 0.9, only guards against regressions.
- * Run with an argument (house | bookstore | office) to print every phrase of one table, and a query after
+ * The ward table (phrases_ward.json, data/worlds/ward.world: a hospital ward, written blind by
+ * someone who had not read or run the encoder, and first run by the lead on the phase-4 encoder)
+ * is the blind measurement now: 81/121 = 0.669 present, 27/32 = 0.844 absent; printed, no bar.
+ * Run with an argument (house | bookstore | office | ward) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
@@ -330,12 +333,13 @@ int main(int argc, char **argv)
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
     test_phase4_rules(lx);
-    const char *worlds[] = {"house", "bookstore", "office"};
+    const char *worlds[] = {"house", "bookstore", "office", "ward"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
      * were read), so its floor only guards against regressions (82/96 when it was set) */
     const double floor_p1[] = {0.9, 0.9, 0.85}, floor_absent[] = {0.9, 0.9, 0.9};
-    for (int w = 0; w < 3; w++) {
+    for (int w = 0; w < 4; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
+        if (!strcmp(worlds[w], "ward")) continue; /* the blind table: measured and printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
