@@ -219,6 +219,20 @@ static int bench_dense(sp_clip *c, const char *dev_name, const char *prec, int n
     return rc;
 }
 
+/* image batch 128 and text batch 256 under each of n variants (clip_gpu_set_flags) */
+struct bench_variant { int flags; const char *suffix; };
+static void bench_variants(sp_clip *c, const char *name, const char *prec, const struct bench_variant *vs, int n)
+{
+    for (int v = 0; v < n; v++) {
+        clip_gpu_set_flags(c, vs[v].flags);
+        variant = vs[v].suffix;
+        bench_images(c, name, prec, 128, 2);
+        bench_text(c, name, prec, 256);
+        clip_gpu_set_flags(c, 0);
+        variant = "";
+    }
+}
+
 int main(int argc, char **argv)
 {
     int cpu = 1, gpu = 1, dense_cpu = 0, variants = 0, ncu = 0;
@@ -293,30 +307,18 @@ int main(int argc, char **argv)
             bench_stages(c, "image", prec, 128);
             bench_stages(c, "text", prec, 256);
             bench_dense(c, name, prec, 10);
-            /* the same without cuBLASLt epilogues, without the fused attention (--variants 2: also
-             * each alone), with the tiled fused kernel instead of the sequence-resident one */
-            static const struct { int flags; const char *suffix; } vs[] = {
-                {CLIP_GPU_FLASH_V1, "_flashv1"}, {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"},
-                {CLIP_GPU_NO_LT, "_nolt"}, {CLIP_GPU_NO_FLASH, "_noflash"}};
-            /* the MLP, the whole blocks, or both in L2-sized slabs (both precisions) */
-            static const struct { int flags; const char *suffix; } sl[] = {
+            /* the same in L2-sized slabs (the MLP, the whole blocks, both; both precisions), without
+             * cuBLASLt epilogues, without the fused attention (--variants 2: also each alone),
+             * with the tiled fused kernel instead of the sequence-resident one */
+            static const struct bench_variant vs[] = {
                 {CLIP_GPU_MLP_SLABS, "_mlpslabs"}, {CLIP_GPU_BLOCK_SLABS, "_blockslabs"},
-                {CLIP_GPU_MLP_SLABS | CLIP_GPU_BLOCK_SLABS, "_bothslabs"}};
-            for (int v = 0; v < 3 && variants; v++) {
-                clip_gpu_set_flags(c, sl[v].flags);
-                variant = sl[v].suffix;
-                bench_images(c, name, prec, 128, 2);
-                bench_text(c, name, prec, 256);
-                clip_gpu_set_flags(c, 0);
-                variant = "";
-            }
-            for (int v = half ? 0 : 2; v < (variants > 1 ? 4 : 2) && variants; v++) {
-                clip_gpu_set_flags(c, vs[v].flags);
-                variant = vs[v].suffix;
-                bench_images(c, name, prec, 128, 2);
-                bench_text(c, name, prec, 256);
-                clip_gpu_set_flags(c, 0);
-                variant = "";
+                {CLIP_GPU_MLP_SLABS | CLIP_GPU_BLOCK_SLABS, "_bothslabs"}, {CLIP_GPU_FLASH_V1, "_flashv1"},
+                {CLIP_GPU_NO_LT | CLIP_GPU_NO_FLASH, "_nolt_noflash"}, {CLIP_GPU_NO_LT, "_nolt"},
+                {CLIP_GPU_NO_FLASH, "_noflash"}};
+            if (variants) {
+                bench_variants(c, name, prec, vs, 3);
+                if (half) bench_variants(c, name, prec, vs + 3, variants > 1 ? 4 : 2);
+                else if (variants > 1) bench_variants(c, name, prec, vs + 5, 2);
             }
         }
         sp_clip_free(c);
