@@ -108,10 +108,19 @@ static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_er
         if (nb < 0) return nb;
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
+    /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
+     * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
+     * so the class is one level below its head and another kind of the head is its sibling.
+     * A known adjective ("potted plant") describes the head and leaves the class at its level. */
     for (int i = 0; i < c->np.n_mods && !rc; i++) {
-        int noun = lex_is_pos(lx, WN_NOUN, c->np.mods[i], err);
-        if (noun < 0) return noun;
-        c->spec |= noun;
+        int known = 0;
+        for (int p = 0; p < WN_NPOS && !known; p++) {
+            int is = lex_is_pos(lx, (wn_pos)p, c->np.mods[i], err);
+            if (is < 0) return is;
+            known = is;
+            if (is && p == WN_NOUN) c->spec = 1;
+        }
+        if (!known) c->spec = 1;
     }
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
