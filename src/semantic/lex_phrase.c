@@ -128,7 +128,7 @@ static int add_members(const lex_db *lx, lex_np *np, sp_error *err)
 
 /* A closed compound WordNet lacks ("nightstand"): the longest noun it ends in whose rest is a
  * noun or an adjective ("night" + "stand"). Returns 1 and both parts when found. */
-static int split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
+int lex_split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
 {
     size_t n = strlen(w);
     for (size_t k = 3; k + 3 <= n; k++) {
@@ -155,7 +155,7 @@ static int noun_like(const lex_db *lx, const char *w, sp_error *err)
 {
     char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
     int rc = lex_is_pos(lx, WN_NOUN, w, err);
-    return rc != 0 ? rc : split_compound(lx, w, l, r, err);
+    return rc != 0 ? rc : lex_split_compound(lx, w, l, r, err);
 }
 
 /* The head's senses; a split compound's first part becomes the last modifier. Queries keep
@@ -168,7 +168,7 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     if (rc < 0) return rc;
     const char *h = w;
     if (!rc) {
-        if ((rc = split_compound(lx, w, left, right, err)) < 0) return rc;
+        if ((rc = lex_split_compound(lx, w, left, right, err)) < 0) return rc;
         if (rc == 1) {
             if (np->n_mods < 8) snprintf(np->mods[np->n_mods++], LEX_WORD, "%s", left);
             np->split = 1;

@@ -363,6 +363,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         }
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
+        for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
+            if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0) > 0)
             use = LEX_MOD_USED;

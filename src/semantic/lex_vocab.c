@@ -120,7 +120,17 @@ static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_er
             known = is;
             if (is && p == WN_NOUN) c->spec = 1;
         }
-        if (!known) c->spec = 1;
+        if (known) continue;
+        c->spec = 1;
+        /* its parts, when it is a closed compound ("overbed" = over + bed), agree with a query
+         * modifier: "bed table" is the overbed table */
+        char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
+        int sp = lex_split_compound(lx, c->np.mods[i], l, r, err);
+        if (sp < 0) return sp;
+        if (sp && c->n_part + 2 <= 4) {
+            snprintf(c->part[c->n_part++], LEX_WORD, "%s", l);
+            snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
+        }
     }
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
