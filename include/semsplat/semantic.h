@@ -574,7 +574,8 @@ void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, 
  * A relation then ranks them, within a class score, by their distance to the anchor's instances
  * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
  * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
- * top (bottom), 0.3 m tolerance. */
+ * top (bottom), 0.3 m tolerance; for "between" the gaps to the two nearest anchor instances
+ * summed. */
 
 typedef struct sp_lex_extent {
     float extent_min[3], extent_max[3]; /* world frame */
