@@ -90,6 +90,8 @@ typedef struct lex_sense {
     lex_anc anc[LEX_MAX_ANC];
     int n_holo;
     uint32_t holo[16];     /* part holonyms: what this is a part of */
+    int instance;          /* a named individual (an instance hypernym, "@i": the Monitor, one
+                            * ship), not a kind */
 } lex_sense;
 
 /* Reads the sense (closure, definition, part holonyms). */
