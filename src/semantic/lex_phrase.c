@@ -63,7 +63,7 @@ void lex_np_free(lex_np *np)
 
 /* Loads the noun senses of lemma (all of its morphy bases). attested_only keeps the senses that
  * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
- * the first sense always; physical_only drops the non-physical ones. */
+ * the first sense when any is attested; physical_only drops the non-physical ones. */
 static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
                        int no_person, lex_np *np, sp_error *err)
 {
@@ -85,7 +85,9 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
         int n = wn_lookup(lx->db, WN_NOUN, b[k], offs, WN_MAX_SENSES, &tagged, err);
         if (n < 0) rc = n;
         for (int i = 0; i < n && !rc && np->n_senses < LEX_MAX_SENSES; i++) {
-            if (attested_only && i > 0 && i >= tagged) break;
+            /* with no tag counts at all WordNet's sense order means nothing (stretcher: the
+             * painter's frame first, the litter third): none is attested then */
+            if (attested_only && (tagged == 0 || (i > 0 && i >= tagged))) break;
             int dup = 0;
             for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == offs[i];
             if (dup) continue;
