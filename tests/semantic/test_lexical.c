@@ -174,6 +174,18 @@ static const char *found_class(const sp_lex_vocab *v, const char *text, sp_lex_r
     return sp_lex_vocab_class(v, res->target.matches[0].class_index);
 }
 
+/* A vocabulary of names and a result to match into; 1 (both freed) when either failed. */
+static int rules_vocab(const sp_lexicon *lx, const char **names, int n, sp_lex_vocab **v, sp_lex_result **res)
+{
+    sp_error err = {0};
+    CHECK_OK(sp_lex_vocab_create(v, lx, names, n, NULL, &err), &err);
+    *res = malloc(sizeof **res);
+    if (*v && *res) return 0;
+    free(*res), sp_lex_vocab_free(*v);
+    *res = NULL, *v = NULL;
+    return 1;
+}
+
 /* The phase-4 rules one by one (docs/DESIGN.md, changes 6-13), on a vocabulary of their own. */
 static void test_phase4_rules(const sp_lexicon *lx)
 {
@@ -181,12 +193,8 @@ static void test_phase4_rules(const sp_lexicon *lx)
                            "projector screen", "conference table", "whiteboard", "stove", "desk"};
     sp_error err = {0};
     sp_lex_vocab *v = NULL;
-    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 10, NULL, &err), &err);
-    sp_lex_result *res = malloc(sizeof *res);
-    if (!v || !res) {
-        free(res), sp_lex_vocab_free(v);
-        return;
-    }
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, names, 10, &v, &res)) return;
     /* 6: "trash can" is WordNet's trash_can ("can" is not dropped as an auxiliary) */
     CHECK(!strcmp(found_class(v, "dustbin", res), "trash can"));
     CHECK(!strcmp(found_class(v, "garbage cans", res), "trash can"));
@@ -219,14 +227,9 @@ static void test_phase4_rules(const sp_lexicon *lx)
 static void test_phase5_rules(const sp_lexicon *lx)
 {
     const char *names[] = {"overbed table", "iv stand", "patient bed", "whiteboard", "privacy curtain"};
-    sp_error err = {0};
     sp_lex_vocab *v = NULL;
-    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 5, NULL, &err), &err);
-    sp_lex_result *res = malloc(sizeof *res);
-    if (!v || !res) {
-        free(res), sp_lex_vocab_free(v);
-        return;
-    }
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, names, 5, &v, &res)) return;
     /* a modifier WordNet lacks ("overbed") specializes: another kind of table is a sibling, the
      * bare head still matches, and the modifier's parts agree ("bed table") */
     CHECK(!strcmp(found_class(v, "operating table", res), ""));
@@ -376,8 +379,8 @@ int main(int argc, char **argv)
     const char *worlds[] = {"house", "bookstore", "office", "ward"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
      * were read), so its floor only guards against regressions (82/96 when it was set); the ward:
-     * development data since phase 5, a regression floor too (91/121 = 0.752 and 30/32 when set) */
-    const double floor_p1[] = {0.9, 0.9, 0.85, 0.73}, floor_absent[] = {0.9, 0.9, 0.9, 0.9};
+     * development data since phase 5, a regression floor too (93/121 = 0.769 and 30/32 when set) */
+    const double floor_p1[] = {0.9, 0.9, 0.85, 0.75}, floor_absent[] = {0.9, 0.9, 0.9, 0.9};
     for (int w = 0; w < 4; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
