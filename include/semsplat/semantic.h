@@ -434,18 +434,20 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * two", "WHAT tells the time").
  * Per class c, the confidence in 0..1 is, from the head h (all its senses; a word whose senses
  * are all taxonomic groups, "ficus", also its members' senses) and the class's head (its
- * physical senses that the tagged corpora attest, persons left out when the name also names an
- * artifact; when none, its physical senses closest to the other classes of the scene,
- * after Resnik 1999):
+ * physical senses that the tagged corpora attest, persons and named individuals (WordNet
+ * instances) left out, persons only when the name also names an artifact; when none is attested,
+ * or the name has no tag counts at all, its physical senses closest to the other classes of the
+ * scene, after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
  *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
  *     = 2 dep(c) / (d + 2 dep(c))           c is a hypernym of h, d levels up: a laptop is a
  *                                           computer however far down (no decay beyond WuP's)
  *     = 0.6                                 h (a commonly used sense) is a part of c
  *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
- * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
- * cabinet") sits one level below its head, so the head alone is its hypernym and another kind of
- * the head ("dresser") its sibling. T is multiplied by
+ * with depths counted from 'entity'; a class named by a noun modifier, or a word WordNet lacks
+ * ("overbed"), and a head ("shoe cabinet") sits one level below its head, so the head alone is
+ * its hypernym and another kind of the head ("dresser") its sibling; so does a query that is a
+ * closed compound WordNet lacks ("nightstand"), unless the class's name has its first part. T is multiplied by
  *   (1 - BETA)                 per query modifier that names other classes and not this one (0.3)
  *   (1 - EPS)                  per attribute its definitions do not mention (0.1; "red", "wooden":
  *                              reported in `ignored`)
@@ -574,7 +576,8 @@ void sp_lex_explain(const sp_lex_result *res, const sp_lex_vocab *v, char *out, 
  * A relation then ranks them, within a class score, by their distance to the anchor's instances
  * (or region): the gap between boxes ("near", "to", "in", ...), or for "on"/"above"
  * ("under"/"below") the horizontal gap plus how far the target sits below (above) the anchor's
- * top (bottom), 0.3 m tolerance. */
+ * top (bottom), 0.3 m tolerance; for "between" the gaps to the two nearest anchor instances
+ * summed. */
 
 typedef struct sp_lex_extent {
     float extent_min[3], extent_max[3]; /* world frame */

@@ -65,6 +65,7 @@ int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_er
             for (int p = 0; p < syn.n_pointers && s->n_holo < 16; p++)
                 if (!strcmp(syn.pointers[p].symbol, "#p") && syn.pointers[p].target.pos == WN_NOUN)
                     s->holo[s->n_holo++] = syn.pointers[p].target.offset;
+            for (int p = 0; p < syn.n_pointers; p++) s->instance |= !strcmp(syn.pointers[p].symbol, "@i");
         }
         for (int p = 0; p < syn.n_pointers; p++) {
             const wn_pointer *ptr = &syn.pointers[p];

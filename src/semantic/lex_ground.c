@@ -289,10 +289,14 @@ static int rank_by_relation(sp_lex_answer *a, const sp_query_instance *anchors, 
             continue;
         }
         cost[i] = INFINITY;
+        float second = INFINITY;
         for (int k = 0; k < n_anchors; k++) {
             float c = relation_cost(a->lex.relation, &r->instances[i], anchors[k].extent_min, anchors[k].extent_max);
-            if (c < cost[i]) cost[i] = c, nearest[i] = k;
+            if (c < cost[i]) second = cost[i], cost[i] = c, nearest[i] = k;
+            else if (c < second) second = c;
         }
+        /* "between": the gaps to the two nearest anchors together (one anchor: its gap) */
+        if (!strcmp(a->lex.relation, "between") && n_anchors > 1) cost[i] += second;
     }
     for (int i = 1; i < n; i++) /* insertion sort of the (few) instances, stable */
         for (int j = i; j > 0; j--) {

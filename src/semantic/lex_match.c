@@ -62,6 +62,10 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
     int generic = lex_is_generic_region(np->head);
     int linked = np->head_start + 1 < t->n && lex_is_region_link(t->w[np->head_start + 1]);
+    /* "somewhere for a patient to lie down" is a place to lie down: a placeholder whose
+     * complement holds a purpose clause ("to" + verb) describes a thing, it names no area. */
+    for (int i = np->head_start + 1; np->placeholder && linked && i + 1 < t->n; i++)
+        if (!strcmp(t->w[i], "to")) linked = 0;
     if (r || (def && !generic)) {
         if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
     } else if (generic && depth == 0 && (linked || np->n_mods > 0)) {

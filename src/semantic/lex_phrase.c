@@ -63,7 +63,7 @@ void lex_np_free(lex_np *np)
 
 /* Loads the noun senses of lemma (all of its morphy bases). attested_only keeps the senses that
  * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
- * the first sense always; physical_only drops the non-physical ones. */
+ * the first sense when any is attested; physical_only drops the non-physical ones. */
 static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
                        int no_person, lex_np *np, sp_error *err)
 {
@@ -85,13 +85,16 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
         int n = wn_lookup(lx->db, WN_NOUN, b[k], offs, WN_MAX_SENSES, &tagged, err);
         if (n < 0) rc = n;
         for (int i = 0; i < n && !rc && np->n_senses < LEX_MAX_SENSES; i++) {
-            if (attested_only && i > 0 && i >= tagged) break;
+            /* with no tag counts at all WordNet's sense order means nothing (stretcher: the
+             * painter's frame first, the litter third): none is attested then */
+            if (attested_only && (tagged == 0 || (i > 0 && i >= tagged))) break;
             int dup = 0;
             for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == offs[i];
             if (dup) continue;
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
             tmp->attested = i == 0 || i < tagged;
-            if (physical_only && !lex_sense_physical(tmp)) continue;
+            /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
+            if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
             if (no_person && lex_sense_person(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
@@ -128,7 +131,7 @@ static int add_members(const lex_db *lx, lex_np *np, sp_error *err)
 
 /* A closed compound WordNet lacks ("nightstand"): the longest noun it ends in whose rest is a
  * noun or an adjective ("night" + "stand"). Returns 1 and both parts when found. */
-static int split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
+int lex_split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err)
 {
     size_t n = strlen(w);
     for (size_t k = 3; k + 3 <= n; k++) {
@@ -155,7 +158,7 @@ static int noun_like(const lex_db *lx, const char *w, sp_error *err)
 {
     char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
     int rc = lex_is_pos(lx, WN_NOUN, w, err);
-    return rc != 0 ? rc : split_compound(lx, w, l, r, err);
+    return rc != 0 ? rc : lex_split_compound(lx, w, l, r, err);
 }
 
 /* The head's senses; a split compound's first part becomes the last modifier. Queries keep
@@ -168,7 +171,7 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     if (rc < 0) return rc;
     const char *h = w;
     if (!rc) {
-        if ((rc = split_compound(lx, w, left, right, err)) < 0) return rc;
+        if ((rc = lex_split_compound(lx, w, left, right, err)) < 0) return rc;
         if (rc == 1) {
             if (np->n_mods < 8) snprintf(np->mods[np->n_mods++], LEX_WORD, "%s", left);
             np->split = 1;

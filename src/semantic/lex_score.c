@@ -149,8 +149,10 @@ static float wup3(int depth_lcs, int dq, int dc)
 /* A name made of a noun modifier and a head ("shoe cabinet") is one level below the head's
  * sense: the head alone is its hypernym, and another kind of the head ("dresser", a cabinet) is
  * its sibling, not a match. The comparison t of the head senses is redone with the class's path
- * one step longer. */
-static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
+ * one step longer (cspec), and the query's when it is a closed compound WordNet lacks, split
+ * into a modifier and a head (qspec: one word names one particular kind, "nightstand" is no IV
+ * stand). */
+static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c, int qspec, int cspec)
 {
     int dq, dc, dep;
     switch (t.kind) {
@@ -160,7 +162,7 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
     case SP_LEX_RELATED: dq = q->anc[t.q_anc].dist, dc = c->anc[t.c_anc].dist, dep = c->anc[t.c_anc].depth; break;
     default: return t;
     }
-    dc += 1;
+    dc += cspec, dq += qspec;
     lex_tax r = t;
     if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
     else if (dc == 0) r.score = wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
@@ -168,8 +170,9 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
     return r;
 }
 
-/* The best taxonomic comparison of two sense sets; spec: the class is one level below its head. */
-static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc, int spec,
+/* The best taxonomic comparison of two sense sets; cspec / qspec: the class / the query is one
+ * level below its head. */
+static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc, int qspec, int cspec,
                         int *bq, int *bc)
 {
     lex_tax best = {0, SP_LEX_NONE, -1, -1};
@@ -177,7 +180,7 @@ static lex_tax best_tax(const lex_sense *qs, int nq, const lex_sense *cs, int nc
     for (int i = 0; i < nq; i++)
         for (int j = 0; j < nc; j++) {
             lex_tax t = lex_compare(&qs[i], &cs[j]);
-            if (spec) t = specialize(t, &qs[i], &cs[j]);
+            if (cspec || qspec) t = specialize(t, &qs[i], &cs[j], qspec, cspec);
             if (t.score > best.score) best = t, *bq = i, *bc = j;
         }
     return best;
@@ -330,6 +333,21 @@ static float agent_score(const lex_class *c, const lex_np *np, const query_prep 
     return LEX_DELTA * num / den;
 }
 
+/* 1 when the query is a split closed compound whose first part is no word of class c's name:
+ * another particular kind of the head ("nightstand" against "iv stand"); "whiteboards" against
+ * "whiteboard" agrees. */
+static int split_kind(const lex_np *np, const lex_class *c)
+{
+    if (!np->split || np->n_mods < 1) return 0;
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(c->tok[k], np->mods[np->n_mods - 1])) return 0;
+    for (int k = 0; k < c->n_part; k++)
+        if (!strcmp(c->part[k], np->mods[np->n_mods - 1])) return 0;
+    for (int k = 0; k < c->np.n_mods; k++) /* the class split the same way ("white" + "board") */
+        if (!strcmp(c->np.mods[k], np->mods[np->n_mods - 1])) return 0;
+    return 1;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -347,7 +365,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
     } else if (has_head && c->np.n_senses) {
         int bq, bc;
-        lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, c->spec, &bq, &bc);
+        lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, split_kind(np, c), c->spec, &bq, &bc);
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
@@ -363,6 +381,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         }
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
+        for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
+            if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0) > 0)
             use = LEX_MOD_USED;
@@ -420,7 +440,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     for (int r = 0; r < qp->n_ref && c->np.n_senses; r++) {
         int bq, bc;
         lex_tax t = best_tax(qp->ref[r].senses, qp->ref[r].n_senses, c->np.senses, c->np.n_senses,
-                             c->spec, &bq, &bc);
+                             0, c->spec, &bq, &bc);
         if (t.kind == SP_LEX_RELATED) continue;
         float w = best_wup(np->senses, np->n_senses, c->np.senses, c->np.n_senses);
         float s = t.score * w * w;

@@ -108,10 +108,29 @@ static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_er
         if (nb < 0) return nb;
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
+    /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
+     * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
+     * so the class is one level below its head and another kind of the head is its sibling.
+     * A known adjective ("potted plant") describes the head and leaves the class at its level. */
     for (int i = 0; i < c->np.n_mods && !rc; i++) {
-        int noun = lex_is_pos(lx, WN_NOUN, c->np.mods[i], err);
-        if (noun < 0) return noun;
-        c->spec |= noun;
+        int known = 0;
+        for (int p = 0; p < WN_NPOS && !known; p++) {
+            int is = lex_is_pos(lx, (wn_pos)p, c->np.mods[i], err);
+            if (is < 0) return is;
+            known = is;
+            if (is && p == WN_NOUN) c->spec = 1;
+        }
+        if (known) continue;
+        c->spec = 1;
+        /* its parts, when it is a closed compound ("overbed" = over + bed), agree with a query
+         * modifier: "bed table" is the overbed table */
+        char l[WN_LEMMA_MAX], r[WN_LEMMA_MAX];
+        int sp = lex_split_compound(lx, c->np.mods[i], l, r, err);
+        if (sp < 0) return sp;
+        if (sp && c->n_part + 2 <= 4) {
+            snprintf(c->part[c->n_part++], LEX_WORD, "%s", l);
+            snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
+        }
     }
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */

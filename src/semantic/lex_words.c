@@ -93,7 +93,7 @@ static const relation_phrase relations[] = {
     {{"to"}, "to"},       {{"towards"}, "to"},    {{"toward"}, "to"},     {{"of"}, "of"},
     {{"from"}, "from"},   {{"opposite"}, "across from"}, {{"facing"}, "across from"},
     {{"along"}, "along"}, {{"against"}, "against"}, {{"around"}, "near"}, {{"with"}, "with"},
-    {{NULL}, NULL}};
+    {{"between"}, "between"}, {{NULL}, NULL}};
 
 int lex_relation_at(const lex_tokens *t, int i, const char **name)
 {

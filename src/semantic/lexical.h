@@ -64,6 +64,9 @@ int lex_is_region_link(const char *w);
 int lex_bases(const lex_db *lx, wn_pos pos, const char *w, char out[][WN_LEMMA_MAX], sp_error *err);
 /* 1 when w has a noun base form, etc. (negative on read errors). */
 int lex_is_pos(const lex_db *lx, wn_pos pos, const char *w, sp_error *err);
+/* A closed compound WordNet lacks ("nightstand"): the longest noun it ends in whose rest is a
+ * noun or an adjective; 1 and both parts (WN_LEMMA_MAX each) when found. */
+int lex_split_compound(const lex_db *lx, const char *w, char *left, char *right, sp_error *err);
 /* Informativeness of a word: 1 / (1 + ln(1 + its number of senses over all parts of speech)). */
 int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *err);
 
@@ -87,6 +90,8 @@ typedef struct lex_sense {
     lex_anc anc[LEX_MAX_ANC];
     int n_holo;
     uint32_t holo[16];     /* part holonyms: what this is a part of */
+    int instance;          /* a named individual (an instance hypernym, "@i": the Monitor, one
+                            * ship), not a kind */
 } lex_sense;
 
 /* Reads the sense (closure, definition, part holonyms). */
@@ -175,6 +180,8 @@ typedef struct lex_class {
     lex_bag bag;     /* its names and definitions, with hypernyms' */
     int n_tok;
     char tok[8][LEX_WORD]; /* base forms of its name's words */
+    int n_part;
+    char part[4][LEX_WORD]; /* parts of a modifier WordNet lacks ("overbed": over, bed) */
 } lex_class;
 
 typedef struct lex_region {
