@@ -14,8 +14,11 @@ import os
 import sys
 
 sys.dont_write_bytecode = True  # leave no __pycache__ in the repo
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "office_models"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "office_models"))
+sys.path.insert(0, os.path.join(HERE, "..", "ward_models"))
 import make_office as base  # noqa: E402  (primitives, lights, the SDF document)
+from make_ward import turned, wheel, castors  # noqa: E402  (rotated visuals, wheels, castors)
 
 W, D, H = 8.0, 7.0, 2.6    # room width (x), depth (y), wall height
 T = 0.1                    # wall thickness
@@ -33,15 +36,6 @@ base.COL.update({
     "yellow_handle": "0.9 0.75 0.15",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place: cylinders are upright in SDF, wheels, tanks and rails are not."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def wheel(name, c, x, y, z, r, width):  # axle along x
-    return turned(cyl(name, c, x, y, z, r, width), "0 1.5708 0")
 
 
 # ---- the things (local frames: x right, y forward, z up) ----
@@ -166,8 +160,7 @@ def tool_chest():
     v = [box("body", "tool_red", 0, 0, 0.55, 0.7, 0.46, 0.95),
          box("top", "black", 0, 0, 1.04, 0.72, 0.48, 0.03)]
     v += [box(f"drawer{i}", "chrome", 0, -0.232, 0.2 + 0.16 * i, 0.6, 0.005, 0.02) for i in range(6)]
-    return v + [sph(f"castor{i}", "tyre", sx * 0.3, sy * 0.18, 0.05, 0.05)
-                for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
+    return v + castors(0.3, 0.18)
 
 
 def drill_press():
@@ -202,9 +195,7 @@ def air_compressor():
 def shop_vacuum():
     return [cyl("drum", "vac_yellow", 0, 0, 0.3, 0.2, 0.5),
             cyl("head", "black", 0, 0, 0.6, 0.21, 0.12),
-            turned(cyl("hose", "black", 0, 0.22, 0.5, 0.025, 0.3), "0.6 0 0")] + \
-        [sph(f"castor{i}", "tyre", sx * 0.14, sy * 0.14, 0.03, 0.03)
-         for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
+            turned(cyl("hose", "black", 0, 0.22, 0.5, 0.025, 0.3), "0.6 0 0")] + castors(0.14, 0.14, 0.03)
 
 
 def garage_door():
