@@ -15,6 +15,10 @@
  *   views           inference renders of an uploaded scene (sp_scene, SH degree 1 + 16 features):
  *                   V views (RGB, features, expected depth, downloaded to the host) as one
  *                   sp_render_views batch and one view per call, in ms per view
+ *   raster_stages   one extra profiled fwd+bwd (cfg.profile): per-stage device ms from events
+ *                   (project, bin = depth order + pair counts + scan, sort = pair-count wait +
+ *                   emission + tile sort, fwd, bwd = clearing + backward compositing,
+ *                   project_bwd) and pairs per Gaussian
  * Median of 20 runs after 5 warm-ups, synchronised. Peak memory is what semsplat allocated on
  * the GPU (sp_device_peak_bytes of the CUDA device), measured per case in a child process so cases do not mix;
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
@@ -191,11 +195,22 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     double fb = time_ms(run_fwd_bwd, &c);
     double peak = sp_device_peak_bytes(g_dev) / 1073741824.0;
     double extra = (sp_device_peak_bytes(g_dev) - params) / 1073741824.0;
+    /* one more profiled forward + backward: where the time goes (events between the stages) */
+    sp_raster_stages st;
+    c.cfg.profile = 1;
+    run_fwd_bwd(&c);
+    OK(sp_raster_last_stages(c.r, &st, &g_err));
+    c.cfg.profile = 0;
     char set[160];
     snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu, %s)", n, W, H, D, pairs, gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
     printf("raster_fwd_bwd_ms   %8.3f  ms   %s\n", fb, set);
     printf("raster_peak_gib     %8.3f  GiB  %s extra over params %.3f GiB\n", peak, set, extra);
+    printf("raster_stages_ms    %8.3f  ms   (D=%d: project %.3f bin %.3f sort %.3f fwd %.3f "
+           "bwd %.3f project_bwd %.3f; pairs/Gaussian %.3f)\n",
+           st.project + st.bin + st.sort + st.raster_fwd + st.raster_bwd + st.project_bwd, D,
+           st.project, st.bin, st.sort, st.raster_fwd, st.raster_bwd, st.project_bwd,
+           (double)pairs / (double)n);
     printf("JSON {\"what\":\"semsplat\",\"n\":%zu,\"w\":%d,\"h\":%d,\"d\":%d,\"fwd_ms\":%.3f,"
            "\"fwd_bwd_ms\":%.3f,\"peak_gib\":%.3f}\n", n, W, H, D, f, fb, extra);
     fflush(stdout);

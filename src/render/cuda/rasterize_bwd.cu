@@ -208,7 +208,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             }
             const int slot = warp_reduce_scatter<7>(geo, lane);
             if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
-                atomicAdd(vgeo + (size_t)g * 8 + slot, geo[0]);
+                atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
         }
     }
 }
@@ -274,9 +274,16 @@ int sp_cuda_raster_backward(void *state, const sp_raster_grad_in *gin,
     size_t n = r->in.n;
     if (n == 0) return 0;
     int rc;
-    if ((rc = sp_cu_reserve(r, &r->s_vgeo, n * 8 * sizeof(float), err))) return rc;
-    float *vgeo = (float *)r->s_vgeo.ptr;
-    SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * 8 * sizeof(float), r->stream), err, "clearing gradients");
+    /* the binning's temporaries are dead now: their space holds the per-Gaussian sums */
+    if ((rc = sp_cu_reserve(r, &r->s_work, sp_cuda_work_bytes(n), err))) return rc;
+    float *vgeo = (float *)r->s_work.ptr;
+    sp_cu_mark(r, SP_EV_BWD_START);
+    SP_CUDA_CHECK(cudaMemsetAsync(vgeo, 0, n * SP_VGEO_STRIDE * sizeof(float), r->stream), err,
+                  "clearing gradients");
     if ((rc = sp_cuda_rasterize_bwd(r, gin, grads->v_colors, vgeo, err))) return rc;
-    return sp_cuda_project_bwd(r, grads, vgeo, err);
+    sp_cu_mark(r, SP_EV_BWD_RASTER);
+    if ((rc = sp_cuda_project_bwd(r, grads, vgeo, err))) return rc;
+    sp_cu_mark(r, SP_EV_BWD_DONE);
+    r->prof_bwd = r->profiling;
+    return 0;
 }
