@@ -52,7 +52,9 @@ int sp_cuda_depth_order(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, uint
 __device__ __forceinline__ bool tile_kept(short4 b, float2 xy, float4 co, float cut, int tx,
                                           int ty, int box_tiles)
 {
-    if (box_tiles) return true;
+    /* a box within one tile keeps it (as the CPU's tile_kept) */
+    if (box_tiles || (b.x / SP_TILE_SIZE == b.z / SP_TILE_SIZE && b.y / SP_TILE_SIZE == b.w / SP_TILE_SIZE))
+        return true;
     const int x0 = tx * SP_TILE_SIZE, y0 = ty * SP_TILE_SIZE;
     const float con[3] = {co.x, co.y, co.z};
     return sp_gm_tile_hit(con, cut, xy.x, xy.y, max(x0, (int)b.x), min(x0 + SP_TILE_SIZE - 1, (int)b.z),
