@@ -24,7 +24,7 @@
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
- *        bench_render_gpu raster N W H D  one rasterizer case
+ *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_block_sums, 0)
  *        bench_render_gpu step F          one training step case with F feature channels
  *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
@@ -170,7 +170,7 @@ static void run_fwd_bwd(void *p)
     OK(sp_raster_backward(c->r, &c->gin, &c->g, &g_err));
 }
 
-static void case_raster(size_t n, int W, int H, int D, const char *gpu)
+static void case_raster(size_t n, int W, int H, int D, int block_sums, const char *gpu)
 {
     bscene s = make_scene(n, W, H, D);
     size_t params = sp_device_peak_bytes(g_dev);
@@ -179,6 +179,7 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     c.s = &s;
     OK(sp_raster_create(&c.r, g_dev, &g_err));
     c.cfg = sp_raster_cfg_default();
+    c.cfg.bwd_block_sums = block_sums;
     c.in = (sp_raster_in){n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, NULL};
     size_t npix = (size_t)W * H;
     c.out.image = dalloc(npix * D * 4);
@@ -202,7 +203,8 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     OK(sp_raster_last_stages(c.r, &st, &g_err));
     c.cfg.profile = 0;
     char set[160];
-    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu, %s)", n, W, H, D, pairs, gpu);
+    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s, %s)", n, W, H, D, pairs,
+             block_sums ? (block_sums > 0 ? " bwd_block_sums=1" : " bwd_block_sums=-1") : "", gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
     printf("raster_fwd_bwd_ms   %8.3f  ms   %s\n", fb, set);
     printf("raster_peak_gib     %8.3f  GiB  %s extra over params %.3f GiB\n", peak, set, extra);
@@ -430,13 +432,15 @@ int main(int argc, char **argv)
         return 0;
     }
     /* each case in its own process with its own device, so peak memory does not mix */
-    int is_raster = argc == 6 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
+    int is_raster = (argc == 6 || argc == 7) && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
     int is_views = argc == 6 && !strcmp(argv[1], "views");
     if (is_raster || is_step || is_views) {
         OK(sp_device_create(&g_dev, SP_DEVICE_CUDA, 0, &g_err));
         char gpu[256];
         snprintf(gpu, sizeof gpu, "%s", sp_device_name(g_dev));
-        if (is_raster) case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
+        if (is_raster)
+            case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]),
+                        argc == 7 ? atoi(argv[6]) : 0, gpu);
         else if (is_views) case_views((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
         else case_step(atoi(argv[2]), gpu);
         sp_device_free(g_dev);

@@ -63,6 +63,10 @@ typedef struct sp_raster_cfg {
     /* 1: time the forward's and backward's stages (sp_raster_last_stages); CUDA records events
      * on its stream between stages (no extra waits). 0 (default): no timing. */
     int profile;
+    /* CUDA only, for tuning: the backward's per-Gaussian sums per block in shared memory, then one
+     * global atomic per value (1), or a global atomic per warp (-1); 0 (default): block sums for
+     * chunks of 16 channels or more. Results agree up to float summation order. */
+    int bwd_block_sums;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);

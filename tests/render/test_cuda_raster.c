@@ -6,7 +6,8 @@
  * float-atomic reordering), the chunk-width option (same bits), first-surface depth (the same
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
- * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys). Skips (77) without a GPU or without the CUDA build. */
+ * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
+ * the backward's block sums on and off (cfg.bwd_block_sums). Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -118,6 +119,8 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
     return bad;
 }
 
+static int g_block_sums = 0; /* cfg.bwd_block_sums of compare_case's renders */
+
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
     sp_error err = {0};
@@ -125,6 +128,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     scene s = make_scene(n, D, &cam);
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.antialiased = aa;
+    cfg.bwd_block_sums = g_block_sums;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -405,6 +409,18 @@ static void test_box_tiles(void)
     scene_free(&s);
 }
 
+/* The backward's two ways of summing per-Gaussian gradients, each against the CPU at widths
+ * where it is not the default. */
+static void test_block_sums(void)
+{
+    g_block_sums = 1;
+    compare_case(97, 63, 600, 3, 1, 0);
+    g_block_sums = -1;
+    compare_case(80, 64, 500, 32, 0, 0);
+    compare_case(72, 40, 400, 67, 1, 0);
+    g_block_sums = 0;
+}
+
 /* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */
 static void test_many_tiles(void) { compare_case(4112, 4112, 3000, 1, 0, 0); }
 
@@ -557,6 +573,7 @@ int main(void)
     RUN(test_all_widths);
     RUN(test_chunk_option);
     RUN(test_box_tiles);
+    RUN(test_block_sums);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);

@@ -13,7 +13,10 @@
  *  - warp sums use a reduce-scatter (each shuffle round halves the values every lane carries),
  *    about CH shuffles instead of 5 CH, and the atomics that follow are spread over lanes and hit
  *    consecutive addresses;
- *  - warps where no pixel kept the Gaussian skip it (ballot).
+ *  - warps where no pixel kept the Gaussian skip it (ballot);
+ *  - block sums (cfg.bwd_block_sums; by default for chunks of 16 channels or more): the warps'
+ *    sums of a batch of Gaussians go to shared memory (shared atomics), then one global atomic
+ *    per Gaussian and value when the batch is done, instead of one per warp that touched it.
  * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
 #include "common.cuh"
@@ -68,7 +71,11 @@ __device__ __forceinline__ int warp_reduce_scatter(float (&v)[N], int lane)
     return base;
 }
 
-template <int CH>
+/* Per-Gaussian sums of one batch staged in shared memory (block sums): SUMS(CH) floats per
+ * Gaussian, 7 geometry values then CH colours. */
+#define SUMS(CH) ((CH) + 7)
+
+template <int CH, bool BS>
 __global__ void __launch_bounds__(BLOCK)
 k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
              const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
@@ -87,6 +94,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     float2 *s_frame = (float2 *)(s_cut + BLOCK);      /* [BLOCK] conic frame (cs, sn) */
     int *s_id = (int *)(s_frame + BLOCK);             /* [BLOCK] */
     float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
+    float *s_acc = s_col + BLOCK * CH;                /* BS: [BLOCK][SUMS(CH)] */
     __shared__ int s_block_last;
 
     const int c0 = c_base + blockIdx.z * CH;
@@ -142,6 +150,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             int j = k / CH, c = k - j * CH;
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
+        if (BS)
+            for (int k = tid; k < cnt * SUMS(CH); k += BLOCK) s_acc[k] = 0.f;
         __syncthreads();
         for (int t = max(0, b_end - warp_last); t < cnt; t++) {
             const int idx = b_end - 1 - t;
@@ -201,40 +211,79 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 #pragma unroll
                     for (int i = 0; i < LIVE; i++) {
                         const int c = cb + i;
-                        if (c < CH && c0 + c < D && vcol[i] != 0.f)
-                            atomicAdd(v_colors + (size_t)g * D + c0 + c, vcol[i]);
+                        if (c < CH && c0 + c < D && vcol[i] != 0.f) {
+                            if (BS) atomicAdd(s_acc + t * SUMS(CH) + 7 + c, vcol[i]);
+                            else atomicAdd(v_colors + (size_t)g * D + c0 + c, vcol[i]);
+                        }
                     }
                 }
             }
             const int slot = warp_reduce_scatter<7>(geo, lane);
-            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
-                atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
+            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f) {
+                if (BS) atomicAdd(s_acc + t * SUMS(CH) + slot, geo[0]);
+                else atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
+            }
+        }
+        if (BS) {
+            /* the batch's sums, one global atomic per Gaussian and value instead of one per warp
+             * that touched it; the next batch's first __syncthreads orders these reads before
+             * the shared buffers are refilled */
+            __syncthreads();
+            for (int k = tid; k < cnt * SUMS(CH); k += BLOCK) {
+                const float val = s_acc[k];
+                if (val == 0.f) continue;
+                const int j = k / SUMS(CH), c = k - j * SUMS(CH);
+                const size_t g = (size_t)s_id[j];
+                if (c < 7) atomicAdd(vgeo + g * SP_VGEO_STRIDE + c, val);
+                else if (v_colors) atomicAdd(v_colors + g * D + c0 + c - 7, val);
+            }
         }
     }
 }
 
-static size_t bwd_smem(int ch)
+static size_t bwd_smem(int ch, bool bs)
 {
     return (size_t)BLOCK * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
-                            sizeof(float) * ch);
+                            sizeof(float) * ch + (bs ? sizeof(float) * SUMS(ch) : 0));
+}
+
+/* cfg.bwd_block_sums: 1 always, -1 never, 0 (default) from 16 channels a chunk up; never when
+ * the block's shared memory would not fit this GPU. */
+static bool use_block_sums(int mode, int ch)
+{
+    if (mode < 0 || (mode == 0 && ch < 16)) return false;
+    int dev = 0, max_smem = 0;
+    if (cudaGetDevice(&dev) != cudaSuccess ||
+        cudaDeviceGetAttribute(&max_smem, cudaDevAttrMaxSharedMemoryPerBlockOptin, dev) != cudaSuccess)
+        return false;
+    return bwd_smem(ch, true) + 64 <= (size_t)max_smem;
+}
+
+template <int CH, bool BS>
+static int launch_bwd_as(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                         float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+{
+    size_t smem = bwd_smem(CH, BS);
+    SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_bwd<CH, BS>,
+                                       cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem),
+                  err, "backward shared memory");
+    const sp_cuda_view *v = &r->view;
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    k_raster_bwd<CH, BS><<<grid, block, smem, r->stream>>>(
+        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
+        v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+    SP_CUDA_LAUNCHED(err, "backward rasterization");
+    return 0;
 }
 
 template <int CH>
 static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                       float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
-    size_t smem = bwd_smem(CH);
-    SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_bwd<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
-                                       (int)smem),
-                  err, "backward shared memory");
-    const sp_cuda_view *v = &r->view;
-    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
-    k_raster_bwd<CH><<<grid, block, smem, r->stream>>>(
-        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
-        v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
-        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
-    SP_CUDA_LAUNCHED(err, "backward rasterization");
-    return 0;
+    return use_block_sums(r->cfg.bwd_block_sums, CH)
+               ? launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err)
+               : launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
 }
 
 /* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
