@@ -61,6 +61,23 @@ __device__ __forceinline__ bool tile_kept(short4 b, float2 xy, float4 co, float 
                           max(y0, (int)b.y), min(y0 + SP_TILE_SIZE - 1, (int)b.w));
 }
 
+/* Calls f(tx, ty) for each tile Gaussian g keeps, row by row: the one walk both the counting and
+ * the emitting kernel make, so they agree on every tile. */
+template <typename F>
+__device__ __forceinline__ void for_kept_tiles(uint32_t g, const short4 *__restrict__ box,
+                                               const float2 *__restrict__ means2d,
+                                               const float4 *__restrict__ conic_op, int box_tiles,
+                                               F f)
+{
+    const short4 b = box[g];
+    const float2 xy = means2d[g];
+    const float4 co = conic_op[g];
+    const float cut = sp_cu_sigma_cut(co.w);
+    for (int ty = b.y / SP_TILE_SIZE; ty <= b.w / SP_TILE_SIZE; ty++)
+        for (int tx = b.x / SP_TILE_SIZE; tx <= b.z / SP_TILE_SIZE; tx++)
+            if (tile_kept(b, xy, co, cut, tx, ty, box_tiles)) f(tx, ty);
+}
+
 __global__ void k_count_pairs(size_t n, const uint32_t *__restrict__ ids,
                               const int32_t *__restrict__ radii, const short4 *__restrict__ box,
                               const float2 *__restrict__ means2d,
@@ -71,15 +88,7 @@ __global__ void k_count_pairs(size_t n, const uint32_t *__restrict__ ids,
     if (k >= n) return;
     const uint32_t g = ids[k];
     uint32_t cnt = 0;
-    if (radii[g] > 0) {
-        const short4 b = box[g];
-        const float2 xy = means2d[g];
-        const float4 co = conic_op[g];
-        const float cut = sp_cu_sigma_cut(co.w);
-        for (int ty = b.y / SP_TILE_SIZE; ty <= b.w / SP_TILE_SIZE; ty++)
-            for (int tx = b.x / SP_TILE_SIZE; tx <= b.z / SP_TILE_SIZE; tx++)
-                cnt += tile_kept(b, xy, co, cut, tx, ty, box_tiles);
-    }
+    if (radii[g] > 0) for_kept_tiles(g, box, means2d, conic_op, box_tiles, [&](int, int) { cnt++; });
     counts[k] = cnt;
 }
 
@@ -107,17 +116,12 @@ __global__ void k_emit_pairs(size_t n, const uint32_t *__restrict__ ids,
     unsigned long long o = k ? offsets[k - 1] : 0ull, end = offsets[k];
     if (o == end) return;
     const uint32_t g = ids[k];
-    const short4 b = box[g];
-    const float2 xy = means2d[g];
-    const float4 co = conic_op[g];
-    const float cut = sp_cu_sigma_cut(co.w);
-    for (int ty = b.y / SP_TILE_SIZE; ty <= b.w / SP_TILE_SIZE; ty++)
-        for (int tx = b.x / SP_TILE_SIZE; tx <= b.z / SP_TILE_SIZE; tx++)
-            if (o < end && tile_kept(b, xy, co, cut, tx, ty, box_tiles)) {
-                keys[o] = (K)(ty * tiles_x + tx);
-                vals[o] = g;
-                o++;
-            }
+    for_kept_tiles(g, box, means2d, conic_op, box_tiles, [&](int tx, int ty) {
+        if (o >= end) return;
+        keys[o] = (K)(ty * tiles_x + tx);
+        vals[o] = g;
+        o++;
+    });
 }
 
 int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, const uint32_t *ids,
