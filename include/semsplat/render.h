@@ -63,9 +63,9 @@ typedef struct sp_raster_cfg {
     /* 1: time the forward's and backward's stages (sp_raster_last_stages); CUDA records events
      * on its stream between stages (no extra waits). 0 (default): no timing. */
     int profile;
-    /* CUDA only, for tuning: the backward's per-Gaussian sums per block in shared memory, then one
-     * global atomic per value (1), or a global atomic per warp (-1); 0 (default): block sums for
-     * chunks of 16 channels or more. Results agree up to float summation order. */
+    /* CUDA only, for tuning: 1 = the backward's per-Gaussian sums per block in shared memory,
+     * then one global atomic per value; 0 (default) or -1 = a global atomic per warp (measured
+     * faster on an H200). Results agree up to float summation order. */
     int bwd_block_sums;
 } sp_raster_cfg;
 

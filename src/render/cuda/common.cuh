@@ -123,10 +123,11 @@ int sp_cuda_count_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, cons
 int sp_cuda_scan_counts(sp_cuda_raster *r, const uint32_t *counts, unsigned long long *offsets,
                         size_t m, sp_error *err);
 int sp_cuda_prep_temp_bytes(size_t n, size_t m, size_t *bytes, sp_error *err);
-/* Writes Gaussian ids[k]'s pairs at [offsets[k-1], offsets[k]) (inclusive sums). */
+/* Writes Gaussian ids[k]'s pairs at [offsets[k-1], offsets[k]) (inclusive sums; the first
+ * Gaussian's start at `first`: 0 for one view, the view's first pair in a batch). */
 int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, const uint32_t *ids,
-                       const unsigned long long *offsets, void *keys, uint32_t *vals,
-                       sp_error *err);
+                       const unsigned long long *offsets, unsigned long long first, void *keys,
+                       uint32_t *vals, sp_error *err);
 /* Tile key width of view v: 2 bytes up to 65536 tiles, else 4. */
 int sp_cuda_key_bytes(const sp_cuda_view *v);
 /* cub's temporary bytes for sorting m pairs of view v (host-side query, no device work). */

@@ -14,7 +14,7 @@
  *    about CH shuffles instead of 5 CH, and the atomics that follow are spread over lanes and hit
  *    consecutive addresses;
  *  - warps where no pixel kept the Gaussian skip it (ballot);
- *  - block sums (cfg.bwd_block_sums; by default for chunks of 16 channels or more): the warps'
+ *  - optional block sums (cfg.bwd_block_sums = 1; off by default, measured slower): the warps'
  *    sums of a batch of Gaussians go to shared memory (shared atomics), then one global atomic
  *    per Gaussian and value when the batch is done, instead of one per warp that touched it.
  * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
@@ -247,11 +247,12 @@ static size_t bwd_smem(int ch, bool bs)
                             sizeof(float) * ch + (bs ? sizeof(float) * SUMS(ch) : 0));
 }
 
-/* cfg.bwd_block_sums: 1 always, -1 never, 0 (default) from 16 channels a chunk up; never when
- * the block's shared memory would not fit this GPU. */
+/* cfg.bwd_block_sums: 1 on (when the block's shared memory fits this GPU), else off. Measured on
+ * an H200 at 1M Gaussians 1080p, fwd+bwd: D=32 12.67 ms on vs 12.37 off, D=64 27.75 vs 25.38,
+ * D=3 6.16 vs 6.08, so off is the default. */
 static bool use_block_sums(int mode, int ch)
 {
-    if (mode < 0 || (mode == 0 && ch < 16)) return false;
+    if (mode <= 0) return false;
     int dev = 0, max_smem = 0;
     if (cudaGetDevice(&dev) != cudaSuccess ||
         cudaDeviceGetAttribute(&max_smem, cudaDevAttrMaxSharedMemoryPerBlockOptin, dev) != cudaSuccess)

@@ -107,13 +107,13 @@ int sp_cuda_count_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, cons
 template <typename K>
 __global__ void k_emit_pairs(size_t n, const uint32_t *__restrict__ ids,
                              const unsigned long long *__restrict__ offsets,
-                             const short4 *__restrict__ box, const float2 *__restrict__ means2d,
+                             unsigned long long first, const short4 *__restrict__ box, const float2 *__restrict__ means2d,
                              const float4 *__restrict__ conic_op, int tiles_x, int box_tiles,
                              K *__restrict__ keys, uint32_t *__restrict__ vals)
 {
     size_t k = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
     if (k >= n) return;
-    unsigned long long o = k ? offsets[k - 1] : 0ull, end = offsets[k];
+    unsigned long long o = k ? offsets[k - 1] : first, end = offsets[k];
     if (o == end) return;
     const uint32_t g = ids[k];
     for_kept_tiles(g, box, means2d, conic_op, box_tiles, [&](int tx, int ty) {
@@ -125,17 +125,17 @@ __global__ void k_emit_pairs(size_t n, const uint32_t *__restrict__ ids,
 }
 
 int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, const uint32_t *ids,
-                       const unsigned long long *offsets, void *keys, uint32_t *vals,
-                       sp_error *err)
+                       const unsigned long long *offsets, unsigned long long first, void *keys,
+                       uint32_t *vals, sp_error *err)
 {
     const sp_cuda_proj *p = &v->proj;
     if (sp_cuda_key_bytes(v) == 2)
         k_emit_pairs<uint16_t><<<sp_div_up(n, 256), 256, 0, r->stream>>>(
-            n, ids, offsets, p->box, p->means2d, p->conic_op, v->tiles_x, v->box_tiles,
+            n, ids, offsets, first, p->box, p->means2d, p->conic_op, v->tiles_x, v->box_tiles,
             (uint16_t *)keys, vals);
     else
         k_emit_pairs<uint32_t><<<sp_div_up(n, 256), 256, 0, r->stream>>>(
-            n, ids, offsets, p->box, p->means2d, p->conic_op, v->tiles_x, v->box_tiles,
+            n, ids, offsets, first, p->box, p->means2d, p->conic_op, v->tiles_x, v->box_tiles,
             (uint32_t *)keys, vals);
     SP_CUDA_LAUNCHED(err, "emitting tile pairs");
     return 0;
@@ -284,7 +284,7 @@ int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_cuda_view *v, size_t n, sp_error 
         if ((rc = sp_cu_reserve(r, &r->s_vals[k], m * sizeof(uint32_t), err))) return rc;
     }
     uint32_t *v0 = (uint32_t *)r->s_vals[0].ptr, *v1 = (uint32_t *)r->s_vals[1].ptr;
-    if ((rc = sp_cuda_emit_pairs(r, v, n, ids, offsets, r->s_keys[0].ptr, v0, err))) return rc;
+    if ((rc = sp_cuda_emit_pairs(r, v, n, ids, offsets, 0, r->s_keys[0].ptr, v0, err))) return rc;
     return sp_cuda_sort_pairs(r, v, r->s_keys[0].ptr, r->s_keys[1].ptr, v0, v1,
                               (int2 *)r->s_tile_ranges.ptr, err);
 }

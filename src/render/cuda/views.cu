@@ -141,7 +141,8 @@ static int sort_views(sp_cuda_raster *r, batch_view *bv, size_t nv, size_t n,
         /* the view's offsets count from the batch's first pair: its keys are addressed from a
          * base moved back by pair_base keys of its own width, so its segment starts at k0 + at kb */
         char *kbase = k0 + at * kb - at * kv;
-        rc = sp_cuda_emit_pairs(r, &bv[i].v, n, w.ids + i * n, w.offsets + i * n, kbase, v0, err);
+        rc = sp_cuda_emit_pairs(r, &bv[i].v, n, w.ids + i * n, w.offsets + i * n, at, kbase, v0,
+                                err);
         if (!rc)
             rc = sp_cuda_sort_pairs(r, &bv[i].v, k0 + at * kb, k1 + at * kb, v0 + at, v1 + at,
                                     (int2 *)r->s_tile_ranges.ptr + bv[i].tile_base, err);
