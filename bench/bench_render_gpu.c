@@ -24,7 +24,7 @@
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
- *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_block_sums, 0)
+ *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_gather, 0)
  *        bench_render_gpu step F          one training step case with F feature channels
  *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
@@ -179,7 +179,7 @@ static void case_raster(size_t n, int W, int H, int D, int block_sums, const cha
     c.s = &s;
     OK(sp_raster_create(&c.r, g_dev, &g_err));
     c.cfg = sp_raster_cfg_default();
-    c.cfg.bwd_block_sums = block_sums;
+    c.cfg.bwd_gather = block_sums;
     c.in = (sp_raster_in){n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, NULL};
     size_t npix = (size_t)W * H;
     c.out.image = dalloc(npix * D * 4);
@@ -204,7 +204,7 @@ static void case_raster(size_t n, int W, int H, int D, int block_sums, const cha
     c.cfg.profile = 0;
     char set[160];
     snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s, %s)", n, W, H, D, pairs,
-             block_sums ? (block_sums > 0 ? " bwd_block_sums=1" : " bwd_block_sums=-1") : "", gpu);
+             block_sums ? (block_sums > 0 ? " bwd_gather=1" : " bwd_gather=-1") : "", gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
     printf("raster_fwd_bwd_ms   %8.3f  ms   %s\n", fb, set);
     printf("raster_peak_gib     %8.3f  GiB  %s extra over params %.3f GiB\n", peak, set, extra);

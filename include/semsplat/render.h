@@ -63,10 +63,11 @@ typedef struct sp_raster_cfg {
     /* 1: time the forward's and backward's stages (sp_raster_last_stages); CUDA records events
      * on its stream between stages (no extra waits). 0 (default): no timing. */
     int profile;
-    /* CUDA only, for tuning: 1 = the backward's per-Gaussian sums per block in shared memory,
-     * then one global atomic per value; 0 (default) or -1 = a global atomic per warp (measured
-     * faster on an H200). Results agree up to float summation order. */
-    int bwd_block_sums;
+    /* CUDA only, for tuning: how the backward sums colour gradients over a warp: 1 = gather over
+     * the lanes that kept the Gaussian (v_image staged in shared memory), -1 = warp
+     * reduce-scatter, 0 (default) = gather for chunks of 16 channels or more. Results agree up
+     * to float summation order. */
+    int bwd_gather;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);

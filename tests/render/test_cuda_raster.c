@@ -7,7 +7,7 @@
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
- * the backward's block sums on and off (cfg.bwd_block_sums). Skips (77) without a GPU or without the CUDA build. */
+ * the backward's two colour-gradient sums (cfg.bwd_gather). Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -119,7 +119,7 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
     return bad;
 }
 
-static int g_block_sums = 0; /* cfg.bwd_block_sums of compare_case's renders */
+static int g_block_sums = 0; /* cfg.bwd_gather of compare_case's renders */
 
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
@@ -128,7 +128,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     scene s = make_scene(n, D, &cam);
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.antialiased = aa;
-    cfg.bwd_block_sums = g_block_sums;
+    cfg.bwd_gather = g_block_sums;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -409,11 +409,13 @@ static void test_box_tiles(void)
     scene_free(&s);
 }
 
-/* The backward's block sums (not the default) against the CPU. */
+/* The backward's colour sums both ways against the CPU: gather at a width where it is not the
+ * default, reduce-scatter at widths where gather is. */
 static void test_block_sums(void)
 {
     g_block_sums = 1;
     compare_case(97, 63, 600, 3, 1, 0);
+    g_block_sums = -1;
     compare_case(80, 64, 500, 32, 0, 0);
     compare_case(72, 40, 400, 67, 1, 0);
     g_block_sums = 0;
