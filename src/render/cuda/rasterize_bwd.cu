@@ -14,6 +14,7 @@
  *    about CH shuffles instead of 5 CH, and the atomics that follow are spread over lanes and hit
  *    consecutive addresses;
  *  - warps where no pixel kept the Gaussian skip it (ballot);
+ *  - chunks of up to 8 channels reduce geometry and colours in one reduce-scatter;
  *  - colour gradients by gather (cfg.bwd_gather; default for chunks of 16 channels or more):
  *    the pixels' v_image rows are staged in shared memory once, and per Gaussian lane l sums
  *    fac * v_image over only the lanes that kept it (ballot) for channels l, l + 32, ..: a
@@ -226,6 +227,27 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     if (c < CH && c0 + c < D && acc[i] != 0.f)
                         atomicAdd(v_colors + (size_t)g * D + c0 + c, acc[i]);
                 }
+            } else if (v_colors && CH <= 8) {
+                /* narrow chunks: geometry and colours in ONE reduce-scatter (fewer shuffle
+                 * rounds than two); slot k < 7 is geometry, 7 + c colour c */
+                constexpr int NV = 7 + VC;
+                float all[NV];
+#pragma unroll
+                for (int k = 0; k < 7; k++) all[k] = geo[k];
+#pragma unroll
+                for (int c = 0; c < VC; c++) all[7 + c] = vcol[c];
+                const int base = warp_reduce_scatter<NV>(all, lane);
+                if (lane % RS_GROUP(NV) == 0) {
+#pragma unroll
+                    for (int i = 0; i < RS_LIVE(NV); i++) {
+                        const int k = base + i;
+                        if (k >= NV || all[i] == 0.f) continue;
+                        if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
+                        else if (k - 7 < CH && c0 + k - 7 < D)
+                            atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                    }
+                }
+                continue;
             } else if (v_colors) {
                 const int cb = warp_reduce_scatter<VC>(vcol, lane);
                 constexpr int LIVE = RS_LIVE(VC), GROUP = RS_GROUP(VC);
