@@ -64,9 +64,9 @@ typedef struct sp_raster_cfg {
      * on its stream between stages (no extra waits). 0 (default): no timing. */
     int profile;
     /* CUDA only, for tuning: how the backward sums colour gradients over a warp: 1 = gather over
-     * the lanes that kept the Gaussian (v_image staged in shared memory), -1 = warp
-     * reduce-scatter, 0 (default) = gather for chunks of 16 channels or more. Results agree up
-     * to float summation order. */
+     * the lanes that kept the Gaussian (v_image staged in shared memory); 0 (default) or -1 =
+     * warp reduce-scatter (measured faster on an H200). Results agree up to float summation
+     * order. */
     int bwd_gather;
 } sp_raster_cfg;
 
