@@ -4,7 +4,9 @@
  * log-uniform in [0.5, 8] px, random unit quaternions, opacity 0.5, channels uniform in [0, 1]).
  * Prints `name  value  unit  (settings)` lines; median of --reps runs after one warm-up.
  * usage: bench_render_cpu [--n N] [--width W --height H] [--threads T] [--reps R] [--d 3|32]
- *                        [--device cpu|cuda] */
+ *                        [--device cpu|cuda] [--box-tiles]
+ * --box-tiles bins every Gaussian into all tiles of its bounding box (sp_raster_cfg.box_tiles),
+ * without the exact ellipse-vs-tile culling, to measure what that culling saves. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,7 +52,7 @@ static int die(const sp_error *err)
 int main(int argc, char **argv)
 {
     size_t n = 100000;
-    int W = 640, H = 480, threads = 0, reps = 5, only_d = 0;
+    int W = 640, H = 480, threads = 0, reps = 5, only_d = 0, box_tiles = 0;
     sp_device_kind kind = SP_DEVICE_CPU;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--n") && i + 1 < argc) n = (size_t)atol(argv[++i]);
@@ -59,12 +61,13 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--d") && i + 1 < argc) only_d = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--box-tiles")) box_tiles = 1;
         else if (!strcmp(argv[i], "--device") && i + 1 < argc) {
             i++;
             kind = !strcmp(argv[i], "cuda") ? SP_DEVICE_CUDA : SP_DEVICE_CPU;
         } else {
             fprintf(stderr, "usage: %s [--n N] [--width W] [--height H] [--threads T] [--reps R] "
-                    "[--d 3|32] [--device cpu|cuda]\n", argv[0]);
+                    "[--d 3|32] [--device cpu|cuda] [--box-tiles]\n", argv[0]);
             return 2;
         }
     }
@@ -128,6 +131,7 @@ int main(int argc, char **argv)
         int D = Ds[t];
         if (only_d && D != only_d) continue;
         sp_raster_cfg cfg = sp_raster_cfg_default();
+        cfg.box_tiles = box_tiles;
         sp_raster_in in = {n, d_means, d_quats, d_ls, d_op, d_col, D, NULL};
         sp_raster_out out = {d_img, NULL, NULL, NULL};
         sp_raster_grad_in gin = {d_vimg, NULL, NULL};
@@ -155,6 +159,9 @@ int main(int argc, char **argv)
         printf("render_forward_D%d  %.2f  ms  (%zu Gaussians, %dx%d, %s, %zu tile pairs, median of %d, "
                "cpu time %.0f ms)\n", D, tf[reps / 2], n, W, H, devname, sp_raster_last_pairs(r), reps,
                cf[reps / 2]);
+        printf("render_pairs_per_gaussian_D%d  %.3f  pairs  (%zu Gaussians, %dx%d, %s tiles)\n", D,
+               (double)sp_raster_last_pairs(r) / (double)n, n, W, H,
+               box_tiles ? "every bounding-box" : "ellipse-culled");
         printf("render_backward_D%d  %.2f  ms  (%zu Gaussians, %dx%d, %s, median of %d, cpu time %.0f ms)\n",
                D, tb[reps / 2], n, W, H, devname, reps, cb[reps / 2]);
         fflush(stdout);

@@ -15,12 +15,16 @@
  *   views           inference renders of an uploaded scene (sp_scene, SH degree 1 + 16 features):
  *                   V views (RGB, features, expected depth, downloaded to the host) as one
  *                   sp_render_views batch and one view per call, in ms per view
+ *   raster_stages   one extra profiled fwd+bwd (cfg.profile): per-stage device ms from events
+ *                   (project, bin = depth order + pair counts + scan, sort = pair-count wait +
+ *                   emission + tile sort, fwd, bwd = clearing + backward compositing,
+ *                   project_bwd) and pairs per Gaussian
  * Median of 20 runs after 5 warm-ups, synchronised. Peak memory is what semsplat allocated on
  * the GPU (sp_device_peak_bytes of the CUDA device), measured per case in a child process so cases do not mix;
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
- *        bench_render_gpu raster N W H D  one rasterizer case
+ *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_gather, 0)
  *        bench_render_gpu step F          one training step case with F feature channels
  *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
@@ -166,7 +170,7 @@ static void run_fwd_bwd(void *p)
     OK(sp_raster_backward(c->r, &c->gin, &c->g, &g_err));
 }
 
-static void case_raster(size_t n, int W, int H, int D, const char *gpu)
+static void case_raster(size_t n, int W, int H, int D, int block_sums, const char *gpu)
 {
     bscene s = make_scene(n, W, H, D);
     size_t params = sp_device_peak_bytes(g_dev);
@@ -175,6 +179,7 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     c.s = &s;
     OK(sp_raster_create(&c.r, g_dev, &g_err));
     c.cfg = sp_raster_cfg_default();
+    c.cfg.bwd_gather = block_sums;
     c.in = (sp_raster_in){n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, NULL};
     size_t npix = (size_t)W * H;
     c.out.image = dalloc(npix * D * 4);
@@ -191,11 +196,23 @@ static void case_raster(size_t n, int W, int H, int D, const char *gpu)
     double fb = time_ms(run_fwd_bwd, &c);
     double peak = sp_device_peak_bytes(g_dev) / 1073741824.0;
     double extra = (sp_device_peak_bytes(g_dev) - params) / 1073741824.0;
+    /* one more profiled forward + backward: where the time goes (events between the stages) */
+    sp_raster_stages st;
+    c.cfg.profile = 1;
+    run_fwd_bwd(&c);
+    OK(sp_raster_last_stages(c.r, &st, &g_err));
+    c.cfg.profile = 0;
     char set[160];
-    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu, %s)", n, W, H, D, pairs, gpu);
+    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s, %s)", n, W, H, D, pairs,
+             block_sums ? (block_sums > 0 ? " bwd_gather=1" : " bwd_gather=-1") : "", gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
     printf("raster_fwd_bwd_ms   %8.3f  ms   %s\n", fb, set);
     printf("raster_peak_gib     %8.3f  GiB  %s extra over params %.3f GiB\n", peak, set, extra);
+    printf("raster_stages_ms    %8.3f  ms   (D=%d: project %.3f bin %.3f sort %.3f fwd %.3f "
+           "bwd %.3f project_bwd %.3f; pairs/Gaussian %.3f)\n",
+           st.project + st.bin + st.sort + st.raster_fwd + st.raster_bwd + st.project_bwd, D,
+           st.project, st.bin, st.sort, st.raster_fwd, st.raster_bwd, st.project_bwd,
+           (double)pairs / (double)n);
     printf("JSON {\"what\":\"semsplat\",\"n\":%zu,\"w\":%d,\"h\":%d,\"d\":%d,\"fwd_ms\":%.3f,"
            "\"fwd_bwd_ms\":%.3f,\"peak_gib\":%.3f}\n", n, W, H, D, f, fb, extra);
     fflush(stdout);
@@ -415,13 +432,15 @@ int main(int argc, char **argv)
         return 0;
     }
     /* each case in its own process with its own device, so peak memory does not mix */
-    int is_raster = argc == 6 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
+    int is_raster = (argc == 6 || argc == 7) && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
     int is_views = argc == 6 && !strcmp(argv[1], "views");
     if (is_raster || is_step || is_views) {
         OK(sp_device_create(&g_dev, SP_DEVICE_CUDA, 0, &g_err));
         char gpu[256];
         snprintf(gpu, sizeof gpu, "%s", sp_device_name(g_dev));
-        if (is_raster) case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
+        if (is_raster)
+            case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]),
+                        argc == 7 ? atoi(argv[6]) : 0, gpu);
         else if (is_views) case_views((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
         else case_step(atoi(argv[2]), gpu);
         sp_device_free(g_dev);

@@ -56,6 +56,18 @@ typedef struct sp_raster_cfg {
      * backward; 0 (default) = SP_CHANNEL_CHUNK_MAX, the measured best; else one of
      * SP_CHANNEL_WIDTHS. Results do not depend on it. */
     int chunk_fwd, chunk_bwd;
+    /* 0 (default): a Gaussian is binned only into the tiles its alpha >= 1/255 ellipse reaches
+     * (exact ellipse-vs-tile culling); 1: into every tile of its bounding box. The images and
+     * gradients are the same either way (tests compare them); 1 only costs more pairs. */
+    int box_tiles;
+    /* 1: time the forward's and backward's stages (sp_raster_last_stages); CUDA records events
+     * on its stream between stages (no extra waits). 0 (default): no timing. */
+    int profile;
+    /* CUDA only, for tuning: how the backward sums colour gradients over a warp: 1 = gather over
+     * the lanes that kept the Gaussian (v_image staged in shared memory); 0 (default) or -1 =
+     * warp reduce-scatter (measured faster on an H200). Results agree up to float summation
+     * order. */
+    int bwd_gather;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);
@@ -118,6 +130,20 @@ int sp_raster_backward(sp_raster *r, const sp_raster_grad_in *gin, sp_raster_gra
 /* Screen radius in pixels of each Gaussian in the last forward ([n] int32 on the device; 0 =
  * culled). Valid until the next forward. */
 const int32_t *sp_raster_radii(const sp_raster *r);
+/* Where the last forward and backward spent their time, in milliseconds, when that forward
+ * ran with cfg.profile (else, and on the CPU backend, zeros). */
+typedef struct sp_raster_stages {
+    double project;     /* projection */
+    double bin;         /* depth order, tile-pair counts and their scan */
+    double sort;        /* the pair-count wait, pair emission and the tile sort */
+    double raster_fwd;  /* forward compositing (every channel chunk) */
+    double raster_bwd;  /* gradient clearing and backward compositing (0 before a backward) */
+    double project_bwd; /* projection backward */
+} sp_raster_stages;
+
+/* Fills *out for the last forward/backward (waits for them to finish). Returns 0 or SP_E_*. */
+int sp_raster_last_stages(sp_raster *r, sp_raster_stages *out, sp_error *err);
+
 /* Number of (Gaussian, tile) pairs in the last forward. */
 size_t sp_raster_last_pairs(const sp_raster *r);
 

@@ -137,7 +137,7 @@ int sp_channel_width(int d, int max_width)
 int sp_device_scratch_reserve(sp_device *dev, sp_device_scratch *s, size_t bytes, sp_error *err)
 {
     if (bytes <= s->cap && s->ptr) return 0;
-    size_t cap = bytes + bytes / 4 + 256;
+    size_t cap = bytes + bytes / 16 + 256;
     sp_device_release(dev, s->ptr);
     s->ptr = NULL;
     s->cap = 0;

@@ -48,7 +48,8 @@ void sp_device_account(sp_device *dev, long long delta);
 void *sp_device_alloc_scratch(sp_device *dev, size_t bytes, sp_error *err);
 
 /* Grow-only scratch on a device: ensures *buf holds at least `bytes` (contents are NOT kept when
- * it grows; it grows by 1.25x so slowly growing sizes do not reallocate every call). */
+ * it grows; it grows by 1/16 more than asked, so slowly growing sizes do not reallocate every
+ * call, while the slack, which counts in the device's peak memory, stays small). */
 typedef struct sp_device_scratch {
     void *ptr;
     size_t cap;

@@ -54,6 +54,8 @@ typedef struct sp_render_backend {
                               const float *sh, const float *means, sp_vec3 cam_center,
                               const float *rgb, const float *v_rgb, int stride, float *v_sh,
                               float *v_means, sp_error *err);
+    /* sp_raster_last_stages (zeros when the last forward was not profiled) */
+    int (*stages)(void *state, sp_raster_stages *out, sp_error *err);
 } sp_render_backend;
 
 /* raster.c: the camera and cfg checks of sp_raster_forward (`what` names the caller in the

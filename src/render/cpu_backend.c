@@ -154,9 +154,16 @@ static int cpu_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *
     return rc;
 }
 
+/* The CPU backend does not time its stages (sp_raster_last_stages gives zeros). */
+static int cpu_stages(void *state, sp_raster_stages *out, sp_error *err)
+{
+    (void)state, (void)out, (void)err;
+    return 0;
+}
+
 const sp_render_backend sp_render_cpu_backend = {
     "cpu", cpu_create, cpu_destroy, cpu_forward, cpu_backward, cpu_radii, cpu_last_pairs,
-    cpu_views, cpu_sh_to_rgb, cpu_sh_to_rgb_backward};
+    cpu_views, cpu_sh_to_rgb, cpu_sh_to_rgb_backward, cpu_stages};
 
 const sp_render_backend *sp_render_backend_of(const sp_device *dev)
 {

@@ -514,6 +514,50 @@ SP_HD static inline float sp_gm_sigma_cut(float opacity)
     return logf(opacity * 255.f) + 1e-3f;
 }
 
+/* min over dy in [lo, hi] of q = (a X^2 + 2 b X dy + c dy^2) / 2, compared with thr without a
+ * division: 1 when q can be <= thr on the edge dx = X (c > 0). Also used with the axes swapped. */
+SP_HD static inline int sp_gm_edge_hit(float a, float b, float c, float det, float X, float lo,
+                                       float hi, float thr)
+{
+    float mbx = -SP_FMUL(b, X); /* c dy* = -b X */
+    if (mbx >= SP_FMUL(c, lo) && mbx <= SP_FMUL(c, hi)) /* minimiser on the edge: X^2 det / 2c */
+        return SP_FMUL(SP_FMUL(0.5f * det, X), X) <= SP_FMUL(thr, c);
+    float y = mbx < SP_FMUL(c, lo) ? lo : hi;
+    float q = SP_FADD(SP_FADD(SP_FMUL(SP_FMUL(0.5f * a, X), X), SP_FMUL(SP_FMUL(b, X), y)),
+                      SP_FMUL(SP_FMUL(0.5f * c, y), y));
+    return q <= thr;
+}
+
+/* Exact tile culling (StopThePop / Speedy-Splat style): whether sigma <= cut (sp_gm_sigma_cut)
+ * can hold at any pixel centre of the inclusive pixel rectangle [x0, x1] x [y0, y1] for a
+ * Gaussian at (mx, my) with conic con. A lower bound of sigma over the continuous rectangle of
+ * centres (zero when the mean is inside; else the minimum over the four edges, each a 1D
+ * quadratic) against cut plus a margin far above float rounding of the per-pixel sigma (1e-5 of
+ * its largest term over the rectangle, and 1e-3 px times its largest slope for the rounding of
+ * dx and dy), so a tile it rejects has no pixel that sp_gm_alpha_g keeps: dropping it changes
+ * no image and no gradient. Explicitly rounded operations only (no contraction, no fast-math
+ * division), so every backend and kernel that calls it gets the same answer. */
+SP_HD static inline int sp_gm_tile_hit(const float con[3], float cut, float mx, float my, int x0,
+                                       int x1, int y0, int y1)
+{
+    float lx = SP_FSUB((float)x0 + 0.5f, mx), hx = SP_FSUB((float)x1 + 0.5f, mx);
+    float ly = SP_FSUB((float)y0 + 0.5f, my), hy = SP_FSUB((float)y1 + 0.5f, my);
+    if (lx <= 0.f && hx >= 0.f && ly <= 0.f && hy >= 0.f) return 1;
+    float a = con[0], b = con[1], c = con[2], ab = fabsf(b);
+    if (!(a > 0.f && c > 0.f)) return 1;
+    float Mx = fmaxf(fabsf(lx), fabsf(hx)), My = fmaxf(fabsf(ly), fabsf(hy));
+    float big = SP_FADD(SP_FADD(SP_FMUL(SP_FMUL(0.5f * a, Mx), Mx), SP_FMUL(SP_FMUL(ab, Mx), My)),
+                        SP_FMUL(SP_FMUL(0.5f * c, My), My));
+    float slope = SP_FADD(SP_FADD(SP_FMUL(a, Mx), SP_FMUL(ab, SP_FADD(Mx, My))), SP_FMUL(c, My));
+    float thr = SP_FADD(SP_FADD(cut, SP_FMUL(1e-5f, big)), SP_FMUL(1e-3f, slope));
+    float det = fmaxf(0.f, SP_FSUB(SP_FMUL(a, c), SP_FMUL(b, b)));
+    /* vertical edges dx = lx, hx (dy free), horizontal ones dy = ly, hy (dx free, a <-> c) */
+    return sp_gm_edge_hit(a, b, c, det, lx, ly, hy, thr) ||
+           sp_gm_edge_hit(a, b, c, det, hx, ly, hy, thr) ||
+           sp_gm_edge_hit(c, b, a, det, ly, lx, hx, thr) ||
+           sp_gm_edge_hit(c, b, a, det, hy, lx, hx, thr);
+}
+
 /* alpha of a Gaussian at offset (dx, dy) = pixel centre - mean2d (dx = (px + 0.5) - mean x, one
  * rounding): min(SP_ALPHA_MAX, opacity exp(-sigma)); returns 0 when the contribution is skipped
  * (sigma < 0 from rounding, sigma beyond sigma_cut, or alpha < SP_ALPHA_MIN) and sets

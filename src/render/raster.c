@@ -126,6 +126,13 @@ const int32_t *sp_raster_radii(const sp_raster *r) { return r->be->radii(r->stat
 
 size_t sp_raster_last_pairs(const sp_raster *r) { return r->be->last_pairs(r->state); }
 
+int sp_raster_last_stages(sp_raster *r, sp_raster_stages *out, sp_error *err)
+{
+    if (!out) return sp_error_set(err, SP_E_ARG, "sp_raster_last_stages: out is NULL");
+    memset(out, 0, sizeof *out);
+    return r->be->stages(r->state, out, err);
+}
+
 int sp_raster_views(sp_raster *r, const sp_raster_cfg *cfg, const sp_raster_in *geom,
                     const sp_raster_view *views, size_t n_views, sp_error *err)
 {

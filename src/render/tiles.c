@@ -35,6 +35,39 @@ static void radix_sort(uint32_t *key, uint32_t *val, uint32_t *key_tmp, uint32_t
     }
 }
 
+/* Whether Gaussian g's pair with tile (x, y) is kept: the part of its pixel box in the tile meets
+ * its alpha >= 1/255 ellipse (sp_gm_tile_hit), or every box tile when cfg.box_tiles. The counting
+ * and the dealing loops both ask this, so they agree. */
+static int tile_kept(const cpu_raster *r, size_t g, float cut, int x, int y)
+{
+    const int32_t *b = r->pix_box + 4 * g;
+    /* a box within one tile keeps it (dropping a Gaussian's only tile saves nothing) */
+    if (r->cfg.box_tiles || (b[0] / SP_TILE_SIZE == b[1] / SP_TILE_SIZE &&
+                             b[2] / SP_TILE_SIZE == b[3] / SP_TILE_SIZE))
+        return 1;
+    int x0 = x * SP_TILE_SIZE, y0 = y * SP_TILE_SIZE;
+    int x1 = x0 + SP_TILE_SIZE - 1, y1 = y0 + SP_TILE_SIZE - 1;
+    return sp_gm_tile_hit(r->conic + 3 * g, cut, r->mean2d[2 * g], r->mean2d[2 * g + 1],
+                          x0 > b[0] ? x0 : b[0], x1 < b[1] ? x1 : b[1], y0 > b[2] ? y0 : b[2],
+                          y1 < b[3] ? y1 : b[3]);
+}
+
+/* Number of kept tiles of Gaussian g (its box's tiles that pass tile_kept), each also counted
+ * into tile_count[tile + 1] (per-tile counts do not depend on the order Gaussians come in). */
+static size_t count_tiles(const cpu_raster *r, size_t g, uint32_t *tile_count)
+{
+    const int32_t *b = r->pix_box + 4 * g;
+    float cut = sp_gm_sigma_cut(r->opacity[g]);
+    size_t cnt = 0;
+    for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
+        for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++)
+            if (tile_kept(r, g, cut, x, y)) {
+                cnt++;
+                tile_count[(size_t)y * r->tiles_x + x + 1]++;
+            }
+    return cnt;
+}
+
 int cpu_bin_tiles(cpu_raster *r, sp_error *err)
 {
     size_t n = r->n;
@@ -54,15 +87,13 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     uint32_t *cursor = val_tmp + n;
     r->pair_off = pair_off;
 
-    /* pairs per Gaussian (index order) and the visible list */
+    /* pairs per Gaussian (index order), per tile (into cursor) and the visible list */
     size_t m = 0, pairs = 0;
+    memset(cursor, 0, (tiles + 1) * sizeof(uint32_t));
     for (size_t i = 0; i < n; i++) {
         pair_off[i] = pairs;
         if (r->radii[i] <= 0) continue;
-        const int32_t *b = r->pix_box + 4 * i;
-        size_t cnt = (size_t)(b[1] / SP_TILE_SIZE - b[0] / SP_TILE_SIZE + 1) *
-                     (size_t)(b[3] / SP_TILE_SIZE - b[2] / SP_TILE_SIZE + 1);
-        pairs += cnt;
+        pairs += count_tiles(r, i, cursor);
         key[m] = float_key(r->depth[i]);
         val[m] = (uint32_t)i;
         m++;
@@ -81,14 +112,8 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     r->tile_start = (uint32_t *)(r->tile_rec + pairs);
     r->tile_slot = r->tile_start + tiles + 1;
 
-    /* counting sort by tile */
-    memset(r->tile_start, 0, (tiles + 1) * sizeof(uint32_t));
-    for (size_t k = 0; k < m; k++) {
-        const int32_t *b = r->pix_box + 4 * val[k];
-        for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
-            for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++)
-                r->tile_start[(size_t)y * tx + x + 1]++;
-    }
+    /* counting sort by tile (the counts came with the pair counts) */
+    memcpy(r->tile_start, cursor, (tiles + 1) * sizeof(uint32_t));
     for (size_t t = 0; t < tiles; t++) r->tile_start[t + 1] += r->tile_start[t];
     memcpy(cursor, r->tile_start, tiles * sizeof(uint32_t));
     for (size_t k = 0; k < m; k++) {
@@ -108,6 +133,7 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
         rec.pad[0] = rec.pad[1] = 0.f;
         for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
             for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++) {
+                if (!tile_kept(r, g, rec.cut, x, y)) continue;
                 uint32_t pos = cursor[(size_t)y * tx + x]++;
                 r->tile_rec[pos] = rec;
                 r->tile_slot[pos] = slot++;

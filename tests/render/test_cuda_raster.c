@@ -5,7 +5,9 @@
  * gradients and the antialiased mode. Also: repeat runs (forward bit-identical, backward equal to
  * float-atomic reordering), the chunk-width option (same bits), first-surface depth (the same
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
- * the CPU), SH on both devices, bad input. Skips (77) without a GPU or without the CUDA build. */
+ * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
+ * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
+ * the backward's two colour-gradient sums (cfg.bwd_gather). Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -117,6 +119,8 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
     return bad;
 }
 
+static int g_block_sums = 0; /* cfg.bwd_gather of compare_case's renders */
+
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
     sp_error err = {0};
@@ -124,6 +128,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     scene s = make_scene(n, D, &cam);
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.antialiased = aa;
+    cfg.bwd_gather = g_block_sums;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -172,6 +177,10 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     CHECK(e_img <= 1e-4);
     CHECK(e_dep <= 1e-4);
     CHECK(e_alp <= 1e-4);
+    /* the same exact tile culling on both (the GPU's cut uses the fast log: a borderline tile
+     * may go either way, never one that contributes) */
+    size_t pc = sp_raster_last_pairs(rc), pg = sp_raster_last_pairs(rg);
+    CHECK((pc > pg ? pc - pg : pg - pc) <= pc / 1000 + 2);
 
     /* radii: same culling (a ceil at a rounding boundary may differ by one pixel) */
     int32_t *rad_g = malloc(n * 4);
@@ -376,6 +385,43 @@ static void test_chunk_option(void)
     scene_free(&s);
 }
 
+/* Exact ellipse-vs-tile culling is an optimisation only: with every bounding-box tile
+ * (cfg.box_tiles) the image and surface depth have the same bits; profiling changes nothing and
+ * reports every stage. */
+static void test_box_tiles(void)
+{
+    sp_camera cam = make_cam(150, 110);
+    scene s = make_scene(3000, 3, &cam);
+    size_t npix = 150 * 110;
+    float *a = malloc(npix * 3 * 4), *b = malloc(npix * 3 * 4), *sa = malloc(npix * 4),
+          *sb = malloc(npix * 4);
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    gpu_render(&s, &cam, &cfg, a, sa);
+    cfg.box_tiles = 1;
+    gpu_render(&s, &cam, &cfg, b, sb);
+    CHECK(memcmp(a, b, npix * 3 * 4) == 0);
+    CHECK(memcmp(sa, sb, npix * 4) == 0);
+    cfg.box_tiles = 0;
+    cfg.profile = 1;
+    gpu_render(&s, &cam, &cfg, b, NULL);
+    CHECK(memcmp(a, b, npix * 3 * 4) == 0);
+    free(a), free(b), free(sa), free(sb);
+    scene_free(&s);
+}
+
+/* The backward's optional colour sums by gather (cfg.bwd_gather = 1) against the CPU. */
+static void test_block_sums(void)
+{
+    g_block_sums = 1;
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(80, 64, 500, 32, 0, 0);
+    compare_case(72, 40, 400, 67, 1, 0);
+    g_block_sums = 0;
+}
+
+/* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */
+static void test_many_tiles(void) { compare_case(4112, 4112, 3000, 1, 0, 0); }
+
 /* First-surface depth: both backends walk the same lists with the same alpha and transmittance
  * arithmetic, so every pixel has the same bits (no tolerance). */
 static void test_surface_depth(void)
@@ -524,6 +570,9 @@ int main(void)
     RUN(test_many);
     RUN(test_all_widths);
     RUN(test_chunk_option);
+    RUN(test_box_tiles);
+    RUN(test_block_sums);
+    RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);
     RUN(test_sh);

@@ -19,8 +19,7 @@ typedef struct sp_cuda_proj {
     float4 *conic_op;  /* [n] (conic a, b, c, opacity after sigmoid and AA compensation) */
     float *depths;     /* [n] camera z */
     int32_t *radii;    /* [n] 0 = culled */
-    int4 *rect;        /* [n] tile rectangle x0, y0, x1, y1 (half-open) */
-    uint32_t *ntiles;  /* [n] tiles touched */
+    short4 *box;       /* [n] inclusive pixel box x0, y0, x1, y1 (images up to 32767 px) */
 } sp_cuda_proj;
 
 /* One view's pipeline state on the device: its camera, projection, sorted (tile, depth) pairs and
@@ -28,6 +27,7 @@ typedef struct sp_cuda_proj {
 typedef struct sp_cuda_view {
     sp_camera cam;
     int tiles_x, tiles_y;
+    int box_tiles; /* sp_raster_cfg.box_tiles: bin into every box tile, no ellipse test */
     sp_cuda_proj proj;
     size_t n_pairs;
     const uint32_t *sorted_ids; /* [n_pairs] Gaussian index per sorted pair */
@@ -44,6 +44,12 @@ typedef struct sp_cuda_pass {
     float *image, *depth, *alpha;
 } sp_cuda_pass;
 
+/* Stage boundaries a profiled forward/backward records (sp_raster_last_stages). */
+enum {
+    SP_EV_START, SP_EV_PROJECTED, SP_EV_COUNTED, SP_EV_SORTED, SP_EV_FWD_DONE,
+    SP_EV_BWD_START, SP_EV_BWD_RASTER, SP_EV_BWD_DONE, SP_EV_COUNT
+};
+
 /* The backend's state (defined here so the stage files share it). */
 struct sp_cuda_raster {
     sp_device *dev;
@@ -55,16 +61,35 @@ struct sp_cuda_raster {
     float *bg_dev; /* [D] background on the device (inside s_bg) */
     sp_cuda_view view; /* the single-view path's */
 
-    sp_device_scratch s_means2d, s_conic_op, s_depths, s_radii, s_rect, s_ntiles, s_offsets;
+    sp_device_scratch s_means2d, s_conic_op, s_depths, s_radii, s_box;
+    /* pairs: tile keys (16 or 32 bits: sp_cuda_key_bytes) and Gaussian ids, double-buffered */
     sp_device_scratch s_keys[2], s_vals[2], s_tile_ranges, s_cub;
     sp_device_scratch s_tfinal, s_last, s_bg;
-    /* backward: per-Gaussian sums (v_mean2d 2, v_conic 3 in the conic's frame, v_opacity,
-     * v_depth, pad) */
-    sp_device_scratch s_vgeo;
+    /* sp_cuda_work_bytes(n): the binning's per-Gaussian temporaries (tiles.cu), then the
+     * backward's per-Gaussian sums [n][SP_VGEO_STRIDE] (v_mean2d 2, v_conic 3 in the conic's
+     * frame, v_opacity, v_depth): never live at once, so they share it */
+    sp_device_scratch s_work;
     /* batches (sp_render_views): per-view pair counts, host copy of them */
     sp_device_scratch s_counts;
+    /* cfg.profile: events recorded between the stages (SP_EV_*), made on first use */
+    cudaEvent_t ev[SP_EV_COUNT];
+    int ev_made, profiling, prof_fwd, prof_bwd;
 };
 typedef struct sp_cuda_raster sp_cuda_raster;
+
+/* Records stage boundary k on the stream when this forward is profiled. */
+static inline void sp_cu_mark(sp_cuda_raster *r, int k)
+{
+    if (r->profiling) cudaEventRecord(r->ev[k], r->stream);
+}
+/* Makes the profiling events once (raster.cu). */
+int sp_cuda_make_events(sp_cuda_raster *r, sp_error *err);
+
+#define SP_VGEO_STRIDE 7
+
+/* Bytes of s_work for n Gaussians: offsets (8) + depth order, counts, 3 sort temporaries (4 each)
+ * = 28 = SP_VGEO_STRIDE floats. */
+static inline size_t sp_cuda_work_bytes(size_t n) { return n * 28 + 256; }
 
 static inline int sp_cu_reserve(sp_cuda_raster *r, sp_device_scratch *s, size_t bytes, sp_error *err)
 {
@@ -87,15 +112,29 @@ int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float
                           float *vgeo, sp_error *err);
 int sp_cuda_project_bwd(sp_cuda_raster *r, sp_raster_grads *grads, const float *vgeo,
                         sp_error *err);
-/* The tile-pair kernels of one view, for batches (tiles.cu). */
-int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n,
-                       const unsigned long long *offsets, unsigned long long *keys,
+/* The binning steps of one view, for batches (tiles.cu). The depth order, the scan and the
+ * count use s_cub, which the caller reserves (sp_cuda_prep_temp_bytes) before queueing them. */
+/* ids [n] = the Gaussians front to back (culled last); tmp: [3n] uint32 scratch. */
+int sp_cuda_depth_order(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, uint32_t *ids,
+                        uint32_t *tmp, sp_error *err);
+/* counts[k] = kept tiles of Gaussian ids[k]. */
+int sp_cuda_count_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, const uint32_t *ids,
+                        uint32_t *counts, sp_error *err);
+int sp_cuda_scan_counts(sp_cuda_raster *r, const uint32_t *counts, unsigned long long *offsets,
+                        size_t m, sp_error *err);
+int sp_cuda_prep_temp_bytes(size_t n, size_t m, size_t *bytes, sp_error *err);
+/* Writes Gaussian ids[k]'s pairs at [offsets[k-1], offsets[k]) (inclusive sums; the first
+ * Gaussian's start at `first`: 0 for one view, the view's first pair in a batch). */
+int sp_cuda_emit_pairs(sp_cuda_raster *r, const sp_cuda_view *v, size_t n, const uint32_t *ids,
+                       const unsigned long long *offsets, unsigned long long first, void *keys,
                        uint32_t *vals, sp_error *err);
+/* Tile key width of view v: 2 bytes up to 65536 tiles, else 4. */
+int sp_cuda_key_bytes(const sp_cuda_view *v);
 /* cub's temporary bytes for sorting m pairs of view v (host-side query, no device work). */
 int sp_cuda_sort_temp_bytes(const sp_cuda_view *v, size_t m, size_t *bytes, sp_error *err);
-int sp_cuda_sort_pairs(sp_cuda_raster *r, sp_cuda_view *v, unsigned long long *k0,
-                       unsigned long long *k1, uint32_t *v0, uint32_t *v1, int2 *ranges,
-                       sp_error *err);
+/* Sorts v->n_pairs pairs by tile (stable), fills ranges and v->sorted_ids; reserves s_cub. */
+int sp_cuda_sort_pairs(sp_cuda_raster *r, sp_cuda_view *v, void *k0, void *k1, uint32_t *v0,
+                       uint32_t *v1, int2 *ranges, sp_error *err);
 /* The backend table's entries (raster.cu, rasterize_fwd.cu, rasterize_bwd.cu, views.cu, sh.cu). */
 int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cfg *cfg,
                            const sp_raster_in *in, sp_raster_out *out, sp_error *err);

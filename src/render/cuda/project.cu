@@ -9,8 +9,7 @@ __global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg,
                           const float *__restrict__ log_scales,
                           const float *__restrict__ opacity_logits, float2 *__restrict__ means2d,
                           float4 *__restrict__ conic_op, float *__restrict__ depths,
-                          int32_t *__restrict__ radii, int4 *__restrict__ rect,
-                          uint32_t *__restrict__ ntiles)
+                          int32_t *__restrict__ radii, short4 *__restrict__ box)
 {
     size_t i = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n) return;
@@ -40,17 +39,13 @@ __global__ void k_project(size_t n, sp_camera cam, sp_raster_cfg cfg,
     }
     if (!vis || bx0 > bx1 || by0 > by1) {
         radii[i] = 0;
-        ntiles[i] = 0;
         return;
     }
-    int x0 = bx0 / SP_TILE_SIZE, x1 = bx1 / SP_TILE_SIZE + 1;
-    int y0 = by0 / SP_TILE_SIZE, y1 = by1 / SP_TILE_SIZE + 1;
     radii[i] = radius;
-    ntiles[i] = (uint32_t)((x1 - x0) * (y1 - y0));
     means2d[i] = make_float2(mean2d[0], mean2d[1]);
     conic_op[i] = make_float4(conic[0], conic[1], conic[2], op);
     depths[i] = depth;
-    rect[i] = make_int4(x0, y0, x1, y1);
+    box[i] = make_short4((short)bx0, (short)by0, (short)bx1, (short)by1);
 }
 
 int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp_error *err)
@@ -60,14 +55,12 @@ int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp
     if ((rc = sp_cu_reserve(r, &r->s_conic_op, count * sizeof(float4), err))) return rc;
     if ((rc = sp_cu_reserve(r, &r->s_depths, count * sizeof(float), err))) return rc;
     if ((rc = sp_cu_reserve(r, &r->s_radii, count * sizeof(int32_t), err))) return rc;
-    if ((rc = sp_cu_reserve(r, &r->s_rect, count * sizeof(int4), err))) return rc;
-    if ((rc = sp_cu_reserve(r, &r->s_ntiles, count * sizeof(uint32_t), err))) return rc;
+    if ((rc = sp_cu_reserve(r, &r->s_box, count * sizeof(short4), err))) return rc;
     proj->means2d = (float2 *)r->s_means2d.ptr;
     proj->conic_op = (float4 *)r->s_conic_op.ptr;
     proj->depths = (float *)r->s_depths.ptr;
     proj->radii = (int32_t *)r->s_radii.ptr;
-    proj->rect = (int4 *)r->s_rect.ptr;
-    proj->ntiles = (uint32_t *)r->s_ntiles.ptr;
+    proj->box = (short4 *)r->s_box.ptr;
     return 0;
 }
 
@@ -76,11 +69,14 @@ int sp_cuda_project(sp_cuda_raster *r, const sp_cuda_view *v, const sp_raster_cf
 {
     size_t n = in->n;
     if (n == 0) return 0;
+    if (v->cam.width > 32767 || v->cam.height > 32767)
+        return sp_error_set(err, SP_E_ARG, "CUDA rasterizer: %dx%d image is over 32767 px a side",
+                            v->cam.width, v->cam.height);
     const sp_cuda_proj *p = &v->proj;
     k_project<<<sp_div_up(n, 256), 256, 0, r->stream>>>(n, v->cam, *cfg, in->means, in->quats,
                                                         in->log_scales, in->opacity_logits,
                                                         p->means2d, p->conic_op, p->depths,
-                                                        p->radii, p->rect, p->ntiles);
+                                                        p->radii, p->box);
     SP_CUDA_LAUNCHED(err, "projection");
     return 0;
 }
@@ -100,7 +96,7 @@ __global__ void k_project_bwd(size_t n, sp_camera cam, sp_raster_cfg cfg,
 {
     size_t i = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
     if (i >= n || radii[i] <= 0) return;
-    const float *g = vgeo + i * 8;
+    const float *g = vgeo + i * SP_VGEO_STRIDE;
     float v2[2] = {g[0], g[1]}, vc[3] = {g[2], g[3], g[4]};
     float m[3] = {means[i * 3], means[i * 3 + 1], means[i * 3 + 2]};
     float q[4] = {quats[i * 4], quats[i * 4 + 1], quats[i * 4 + 2], quats[i * 4 + 3]};

@@ -178,6 +178,7 @@ int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cf
     r->in.background = NULL; /* host pointer; kept on the device in bg_dev */
     v->tiles_x = (cam->width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
     v->tiles_y = (cam->height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
+    v->box_tiles = cfg->box_tiles;
     size_t npix = (size_t)cam->width * cam->height;
 
     if ((rc = sp_cuda_upload_background(r, in->background, in->D, &r->bg_dev, err))) return rc;
@@ -187,11 +188,19 @@ int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cf
     v->last_idx = (int32_t *)r->s_last.ptr;
 
     if ((rc = sp_cuda_reserve_proj(r, in->n, &v->proj, err))) return rc;
+    r->prof_fwd = r->prof_bwd = 0;
+    r->profiling = cfg->profile;
+    if (r->profiling && (rc = sp_cuda_make_events(r, err))) return rc;
+    sp_cu_mark(r, SP_EV_START);
     if ((rc = sp_cuda_project(r, v, cfg, in, err))) return rc;
+    sp_cu_mark(r, SP_EV_PROJECTED);
     if ((rc = sp_cuda_bin_and_sort(r, v, in->n, err))) return rc;
+    sp_cu_mark(r, SP_EV_SORTED);
     sp_cuda_pass pass = {in->colors, in->D, r->bg_dev, out->image, out->depth, out->alpha};
     int max_ch = cfg->chunk_fwd ? cfg->chunk_fwd : SP_CHANNEL_CHUNK_MAX;
     if ((rc = sp_cuda_rasterize_fwd(r, v, &pass, max_ch, 1, err))) return rc;
+    sp_cu_mark(r, SP_EV_FWD_DONE);
+    r->prof_fwd = r->profiling;
     if (out->surface_depth &&
         (rc = sp_cuda_rasterize_surface(r, v, cfg->surface_alpha, out->surface_depth, err)))
         return rc;

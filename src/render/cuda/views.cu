@@ -1,8 +1,9 @@
 /* CUDA backend: a batch of views of one set of Gaussians (sp_render_views), with one wait for the
  * GPU per batch instead of one per view. Every view is projected into its own slice of one
- * projection buffer ([views][n]); one scan over all the slices' tile counts gives every pair its
- * place in one pair buffer, so one copy of the views' totals (the only wait) sizes every
- * sort; then each view's pairs are emitted, sorted and composited with the single-view kernels,
+ * projection buffer ([views][n]), put in depth order and its tile pairs counted into its slice of
+ * one count buffer; one scan over all the slices' counts gives every pair its place in one pair
+ * buffer, so one copy of the views' totals (the only wait) sizes every tile sort; then each view's
+ * pairs are emitted, sorted and composited with the single-view kernels,
  * unchanged, on pointers into its slices, all queued on the device's stream. The per-pixel
  * forward state (final transmittance, list ends) is shared: nothing differentiates a batch. */
 #include "common.cuh"
@@ -22,8 +23,26 @@ static void slice_proj(const sp_cuda_proj *all, size_t at, sp_cuda_proj *p)
     p->conic_op = all->conic_op + at;
     p->depths = all->depths + at;
     p->radii = all->radii + at;
-    p->rect = all->rect + at;
-    p->ntiles = all->ntiles + at;
+    p->box = all->box + at;
+}
+
+/* The batch's work area (s_work): offsets [views][n] (64-bit), depth orders [views][n], counts
+ * [views][n], then the depth sorts' temporaries [3n] (reused view after view). */
+typedef struct {
+    unsigned long long *offsets;
+    uint32_t *ids, *counts, *tmp;
+} batch_work;
+
+static size_t batch_work_bytes(size_t nv, size_t n) { return nv * n * 16 + 3 * n * 4 + 256; }
+
+static batch_work carve_work(void *base, size_t nv, size_t n)
+{
+    batch_work w;
+    w.offsets = (unsigned long long *)base;
+    w.ids = (uint32_t *)(w.offsets + nv * n);
+    w.counts = w.ids + nv * n;
+    w.tmp = w.counts + nv * n;
+    return w;
 }
 
 /* Buffers whose size is known before any work is queued (growing one later would free it while
@@ -39,8 +58,12 @@ static int reserve_upfront(sp_cuda_raster *r, const sp_raster_view *views, size_
         (rc = sp_cu_reserve(r, &r->s_last, max_npix * sizeof(int32_t), err)) ||
         (rc = sp_cu_reserve(r, &r->s_bg, (size_t)max_d * sizeof(float), err)) ||
         (rc = sp_cu_reserve(r, &r->s_tile_ranges, total_tiles * sizeof(int2), err)) ||
-        (rc = sp_cu_reserve(r, &r->s_offsets, (nv * n ? nv * n : 1) * sizeof(unsigned long long), err)) ||
+        (rc = sp_cu_reserve(r, &r->s_work, batch_work_bytes(nv, n), err)) ||
         (rc = sp_cu_reserve(r, &r->s_counts, nv * sizeof(unsigned long long), err)))
+        return rc;
+    size_t tmp = 0;
+    if (n > 0 && ((rc = sp_cuda_prep_temp_bytes(n, nv * n, &tmp, err)) ||
+                  (rc = sp_cu_reserve(r, &r->s_cub, tmp, err))))
         return rc;
     return sp_cuda_reserve_proj(r, nv * n, all, err);
 }
@@ -53,25 +76,24 @@ __global__ void k_view_ends(const unsigned long long *__restrict__ offsets, size
     if (v < nv) ends[v] = offsets[(v + 1) * n - 1];
 }
 
-/* Projections, the scan of all tile counts and the one wait for the views' pair totals. */
+/* Projections, depth orders and tile counts, the scan of all counts and the one wait for the
+ * views' pair totals. */
 static int project_and_count(sp_cuda_raster *r, const sp_raster_cfg *cfg, const sp_raster_in *geom,
                              batch_view *bv, size_t nv, unsigned long long *ends, sp_error *err)
 {
     size_t n = geom->n, count = nv * n;
+    batch_work w = carve_work(r->s_work.ptr, nv, n);
     for (size_t i = 0; i < nv; i++) {
-        int rc = sp_cuda_project(r, &bv[i].v, cfg, geom, err);
+        sp_cuda_view *v = &bv[i].v;
+        uint32_t *ids = w.ids + i * n;
+        int rc = sp_cuda_project(r, v, cfg, geom, err);
+        if (!rc) rc = sp_cuda_depth_order(r, v, n, ids, w.tmp, err);
+        if (!rc) rc = sp_cuda_count_pairs(r, v, n, ids, w.counts + i * n, err);
         if (rc) return sp_error_prefix(err, "view %zu: ", i);
     }
-    unsigned long long *offsets = (unsigned long long *)r->s_offsets.ptr;
-    const uint32_t *ntiles = bv[0].v.proj.ntiles; /* slice 0 starts the whole buffer */
-    size_t tmp = 0;
-    SP_CUDA_CHECK(cub::DeviceScan::InclusiveSum(NULL, tmp, ntiles, offsets, (int64_t)count), err,
-                  "scan size query");
-    int rc = sp_cu_reserve(r, &r->s_cub, tmp, err);
+    unsigned long long *offsets = w.offsets;
+    int rc = sp_cuda_scan_counts(r, w.counts, offsets, count, err);
     if (rc) return rc;
-    SP_CUDA_CHECK(cub::DeviceScan::InclusiveSum(r->s_cub.ptr, tmp, ntiles, offsets, (int64_t)count,
-                                                r->stream),
-                  err, "tile-count scan");
     /* view i's pairs end at offsets[(i + 1) n - 1]: gathered, then one copy of nv values */
     unsigned long long *d_ends = (unsigned long long *)r->s_counts.ptr;
     k_view_ends<<<sp_div_up(nv, 256), 256, 0, r->stream>>>(offsets, n, nv, d_ends);
@@ -102,21 +124,27 @@ static int sort_views(sp_cuda_raster *r, batch_view *bv, size_t nv, size_t n,
     }
     if (total == 0) return 0;
     int rc;
+    size_t kb = 2; /* one key width for the batch: the widest view's */
+    for (size_t i = 0; i < nv; i++)
+        if ((size_t)sp_cuda_key_bytes(&bv[i].v) > kb) kb = (size_t)sp_cuda_key_bytes(&bv[i].v);
     for (int k = 0; k < 2; k++)
-        if ((rc = sp_cu_reserve(r, &r->s_keys[k], total * sizeof(unsigned long long), err)) ||
+        if ((rc = sp_cu_reserve(r, &r->s_keys[k], total * kb, err)) ||
             (rc = sp_cu_reserve(r, &r->s_vals[k], total * sizeof(uint32_t), err)))
             return rc;
     if ((rc = sp_cu_reserve(r, &r->s_cub, tmp_max, err))) return rc;
-    unsigned long long *k0 = (unsigned long long *)r->s_keys[0].ptr;
-    unsigned long long *k1 = (unsigned long long *)r->s_keys[1].ptr;
+    char *k0 = (char *)r->s_keys[0].ptr, *k1 = (char *)r->s_keys[1].ptr;
     uint32_t *v0 = (uint32_t *)r->s_vals[0].ptr, *v1 = (uint32_t *)r->s_vals[1].ptr;
-    const unsigned long long *offsets = (const unsigned long long *)r->s_offsets.ptr;
+    batch_work w = carve_work(r->s_work.ptr, nv, n);
     for (size_t i = 0; i < nv && !rc; i++) {
         if (bv[i].v.n_pairs == 0) continue;
-        size_t at = bv[i].pair_base;
-        rc = sp_cuda_emit_pairs(r, &bv[i].v, n, offsets + i * n, k0, v0, err);
+        size_t at = bv[i].pair_base, kv = (size_t)sp_cuda_key_bytes(&bv[i].v);
+        /* the view's offsets count from the batch's first pair: its keys are addressed from a
+         * base moved back by pair_base keys of its own width, so its segment starts at k0 + at kb */
+        char *kbase = k0 + at * kb - at * kv;
+        rc = sp_cuda_emit_pairs(r, &bv[i].v, n, w.ids + i * n, w.offsets + i * n, at, kbase, v0,
+                                err);
         if (!rc)
-            rc = sp_cuda_sort_pairs(r, &bv[i].v, k0 + at, k1 + at, v0 + at, v1 + at,
+            rc = sp_cuda_sort_pairs(r, &bv[i].v, k0 + at * kb, k1 + at * kb, v0 + at, v1 + at,
                                     (int2 *)r->s_tile_ranges.ptr + bv[i].tile_base, err);
     }
     return rc;
@@ -152,6 +180,7 @@ int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geo
 {
     sp_cuda_raster *r = (sp_cuda_raster *)state;
     r->have_forward = 0;
+    r->profiling = r->prof_fwd = r->prof_bwd = 0; /* batches are not profiled */
     if (nv == 0) return 0;
     size_t n = geom->n, total_tiles = 0, max_npix = 0;
     batch_view *bv = (batch_view *)calloc(nv, sizeof *bv);
@@ -165,6 +194,7 @@ int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geo
         v->cam = views[i].cam;
         v->tiles_x = (v->cam.width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
         v->tiles_y = (v->cam.height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
+        v->box_tiles = cfg->box_tiles;
         bv[i].tile_base = total_tiles;
         total_tiles += (size_t)v->tiles_x * v->tiles_y;
         size_t np = (size_t)v->cam.width * v->cam.height;
