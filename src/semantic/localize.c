@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sem_cuda.h"
 #include "sem_internal.h"
 
 /* ---- voxel clustering -------------------------------------------------------------------------- */
@@ -298,30 +299,42 @@ static int ensure_scene(sp_query_engine *e, sp_error *err)
     return sp_scene_create(&e->scene, e->dev, &e->splat, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
 }
 
+int sem_device_stages(const sp_query_engine *e, int host_stages)
+{
+    return e->d_feat && e->dev_scores && !host_stages;
+}
+
+int sem_scores_scene(sp_query_engine *e, sp_error *err)
+{
+    const sp_splat *s = &e->splat;
+    int dev = e->d_scores2 && e->dev_scores;
+    if (!e->scores_scene || !dev)
+        for (size_t i = 0; i < s->n; i++) e->scores2[2 * i] = e->raw[i], e->scores2[2 * i + 1] = e->rel[i];
+    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and SH
+     * and takes only the new scores with every query */
+    sp_splat view = *s;
+    view.features = e->scores2;
+    view.feat_dim = 2;
+    if (!e->scores_scene)
+        return sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
+    if (!dev) return sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err);
+    int rc = sem_cuda_interleave(e->dev, s->n, e->d_raw, e->d_rel, e->d_scores2, err);
+    return rc ? rc : sp_scene_copy_features(e->scores_scene, e->d_scores2, err);
+}
+
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err)
 {
-    const sp_splat *s = &e->splat;
-    for (size_t i = 0; i < s->n; i++) e->scores2[2 * i] = e->raw[i], e->scores2[2 * i + 1] = e->rel[i];
     size_t np = (size_t)cam->width * cam->height;
     float *two = malloc(sizeof(float) * np * 2), *alpha = malloc(sizeof(float) * np);
     if (!two || !alpha) {
         free(two), free(alpha);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering %dx%d", cam->width, cam->height);
     }
-    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and
-     * takes only the new scores with every query */
-    sp_splat view = *s;
-    view.features = e->scores2;
-    view.feat_dim = 2;
-    int rc = e->scores_scene
-                 ? sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err)
-                 : sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_FEATURES, err);
-    sp_render_request req = {.features = two, .alpha = alpha};
+    /* scores and RGB of one projection and sort */
+    sp_render_request req = {.rgb = rgb, .features = two, .alpha = alpha};
+    int rc = sem_scores_scene(e, err);
     if (!rc) rc = sp_render_views(e->raster, e->scores_scene, cam, 1, &req, err);
-    sp_render_request req_rgb = {.rgb = rgb};
-    if (!rc && rgb && !(rc = ensure_scene(e, err)))
-        rc = sp_render_views(e->raster, e->scene, cam, 1, &req_rgb, err);
     if (!rc)
         for (size_t p = 0; p < np; p++) {
             int ok = alpha[p] > 0.5f;
@@ -331,7 +344,6 @@ int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, floa
     free(two), free(alpha);
     return rc;
 }
-
 
 /* Renders view v at 1/ds resolution; returns the camera used and buffers (caller frees). */
 static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float **feat,
@@ -505,6 +517,131 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
 
 /* ---- multi-view ----------------------------------------------------------------------------------- */
 
+/* Relevant points of the views, as a growing array. */
+typedef struct {
+    float *pts, *w, *cf;
+    size_t m, cap;
+} mv_points;
+
+static int mv_grow(mv_points *P, sp_error *err)
+{
+    size_t cap = P->cap ? P->cap * 2 : 4096;
+    float *np_ = realloc(P->pts, sizeof(float) * 3 * cap), *nw = np_ ? realloc(P->w, sizeof(float) * cap) : NULL,
+          *nc = nw ? realloc(P->cf, sizeof(float) * cap) : NULL;
+    if (np_) P->pts = np_;
+    if (nw) P->w = nw;
+    if (nc) P->cf = nc;
+    if (!np_ || !nw || !nc) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    P->cap = cap;
+    return 0;
+}
+
+/* Relevant pixels of one scored view, eroded by one pixel (at object borders the expected depth
+ * blends the object with what is behind it and would back-project into the gap), back-projected
+ * with the rendered (expected) depth into P. */
+static int mv_backproject(const sem_thresholds *th, const sp_camera *cam, const float *depth,
+                          const float *alpha, const float *raw, const float *rel, mv_points *P,
+                          sp_error *err)
+{
+    size_t np = (size_t)cam->width * cam->height;
+    uint8_t *keep = calloc(np, 1);
+    if (!keep) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    for (size_t p = 0; p < np; p++)
+        keep[p] = raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f && depth[p] > 0;
+    float Rt[9];
+    sp_mat3_transpose(cam->R, Rt);
+    int rc = 0;
+    for (int y = 1; y + 1 < cam->height && !rc; y++)
+        for (int x = 1; x + 1 < cam->width; x++) {
+            size_t p = (size_t)y * cam->width + x;
+            if (!keep[p] || !keep[p - 1] || !keep[p + 1] || !keep[p - cam->width] || !keep[p + cam->width])
+                continue;
+            if (P->m == P->cap && (rc = mv_grow(P, err))) break;
+            /* back-project the pixel centre with the rendered (expected) depth */
+            float z = depth[p];
+            sp_vec3 xc = sp_v3(((float)x + 0.5f - cam->cx) / cam->fx * z - cam->t[0],
+                               ((float)y + 0.5f - cam->cy) / cam->fy * z - cam->t[1], z - cam->t[2]);
+            sp_vec3 xw = sp_mat3_apply(Rt, xc);
+            size_t m = P->m++;
+            P->pts[3 * m] = xw.x, P->pts[3 * m + 1] = xw.y, P->pts[3 * m + 2] = xw.z;
+            P->w[m] = (rel[p] - 0.5f + 1e-3f) * 2.0f * alpha[p] * (z / cam->fx) * (z / cam->fy);
+            P->cf[m] = raw[p];
+        }
+    free(keep);
+    return rc;
+}
+
+/* Host stages: each view rendered to host buffers, scored and back-projected in turn. */
+static int mv_points_host(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                          const int *views, int got, int ds, mv_points *P, sp_query_stages *st,
+                          sp_error *err)
+{
+    int rc = 0;
+    for (int q = 0; q < got && !rc; q++) {
+        sp_camera cam;
+        float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
+        double t0 = sp_time_now();
+        rc = render_view(e, views[q], ds, &cam, &feat, &depth, &alpha, NULL, err);
+        double t1 = sp_time_now();
+        size_t np = (size_t)cam.width * cam.height;
+        if (!rc) {
+            raw = malloc(sizeof(float) * np);
+            rel = malloc(sizeof(float) * np);
+            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+        }
+        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
+        double t2 = sp_time_now();
+        if (!rc) rc = mv_backproject(th, &cam, depth, alpha, raw, rel, P, err);
+        st->render += (t1 - t0) * 1e3;
+        st->score += (t2 - t1) * 1e3;
+        st->backproject += (sp_time_now() - t2) * 1e3;
+        free(feat), free(depth), free(alpha), free(raw), free(rel);
+    }
+    return rc;
+}
+
+/* Device stages: every view rendered in one batch into device buffers, scored, selected,
+ * back-projected and compacted there; only the points come back. */
+static int mv_points_device(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                            const int *views, int got, int ds, mv_points *P, sp_query_stages *st,
+                            sp_error *err)
+{
+    int D = e->splat.feat_dim, rc = 0;
+    sp_camera *cams = malloc(sizeof *cams * (size_t)got);
+    sp_render_request *reqs = calloc((size_t)got, sizeof *reqs);
+    if (!cams || !reqs) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    size_t total = 0;
+    for (int q = 0; q < got && !rc; q++) {
+        cams[q] = e->cams[views[q]];
+        if (ds > 1) sp_camera_downscale(&cams[q], ds);
+        total += (size_t)cams[q].width * cams[q].height;
+    }
+    /* features [total][D], depth [total], alpha [total]: view q from its first pixel on */
+    size_t o_depth = sem_align64(total * (size_t)D), o_alpha = o_depth + sem_align64(total);
+    if (!rc) rc = ensure_scene(e, err);
+    if (!rc) rc = sp_device_scratch_reserve(e->dev, &e->mv_out, (o_alpha + total) * sizeof(float), err);
+    double t0 = sp_time_now();
+    if (!rc) {
+        float *b = e->mv_out.ptr;
+        for (int q = 0, at = 0; q < got; at += cams[q].width * cams[q].height, q++)
+            reqs[q] = (sp_render_request){.features = b + (size_t)at * D, .depth = b + o_depth + at,
+                                          .alpha = b + o_alpha + at, .on_device = 1};
+        rc = sp_render_views(e->raster, e->scene, cams, (size_t)got, reqs, err);
+        if (!rc) rc = sp_device_sync(e->dev, err);
+    }
+    st->render = (sp_time_now() - t0) * 1e3;
+    double ms[2] = {0, 0};
+    if (!rc) {
+        float *b = e->mv_out.ptr;
+        rc = sem_cuda_view_points(e->dev, &e->mv_work, sc, th->thr_raw, th->thr_rel, cams, got, b,
+                                  b + o_depth, b + o_alpha, &P->pts, &P->w, &P->cf, &P->m, ms, err);
+        P->cap = P->m;
+    }
+    st->score = ms[0], st->backproject = ms[1];
+    free(cams), free(reqs);
+    return rc;
+}
+
 int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                            sp_query_result *res, sp_error *err)
 {
@@ -514,80 +651,30 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     int k = th->opts->n_views > 0 ? th->opts->n_views : 4;
     int *views = malloc(sizeof(int) * (size_t)(3 * k));
     if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    double t0 = sp_time_now();
     int got = sem_pick_views(e, sc, th, NULL, k, 3 * k, views, NULL, err);
+    res->ms_stage.pick = (sp_time_now() - t0) * 1e3;
     if (got < 0) {
         free(views);
         return got;
     }
     res->view_index = got > 0 ? views[0] : -1;
-    float *pts = NULL, *w = NULL, *cf = NULL;
-    size_t m = 0, cap = 0;
-    int rc = 0;
-    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1;
-    for (int q = 0; q < got && !rc; q++) {
-        sp_camera cam;
-        float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
-        rc = render_view(e, views[q], ds, &cam, &feat, &depth, &alpha, NULL, err);
-        size_t np = (size_t)cam.width * cam.height;
-        if (!rc) {
-            raw = malloc(sizeof(float) * np);
-            rel = malloc(sizeof(float) * np);
-            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-        }
-        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
-        if (!rc) {
-            /* relevant pixels, eroded by one pixel: at object borders the expected depth blends
-             * the object with what is behind it and would back-project into the gap */
-            uint8_t *keep = calloc(np, 1);
-            if (!keep) {
-                rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-                goto next;
-            }
-            for (size_t p = 0; p < np; p++)
-                keep[p] = raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f && depth[p] > 0;
-            float Rt[9];
-            sp_mat3_transpose(cam.R, Rt);
-            for (int y = 1; y + 1 < cam.height && !rc; y++)
-                for (int x = 1; x + 1 < cam.width; x++) {
-                    size_t p = (size_t)y * cam.width + x;
-                    if (!keep[p] || !keep[p - 1] || !keep[p + 1] || !keep[p - cam.width] || !keep[p + cam.width])
-                        continue;
-                    if (m == cap) {
-                        cap = cap ? cap * 2 : 4096;
-                        float *np_ = realloc(pts, sizeof(float) * 3 * cap),
-                              *nw = np_ ? realloc(w, sizeof(float) * cap) : NULL,
-                              *nc = nw ? realloc(cf, sizeof(float) * cap) : NULL;
-                        if (np_) pts = np_;
-                        if (nw) w = nw;
-                        if (nc) cf = nc;
-                        if (!np_ || !nw || !nc) {
-                            rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-                            break;
-                        }
-                    }
-                    /* back-project the pixel centre with the rendered (expected) depth */
-                    float z = depth[p];
-                    sp_vec3 xc = sp_v3(((float)x + 0.5f - cam.cx) / cam.fx * z - cam.t[0],
-                                       ((float)y + 0.5f - cam.cy) / cam.fy * z - cam.t[1], z - cam.t[2]);
-                    sp_vec3 xw = sp_mat3_apply(Rt, xc);
-                    pts[3 * m] = xw.x, pts[3 * m + 1] = xw.y, pts[3 * m + 2] = xw.z;
-                    w[m] = (rel[p] - 0.5f + 1e-3f) * 2.0f * alpha[p] * (z / cam.fx) * (z / cam.fy);
-                    cf[m] = raw[p];
-                    m++;
-                }
-            free(keep);
-        }
-    next:
-        free(feat), free(depth), free(alpha), free(raw), free(rel);
-    }
+    mv_points P = {0};
+    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1, rc = 0;
+    if (got > 0)
+        rc = sc->orthonormal && sem_device_stages(e, th->opts->host_stages)
+                 ? mv_points_device(e, sc, th, views, got, ds, &P, &res->ms_stage, err)
+                 : mv_points_host(e, sc, th, views, got, ds, &P, &res->ms_stage, err);
     free(views);
     /* A cluster's weight here sums every view that saw it, so an instance seen from one or two
      * views weighs a fraction of one seen from many: the relative cut is a third of the 3D one. */
-    if (!rc && m > 0)
-        rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
+    double t1 = sp_time_now();
+    if (!rc && P.m > 0)
+        rc = sem_cluster(P.pts, P.w, P.cf, P.m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
                          MV_MIN_VOXEL_COVER * th->opts->voxel_m * th->opts->voxel_m, &res->instances,
                          &res->n_instances, err);
-    free(pts), free(w), free(cf);
+    res->ms_stage.cluster = (sp_time_now() - t1) * 1e3;
+    free(P.pts), free(P.w), free(P.cf);
     if (rc) return rc;
     set_best(res, th->opts->min_confidence);
     return 0;
