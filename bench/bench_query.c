@@ -3,7 +3,7 @@
  * 32-dim features decoding to 512-D, 20 object classes, 24 cameras at 640x480. CPU always; the
  * GPU too when one answers, with the stage breakdown (sp_query_stages) of multi-view queries and
  * heatmaps. Then lift time for the same splat (150 views at 160x120, D = 32).
- * Usage: bench_query [N] [threads] [--no-lift] */
+ * Usage: bench_query [N] [threads] [--no-lift] [--gpu-only] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -234,12 +234,16 @@ int main(int argc, char **argv)
     float *emb = malloc(sizeof(float) * CLASSES * FULL);
     sp_camera cams[NCAM];
     build(n, &s, &pca, emb, cams);
-    int lift = !(argc > 3 && !strcmp(argv[3], "--no-lift"));
-    run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
+    int lift = 1, cpu = 1;
+    for (int a = 3; a < argc; a++) {
+        if (!strcmp(argv[a], "--no-lift")) lift = 0;
+        else if (!strcmp(argv[a], "--gpu-only")) cpu = 0;
+    }
+    if (cpu) run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
     if (sp_cuda_available()) run(SP_DEVICE_CUDA, threads, n, &s, &pca, emb, cams);
     else printf("# gpu: no CUDA device, GPU figures skipped\n");
     if (lift && sp_cuda_available()) run_lift(SP_DEVICE_CUDA, threads, &s, cams);
-    if (lift) run_lift(SP_DEVICE_CPU, threads, &s, cams);
+    if (lift && cpu) run_lift(SP_DEVICE_CPU, threads, &s, cams);
     sp_splat_free(&s);
     sp_sem_pca_free(&pca);
     free(emb);
