@@ -410,6 +410,53 @@ static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
     return 1;
 }
 
+/* Per camera (one pool task each): which samples it sees unoccluded in the image, and a framing
+ * factor (the object framed rather than filling the image: projected box <= 35% of it, near the
+ * centre, seen from within a few metres). */
+typedef struct {
+    const sp_query_engine *e;
+    const size_t *sel;
+    size_t n_smp;
+    uint8_t *vis;  /* [n_cams][n_smp] */
+    float *frame;  /* [n_cams] */
+} frame_job;
+
+static void frame_camera(void *ctx, long ci, int tid)
+{
+    (void)tid;
+    const frame_job *J = ctx;
+    const sp_query_engine *e = J->e;
+    const sp_splat *s = &e->splat;
+    size_t c = (size_t)ci, n_smp = J->n_smp;
+    const size_t *sel = J->sel;
+    uint8_t *vis = J->vis;
+    const sp_camera *cam = &e->cams[c];
+    sp_vec3 o = sp_camera_center(cam);
+    float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f, zsum = 0;
+    int any = 0;
+    for (size_t j = 0; j < n_smp; j++) {
+        size_t i = sel[j];
+        sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
+        sp_vec3 x = sp_mat3_apply(cam->R, p);
+        float z = x.z + cam->t[2];
+        if (z < 0.2f) continue;
+        float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
+        if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
+        if (!visible(e, o, p)) continue;
+        vis[c * n_smp + j] = 1;
+        any++;
+        zsum += z;
+        u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
+    }
+    if (any) {
+        float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
+        float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
+        /* and near: rendered depth (and so back-projection) gets noisier with distance */
+        float zm = zsum / (float)any / 3.5f;
+        J->frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv)) / (1.0f + zm * zm);
+    }
+}
+
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                    const uint8_t *mask, int k_min, int k, int *views, float *scores, sp_error *err)
 {
@@ -430,9 +477,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     /* at most 256 evenly spaced samples of the relevant set */
     size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
     for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
-    /* Per camera: which samples it sees unoccluded in the image, and a framing factor (the
-     * object framed rather than filling the image: projected box <= 35% of it, near the centre,
-     * seen from within a few metres). */
+    /* per camera, in parallel: what it sees of the samples and how well it frames them */
     double tot = 0;
     uint8_t *vis = calloc(e->n_cams * (n_smp ? n_smp : 1), 1);
     float *frame = calloc(e->n_cams, sizeof(float)), *wsmp = malloc(sizeof(float) * (n_smp ? n_smp : 1));
@@ -441,33 +486,8 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
         free(vis), free(frame), free(covered), free(wsmp), free(sel);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
     }
-    for (size_t c = 0; c < e->n_cams; c++) {
-        const sp_camera *cam = &e->cams[c];
-        sp_vec3 o = sp_camera_center(cam);
-        float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f, zsum = 0;
-        int any = 0;
-        for (size_t j = 0; j < n_smp; j++) {
-            size_t i = sel[j];
-            sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
-            sp_vec3 x = sp_mat3_apply(cam->R, p);
-            float z = x.z + cam->t[2];
-            if (z < 0.2f) continue;
-            float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
-            if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
-            if (!visible(e, o, p)) continue;
-            vis[c * n_smp + j] = 1;
-            any++;
-            zsum += z;
-            u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
-        }
-        if (any) {
-            float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
-            float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
-            /* and near: rendered depth (and so back-projection) gets noisier with distance */
-            float zm = zsum / (float)any / 3.5f;
-            frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv)) / (1.0f + zm * zm);
-        }
-    }
+    frame_job fj = {e, sel, n_smp, vis, frame};
+    sp_pool_for(sp_device_pool(e->dev), (long)e->n_cams, frame_camera, &fj);
     for (size_t j = 0; j < n_smp; j++) wsmp[j] = e->opacity[sel[j]], tot += wsmp[j];
     free(sel);
     /* Greedy set cover: each pick scores what it adds (samples no chosen view saw count fully,
