@@ -14,17 +14,7 @@
 
 /* ---- voxel clustering -------------------------------------------------------------------------- */
 
-typedef struct {
-    uint64_t key;
-    uint32_t idx;
-} keyed;
-
-static int cmp_keyed(const void *a, const void *b)
-{
-    const keyed *x = a, *y = b;
-    if (x->key != y->key) return x->key < y->key ? -1 : 1;
-    return x->idx < y->idx ? -1 : x->idx > y->idx;
-}
+typedef sem_keyed keyed;
 
 #define KEY_BITS 21
 #define KEY_OFF (1 << (KEY_BITS - 1))
@@ -47,12 +37,6 @@ static long find_root(long *parent, long i)
 typedef struct {
     float v, w;
 } vw;
-
-static int cmp_vw(const void *a, const void *b)
-{
-    float x = ((const vw *)a)->v, y = ((const vw *)b)->v;
-    return (x > y) - (x < y);
-}
 
 /* Weighted quantile of sorted values. */
 static float wquantile(const vw *s, size_t m, double total, double q)
@@ -81,13 +65,14 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         }
     for (int a = 0; a < 3; a++) /* keep the grid inside the key range for huge scenes */
         while ((hi[a] - lo[a]) / voxel > (float)(KEY_OFF - 2)) voxel *= 2;
-    keyed *k = malloc(sizeof *k * m);
+    keyed *k = malloc(sizeof *k * m), *tmp = malloc(sizeof *tmp * 2 * m); /* sort scratch */
     long *parent = NULL, *vox_of = NULL, *comp = NULL;
     double *cw = NULL;
     sp_query_instance *inst = NULL;
     vw *buf = NULL;
+    uint32_t *members = NULL;
     int rc = 0;
-    if (!k) goto nomem;
+    if (!k || !tmp) goto nomem;
     for (size_t i = 0; i < m; i++) {
         long ix = (long)floorf((pts[i * 3] - lo[0]) / voxel);
         long iy = (long)floorf((pts[i * 3 + 1] - lo[1]) / voxel);
@@ -95,7 +80,7 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         k[i].key = pack(ix, iy, iz);
         k[i].idx = (uint32_t)i;
     }
-    qsort(k, m, sizeof *k, cmp_keyed);
+    sem_sort_keyed(k, tmp, m); /* k was in index order: now by (key, index) */
     /* unique voxels: vox_of[j] = voxel id of sorted entry j; voxel v starts at first[v] */
     vox_of = malloc(sizeof(long) * m);
     if (!vox_of) goto nomem;
@@ -166,24 +151,27 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         if (cw[c] >= min_fraction * best) n_keep++;
     inst = calloc((size_t)n_keep, sizeof *inst);
     buf = malloc(sizeof(vw) * m);
-    if (!inst || !buf) goto nomem;
+    members = malloc(sizeof(uint32_t) * m);
+    if (!inst || !buf || !members) goto nomem;
     int ni = 0;
     for (long c = 0; c < nc; c++) {
         if (cw[c] < min_fraction * best) continue;
         sp_query_instance *I = &inst[ni++];
         I->score = (float)cw[c];
         I->confidence = -1;
+        size_t cnt = 0; /* the component's points, in sorted (voxel) order */
+        for (size_t j = 0; j < m; j++)
+            if (comp[vox_of[j]] == c) members[cnt++] = k[j].idx;
+        for (size_t t = 0; conf && t < cnt; t++)
+            if (conf[members[t]] > I->confidence) I->confidence = conf[members[t]];
         for (int a = 0; a < 3; a++) {
-            size_t cnt = 0;
-            for (size_t j = 0; j < m; j++) {
-                if (comp[vox_of[j]] != c) continue;
-                uint32_t i = k[j].idx;
-                buf[cnt].v = pts[i * 3 + a];
-                buf[cnt].w = w[i];
-                cnt++;
-                if (a == 0 && conf && conf[i] > I->confidence) I->confidence = conf[i];
+            /* values by size, ties in member order (a stable sort) */
+            for (size_t t = 0; t < cnt; t++) {
+                tmp[t].key = sem_float_order(pts[members[t] * 3 + a]);
+                tmp[t].idx = members[t];
             }
-            qsort(buf, cnt, sizeof *buf, cmp_vw);
+            sem_sort_keyed(tmp, tmp + cnt, cnt);
+            for (size_t t = 0; t < cnt; t++) buf[t].v = pts[tmp[t].idx * 3 + a], buf[t].w = w[tmp[t].idx];
             I->extent_min[a] = wquantile(buf, cnt, cw[c], 0.05);
             I->extent_max[a] = wquantile(buf, cnt, cw[c], 0.95);
             I->position[a] = 0.5f * (I->extent_min[a] + I->extent_max[a]);
@@ -214,6 +202,8 @@ done:
     free(cw);
     free(inst);
     free(buf);
+    free(members);
+    free(tmp);
     return rc;
 }
 

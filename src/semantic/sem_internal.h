@@ -103,6 +103,17 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
                 float min_fraction, float min_voxel_weight, sp_query_instance **out, int *n_out,
                 sp_error *err);
 
+/* A sort key and the index of what it belongs to. */
+typedef struct {
+    uint64_t key;
+    uint32_t idx;
+} sem_keyed;
+/* Sorts a [m] by key, stably (equal keys keep their order: a list made in index order comes out
+ * ordered by (key, idx)); tmp [m] is scratch (sort.c). */
+void sem_sort_keyed(sem_keyed *a, sem_keyed *tmp, size_t m);
+/* A key whose unsigned order is f's order (not NaN; -0 sorts just before +0). */
+uint64_t sem_float_order(float f);
+
 /* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op,
  * and the options of the call they belong to. */
 typedef struct {
