@@ -117,6 +117,7 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
         double best = 1e30, sum = 0, rel = 0;
         sp_query_stages st = {0};
         int found = 0, done = 0;
+        long points = 0;
         for (int r = -1; r < reps; r++) { /* r = -1: warm-up (scene upload, occupancy grid) */
             sp_query_result res;
             int k = 1 + (r + 1) % (CLASSES - 1);
@@ -132,6 +133,7 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
                 st.pick += res.ms_stage.pick, st.render += res.ms_stage.render;
                 st.score += res.ms_stage.score, st.backproject += res.ms_stage.backproject;
                 st.cluster += res.ms_stage.cluster;
+                for (int q = 0; q < res.n_instances; q++) points += res.instances[q].n_points;
                 done++;
             }
             sp_query_result_free(&res);
@@ -140,9 +142,9 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
         printf("query_%s_%s  %.1f  ms  (mean of %d after a warm-up; best %.1f ms; relevancy %.1f ms; %zu Gaussians, D=%d->%d, %s, %d/%d found)\n",
                mi == 0 ? "3d" : "multiview", kn, sum / done, done, best, rel / done, n, DIM, FULL, dn, found, done);
         if (mi == 1)
-            printf("query_multiview_%s_stages  pick %.2f render %.2f score %.2f backproject %.2f cluster %.2f  ms  (means; %d views max, 1/%d resolution)\n",
+            printf("query_multiview_%s_stages  pick %.2f render %.2f score %.2f backproject %.2f cluster %.2f  ms  (means; %d views max, 1/%d resolution; %ld points in instances per query)\n",
                    kn, st.pick / done, st.render / done, st.score / done, st.backproject / done,
-                   st.cluster / done, 3 * o.n_views, o.render_downscale);
+                   st.cluster / done, 3 * o.n_views, o.render_downscale, points / done);
     }
     /* heatmaps: a 640x480 render of RGB + scores, coloured; first through the best view of the
      * best instance (its choice included), then through a given view (the heatmap alone) */
