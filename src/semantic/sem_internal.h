@@ -3,6 +3,7 @@
 #define SP_SEM_INTERNAL_H
 
 #include <pthread.h>
+#include <string.h>
 
 #include "device/device_impl.h" /* sp_device_scratch */
 #include "semsplat/semantic.h"
@@ -111,8 +112,14 @@ typedef struct {
 /* Sorts a [m] by key, stably (equal keys keep their order: a list made in index order comes out
  * ordered by (key, idx)); tmp [m] is scratch (sort.c). */
 void sem_sort_keyed(sem_keyed *a, sem_keyed *tmp, size_t m);
-/* A key whose unsigned order is f's order (not NaN; -0 sorts just before +0). */
-uint64_t sem_float_order(float f);
+/* A key whose unsigned order is f's order (not NaN; -0 sorts just before +0): negatives
+ * reversed below the positives. */
+static inline uint64_t sem_float_order(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u >> 31 ? ~u : u | 0x80000000u;
+}
 
 /* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op,
  * and the options of the call they belong to. */
