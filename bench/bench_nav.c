@@ -6,7 +6,8 @@
  *                                                                 geometry (tests/nav/world_splat.h)
  * Options: --to NAME (a world object's name, default refrigerator) --k N (3) --threads N (2)
  *          --map OUT.yaml (writes the map and OUT.yaml.truth.pgm: agreement colour-coded);
- *          costmap settings --needs-floor 0|1 --evidence E --min-opacity O --despeckle N --fill M2. */
+ *          costmap settings --needs-floor 0|1 --evidence E --min-opacity O --despeckle N --fill M2
+ *          --floor-tol M --measure-floor 0|1 ... (see the argument loop). */
 #include <cjson/cJSON.h>
 #include <math.h>
 #include <stdio.h>
@@ -156,6 +157,9 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--fill")) co.fill_max_area_m2 = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--slice")) co.slice_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--stop")) co.carve_stop_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--floor-tol")) co.floor_tolerance_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--min-fresh")) co.carve_min_fresh = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--measure-floor")) co.measure_floor_tolerance = atoi(v), i++;
         else if (!strcmp(argv[i], "--carve-alpha")) co.carve_alpha = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--downscale")) co.carve_downscale = atoi(v), i++;
         else if (!strcmp(argv[i], "--occupancy")) co.occupancy = !strcmp(v, "scans") ? SP_OCCUPANCY_SCANS : SP_OCCUPANCY_FOOTPRINTS, i++;

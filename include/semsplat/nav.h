@@ -116,12 +116,22 @@ typedef struct sp_costmap_opts {
     float slice_m;             /* the band is fused in slices this tall (0.1; at most 32 slices) */
     int carve_downscale;       /* training views rendered at 1/this size for carving (0 = about
                                 * 160 pixels wide) */
+    float carve_min_fresh;     /* a view of a scan (shared centre) is carved only when this share
+                                * of its directions (sampled every 8 px) is not shown by the views
+                                * of its scan kept before it, most new first (0: every view that
+                                * adds anything, which with the captures measured is all of them) */
     float carve_alpha;         /* first-surface depth: where the accumulated alpha reaches this
                                 * (0.5); rays that never reach it end on nothing */
     float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */
-    float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (0.15:
-                                * rendered depth is that of Gaussian centres, several cm off on
-                                * a floor seen at a slant) */
+    float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (at
+                                * most 0.15: rendered depth is that of Gaussian centres, several
+                                * cm off on a hazy trained floor seen at a slant) ... */
+    int measure_floor_tolerance; /* ... and, with 1 (default), no more than the rendered floor's
+                                * own thickness: the height from the floor within which 99 % of the
+                                * rendered surface points in excess of the walls' and furniture's
+                                * (counted 1-2 x the cap above the floor) lie; a sharp floor leaves
+                                * a window sill or a low frame 5 cm up in the band, a hazy one keeps
+                                * the cap (cm->opts says what was used) */
     float max_range_m;         /* rays longer than this are cut (8) */
     float margin_m;            /* map bounds: observed space plus this (0.5) */
     int max_cells;             /* largest nx or ny accepted (4096) */

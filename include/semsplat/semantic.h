@@ -443,15 +443,19 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *
  * A query is split into target and anchor at a spatial relation where both sides match ("X near
  * / next to / beside / by / in / on / to / above / under ... Y"), and each phrase into a head noun
- * (the longest WordNet collocation ending at its last noun: "coffee table", "tv set"; closed
- * compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers before it,
- * and description words after a clause marker ("something TO sit on", "a seat FOR two").
- * Per class c, the confidence in 0..1 is, from the head h (all its senses) and the class's head
- * (its physical senses that the tagged corpora attest; when none, its physical senses closest to
- * the other classes of the scene, after Resnik 1999):
+ * (the longest WordNet collocation ending at its last noun: "coffee table", "tv set", "trash can";
+ * closed compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers
+ * before it, and description words after a clause marker ("something TO sit on", "a seat FOR
+ * two", "WHAT tells the time").
+ * Per class c, the confidence in 0..1 is, from the head h (all its senses; a word whose senses
+ * are all taxonomic groups, "ficus", also its members' senses) and the class's head (its
+ * physical senses that the tagged corpora attest, persons left out when the name also names an
+ * artifact; when none, its physical senses closest to the other classes of the scene,
+ * after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
  *     = 2 dep(h) / (d + 2 dep(h))           h is a hypernym of c, d levels up (Wu & Palmer 1994)
- *     = LAMBDA^d 2 dep(c) / (d + 2 dep(c))  c is a hypernym of h, d levels up (LAMBDA 0.85)
+ *     = 2 dep(c) / (d + 2 dep(c))           c is a hypernym of h, d levels up: a laptop is a
+ *                                           computer however far down (no decay beyond WuP's)
  *     = 0.6                                 h (a commonly used sense) is a part of c
  *     = MU WuP(h, c)                        neither: siblings, cousins (MU 0.45: always < 0.5)
  * with depths counted from 'entity'; a class named by a noun modifier and a head ("shoe
@@ -466,14 +470,23 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *   m_d = 1 when d (a base form) is in the class's name, lemmas or definition, DELTA (0.8) in its
  *   hypernym's or in the lemmas and definitions of the verbs WordNet derives from it ("+"
  *   pointers: bicycle -> "ride a bicycle", refrigerator -> refrigerate), DELTA^2 two levels up,
- *   and 0.8 for a lemma of d's commonest sense found in the class's own definition (one weak
- *   step at most). Location words (room, area) describe nothing.
+ *   and 0.8 for a lemma of d's commonest sense, or a noun WordNet derives from that sense when
+ *   it is a verb (type -> typewriter), found in the class's own definition (one weak step at
+ *   most); when the description ends in a preposition ("something to write on": where
+ *   the verb is done) a verb found only as a past participle ("a written work": what it acts on)
+ *   counts DELTA times its weight. Location words (room, area) describe nothing.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
- * T(modifier, c) WuP(head, c)^2. Regions ("the kitchen", "bedroom", "area with appliances",
- * "the area that looks like a kitchen") list the classes that define them: the region table's
- * object phrases (data/semantic/regions.json, extendable), the nouns of the region's WordNet
- * definition, classes named after it ("kitchen counter"); a room needs two kinds of them, one
- * alone is scaled by MU. SP_LEX_THRESHOLD is the one threshold for every world.
+ * T(modifier, c) WuP(head, c)^2. A head that is the agent noun of a verb WordNet derives it from
+ * ("dispenser" <- dispense, "cooker" <- cook: stem + -er/-or/-ar, from a physical sense that is
+ * no person) also scores DELTA times the weighted share, head and modifiers, found in c's
+ * definitions when c's own definition does the verb (base or -ing form, not a past participle):
+ * "water dispenser" -> water cooler, "a device for cooling and dispensing drinking water".
+ * Regions ("the kitchen", "bedroom", "the meeting room", "area with appliances", "the area that
+ * looks like a kitchen") list the classes that define them: the region table's object phrases
+ * (data/semantic/regions.json, extendable; a generic head with modifiers, "meeting room", is
+ * looked up there whole), the nouns of the region's WordNet definition (for names WordNet has),
+ * classes named after it ("kitchen counter"); a room needs two kinds of them, one alone is
+ * scaled by MU. SP_LEX_THRESHOLD is the one threshold for every world.
  * Thread safety: an sp_lexicon and an sp_lex_vocab are immutable once made (the database files
  * are mapped read-only); any number of threads may match against them at once. Results are
  * plain structs with fixed arrays (no ownership). */

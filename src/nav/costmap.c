@@ -43,8 +43,10 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.despeckle_cells = 0;
     o.carve_downscale = 0;
     o.carve_alpha = 0.5f;
+    o.carve_min_fresh = 0.0f;
     o.carve_stop_m = 0.03f;
     o.floor_tolerance_m = 0.15f;
+    o.measure_floor_tolerance = 1;
     o.max_range_m = 8.0f;
     o.margin_m = 0.5f;
     o.max_cells = 4096;
@@ -454,6 +456,10 @@ static int check_opts(const sp_costmap_opts *o, sp_error *err)
         return sp_error_set(err, SP_E_ARG, "costmap: sensor model prob_hit %g (in (0.5, 1)), prob_miss %g "
                             "(in (0, 0.5)), occupied_prob %g (in (0, 1)), min_hit_scans %d (>= 1)",
                             o->prob_hit, o->prob_miss, o->occupied_prob, o->min_hit_scans);
+    if (!(o->carve_min_fresh >= 0 && o->carve_min_fresh <= 1))
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_min_fresh %g not in [0, 1]", o->carve_min_fresh);
+    if (!(o->floor_tolerance_m >= 0 && o->floor_tolerance_m <= 1))
+        return sp_error_set(err, SP_E_ARG, "costmap: floor_tolerance_m %g not in [0, 1]", o->floor_tolerance_m);
     if (o->carve_downscale < 0 || !(o->carve_alpha > 0 && o->carve_alpha <= 1) || !(o->max_range_m > 0) ||
         o->max_cells < 1)
         return sp_error_set(err, SP_E_ARG, "costmap: carve_downscale %d (>= 0), carve_alpha %g (in (0, 1]), "
@@ -529,6 +535,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     if (view_counts) memset(view_counts, 0, s->n * sizeof(uint16_t));
     double t1 = nav_cpu_now();
     if ((rc = nav_carve(cm, s, cams, n_cams, &o, r, &co, log, err))) goto done;
+    o.floor_tolerance_m = cm->opts.floor_tolerance_m = co.floor_tol; /* the one the scans used */
     double t2 = nav_cpu_now();
     if (log_free) {
         nav_footprints(cm, s, &o, &co.sl, log_free);

@@ -41,6 +41,7 @@ typedef struct nav_carve_out {
                               * a cell, so such a scan may have seen this voxel's surface */
     uint16_t *floor_scans;   /* [cells] scans with a surface point on the floor there */
     uint16_t *view_counts;   /* [n Gaussians] training views that see each Gaussian, or NULL */
+    float floor_tol;         /* out: the floor tolerance the scans used (measure_floor_tolerance) */
 } nav_carve_out;
 
 #define NAV_FLOOR_MIN_OPACITY 0.5f /* floor Gaussians at least this opaque */
@@ -119,7 +120,8 @@ static inline int nav_traverse_inline(const sp_costmap *cm, const float a[2], co
     double t = 0;
     long steps = (long)(fabs(dx) + fabs(dy)) + 4;
     for (long k = 0; k <= steps; k++) {
-        double tn = fmin(fmin(tmx, tmy), 1.0);
+        double tn = tmx < tmy ? tmx : tmy; /* fmin is a library call without -ffast-math */
+        if (!(tn < 1.0)) tn = 1.0;
         if (nav_inside(cm, ix, iy)) {
             int rc = fn(ctx, nav_idx(cm, ix, iy), (float)t, (float)tn);
             if (rc) return rc;

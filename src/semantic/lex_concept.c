@@ -7,6 +7,8 @@
 #include "lexical.h"
 
 #define PHYSICAL_ENTITY 1930u /* physical_entity.n.01 */
+#define PERSON 7846u /* person.n.01 */
+#define ARTIFACT 21939u /* artifact.n.01 */
 #define MAX_HYPER 8
 
 static void name_of(const wn_synset *s, char *out, size_t cap)
@@ -87,6 +89,8 @@ int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_er
 }
 
 int lex_sense_physical(const lex_sense *s) { return lex_anc_find(s, PHYSICAL_ENTITY) >= 0; }
+int lex_sense_person(const lex_sense *s) { return lex_anc_find(s, PERSON) >= 0; }
+int lex_sense_artifact(const lex_sense *s) { return lex_anc_find(s, ARTIFACT) >= 0; }
 
 void lex_path(const lex_sense *s, int a, char *out, size_t cap)
 {
@@ -107,21 +111,14 @@ static float wup(int depth_lcs, int dq, int dc)
     return 2.0f * (float)depth_lcs / (float)(dq + dc + 2 * depth_lcs);
 }
 
-static float powi(float b, int e)
-{
-    float r = 1;
-    while (e-- > 0) r *= b;
-    return r;
-}
-
 lex_tax lex_compare(const lex_sense *q, const lex_sense *c)
 {
     lex_tax t = {0, SP_LEX_NONE, -1, -1};
     int j = lex_anc_find(q, c->off);
     if (j == 0) return (lex_tax){1.0f, SP_LEX_SYNONYM, 0, 0};
-    if (j > 0) { /* the class is a hypernym of the query */
+    if (j > 0) { /* the class is a hypernym of the query: a laptop IS a computer, at any depth */
         int d = q->anc[j].dist, dep = c->anc[0].depth;
-        t = (lex_tax){powi(LEX_LAMBDA, d) * wup(dep, d, 0), SP_LEX_HYPONYM, j, 0};
+        t = (lex_tax){wup(dep, d, 0), SP_LEX_HYPONYM, j, 0};
     }
     int i = lex_anc_find(c, q->off);
     if (i > 0) { /* the query is a hypernym of the class */
@@ -167,10 +164,10 @@ static int bag_source(lex_bag *b, const char *source, sp_error *err)
     return b->n_src++;
 }
 
-static int bag_put(lex_bag *b, const char *w, float weight, int src, sp_error *err)
+static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient, sp_error *err)
 {
     for (int i = 0; i < b->n; i++)
-        if (!strcmp(b->words[i].w, w)) {
+        if (b->words[i].patient == patient && !strcmp(b->words[i].w, w)) {
             if (weight > b->words[i].weight) b->words[i].weight = weight, b->words[i].src = (short)src;
             return 0;
         }
@@ -185,7 +182,19 @@ static int bag_put(lex_bag *b, const char *w, float weight, int src, sp_error *e
     snprintf(e->w, sizeof e->w, "%s", w);
     e->weight = weight;
     e->src = (short)src;
+    e->patient = (short)patient;
     return 0;
+}
+
+/* 1 when w is a past form of the verb whose base is base ("written", "placed"): not the base
+ * itself, not "-ing" (the activity: "writing surface"), not "-s". In a definition, a noun phrase,
+ * such a form is a participle: the thing defined is what the verb acts on ("a written work"). */
+static int past_form(const char *w, const char *base)
+{
+    size_t n = strlen(w);
+    if (!strcmp(w, base)) return 0;
+    if (n > 3 && !strcmp(w + n - 3, "ing")) return 0;
+    return !(n > 1 && w[n - 1] == 's');
 }
 
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
@@ -198,27 +207,32 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
     for (int i = 0; i < t.n; i++) {
         const char *w = t.w[i];
         if (strlen(w) < 2 || lex_word_class_of(w) != LW_CONTENT) continue;
-        int rc = bag_put(b, w, weight, src, err);
+        int rc = bag_put(b, w, weight, src, 0, err);
         for (int p = 0; p < 3 && !rc; p++) { /* nouns, verbs, adjectives */
             char bases[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(lx, (wn_pos)p, w, bases, err);
             if (nb < 0) return nb;
-            for (int k = 0; k < nb && !rc; k++) rc = bag_put(b, bases[k], weight, src, err);
+            for (int k = 0; k < nb && !rc; k++)
+                rc = bag_put(b, bases[k], weight, src, p == WN_VERB && past_form(w, bases[k]), err);
         }
         if (rc) return rc;
     }
     return 0;
 }
 
-float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight, int *src)
+float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
+                   float patient_factor, int *src)
 {
     float best = 0;
-    for (int i = 0; i < b->n; i++)
+    for (int i = 0; i < b->n; i++) {
+        const lex_bag_word *e = &b->words[i];
+        float w = e->weight * (e->patient ? patient_factor : 1.0f);
         for (int k = 0; k < n; k++)
-            if (b->words[i].weight >= min_weight && !strcmp(b->words[i].w, bases[k]) && b->words[i].weight > best) {
-                best = b->words[i].weight;
-                if (src) *src = b->words[i].src;
+            if (e->weight >= min_weight && w > best && !strcmp(e->w, bases[k])) {
+                best = w;
+                if (src) *src = e->src;
             }
+    }
     return best;
 }
 

@@ -27,7 +27,9 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
         if (lex_word_class_of(in->w[i]) == LW_CONTENT) {
             for (int k = 4; k >= 2 && !took; k--) {
                 int last = i + k <= in->n ? lex_word_class_of(in->w[i + k - 1]) : -1;
-                if (last != LW_CONTENT && last != LW_PARTITIVE) continue; /* "tv set" */
+                /* a collocation may end in a partitive ("tv set") or in a function word that is
+                 * also a noun ("trash can", "watering can"): WordNet's entry decides */
+                if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) continue;
                 char joined[4 * LEX_WORD];
                 size_t o = 0;
                 for (int j = 0; j < k; j++)
@@ -63,7 +65,7 @@ void lex_np_free(lex_np *np)
  * the tagged corpora attest (WordNet's tagsense_cnt: couch the sofa, not "a coat of paint"), and
  * the first sense always; physical_only drops the non-physical ones. */
 static int load_senses(const lex_db *lx, const char *lemma, int physical_only, int attested_only,
-                       lex_np *np, sp_error *err)
+                       int no_person, lex_np *np, sp_error *err)
 {
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = lex_bases(lx, WN_NOUN, lemma, b, err);
@@ -90,8 +92,35 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
             tmp->attested = i == 0 || i < tagged;
             if (physical_only && !lex_sense_physical(tmp)) continue;
+            if (no_person && lex_sense_person(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
+    }
+    free(tmp);
+    return rc;
+}
+
+/* A query word whose senses are all groups of the taxonomy ("ficus", the genus) stands for its
+ * members (WordNet's member meronyms, "%m": the fig tree, the rubber plant): they are added as
+ * further senses. */
+static int add_members(const lex_db *lx, lex_np *np, sp_error *err)
+{
+    for (int i = 0; i < np->n_senses; i++)
+        if (lex_sense_physical(&np->senses[i])) return 0;
+    lex_sense *tmp = malloc(sizeof *tmp);
+    if (!tmp) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0, n = np->n_senses;
+    for (int i = 0; i < n && !rc && np->n_senses < LEX_MAX_SENSES; i++) {
+        wn_synset syn;
+        if ((rc = wn_read(lx->db, (wn_id){np->senses[i].off, WN_NOUN}, &syn, err))) break;
+        for (int p = 0; p < syn.n_pointers && !rc && np->n_senses < LEX_MAX_SENSES; p++) {
+            const wn_pointer *pt = &syn.pointers[p];
+            if (strcmp(pt->symbol, "%m") || pt->target.pos != WN_NOUN) continue;
+            if (!(rc = lex_sense_load(lx, pt->target.offset, np->senses[i].rank, tmp, err)) &&
+                lex_sense_physical(tmp))
+                np->senses[np->n_senses++] = *tmp;
+        }
+        wn_synset_free(&syn);
     }
     free(tmp);
     return rc;
@@ -146,12 +175,21 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
             h = right;
         }
     }
-    rc = load_senses(lx, h, physical_only, physical_only, np, err);
+    /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
+     * "printer" the tradesman) when the name also names an artifact ("person" keeps its own). */
+    int no_person = 0;
+    rc = 0;
+    if (physical_only) {
+        rc = load_senses(lx, h, 1, 0, 0, np, err);
+        for (int i = 0; !rc && i < np->n_senses; i++) no_person |= lex_sense_artifact(&np->senses[i]);
+    }
+    if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
     if (!rc && physical_only && np->n_senses == 0) {
         np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
-        rc = load_senses(lx, h, 1, 0, np, err);
+        rc = load_senses(lx, h, 1, 0, no_person, np, err);
     }
-    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, np, err);
+    if (!rc && physical_only && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, 0, np, err);
+    if (!rc && !physical_only) rc = add_members(lx, np, err);
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = rc ? 0 : lex_bases(lx, WN_NOUN, h, b, err);
     if (nb < 0) return nb;
@@ -174,7 +212,10 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
             k++;
             continue;
         }
+        if (cls == LW_PARTITIVE) cls = LW_CONTENT; /* without "of" a word like any: "to TYPE on" */
         if (cls == LW_CLAUSE || cls == LW_PREP) {
+            /* a preposition closing a description: "something to write on" */
+            if (cls == LW_PREP && np->n_desc > 0 && k == to - 1) np->stranded = 1;
             marker = 1;
             continue;
         }

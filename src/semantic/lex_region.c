@@ -79,6 +79,18 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
                              sp_error *err)
 {
     *r = lex_region_find(v, np->head);
+    /* A table name WordNet does not join ("meeting room", "break room"): the head with its last
+     * modifiers, longest first ("the big meeting room" -> "meeting room"). */
+    int n_mods = np->n_mods - np->split;
+    for (int from = 0; !*r && np->head[0] && from < n_mods; from++) {
+        char name[64] = "";
+        for (int i = from; i < n_mods; i++) {
+            strncat(name, np->mods[i], sizeof name - strlen(name) - 1);
+            strncat(name, " ", sizeof name - strlen(name) - 1);
+        }
+        strncat(name, np->head, sizeof name - strlen(name) - 1);
+        *r = lex_region_find(v, name);
+    }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
         wn_synset syn;
         wn_id id = {np->senses[s].off, WN_NOUN};
@@ -175,7 +187,11 @@ int lex_regions_prepare(sp_lex_vocab *v, sp_error *err)
         if ((rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) break;
         sp_lex_phrase *ph = malloc(sizeof *ph);
         if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-        else if (!(rc = lex_region_members(v, r, r->name, lex_region_definition(&np, 1), ph, err)))
+        /* WordNet's definition only for a name WordNet has as one noun: "meeting room" is no
+         * entry, and the definition of its head "room" (walls, floor, ceiling) defines no kind */
+        else if (!(rc = lex_region_members(v, r, r->name,
+                                           np.n_mods == np.split ? lex_region_definition(&np, 1) : NULL,
+                                           ph, err)))
             r->cache = ph;
         else
             free(ph);

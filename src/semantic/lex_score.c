@@ -2,7 +2,6 @@
  * nouns (synonym, hypernym, hyponym, part, related), modifiers, description words against the
  * classes' definitions, and the modifier-as-referent reading of compounds ("tv monitor"). The
  * formula is documented in semsplat/semantic.h; the constants are in lexical.h. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,13 +54,31 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
             for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
             if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
         }
+        /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
+         * typewriter, store -> storage), the same one weak step */
+        for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
+            const wn_pointer *pt = &s.pointers[k];
+            if (strcmp(pt->symbol, "+") || pt->target.pos != WN_NOUN || !pt->target_word) continue;
+            wn_synset ns;
+            if ((rc = wn_read(lx->db, pt->target, &ns, err))) break;
+            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_')) {
+                char w[WN_LEMMA_MAX];
+                snprintf(w, sizeof w, "%s", ns.words[pt->target_word - 1]);
+                for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+                exp_add(e, w, LEX_SYN);
+            }
+            wn_synset_free(&ns);
+        }
         wn_synset_free(&s);
+        if (rc) return rc;
     }
     return 0;
 }
 
-/* Best weight of word (its expansions) in a class's bag; why gets "word (source)". */
-static float bag_match(const lex_class *c, const expansion *e, const char *word, char *why, size_t cap)
+/* Best weight of word (its expansions) in a class's bag, patient entries scaled by pf; why gets
+ * "word (source)". */
+static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, char *why,
+                       size_t cap)
 {
     float best = 0;
     int src = -1;
@@ -70,23 +87,27 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
         int s = -1;
         /* one indirection at most: a synonym counts in the class's own definition only */
-        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, &s) * e->f[i];
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
-    if (best > 0 && why && src >= 0) snprintf(why, cap, "%s (%s)", word, c->bag.src[src]);
+    if (best > 0 && why && src >= 0) {
+        /* say when the match is the participle's, weakened by a stranded preposition */
+        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, NULL, 0) > best;
+        snprintf(why, cap, "%s (%s)%s", word, c->bag.src[src], weak ? " [participle: what it acts on]" : "");
+    }
     return best;
 }
 
-/* Gloss overlap G = sum_d w_d m_d / sum_d w_d. */
+/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
-                           const char (*words)[LEX_WORD], char *why, size_t cap)
+                           const char (*words)[LEX_WORD], float pf, char *why, size_t cap)
 {
     float num = 0, den = 0;
     size_t o = 0;
     if (why && cap) why[0] = 0;
     for (int i = 0; i < n; i++) {
         char one[256];
-        float m = bag_match(c, &exps[i], words[i], one, sizeof one);
+        float m = bag_match(c, &exps[i], words[i], pf, one, sizeof one);
         num += w[i] * m;
         den += w[i];
         if (m > 0 && why && o + 1 < cap) {
@@ -142,7 +163,7 @@ static lex_tax specialize(lex_tax t, const lex_sense *q, const lex_sense *c)
     dc += 1;
     lex_tax r = t;
     if (dq == 0) r.score = wup3(dep, 0, dc), r.kind = SP_LEX_HYPERNYM;
-    else if (dc == 0) r.score = powf(LEX_LAMBDA, (float)dq) * wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
+    else if (dc == 0) r.score = wup3(dep, dq, 0), r.kind = SP_LEX_HYPONYM;
     else r.score = LEX_MU * wup3(dep, dq, dc), r.kind = SP_LEX_RELATED;
     return r;
 }
@@ -196,7 +217,54 @@ typedef struct {
     lex_np ref[8]; /* modifier (or first part of a joined head) read as a noun of its own */
     int n_ref;
     char ref_word[8][LEX_WORD];
+    int n_agent;   /* verbs the head is the agent noun of ("dispenser" <- dispense) */
+    char agent[4][WN_LEMMA_MAX];
+    float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
 } query_prep;
+
+/* 1 when noun is an agent noun of verb: the verb's stem (a final 'e' dropped) followed by -er,
+ * -or or -ar, a consonant doubled ("dispenser" <- dispense, "projector" <- project, "shredder" <-
+ * shred). */
+static int agent_of(const char *noun, const char *verb)
+{
+    size_t nv = strlen(verb), nn = strlen(noun);
+    if (nv > 1 && verb[nv - 1] == 'e') nv--;
+    if (nn < nv + 2 || strncmp(noun, verb, nv)) return 0;
+    const char *rest = noun + nv;
+    if (rest[0] == verb[nv - 1] && strlen(rest) == 3) rest++; /* doubled consonant */
+    return !strcmp(rest, "er") || !strcmp(rest, "or") || !strcmp(rest, "ar");
+}
+
+/* The verbs a query head names the doer of: WordNet's derivational links ("+") from the head's
+ * physical senses that are not persons to verbs whose lemma it is the agent noun of. */
+static int agent_verbs(const lex_db *lx, const lex_np *np, query_prep *qp, sp_error *err)
+{
+    qp->n_agent = 0;
+    if (!np->head[0] || np->placeholder || strchr(np->head, '_')) return 0;
+    for (int i = 0; i < np->n_senses; i++) {
+        /* an object that does it: a person ("writer", "keeper") is no object of the scene */
+        if (!lex_sense_physical(&np->senses[i]) || lex_sense_person(&np->senses[i])) continue;
+        wn_synset s;
+        int rc = wn_read(lx->db, (wn_id){np->senses[i].off, WN_NOUN}, &s, err);
+        if (rc) return rc;
+        for (int p = 0; p < s.n_pointers && !rc; p++) {
+            const wn_pointer *pt = &s.pointers[p];
+            if (strcmp(pt->symbol, "+") || pt->target.pos != WN_VERB) continue;
+            wn_synset vs;
+            if ((rc = wn_read(lx->db, pt->target, &vs, err))) break;
+            int k = pt->target_word ? pt->target_word - 1 : 0;
+            if (k < vs.n_words && agent_of(np->head, vs.words[k]) && qp->n_agent < 4) {
+                int dup = 0;
+                for (int j = 0; j < qp->n_agent; j++) dup |= !strcmp(qp->agent[j], vs.words[k]);
+                if (!dup) snprintf(qp->agent[qp->n_agent++], WN_LEMMA_MAX, "%s", vs.words[k]);
+            }
+            wn_synset_free(&vs);
+        }
+        wn_synset_free(&s);
+        if (rc) return rc;
+    }
+    return 0;
+}
 
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
@@ -210,6 +278,9 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         rc = expand(lx, np->mods[i], &qp->mod_exp[i], err);
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+    if (!rc) rc = agent_verbs(lx, np, qp, err);
+    if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
+    for (int i = 0; i < np->n_mods && !rc && qp->n_agent; i++) rc = lex_word_weight(lx, np->mods[i], &qp->mod_w[i], err);
     /* Candidates for the modifier-as-referent reading: modifiers, and the leading words of a
      * joined head ("tv" of "tv_monitor"), that are words of this scene's class names. */
     char cand[8][LEX_WORD];
@@ -233,6 +304,30 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         else lex_np_free(r);
     }
     return rc;
+}
+
+/* The agent reading of a head ("water dispenser"): a class whose own definition says it does the
+ * verb (base or -ing form, not the past participle: "pictures can be PROJECTED" is no projector)
+ * is one weak step (DELTA) away, times the share of the query's modifiers its definitions name.
+ * Returns the score; why gets the evidence, used[i] whether modifier i was found. */
+static float agent_score(const lex_class *c, const lex_np *np, const query_prep *qp, int *used, char *why,
+                         size_t cap)
+{
+    int src = -1;
+    for (int a = 0; a < qp->n_agent && src < 0; a++) {
+        char one[1][WN_LEMMA_MAX];
+        snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, &src) <= 0) src = -1;
+        else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
+    }
+    if (src < 0) return 0;
+    float num = qp->agent_w, den = qp->agent_w;
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0);
+        used[i] = m > 0;
+        num += qp->mod_w[i] * m, den += qp->mod_w[i];
+    }
+    return LEX_DELTA * num / den;
 }
 
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
@@ -269,21 +364,34 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
-        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], NULL, 0) > 0)
+        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0) > 0)
             use = LEX_MOD_USED;
         if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
     }
     char why[192] = "";
+    float pf = np->stranded ? LEX_PATIENT : 1.0f;
     if (has_head) {
         float s = base * fmod;
         if (np->n_desc) {
-            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, why, sizeof why);
+            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, why, sizeof why);
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
         m->score = s;
+        int used[8] = {0};
+        char awhy[192] = "";
+        float a = qp->n_agent ? agent_score(c, np, qp, used, awhy, sizeof awhy) : 0;
+        if (a > m->score) {
+            m->score = a;
+            m->kind = SP_LEX_GLOSS;
+            m->path[0] = 0; /* the taxonomy's comparison lost: not the evidence */
+            snprintf(m->gloss_words, sizeof m->gloss_words, "agent noun: %s", awhy);
+            if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+            for (int i = 0; mod_use && i < np->n_mods - np->split; i++)
+                if (used[i]) mod_use[i] = LEX_MOD_USED;
+        }
     } else {
         /* Description only: every content word counts against the definitions. */
         expansion all[24];
@@ -302,7 +410,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(e.w[0], WN_LEMMA_MAX, "%s", np->head);
             all[n] = e, w[n] = 1.0f, snprintf(words[n++], LEX_WORD, "%s", np->head);
         }
-        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, why, sizeof why);
+        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, why, sizeof why);
         m->score = g;
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);

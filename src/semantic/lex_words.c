@@ -54,7 +54,7 @@ static const char *const placeholder_words[] = {
     "something", "anything", "somewhere", "anywhere", "someplace", "anyplace", "everything",
     "thing", "things", "stuff", "object", "objects", "item", "items", "place", "places", "spot",
     "ones", NULL};
-static const char *const clause_words[] = {"that", "which", "who", "whom", "whose", "where",
+static const char *const clause_words[] = {"that", "which", "what", "who", "whom", "whose", "where",
                                            "when", "for", "to", NULL};
 static const char *const partitive_words[] = {"piece", "pieces", "kind", "kinds", "type", "types",
                                               "sort", "sorts", "pair", "set", "bit", "bunch",

@@ -8,7 +8,6 @@
 #include "wordnet.h"
 
 /* The scoring constants (semantic.h documents the formula). */
-#define LEX_LAMBDA 0.85f /* per level the class is more general than the query */
 #define LEX_MU 0.45f     /* siblings and cousins: MU * WuP < threshold, always */
 #define LEX_PART 0.6f    /* the query names a part of the class */
 #define LEX_BETA 0.3f    /* a query modifier naming another class of the scene */
@@ -17,6 +16,10 @@
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
+/* A description ending in a preposition ("something to write ON") asks where or with what the
+ * verb is done; a definition naming the class as what the verb acts on (a past participle,
+ * "a WRITTEN work") is then one weak step (DELTA) of evidence, not a full match. */
+#define LEX_PATIENT LEX_DELTA
 
 #define LEX_MAX_TOKENS 32
 #define LEX_WORD 48
@@ -90,6 +93,10 @@ typedef struct lex_sense {
 int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_error *err);
 /* 1 when the sense is a physical entity (under physical_entity.n.01). */
 int lex_sense_physical(const lex_sense *s);
+/* 1 when the sense is a person (under person.n.01: "monitor" the supervisor). */
+int lex_sense_person(const lex_sense *s);
+/* 1 when the sense is an artifact (under artifact.n.01). */
+int lex_sense_artifact(const lex_sense *s);
 /* Index of off in s's closure, or -1. */
 int lex_anc_find(const lex_sense *s, uint32_t off);
 /* The hypernym path from s up to its closure entry a: "s > ... > a". */
@@ -112,6 +119,8 @@ typedef struct lex_bag_word {
     char w[LEX_WORD];  /* a base form */
     float weight;      /* DELTA^level */
     short src;         /* index into the bag's sources */
+    short patient;     /* a verb's base read from its past participle ("written" -> write): the
+                        * thing defined is what the verb acts on */
 } lex_bag_word;
 
 typedef struct lex_bag {
@@ -126,8 +135,9 @@ void lex_bag_free(lex_bag *b);
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
                      const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
- * absent); *src gets the source index. */
-float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight, int *src);
+ * absent), patient entries scaled by patient_factor; *src gets the source index. */
+float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
+                   float patient_factor, int *src);
 
 /* ---- phrases and classes -------------------------------------------------------------------- */
 
@@ -142,6 +152,8 @@ typedef struct lex_np {
     int fallback;                         /* class name without an attested physical sense */
     int split;                            /* the head is a closed compound split in two: its
                                            * first part is the last modifier ("nightstand") */
+    int stranded;                         /* the description ends in a preposition: "something
+                                           * to write on" (where the verb is done) */
     int n_senses;
     lex_sense *senses;                    /* [n_senses] all noun senses (queries) or physical (classes) */
     int n_mods;

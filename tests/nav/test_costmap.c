@@ -1,6 +1,7 @@
 /* The costmap: floor detection, footprints and carving against the room's boxes, Nav2's inflation
  * formula on core's distance transform, the map_server round trip (unknown
- * stays unknown; the 0.25 trap shown), the OccupancyGrid table, the goal check and bad input. */
+ * stays unknown; the 0.25 trap shown), the OccupancyGrid table, the goal check and bad input;
+ * thin things, the measured floor tolerance (a low sill, a hazy floor), cropped views. */
 #include <stdio.h>
 
 #include "nav/nav_internal.h"
@@ -268,8 +269,7 @@ static void test_bad_build(void)
  * by some views, one Gaussian across each face (as a reconstruction has them). The rays pass
  * beside them through the 5 cm cells they stand in, and their rendered surface points (each
  * Gaussian's depth), good to about a cell, often land in the cell beside; with veto_beside a
- * scan that hit a voxel beside one does not count as having seen through it. Returns the cells
- * the things overlap that are occupied, of *total. */
+ * scan that hit a voxel beside one does not count as having seen through it. */
 static const ns_box thin_things[] = {
     {{1.80f, 2.00f, 0.0f}, {1.83f, 2.03f, 0.45f}}, {{2.20f, 1.20f, 0.0f}, {2.23f, 1.23f, 0.45f}},
     {{4.00f, 2.00f, 0.0f}, {4.03f, 2.03f, 0.45f}}, {{3.80f, 2.80f, 0.0f}, {3.83f, 2.83f, 0.45f}},
@@ -277,20 +277,19 @@ static const ns_box thin_things[] = {
     {{1.40f, 1.50f, 0.0f}, {2.20f, 1.51f, 0.50f}}, {{4.60f, 1.80f, 0.0f}, {4.61f, 2.60f, 0.50f}}};
 #define N_THIN ((int)(sizeof thin_things / sizeof thin_things[0]))
 
-static int thin_occupied(const sp_costmap *cm, int *total)
+/* The cells boxes b[0..n) overlap that are occupied, of *total. */
+static int boxes_occupied(const sp_costmap *cm, const ns_box *b, int n, int *total)
 {
     int occ = 0;
     *total = 0;
-    for (int k = 0; k < N_THIN; k++) {
-        const ns_box *b = &thin_things[k];
+    for (int k = 0; k < n; k++)
         for (int iy = 0; iy < cm->ny; iy++)
             for (int ix = 0; ix < cm->nx; ix++) {
                 float x0 = cm->origin[0] + ix * cm->res - NS_OFFX, y0 = cm->origin[1] + iy * cm->res - NS_OFFY;
-                if (!ns_overlap(b, x0, y0, x0 + cm->res, y0 + cm->res)) continue;
+                if (!ns_overlap(&b[k], x0, y0, x0 + cm->res, y0 + cm->res)) continue;
                 (*total)++;
                 occ += cm->occ[nav_idx(cm, ix, iy)] == SP_CELL_OCCUPIED;
             }
-    }
     return occ;
 }
 
@@ -310,12 +309,76 @@ static void test_thin_things(void)
         sp_costmap_opts o = sp_costmap_opts_default();
         o.veto_beside = beside;
         build_room_at(&cm, &o, 160, 120);
-        occ[beside] = thin_occupied(&cm, &total);
+        occ[beside] = boxes_occupied(&cm, thin_things, N_THIN, &total);
         fprintf(stderr, "thin things (veto_beside %d): %d of %d cells occupied\n", beside, occ[beside], total);
         CHECK_MSG(!beside || occ[beside] == total, "%d of the %d cells under thin things are not occupied",
                   total - occ[beside], total);
         sp_costmap_free(&cm);
     }
+    g_splat = keep;
+    sp_splat_free(&s);
+}
+
+/* A sill: 9 cm tall, lower than the 0.15 m cap on the floor tolerance. The room's floor renders
+ * within a centimetre or two, so the measured tolerance is a few centimetres and the sill's top
+ * is a hit in the band: its cells occupied. With the cap (measure_floor_tolerance 0) the top is
+ * floor and the rays passing over it through the lowest slice make it free (the bookstore's shop
+ * window frame). Haze over the floor (faint Gaussians up to 12 cm, a CPU-trained floor) widens
+ * the rendered floor and the measured tolerance with it. */
+static const ns_box sill = {{3.8f, 2.40f, 0.0f}, {5.0f, 2.44f, 0.09f}};
+
+static void add_haze(sp_splat *s, size_t *n, size_t cap)
+{
+    uint32_t seed = 12345;
+    for (int k = 0; k < 6000 && *n < cap; k++) {
+        float r[3];
+        for (int j = 0; j < 3; j++) {
+            seed = seed * 1664525u + 1013904223u;
+            r[j] = (float)(seed >> 8) / 16777216.0f;
+        }
+        float p[3] = {0.3f + 5.4f * r[0], 0.3f + 3.4f * r[1], 0.12f * r[2]};
+        size_t i = *n;
+        ns_push(s, n, p, 2, 0.04f);
+        s->log_scales[3 * i + 2] = logf(0.02f);
+        s->opacity_logits[i] = -0.5f;
+    }
+}
+
+static void test_floor_tolerance(void)
+{
+    sp_error err = {0};
+    sp_splat s;
+    CHECK_OK(ns_make_splat(&s, 1, &err), &err);
+    size_t n = s.n, plain;
+    ns_box_faces(&s, &n, 200000, &sill, 0.02f);
+    s.n = plain = n;
+    sp_splat keep = g_splat;
+    g_splat = s;
+    int occ[2], total = 0;
+    float tol[3];
+    for (int measure = 0; measure < 2; measure++) {
+        sp_costmap cm;
+        sp_costmap_opts o = sp_costmap_opts_default();
+        o.measure_floor_tolerance = measure;
+        build_room_at(&cm, &o, 160, 120);
+        occ[measure] = boxes_occupied(&cm, &sill, 1, &total);
+        tol[measure] = cm.opts.floor_tolerance_m;
+        fprintf(stderr, "sill (measure_floor_tolerance %d, tolerance %.2f m): %d of %d cells occupied\n", measure,
+                tol[measure], occ[measure], total);
+        sp_costmap_free(&cm);
+    }
+    CHECK_NEAR(tol[0], 0.15f, 1e-6);
+    CHECK_MSG(tol[1] <= 0.06f, "a sharp floor measured %.2f m thick", tol[1]);
+    CHECK_MSG(total > 0 && occ[1] == total, "%d of the sill's %d cells are not occupied", total - occ[1], total);
+    add_haze(&s, &n, 200000);
+    s.n = n;
+    g_splat = s;
+    sp_costmap cm;
+    build_room_at(&cm, NULL, 160, 120);
+    tol[2] = cm.opts.floor_tolerance_m;
+    fprintf(stderr, "hazy floor (%zu faint Gaussians): tolerance %.2f m\n", n - plain, tol[2]);
+    CHECK_MSG(tol[2] >= tol[1] + 0.04f, "haze up to 0.12 m: tolerance %.2f m (sharp floor %.2f)", tol[2], tol[1]);
+    sp_costmap_free(&cm);
     g_splat = keep;
     sp_splat_free(&s);
 }
@@ -359,6 +422,7 @@ int main(void)
     RUN(test_floor_and_cells);
     RUN(test_scans_occupancy);
     RUN(test_thin_things);
+    RUN(test_floor_tolerance);
     RUN(test_crop_same);
     RUN(test_inflation_formula);
     RUN(test_map_roundtrip);

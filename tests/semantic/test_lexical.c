@@ -2,12 +2,20 @@
  * the scorer was tuned): precision@1 on the present phrasings, rejection of the absent ones, with
  * the one threshold SP_LEX_THRESHOLD for both worlds; plus WordNet reader and morphy checks and
  * bad input. Tuned on the house; the bookstore was measured without retuning (precision@1 0.815,
- * absent 0.92), then three general rules found from its misses raised it to 0.862 / 1.0, and a
- * class's derived verbs in its definitions (issue 17 phase 2) to 0.877 / 1.0, the house unchanged
- * at 0.912 / 1.0 (see docs/DESIGN.md). The issue's bar is 0.9 / 0.9: the house meets it, the
- * bookstore does not, and its floor below guards the measured figure against regressions, not
- * the bar.
- * Run with an argument (house | bookstore) to print every phrase of one table, and a query after
+ * absent 0.92), then three general rules found from its misses raised it to 0.862 / 1.0, a
+ * class's derived verbs in its definitions (issue 17 phase 2) to 0.877 / 1.0, and in phase 3
+ * subsumption without depth decay (laptop -> computer) and the patient reading of a definition's
+ * participle under a stranded preposition ("something to write on": desk, not "a written work")
+ * to 0.908 / 1.0, the house unchanged at 0.912 / 1.0 (see docs/DESIGN.md; every bookstore gain
+ * was chosen knowing its misses). The floors below are the issue's bar, 0.9 / 0.9, for both.
+ * The office table (phrases_office.json, written blind with data/worlds/office.world by someone
+ * who had not read or run the encoder) measured 0.688 / 0.969 on first run; since phase 4 it is
+ * development data (its misses were read and their general causes fixed: 0.854 / 0.969, the house
+ * 0.925, the bookstore 0.908), so its floor, 0.85 / 0.9, only guards against regressions.
+ * The ward table (phrases_ward.json, data/worlds/ward.world: a hospital ward, written blind by
+ * someone who had not read or run the encoder, and first run by the lead on the phase-4 encoder)
+ * is the blind measurement now: 81/121 = 0.669 present, 27/32 = 0.844 absent; printed, no bar.
+ * Run with an argument (house | bookstore | office | ward) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
@@ -158,6 +166,55 @@ static void test_bad_input(void)
     sp_lexicon_free(lx);
 }
 
+/* The top class of text in v, "" when nothing is found. */
+static const char *found_class(const sp_lex_vocab *v, const char *text, sp_lex_result *res)
+{
+    sp_error err = {0};
+    if (sp_lex_match(v, text, res, &err) || !res->found) return "";
+    return sp_lex_vocab_class(v, res->target.matches[0].class_index);
+}
+
+/* The phase-4 rules one by one (docs/DESIGN.md, changes 6-13), on a vocabulary of their own. */
+static void test_phase4_rules(const sp_lexicon *lx)
+{
+    const char *names[] = {"trash can", "monitor", "printer", "water cooler", "plant",
+                           "projector screen", "conference table", "whiteboard", "stove", "desk"};
+    sp_error err = {0};
+    sp_lex_vocab *v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, names, 10, NULL, &err), &err);
+    sp_lex_result *res = malloc(sizeof *res);
+    if (!v || !res) {
+        free(res), sp_lex_vocab_free(v);
+        return;
+    }
+    /* 6: "trash can" is WordNet's trash_can ("can" is not dropped as an auxiliary) */
+    CHECK(!strcmp(found_class(v, "dustbin", res), "trash can"));
+    CHECK(!strcmp(found_class(v, "garbage cans", res), "trash can"));
+    /* 7: a table region WordNet does not join, read whole */
+    const char *top = found_class(v, "the meeting room", res);
+    CHECK_MSG(!strcmp(top, "conference table") || !strcmp(top, "projector screen") || !strcmp(top, "whiteboard"),
+              "the meeting room -> '%s'", top);
+    CHECK(res->target.is_region && !strcmp(res->target.region, "meeting room"));
+    /* 8: a class is no person: "monitor" the display, not the supervisor */
+    CHECK(!strcmp(found_class(v, "a display", res), "monitor"));
+    CHECK(!strcmp(found_class(v, "laser printer", res), "printer"));
+    /* 11: agent nouns; a past participle ("can be projected") and a person ("writer") are not */
+    CHECK(!strcmp(found_class(v, "water dispenser", res), "water cooler"));
+    CHECK(!strcmp(found_class(v, "cooker", res), "stove"));
+    CHECK(!strcmp(found_class(v, "projector", res), ""));
+    CHECK(!strcmp(found_class(v, "a writer", res), ""));
+    /* 13: a genus stands for its members */
+    CHECK(!strcmp(found_class(v, "ficus", res), "plant"));
+    sp_lex_vocab_free(v);
+    /* ... but a name that names no artifact keeps its persons */
+    const char *people[] = {"person", "sofa"};
+    v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, people, 2, NULL, &err), &err);
+    if (v) CHECK(!strcmp(found_class(v, "someone", res), "person"));
+    free(res);
+    sp_lex_vocab_free(v);
+}
+
 typedef struct {
     int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
     int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
@@ -275,10 +332,14 @@ int main(int argc, char **argv)
     RUN(test_bad_input);
     CHECK_OK(sp_lexicon_open(&lx, NULL, &err), &err);
     if (!lx) return TEST_EXIT();
-    const char *worlds[] = {"house", "bookstore"};
-    const double floor_p1[] = {0.9, 0.87}, floor_absent[] = {0.9, 0.9};
-    for (int w = 0; w < 2; w++) {
+    test_phase4_rules(lx);
+    const char *worlds[] = {"house", "bookstore", "office", "ward"};
+    /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
+     * were read), so its floor only guards against regressions (82/96 when it was set) */
+    const double floor_p1[] = {0.9, 0.9, 0.85}, floor_absent[] = {0.9, 0.9, 0.9};
+    for (int w = 0; w < 4; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
+        if (!strcmp(worlds[w], "ward")) continue; /* the blind table: measured and printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
