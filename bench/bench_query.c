@@ -1,8 +1,9 @@
 /* Query latency of the semantic engine with the text already embedded and the model loaded:
  * 3D-native and multi-view localization on a synthetic room of N Gaussians (default 300k) with
  * 32-dim features decoding to 512-D, 20 object classes, 24 cameras at 640x480. CPU always; the
- * GPU too when one answers. Then lift time for the same splat (150 views at 160x120, D = 32).
- * Usage: bench_query [N] [threads] [--no-lift] */
+ * GPU too when one answers, with the stage breakdown (sp_query_stages) of multi-view queries and
+ * heatmaps. Then lift time for the same splat (150 views at 160x120, D = 32).
+ * Usage: bench_query [N] [threads] [--no-lift] [--gpu-only] */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -108,39 +109,72 @@ static void run(sp_device_kind kind, int threads, size_t n, const sp_splat *s, c
         sp_device_free(dev);
         return;
     }
-    const char *dn = sp_device_name(dev);
+    const char *dn = sp_device_name(dev), *kn = kind == SP_DEVICE_CUDA ? "gpu" : "cpu";
     const int methods[2] = {SP_QUERY_3D, SP_QUERY_MULTIVIEW};
     for (int mi = 0; mi < 2; mi++) {
         o.method = methods[mi];
-        int reps = mi == 0 ? 10 : 3;
+        int reps = mi == 0 ? 10 : 5;
         double best = 1e30, sum = 0, rel = 0;
-        int found = 0;
-        for (int r = 0; r < reps; r++) {
+        sp_query_stages st = {0};
+        int found = 0, done = 0;
+        long points = 0;
+        for (int r = -1; r < reps; r++) { /* r = -1: warm-up (scene upload, occupancy grid) */
             sp_query_result res;
-            int k = 1 + r % (CLASSES - 1);
+            int k = 1 + (r + 1) % (CLASSES - 1);
             if (sp_query_engine_query_embedding(e, emb + (size_t)k * FULL, "bench", &o, &res, &err)) {
                 printf("# query: %s\n", err.msg);
                 break;
             }
-            found += res.valid;
-            sum += res.ms_total;
-            rel += res.ms_relevancy;
-            if (res.ms_total < best) best = res.ms_total;
+            if (r >= 0) {
+                found += res.valid;
+                sum += res.ms_total;
+                rel += res.ms_relevancy;
+                if (res.ms_total < best) best = res.ms_total;
+                st.pick += res.ms_stage.pick, st.render += res.ms_stage.render;
+                st.score += res.ms_stage.score, st.backproject += res.ms_stage.backproject;
+                st.cluster += res.ms_stage.cluster;
+                for (int q = 0; q < res.n_instances; q++) points += res.instances[q].n_points;
+                done++;
+            }
             sp_query_result_free(&res);
         }
-        printf("query_%s_%s  %.1f  ms  (median-free mean of %d; best %.1f ms; relevancy %.1f ms; %zu Gaussians, D=%d->%d, %s, %d/%d found)\n",
-               mi == 0 ? "3d" : "multiview", kind == SP_DEVICE_CUDA ? "gpu" : "cpu", sum / reps, reps, best,
-               rel / reps, n, DIM, FULL, dn, found, reps);
+        if (!done) continue;
+        printf("query_%s_%s  %.1f  ms  (mean of %d after a warm-up; best %.1f ms; relevancy %.1f ms; %zu Gaussians, D=%d->%d, %s, %d/%d found)\n",
+               mi == 0 ? "3d" : "multiview", kn, sum / done, done, best, rel / done, n, DIM, FULL, dn, found, done);
+        if (mi == 1)
+            printf("query_multiview_%s_stages  pick %.2f render %.2f score %.2f backproject %.2f cluster %.2f  ms  (means; %d views max, 1/%d resolution; %ld points in instances per query)\n",
+                   kn, st.pick / done, st.render / done, st.score / done, st.backproject / done,
+                   st.cluster / done, 3 * o.n_views, o.render_downscale, points / done);
     }
-    /* with the heatmap (a 640x480 render of RGB + features) */
+    /* heatmaps: a 640x480 render of RGB + scores, coloured; first through the best view of the
+     * best instance (its choice included), then through a given view (the heatmap alone) */
     o.method = SP_QUERY_3D;
     o.heatmap = 1;
-    sp_query_result res;
-    if (!sp_query_engine_query_embedding(e, emb + FULL, "bench", &o, &res, &err)) {
-        printf("query_3d_heatmap_%s  %.1f  ms  (heatmap part %.1f ms, 640x480, %s)\n",
-               kind == SP_DEVICE_CUDA ? "gpu" : "cpu", res.ms_total, res.ms_heatmap, dn);
-        sp_query_result_free(&res);
+    for (int given = 0; given < 2; given++) {
+        o.heatmap_view = given ? 0 : -1;
+        sp_query_stages st = {0};
+        double part = 0;
+        int done = 0;
+        for (int r = -1; r < 5; r++) {
+            sp_query_result res;
+            if (sp_query_engine_query_embedding(e, emb + FULL, "bench", &o, &res, &err)) {
+                printf("# heatmap: %s\n", err.msg);
+                break;
+            }
+            if (r >= 0) {
+                part += res.ms_heatmap;
+                st.hm_pick += res.ms_stage.hm_pick, st.hm_render += res.ms_stage.hm_render;
+                st.hm_colormap += res.ms_stage.hm_colormap, st.hm_copy += res.ms_stage.hm_copy;
+                done++;
+            }
+            sp_query_result_free(&res);
+        }
+        if (!done) continue;
+        printf("heatmap_%s_%s  %.2f  ms  (mean of %d; pick %.2f render %.2f colourmap %.2f copy %.2f ms; 640x480, %s)\n",
+               given ? "view" : "bestview", kn, part / done, done, st.hm_pick / done, st.hm_render / done,
+               st.hm_colormap / done, st.hm_copy / done, dn);
     }
+    o.heatmap_view = -1;
     sp_query_engine_free(e);
     sp_device_free(dev);
 }
@@ -202,12 +236,16 @@ int main(int argc, char **argv)
     float *emb = malloc(sizeof(float) * CLASSES * FULL);
     sp_camera cams[NCAM];
     build(n, &s, &pca, emb, cams);
-    int lift = !(argc > 3 && !strcmp(argv[3], "--no-lift"));
-    run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
+    int lift = 1, cpu = 1;
+    for (int a = 3; a < argc; a++) {
+        if (!strcmp(argv[a], "--no-lift")) lift = 0;
+        else if (!strcmp(argv[a], "--gpu-only")) cpu = 0;
+    }
+    if (cpu) run(SP_DEVICE_CPU, threads, n, &s, &pca, emb, cams);
     if (sp_cuda_available()) run(SP_DEVICE_CUDA, threads, n, &s, &pca, emb, cams);
     else printf("# gpu: no CUDA device, GPU figures skipped\n");
     if (lift && sp_cuda_available()) run_lift(SP_DEVICE_CUDA, threads, &s, cams);
-    if (lift) run_lift(SP_DEVICE_CPU, threads, &s, cams);
+    if (lift && cpu) run_lift(SP_DEVICE_CPU, threads, &s, cams);
     sp_splat_free(&s);
     sp_sem_pca_free(&pca);
     free(emb);

@@ -46,7 +46,7 @@ import numpy as np
 __all__ = ["SemanticSplatQuery", "QueryResult", "Camera", "SemsplatError", "SemsplatNotFoundError",
            "SemsplatValueError", "SemsplatMemoryError", "load_library"]
 
-ABI_VERSION = 3  # SP_SEMANTIC_ABI_VERSION in include/semsplat/semantic.h
+ABI_VERSION = 4  # SP_SEMANTIC_ABI_VERSION in include/semsplat/semantic.h
 
 
 class SemsplatError(RuntimeError):
@@ -92,6 +92,7 @@ class _Opts(ctypes.Structure):  # sp_query_opts (include/semsplat/semantic.h)
         ("render_downscale", ctypes.c_int),
         ("heatmap", ctypes.c_int),
         ("heatmap_view", ctypes.c_int),
+        ("host_stages", ctypes.c_int),
     ]
 
 
@@ -166,6 +167,7 @@ class _Result(ctypes.Structure):  # sp_query_result
         ("n_ignored", ctypes.c_int),
         ("ignored", (ctypes.c_char * 32) * 8),
         ("explanation", ctypes.c_char_p),
+        ("ms_stage", ctypes.c_double * 9),  # sp_query_stages
     ]
 
 

@@ -201,20 +201,29 @@ sp_device *sp_scene_device(const sp_scene *sc);
 int sp_scene_raster_in(const sp_scene *sc, sp_raster_in *in, sp_error *err);
 /* The scene's features on its device ([n][feat_dim]), or NULL without SP_SCENE_FEATURES. */
 const float *sp_scene_device_features(const sp_scene *sc);
+/* Replaces the scene's features with d_features [n][feat_dim] that already live on its device
+ * (a device-to-device copy: per-query values computed there need no host round trip). SP_E_ARG
+ * when the scene has no features or its last update failed. */
+int sp_scene_copy_features(sp_scene *sc, const float *d_features, sp_error *err);
 
 typedef enum {
     SP_DEPTH_EXPECTED = 0, /* sum w z / sum w: blends foreground and background at edges */
     SP_DEPTH_SURFACE = 1   /* first-surface (median) depth at depth_alpha, see sp_raster_out */
 } sp_depth_mode;
 
-/* What to render of one view. Any output pointer may be NULL. HOST buffers.
+/* What to render of one view. Any output pointer may be NULL. HOST buffers, unless on_device.
  *   rgb      [H][W][3]        from SH (active degree = the splat's degree); needs SP_SCENE_RGB
  *   features [H][W][feat_dim] composited features (not divided by alpha); needs SP_SCENE_FEATURES
  *   depth    [H][W]           depth_mode SP_DEPTH_EXPECTED: sum w z / alpha (0 where alpha < 1e-6);
  *                             SP_DEPTH_SURFACE: first-surface depth (0 where alpha never reaches
  *                             depth_alpha)
  *   alpha    [H][W]           accumulated opacity sum w
- * A zero-initialised request (plus outputs) asks for expected depth. */
+ * A zero-initialised request (plus outputs) asks for expected depth.
+ * on_device = 1: the output pointers are buffers on the scene's device (sp_device_alloc; host
+ * memory for the CPU backend) and the outputs stay there, same layout and values: the
+ * rasterizer writes them in place, nothing is downloaded, and the call returns without waiting
+ * for the GPU to finish them (a download or sp_device_sync on that device orders after them).
+ * For device-side consumers (semantic scoring, heatmaps) that should not copy images to the host. */
 typedef struct sp_render_request {
     float *rgb;
     float *features;
@@ -223,6 +232,7 @@ typedef struct sp_render_request {
     const float *background;  /* [3] for rgb, NULL = black */
     sp_depth_mode depth_mode;
     float depth_alpha;        /* SP_DEPTH_SURFACE threshold in (0, 1]; 0 = SP_SURFACE_ALPHA */
+    int on_device;            /* 1: outputs are device buffers, left on the device (above) */
 } sp_render_request;
 
 /* Renders n views of a scene, view i through cams[i] into reqs[i] (views may differ in size and

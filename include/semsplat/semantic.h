@@ -186,6 +186,9 @@ typedef struct sp_query_opts {
     int render_downscale;  /* renders for localization at 1/downscale resolution (2) */
     int heatmap;           /* render relevancy_image (1) */
     int heatmap_view;      /* -1 = best view, else an index into the cameras */
+    int host_stages;       /* GPU engines: 1 = multi-view scoring, back-projection and heatmap
+                            * colouring on the host, as CPU engines do (for comparisons; 0: on
+                            * the GPU, copying back only the points and the final image) */
 } sp_query_opts;
 
 sp_query_opts sp_query_opts_default(void);
@@ -285,6 +288,17 @@ typedef struct sp_query_region {
 
 #define SP_QUERY_MAX_IGNORED 8
 
+/* Stage times of one query in ms (host clock; a GPU stage is timed after waiting for it), 0 for
+ * stages that did not run. Multi-view: pick (choosing the views), render (all views in one
+ * batch), score (per-pixel relevancy and the relevant-pixel test), backproject (back-projection
+ * and, on the GPU, compaction and the copy of the points), cluster. Heatmap: hm_pick (the best
+ * view, when no view was given), hm_render (scores and RGB of the view), hm_colormap (relevancy
+ * and colour overlay), hm_copy (the image and relevancy to the host; 0 on CPU engines). */
+typedef struct sp_query_stages {
+    double pick, render, score, backproject, cluster;
+    double hm_pick, hm_render, hm_colormap, hm_copy;
+} sp_query_stages;
+
 typedef struct sp_query_result {
     char text[256];
     int method;          /* sp_query_method used */
@@ -319,6 +333,7 @@ typedef struct sp_query_result {
     int n_ignored;
     char ignored[SP_QUERY_MAX_IGNORED][32]; /* attribute words it cannot see ("red", "wooden") */
     char *explanation;           /* human-readable: which classes matched and why (NULL = none) */
+    sp_query_stages ms_stage;    /* where ms_localize and ms_heatmap went */
 } sp_query_result;
 
 void sp_query_result_free(sp_query_result *res);
@@ -413,7 +428,7 @@ char *sp_query_result_json(const sp_query_result *res, const char *heatmap_path)
 
 /* ---- ABI (for bindings: the Python module checks these before any call) ---------------------- */
 
-#define SP_SEMANTIC_ABI_VERSION 3
+#define SP_SEMANTIC_ABI_VERSION 4 /* 4: sp_query_opts.host_stages, sp_query_result.ms_stage */
 int sp_semantic_abi_version(void);
 /* sizeof of a public struct by name ("sp_query_opts", "sp_query_result", "sp_query_instance",
  * "sp_query_source", "sp_query_frame", "sp_query_match", "sp_query_region", "sp_encoder_opts",

@@ -47,6 +47,10 @@ typedef struct sp_render_backend {
      * differentiate. On CUDA nothing waits for the GPU between views. */
     int (*views)(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geom,
                  const sp_raster_view *views, size_t n_views, sp_error *err);
+    /* depth[i] = alpha[i] >= 1e-6 ? depth[i] / alpha[i] : 0 for i < npix, in place (expected
+     * depth of outputs left on the device) */
+    int (*depth_normalize)(sp_device *dev, float *depth, const float *alpha, size_t npix,
+                           sp_error *err);
     int (*sh_to_rgb)(sp_device *dev, size_t n, int degree, int degree_active, const float *sh,
                      const float *means, sp_vec3 cam_center, float *rgb, int out_stride,
                      sp_error *err);

@@ -154,6 +154,14 @@ static int cpu_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *
     return rc;
 }
 
+static int cpu_depth_normalize(sp_device *dev, float *depth, const float *alpha, size_t npix,
+                               sp_error *err)
+{
+    (void)dev, (void)err;
+    for (size_t i = 0; i < npix; i++) depth[i] = alpha[i] >= 1e-6f ? depth[i] / alpha[i] : 0.f;
+    return 0;
+}
+
 /* The CPU backend does not time its stages (sp_raster_last_stages gives zeros). */
 static int cpu_stages(void *state, sp_raster_stages *out, sp_error *err)
 {
@@ -163,7 +171,7 @@ static int cpu_stages(void *state, sp_raster_stages *out, sp_error *err)
 
 const sp_render_backend sp_render_cpu_backend = {
     "cpu", cpu_create, cpu_destroy, cpu_forward, cpu_backward, cpu_radii, cpu_last_pairs,
-    cpu_views, cpu_sh_to_rgb, cpu_sh_to_rgb_backward, cpu_stages};
+    cpu_views, cpu_depth_normalize, cpu_sh_to_rgb, cpu_sh_to_rgb_backward, cpu_stages};
 
 const sp_render_backend *sp_render_backend_of(const sp_device *dev)
 {

@@ -174,6 +174,17 @@ int sp_scene_feat_dim(const sp_scene *sc) { return sc->feat_dim; }
 sp_device *sp_scene_device(const sp_scene *sc) { return sc->dev; }
 const float *sp_scene_device_features(const sp_scene *sc) { return sc->valid ? sc->features : NULL; }
 
+int sp_scene_copy_features(sp_scene *sc, const float *d_features, sp_error *err)
+{
+    if (!sc || !d_features) return sp_error_set(err, SP_E_ARG, "sp_scene_copy_features: NULL argument");
+    if (!sc->valid) return sp_error_set(err, SP_E_ARG, "sp_scene_copy_features: the scene's last update failed");
+    if (!(sc->what & SP_SCENE_FEATURES))
+        return sp_error_set(err, SP_E_ARG, "sp_scene_copy_features: the scene was made without "
+                            "SP_SCENE_FEATURES");
+    size_t bytes = sc->n * (size_t)sc->feat_dim * sizeof(float);
+    return bytes ? sp_device_copy(sc->dev, sc->features, d_features, bytes, err) : 0;
+}
+
 int sp_scene_raster_in(const sp_scene *sc, sp_raster_in *in, sp_error *err)
 {
     if (!sc || !in) return sp_error_set(err, SP_E_ARG, "sp_scene_raster_in: NULL argument");
@@ -197,6 +208,7 @@ typedef struct {
     int want_alpha; /* alpha buffer (asked, or to normalise expected depth) */
     int want_depth; /* expected-depth numerator */
     int want_surface;
+    int direct;     /* on_device: the request's own buffers take the outputs */
     size_t colors, image_rgb, image_feat, depth, alpha, surface, total; /* offsets, in floats */
 } view_plan;
 
@@ -230,13 +242,15 @@ static view_plan plan_view(const sp_scene *sc, const sp_camera *cam, const sp_re
     p.skip = !p.rgb_pass && !p.feat_pass && !p.want_alpha && !p.want_surface;
     if (p.skip) return p;
     /* colours: RGB from SH per view; a depth/alpha-only view composites the opacity logits as
-     * one dummy channel (any [n] buffer serves: only the weights matter) */
+     * one dummy channel (any [n] buffer serves: only the weights matter). Outputs left on the
+     * device take no scratch but the dummy image and an alpha nobody asked for. */
+    int d = p.direct = q->on_device != 0, dummy = !p.rgb_pass && !p.feat_pass && (p.want_alpha || p.want_depth);
     p.colors = at, at += p.rgb_pass ? sc->n * 3 : 0;
-    p.image_rgb = at, at += npix * (p.rgb_pass || (!p.feat_pass && (p.want_alpha || p.want_depth)) ? 3 : 0);
-    p.image_feat = at, at += p.feat_pass ? npix * (size_t)sc->feat_dim : 0;
-    p.depth = at, at += p.want_depth ? npix : 0;
-    p.alpha = at, at += p.want_alpha ? npix : 0;
-    p.surface = at, at += p.want_surface ? npix : 0;
+    p.image_rgb = at, at += npix * ((p.rgb_pass && !d) || dummy ? 3 : 0);
+    p.image_feat = at, at += p.feat_pass && !d ? npix * (size_t)sc->feat_dim : 0;
+    p.depth = at, at += p.want_depth && !d ? npix : 0;
+    p.alpha = at, at += p.want_alpha && !(d && q->alpha) ? npix : 0;
+    p.surface = at, at += p.want_surface && !d ? npix : 0;
     p.total = (at + 63) & ~(size_t)63; /* keeps each view's block 256-byte aligned */
     return p;
 }
@@ -247,21 +261,24 @@ static int setup_view(sp_scene *sc, const sp_camera *cam, const sp_render_reques
 {
     memset(vw, 0, sizeof *vw);
     vw->cam = *cam;
+    int d = p->direct;
     if (p->rgb_pass) {
         int rc = sp_sh_to_rgb(sc->dev, sc->n, sc->sh_degree, sc->sh_degree, sc->sh, sc->means,
                               sp_camera_center(cam), base + p->colors, 3, err);
         if (rc) return rc;
-        vw->pass[vw->n_pass++] = (sp_raster_pass){base + p->colors, 3, q->background, base + p->image_rgb};
+        vw->pass[vw->n_pass++] = (sp_raster_pass){base + p->colors, 3, q->background,
+                                                  d ? q->rgb : base + p->image_rgb};
     }
     if (p->feat_pass)
-        vw->pass[vw->n_pass++] = (sp_raster_pass){sc->features, sc->feat_dim, NULL, base + p->image_feat};
+        vw->pass[vw->n_pass++] = (sp_raster_pass){sc->features, sc->feat_dim, NULL,
+                                                  d ? q->features : base + p->image_feat};
     /* depth or alpha without colours: composite the opacities as one dummy channel for the
      * weights; first-surface depth alone is its own pass and needs no compositing */
     if (vw->n_pass == 0 && (p->want_alpha || p->want_depth))
         vw->pass[vw->n_pass++] = (sp_raster_pass){sc->opacity, 1, NULL, base + p->image_rgb};
-    vw->depth = p->want_depth ? base + p->depth : NULL;
-    vw->alpha = p->want_alpha ? base + p->alpha : NULL;
-    vw->surface_depth = p->want_surface ? base + p->surface : NULL;
+    vw->depth = p->want_depth ? (d ? q->depth : base + p->depth) : NULL;
+    vw->alpha = p->want_alpha ? (d && q->alpha ? q->alpha : base + p->alpha) : NULL;
+    vw->surface_depth = p->want_surface ? (d ? q->depth : base + p->surface) : NULL;
     vw->surface_alpha = q->depth_alpha > 0.f ? q->depth_alpha : SP_SURFACE_ALPHA;
     return 0;
 }
@@ -272,6 +289,10 @@ static int download_view(sp_scene *sc, const sp_camera *cam, const sp_render_req
     sp_device *d = sc->dev;
     size_t npix = (size_t)cam->width * cam->height, fb = sizeof(float);
     int rc = 0;
+    if (p->direct) /* outputs are in place: only expected depth still needs dividing */
+        return p->want_depth ? sp_render_backend_of(d)->depth_normalize(
+                                   d, q->depth, q->alpha ? q->alpha : base + p->alpha, npix, err)
+                             : 0;
     if (q->rgb) rc = sp_device_download(d, q->rgb, base + p->image_rgb, npix * 3 * fb, err);
     if (!rc && q->features)
         rc = sp_device_download(d, q->features, base + p->image_feat, npix * (size_t)sc->feat_dim * fb, err);

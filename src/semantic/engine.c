@@ -50,6 +50,10 @@ void sp_query_engine_free(sp_query_engine *e)
     if (e->d_feat) sp_device_release(e->dev, e->d_feat);
     if (e->d_raw) sp_device_release(e->dev, e->d_raw);
     if (e->d_rel) sp_device_release(e->dev, e->d_rel);
+    if (e->d_scores2) sp_device_release(e->dev, e->d_scores2);
+    sp_device_scratch_release(e->dev, &e->mv_out);
+    sp_device_scratch_release(e->dev, &e->mv_work);
+    sp_device_scratch_release(e->dev, &e->hm_out);
     sp_raster_free(e->raster);
     sp_splat_free(&e->splat);
     sp_sem_pca_free(&e->pca);
@@ -122,7 +126,8 @@ static int engine_finish(sp_query_engine *e, const sp_query_opts *opts, sp_error
         size_t fb = sizeof(float) * e->splat.n * (size_t)e->splat.feat_dim;
         if (!(e->d_feat = sp_device_alloc(e->dev, fb, err)) ||
             !(e->d_raw = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)) ||
-            !(e->d_rel = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)))
+            !(e->d_rel = sp_device_alloc(e->dev, sizeof(float) * e->splat.n, err)) ||
+            !(e->d_scores2 = sp_device_alloc(e->dev, sizeof(float) * 2 * e->splat.n, err)))
             return err && err->code ? err->code : SP_E_NOMEM;
         rc = sp_device_upload(e->dev, e->d_feat, e->splat.features, fb, err);
     }
@@ -445,13 +450,14 @@ static float robust_max(const float *v, const float *op, float min_op, size_t n)
 static int score_gaussians(sp_query_engine *e, const sp_sem_scorer *sc, sp_error *err)
 {
     int on_gpu = 0, rc = 0;
+    e->dev_scores = 0;
     if (e->d_feat && sc->orthonormal) {
         size_t nb = sizeof(float) * e->splat.n;
         if ((rc = sem_cuda_score(e->dev, sc, e->splat.n, e->d_feat, e->d_raw, e->d_rel, err)) ||
             (rc = sp_device_download(e->dev, e->raw, e->d_raw, nb, err)) ||
             (rc = sp_device_download(e->dev, e->rel, e->d_rel, nb, err)))
             return rc;
-        on_gpu = 1;
+        on_gpu = e->dev_scores = 1;
     }
     if (!on_gpu) sp_sem_score(sc, sp_device_pool(e->dev), e->splat.n, e->splat.features, e->raw, e->rel);
     return rc;
@@ -547,7 +553,9 @@ static int query_embedding(sp_query_engine *e, const float *embedding, const cha
         if (v >= 0 && (size_t)v >= e->n_cams)
             return sp_error_set(err, SP_E_ARG, "query: heatmap view %d not in 0..%zu", v, e->n_cams - 1);
         if (v < 0 && res->view_index >= 0) v = res->view_index;
+        double tp = sp_time_now();
         if (v < 0 && res->n_instances > 0 && (rc = best_view(e, &sc, &th, res, &v, err))) return rc;
+        res->ms_stage.hm_pick = (sp_time_now() - tp) * 1e3;
         if (v < 0) v = 0;
         if ((rc = sem_heatmap(e, &th, v, res, err))) return rc;
         res->ms_heatmap = (sp_time_now() - t3) * 1e3;
@@ -661,8 +669,8 @@ int sp_query_engine_heatmap(sp_query_engine *e, const char *text, const sp_camer
     if (!rc) {
         const sp_query_opts *o = &e->defaults;
         float conf = robust_max(e->raw, e->opacity, o->min_opacity, e->splat.n);
-        rc = sem_heatmap_render(e, cam, conf >= o->min_confidence, conf, o->min_confidence, rgb,
-                                relevancy, err);
+        rc = sem_heatmap_render(e, cam, conf >= o->min_confidence, conf, o->min_confidence,
+                                o->host_stages, rgb, relevancy, NULL, err);
     }
     pthread_mutex_unlock(&e->mu);
     return rc;

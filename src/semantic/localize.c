@@ -9,21 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "sem_cuda.h"
 #include "sem_internal.h"
 
 /* ---- voxel clustering -------------------------------------------------------------------------- */
 
-typedef struct {
-    uint64_t key;
-    uint32_t idx;
-} keyed;
-
-static int cmp_keyed(const void *a, const void *b)
-{
-    const keyed *x = a, *y = b;
-    if (x->key != y->key) return x->key < y->key ? -1 : 1;
-    return x->idx < y->idx ? -1 : x->idx > y->idx;
-}
+typedef sem_keyed keyed;
 
 #define KEY_BITS 21
 #define KEY_OFF (1 << (KEY_BITS - 1))
@@ -46,12 +37,6 @@ static long find_root(long *parent, long i)
 typedef struct {
     float v, w;
 } vw;
-
-static int cmp_vw(const void *a, const void *b)
-{
-    float x = ((const vw *)a)->v, y = ((const vw *)b)->v;
-    return (x > y) - (x < y);
-}
 
 /* Weighted quantile of sorted values. */
 static float wquantile(const vw *s, size_t m, double total, double q)
@@ -80,13 +65,14 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         }
     for (int a = 0; a < 3; a++) /* keep the grid inside the key range for huge scenes */
         while ((hi[a] - lo[a]) / voxel > (float)(KEY_OFF - 2)) voxel *= 2;
-    keyed *k = malloc(sizeof *k * m);
+    keyed *k = malloc(sizeof *k * m), *tmp = malloc(sizeof *tmp * 2 * m); /* sort scratch */
     long *parent = NULL, *vox_of = NULL, *comp = NULL;
     double *cw = NULL;
     sp_query_instance *inst = NULL;
     vw *buf = NULL;
+    uint32_t *members = NULL;
     int rc = 0;
-    if (!k) goto nomem;
+    if (!k || !tmp) goto nomem;
     for (size_t i = 0; i < m; i++) {
         long ix = (long)floorf((pts[i * 3] - lo[0]) / voxel);
         long iy = (long)floorf((pts[i * 3 + 1] - lo[1]) / voxel);
@@ -94,7 +80,7 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         k[i].key = pack(ix, iy, iz);
         k[i].idx = (uint32_t)i;
     }
-    qsort(k, m, sizeof *k, cmp_keyed);
+    sem_sort_keyed(k, tmp, m); /* k was in index order: now by (key, index) */
     /* unique voxels: vox_of[j] = voxel id of sorted entry j; voxel v starts at first[v] */
     vox_of = malloc(sizeof(long) * m);
     if (!vox_of) goto nomem;
@@ -165,24 +151,27 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         if (cw[c] >= min_fraction * best) n_keep++;
     inst = calloc((size_t)n_keep, sizeof *inst);
     buf = malloc(sizeof(vw) * m);
-    if (!inst || !buf) goto nomem;
+    members = malloc(sizeof(uint32_t) * m);
+    if (!inst || !buf || !members) goto nomem;
     int ni = 0;
     for (long c = 0; c < nc; c++) {
         if (cw[c] < min_fraction * best) continue;
         sp_query_instance *I = &inst[ni++];
         I->score = (float)cw[c];
         I->confidence = -1;
+        size_t cnt = 0; /* the component's points, in sorted (voxel) order */
+        for (size_t j = 0; j < m; j++)
+            if (comp[vox_of[j]] == c) members[cnt++] = k[j].idx;
+        for (size_t t = 0; conf && t < cnt; t++)
+            if (conf[members[t]] > I->confidence) I->confidence = conf[members[t]];
         for (int a = 0; a < 3; a++) {
-            size_t cnt = 0;
-            for (size_t j = 0; j < m; j++) {
-                if (comp[vox_of[j]] != c) continue;
-                uint32_t i = k[j].idx;
-                buf[cnt].v = pts[i * 3 + a];
-                buf[cnt].w = w[i];
-                cnt++;
-                if (a == 0 && conf && conf[i] > I->confidence) I->confidence = conf[i];
+            /* values by size, ties in member order (a stable sort) */
+            for (size_t t = 0; t < cnt; t++) {
+                tmp[t].key = sem_float_order(pts[members[t] * 3 + a]);
+                tmp[t].idx = members[t];
             }
-            qsort(buf, cnt, sizeof *buf, cmp_vw);
+            sem_sort_keyed(tmp, tmp + cnt, cnt);
+            for (size_t t = 0; t < cnt; t++) buf[t].v = pts[tmp[t].idx * 3 + a], buf[t].w = w[tmp[t].idx];
             I->extent_min[a] = wquantile(buf, cnt, cw[c], 0.05);
             I->extent_max[a] = wquantile(buf, cnt, cw[c], 0.95);
             I->position[a] = 0.5f * (I->extent_min[a] + I->extent_max[a]);
@@ -213,6 +202,8 @@ done:
     free(cw);
     free(inst);
     free(buf);
+    free(members);
+    free(tmp);
     return rc;
 }
 
@@ -298,30 +289,42 @@ static int ensure_scene(sp_query_engine *e, sp_error *err)
     return sp_scene_create(&e->scene, e->dev, &e->splat, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
 }
 
+int sem_device_stages(const sp_query_engine *e, int host_stages)
+{
+    return e->d_feat && e->dev_scores && !host_stages;
+}
+
+int sem_scores_scene(sp_query_engine *e, sp_error *err)
+{
+    const sp_splat *s = &e->splat;
+    int dev = e->d_scores2 && e->dev_scores;
+    if (!e->scores_scene || !dev)
+        for (size_t i = 0; i < s->n; i++) e->scores2[2 * i] = e->raw[i], e->scores2[2 * i + 1] = e->rel[i];
+    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and SH
+     * and takes only the new scores with every query */
+    sp_splat view = *s;
+    view.features = e->scores2;
+    view.feat_dim = 2;
+    if (!e->scores_scene)
+        return sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_RGB | SP_SCENE_FEATURES, err);
+    if (!dev) return sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err);
+    int rc = sem_cuda_interleave(e->dev, s->n, e->d_raw, e->d_rel, e->d_scores2, err);
+    return rc ? rc : sp_scene_copy_features(e->scores_scene, e->d_scores2, err);
+}
+
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err)
 {
-    const sp_splat *s = &e->splat;
-    for (size_t i = 0; i < s->n; i++) e->scores2[2 * i] = e->raw[i], e->scores2[2 * i + 1] = e->rel[i];
     size_t np = (size_t)cam->width * cam->height;
     float *two = malloc(sizeof(float) * np * 2), *alpha = malloc(sizeof(float) * np);
     if (!two || !alpha) {
         free(two), free(alpha);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory rendering %dx%d", cam->width, cam->height);
     }
-    /* a view of the splat whose "features" are the scores: its scene keeps the geometry and
-     * takes only the new scores with every query */
-    sp_splat view = *s;
-    view.features = e->scores2;
-    view.feat_dim = 2;
-    int rc = e->scores_scene
-                 ? sp_scene_update(e->scores_scene, &view, SP_SCENE_CHANGED_FEATURES, err)
-                 : sp_scene_create(&e->scores_scene, e->dev, &view, SP_SCENE_FEATURES, err);
-    sp_render_request req = {.features = two, .alpha = alpha};
+    /* scores and RGB of one projection and sort */
+    sp_render_request req = {.rgb = rgb, .features = two, .alpha = alpha};
+    int rc = sem_scores_scene(e, err);
     if (!rc) rc = sp_render_views(e->raster, e->scores_scene, cam, 1, &req, err);
-    sp_render_request req_rgb = {.rgb = rgb};
-    if (!rc && rgb && !(rc = ensure_scene(e, err)))
-        rc = sp_render_views(e->raster, e->scene, cam, 1, &req_rgb, err);
     if (!rc)
         for (size_t p = 0; p < np; p++) {
             int ok = alpha[p] > 0.5f;
@@ -331,7 +334,6 @@ int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, floa
     free(two), free(alpha);
     return rc;
 }
-
 
 /* Renders view v at 1/ds resolution; returns the camera used and buffers (caller frees). */
 static int render_view(sp_query_engine *e, int v, int ds, sp_camera *cam, float **feat,
@@ -381,6 +383,17 @@ static int build_occupancy(sp_query_engine *e, sp_error *err)
 
 /* 1 when nothing opaque lies between the camera centre and p (the last ~2 voxels before p and
  * the first 0.2 m are not tested: p's own surface and the camera's surroundings). */
+/* sp_grid3_cell's arithmetic for one axis, inlined: the ray march below calls it about a
+ * million times a query (same float operations, so the same cells). */
+static inline int occ_axis(float v, float origin, float res, int n, int *i)
+{
+    float f = floorf((v - origin) / res);
+    if (!(f > -1e9f)) f = -1e9f;
+    if (f > 1e9f) f = 1e9f;
+    *i = (int)f;
+    return *i >= 0 && *i < n;
+}
+
 static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
 {
     const sp_grid3 *g = &e->occ;
@@ -390,12 +403,60 @@ static int visible(const sp_query_engine *e, sp_vec3 c, sp_vec3 p)
     d = sp_v3_scale(d, 1.0f / len);
     for (float t = 0.2f; t < len - 2.5f * g->res; t += step) {
         sp_vec3 x = sp_v3_add(c, sp_v3_scale(d, t));
-        float xp[3] = {x.x, x.y, x.z};
-        int q[3];
-        if (!sp_grid3_cell(g, xp, q)) continue;
-        if (g->data[((size_t)q[2] * g->ny + q[1]) * g->nx + q[0]] != 0) return 0;
+        int qx, qy, qz;
+        if (!occ_axis(x.x, g->origin[0], g->res, g->nx, &qx) || !occ_axis(x.y, g->origin[1], g->res, g->ny, &qy) ||
+            !occ_axis(x.z, g->origin[2], g->res, g->nz, &qz))
+            continue;
+        if (g->data[((size_t)qz * g->ny + qy) * g->nx + qx] != 0) return 0;
     }
     return 1;
+}
+
+/* Per camera (one pool task each): which samples it sees unoccluded in the image, and a framing
+ * factor (the object framed rather than filling the image: projected box <= 35% of it, near the
+ * centre, seen from within a few metres). */
+typedef struct {
+    const sp_query_engine *e;
+    const size_t *sel;
+    size_t n_smp;
+    uint8_t *vis;  /* [n_cams][n_smp] */
+    float *frame;  /* [n_cams] */
+} frame_job;
+
+static void frame_camera(void *ctx, long ci, int tid)
+{
+    (void)tid;
+    const frame_job *J = ctx;
+    const sp_query_engine *e = J->e;
+    const sp_splat *s = &e->splat;
+    size_t c = (size_t)ci, n_smp = J->n_smp;
+    const size_t *sel = J->sel;
+    uint8_t *vis = J->vis;
+    const sp_camera *cam = &e->cams[c];
+    sp_vec3 o = sp_camera_center(cam);
+    float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f, zsum = 0;
+    int any = 0;
+    for (size_t j = 0; j < n_smp; j++) {
+        size_t i = sel[j];
+        sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
+        sp_vec3 x = sp_mat3_apply(cam->R, p);
+        float z = x.z + cam->t[2];
+        if (z < 0.2f) continue;
+        float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
+        if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
+        if (!visible(e, o, p)) continue;
+        vis[c * n_smp + j] = 1;
+        any++;
+        zsum += z;
+        u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
+    }
+    if (any) {
+        float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
+        float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
+        /* and near: rendered depth (and so back-projection) gets noisier with distance */
+        float zm = zsum / (float)any / 3.5f;
+        J->frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv)) / (1.0f + zm * zm);
+    }
 }
 
 int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
@@ -418,9 +479,7 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
     /* at most 256 evenly spaced samples of the relevant set */
     size_t stride = n_sel > 256 ? n_sel / 256 : 1, n_smp = 0;
     for (size_t j = 0; j < n_sel; j += stride) sel[n_smp++] = sel[j];
-    /* Per camera: which samples it sees unoccluded in the image, and a framing factor (the
-     * object framed rather than filling the image: projected box <= 35% of it, near the centre,
-     * seen from within a few metres). */
+    /* per camera, in parallel: what it sees of the samples and how well it frames them */
     double tot = 0;
     uint8_t *vis = calloc(e->n_cams * (n_smp ? n_smp : 1), 1);
     float *frame = calloc(e->n_cams, sizeof(float)), *wsmp = malloc(sizeof(float) * (n_smp ? n_smp : 1));
@@ -429,33 +488,8 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
         free(vis), free(frame), free(covered), free(wsmp), free(sel);
         return sp_error_set(err, SP_E_NOMEM, "query: out of memory ranking views");
     }
-    for (size_t c = 0; c < e->n_cams; c++) {
-        const sp_camera *cam = &e->cams[c];
-        sp_vec3 o = sp_camera_center(cam);
-        float u0 = 1e30f, u1 = -1e30f, v0 = 1e30f, v1 = -1e30f, zsum = 0;
-        int any = 0;
-        for (size_t j = 0; j < n_smp; j++) {
-            size_t i = sel[j];
-            sp_vec3 p = sp_v3(s->means[3 * i], s->means[3 * i + 1], s->means[3 * i + 2]);
-            sp_vec3 x = sp_mat3_apply(cam->R, p);
-            float z = x.z + cam->t[2];
-            if (z < 0.2f) continue;
-            float u = cam->fx * (x.x + cam->t[0]) / z + cam->cx, vv = cam->fy * (x.y + cam->t[1]) / z + cam->cy;
-            if (u < 0 || vv < 0 || u >= cam->width || vv >= cam->height) continue;
-            if (!visible(e, o, p)) continue;
-            vis[c * n_smp + j] = 1;
-            any++;
-            zsum += z;
-            u0 = fminf(u0, u), u1 = fmaxf(u1, u), v0 = fminf(v0, vv), v1 = fmaxf(v1, vv);
-        }
-        if (any) {
-            float area = (u1 - u0) * (v1 - v0) / ((float)cam->width * cam->height);
-            float du = 0.5f * (u0 + u1) / cam->width - 0.5f, dv = 0.5f * (v0 + v1) / cam->height - 0.5f;
-            /* and near: rendered depth (and so back-projection) gets noisier with distance */
-            float zm = zsum / (float)any / 3.5f;
-            frame[c] = (area > 0.35f ? 0.35f / area : 1.0f) * (1.0f - sqrtf(du * du + dv * dv)) / (1.0f + zm * zm);
-        }
-    }
+    frame_job fj = {e, sel, n_smp, vis, frame};
+    sp_pool_for(sp_device_pool(e->dev), (long)e->n_cams, frame_camera, &fj);
     for (size_t j = 0; j < n_smp; j++) wsmp[j] = e->opacity[sel[j]], tot += wsmp[j];
     free(sel);
     /* Greedy set cover: each pick scores what it adds (samples no chosen view saw count fully,
@@ -505,6 +539,131 @@ int sem_pick_views(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresh
 
 /* ---- multi-view ----------------------------------------------------------------------------------- */
 
+/* Relevant points of the views, as a growing array. */
+typedef struct {
+    float *pts, *w, *cf;
+    size_t m, cap;
+} mv_points;
+
+static int mv_grow(mv_points *P, sp_error *err)
+{
+    size_t cap = P->cap ? P->cap * 2 : 4096;
+    float *np_ = realloc(P->pts, sizeof(float) * 3 * cap), *nw = np_ ? realloc(P->w, sizeof(float) * cap) : NULL,
+          *nc = nw ? realloc(P->cf, sizeof(float) * cap) : NULL;
+    if (np_) P->pts = np_;
+    if (nw) P->w = nw;
+    if (nc) P->cf = nc;
+    if (!np_ || !nw || !nc) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    P->cap = cap;
+    return 0;
+}
+
+/* Relevant pixels of one scored view, eroded by one pixel (at object borders the expected depth
+ * blends the object with what is behind it and would back-project into the gap), back-projected
+ * with the rendered (expected) depth into P. */
+static int mv_backproject(const sem_thresholds *th, const sp_camera *cam, const float *depth,
+                          const float *alpha, const float *raw, const float *rel, mv_points *P,
+                          sp_error *err)
+{
+    size_t np = (size_t)cam->width * cam->height;
+    uint8_t *keep = calloc(np, 1);
+    if (!keep) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    for (size_t p = 0; p < np; p++)
+        keep[p] = raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f && depth[p] > 0;
+    float Rt[9];
+    sp_mat3_transpose(cam->R, Rt);
+    int rc = 0;
+    for (int y = 1; y + 1 < cam->height && !rc; y++)
+        for (int x = 1; x + 1 < cam->width; x++) {
+            size_t p = (size_t)y * cam->width + x;
+            if (!keep[p] || !keep[p - 1] || !keep[p + 1] || !keep[p - cam->width] || !keep[p + cam->width])
+                continue;
+            if (P->m == P->cap && (rc = mv_grow(P, err))) break;
+            /* back-project the pixel centre with the rendered (expected) depth */
+            float z = depth[p];
+            sp_vec3 xc = sp_v3(((float)x + 0.5f - cam->cx) / cam->fx * z - cam->t[0],
+                               ((float)y + 0.5f - cam->cy) / cam->fy * z - cam->t[1], z - cam->t[2]);
+            sp_vec3 xw = sp_mat3_apply(Rt, xc);
+            size_t m = P->m++;
+            P->pts[3 * m] = xw.x, P->pts[3 * m + 1] = xw.y, P->pts[3 * m + 2] = xw.z;
+            P->w[m] = (rel[p] - 0.5f + 1e-3f) * 2.0f * alpha[p] * (z / cam->fx) * (z / cam->fy);
+            P->cf[m] = raw[p];
+        }
+    free(keep);
+    return rc;
+}
+
+/* Host stages: each view rendered to host buffers, scored and back-projected in turn. */
+static int mv_points_host(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                          const int *views, int got, int ds, mv_points *P, sp_query_stages *st,
+                          sp_error *err)
+{
+    int rc = 0;
+    for (int q = 0; q < got && !rc; q++) {
+        sp_camera cam;
+        float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
+        double t0 = sp_time_now();
+        rc = render_view(e, views[q], ds, &cam, &feat, &depth, &alpha, NULL, err);
+        double t1 = sp_time_now();
+        size_t np = (size_t)cam.width * cam.height;
+        if (!rc) {
+            raw = malloc(sizeof(float) * np);
+            rel = malloc(sizeof(float) * np);
+            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+        }
+        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
+        double t2 = sp_time_now();
+        if (!rc) rc = mv_backproject(th, &cam, depth, alpha, raw, rel, P, err);
+        st->render += (t1 - t0) * 1e3;
+        st->score += (t2 - t1) * 1e3;
+        st->backproject += (sp_time_now() - t2) * 1e3;
+        free(feat), free(depth), free(alpha), free(raw), free(rel);
+    }
+    return rc;
+}
+
+/* Device stages: every view rendered in one batch into device buffers, scored, selected,
+ * back-projected and compacted there; only the points come back. */
+static int mv_points_device(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
+                            const int *views, int got, int ds, mv_points *P, sp_query_stages *st,
+                            sp_error *err)
+{
+    int D = e->splat.feat_dim, rc = 0;
+    sp_camera *cams = malloc(sizeof *cams * (size_t)got);
+    sp_render_request *reqs = calloc((size_t)got, sizeof *reqs);
+    if (!cams || !reqs) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    size_t total = 0;
+    for (int q = 0; q < got && !rc; q++) {
+        cams[q] = e->cams[views[q]];
+        if (ds > 1) sp_camera_downscale(&cams[q], ds);
+        total += (size_t)cams[q].width * cams[q].height;
+    }
+    /* features [total][D], depth [total], alpha [total]: view q from its first pixel on */
+    size_t o_depth = sem_align64(total * (size_t)D), o_alpha = o_depth + sem_align64(total);
+    if (!rc) rc = ensure_scene(e, err);
+    if (!rc) rc = sp_device_scratch_reserve(e->dev, &e->mv_out, (o_alpha + total) * sizeof(float), err);
+    double t0 = sp_time_now();
+    if (!rc) {
+        float *b = e->mv_out.ptr;
+        for (int q = 0, at = 0; q < got; at += cams[q].width * cams[q].height, q++)
+            reqs[q] = (sp_render_request){.features = b + (size_t)at * D, .depth = b + o_depth + at,
+                                          .alpha = b + o_alpha + at, .on_device = 1};
+        rc = sp_render_views(e->raster, e->scene, cams, (size_t)got, reqs, err);
+        if (!rc) rc = sp_device_sync(e->dev, err);
+    }
+    st->render = (sp_time_now() - t0) * 1e3;
+    double ms[2] = {0, 0};
+    if (!rc) {
+        float *b = e->mv_out.ptr;
+        rc = sem_cuda_view_points(e->dev, &e->mv_work, sc, th->thr_raw, th->thr_rel, cams, got, b,
+                                  b + o_depth, b + o_alpha, &P->pts, &P->w, &P->cf, &P->m, ms, err);
+        P->cap = P->m;
+    }
+    st->score = ms[0], st->backproject = ms[1];
+    free(cams), free(reqs);
+    return rc;
+}
+
 int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const sem_thresholds *th,
                            sp_query_result *res, sp_error *err)
 {
@@ -514,80 +673,30 @@ int sem_localize_multiview(sp_query_engine *e, const sp_sem_scorer *sc, const se
     int k = th->opts->n_views > 0 ? th->opts->n_views : 4;
     int *views = malloc(sizeof(int) * (size_t)(3 * k));
     if (!views) return sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
+    double t0 = sp_time_now();
     int got = sem_pick_views(e, sc, th, NULL, k, 3 * k, views, NULL, err);
+    res->ms_stage.pick = (sp_time_now() - t0) * 1e3;
     if (got < 0) {
         free(views);
         return got;
     }
     res->view_index = got > 0 ? views[0] : -1;
-    float *pts = NULL, *w = NULL, *cf = NULL;
-    size_t m = 0, cap = 0;
-    int rc = 0;
-    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1;
-    for (int q = 0; q < got && !rc; q++) {
-        sp_camera cam;
-        float *feat = NULL, *depth = NULL, *alpha = NULL, *raw = NULL, *rel = NULL;
-        rc = render_view(e, views[q], ds, &cam, &feat, &depth, &alpha, NULL, err);
-        size_t np = (size_t)cam.width * cam.height;
-        if (!rc) {
-            raw = malloc(sizeof(float) * np);
-            rel = malloc(sizeof(float) * np);
-            if (!raw || !rel) rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-        }
-        if (!rc) rc = sem_score_pixels(e, sc, feat, alpha, np, raw, rel, err);
-        if (!rc) {
-            /* relevant pixels, eroded by one pixel: at object borders the expected depth blends
-             * the object with what is behind it and would back-project into the gap */
-            uint8_t *keep = calloc(np, 1);
-            if (!keep) {
-                rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-                goto next;
-            }
-            for (size_t p = 0; p < np; p++)
-                keep[p] = raw[p] >= th->thr_raw && rel[p] >= th->thr_rel && alpha[p] > 0.9f && depth[p] > 0;
-            float Rt[9];
-            sp_mat3_transpose(cam.R, Rt);
-            for (int y = 1; y + 1 < cam.height && !rc; y++)
-                for (int x = 1; x + 1 < cam.width; x++) {
-                    size_t p = (size_t)y * cam.width + x;
-                    if (!keep[p] || !keep[p - 1] || !keep[p + 1] || !keep[p - cam.width] || !keep[p + cam.width])
-                        continue;
-                    if (m == cap) {
-                        cap = cap ? cap * 2 : 4096;
-                        float *np_ = realloc(pts, sizeof(float) * 3 * cap),
-                              *nw = np_ ? realloc(w, sizeof(float) * cap) : NULL,
-                              *nc = nw ? realloc(cf, sizeof(float) * cap) : NULL;
-                        if (np_) pts = np_;
-                        if (nw) w = nw;
-                        if (nc) cf = nc;
-                        if (!np_ || !nw || !nc) {
-                            rc = sp_error_set(err, SP_E_NOMEM, "multi-view: out of memory");
-                            break;
-                        }
-                    }
-                    /* back-project the pixel centre with the rendered (expected) depth */
-                    float z = depth[p];
-                    sp_vec3 xc = sp_v3(((float)x + 0.5f - cam.cx) / cam.fx * z - cam.t[0],
-                                       ((float)y + 0.5f - cam.cy) / cam.fy * z - cam.t[1], z - cam.t[2]);
-                    sp_vec3 xw = sp_mat3_apply(Rt, xc);
-                    pts[3 * m] = xw.x, pts[3 * m + 1] = xw.y, pts[3 * m + 2] = xw.z;
-                    w[m] = (rel[p] - 0.5f + 1e-3f) * 2.0f * alpha[p] * (z / cam.fx) * (z / cam.fy);
-                    cf[m] = raw[p];
-                    m++;
-                }
-            free(keep);
-        }
-    next:
-        free(feat), free(depth), free(alpha), free(raw), free(rel);
-    }
+    mv_points P = {0};
+    int ds = th->opts->render_downscale > 0 ? th->opts->render_downscale : 1, rc = 0;
+    if (got > 0)
+        rc = sc->orthonormal && sem_device_stages(e, th->opts->host_stages)
+                 ? mv_points_device(e, sc, th, views, got, ds, &P, &res->ms_stage, err)
+                 : mv_points_host(e, sc, th, views, got, ds, &P, &res->ms_stage, err);
     free(views);
     /* A cluster's weight here sums every view that saw it, so an instance seen from one or two
      * views weighs a fraction of one seen from many: the relative cut is a third of the 3D one. */
-    if (!rc && m > 0)
-        rc = sem_cluster(pts, w, cf, m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
+    double t1 = sp_time_now();
+    if (!rc && P.m > 0)
+        rc = sem_cluster(P.pts, P.w, P.cf, P.m, th->opts->voxel_m, th->opts->min_instance_fraction / 3.0f,
                          MV_MIN_VOXEL_COVER * th->opts->voxel_m * th->opts->voxel_m, &res->instances,
                          &res->n_instances, err);
-    free(pts), free(w), free(cf);
+    res->ms_stage.cluster = (sp_time_now() - t1) * 1e3;
+    free(P.pts), free(P.w), free(P.cf);
     if (rc) return rc;
     set_best(res, th->opts->min_confidence);
     return 0;

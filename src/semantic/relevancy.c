@@ -120,12 +120,12 @@ int sp_sem_scorer_init(sp_sem_scorer *sc, const sp_sem_pca *pca, const float *qu
     project(pca, pca->mean, &unused, sc->mb);
     sc->m2 = (float)m2;
     sc->orthonormal = 1;
-    for (int a = 0; a < D; a++)
-        for (int b = 0; b < D; b++) {
+    for (int a = 0; a < D; a++) /* symmetric: each pair once (the same sums either way round) */
+        for (int b = a; b < D; b++) {
             double g = 0;
             const float *ra = pca->basis + (size_t)a * F, *rb = pca->basis + (size_t)b * F;
             for (int j = 0; j < F; j++) g += (double)ra[j] * rb[j];
-            sc->G[a * D + b] = (float)g;
+            sc->G[a * D + b] = sc->G[b * D + a] = (float)g;
             if (fabs(g - (a == b)) > 1e-4) sc->orthonormal = 0;
         }
     return 0;

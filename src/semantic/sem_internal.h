@@ -3,7 +3,9 @@
 #define SP_SEM_INTERNAL_H
 
 #include <pthread.h>
+#include <string.h>
 
+#include "device/device_impl.h" /* sp_device_scratch */
 #include "semsplat/semantic.h"
 
 struct sp_clip;
@@ -44,6 +46,11 @@ struct sp_query_engine {
     sp_scene *scores_scene;    /* the same geometry with scores2 as 2-channel features, updated
                                 * per query (made on first use) */
     float *d_feat, *d_raw, *d_rel; /* CUDA engines: features [n][d] and scores [n] on the GPU */
+    int dev_scores;            /* d_raw, d_rel hold the last scoring (else it ran on the host) */
+    float *d_scores2;          /* CUDA engines: [n][2] (raw, rel) for scores_scene, on the GPU */
+    sp_device_scratch mv_out;  /* device stages: the multi-view renders (features, depth, alpha) */
+    sp_device_scratch mv_work; /* device stages: per-pixel scores, flags, scan, points */
+    sp_device_scratch hm_out;  /* device stages: the heatmap's render, relevancy and image */
     sp_grid3 occ;              /* occupancy of opaque Gaussian centres (1), built on first use */
 };
 
@@ -97,6 +104,23 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
                 float min_fraction, float min_voxel_weight, sp_query_instance **out, int *n_out,
                 sp_error *err);
 
+/* A sort key and the index of what it belongs to. */
+typedef struct {
+    uint64_t key;
+    uint32_t idx;
+} sem_keyed;
+/* Sorts a [m] by key, stably (equal keys keep their order: a list made in index order comes out
+ * ordered by (key, idx)); tmp [m] is scratch (sort.c). */
+void sem_sort_keyed(sem_keyed *a, sem_keyed *tmp, size_t m);
+/* A key whose unsigned order is f's order (not NaN; -0 sorts just before +0): negatives
+ * reversed below the positives. */
+static inline uint64_t sem_float_order(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u >> 31 ? ~u : u | 0x80000000u;
+}
+
 /* Relevant-set thresholds of a query: raw >= thr_raw && rel >= thr_rel && opacity >= min_op,
  * and the options of the call they belong to. */
 typedef struct {
@@ -124,12 +148,22 @@ int sem_heatmap(sp_query_engine *e, const sem_thresholds *th, int v, sp_query_re
  * found: stretch the visible relevancy to the full colour range; else fade it by how far
  * confidence is below min_confidence. */
 int sem_heatmap_render(sp_query_engine *e, const sp_camera *cam, int found, float confidence,
-                       float min_confidence, uint8_t *img, float *rel, sp_error *err);
+                       float min_confidence, int host_stages, uint8_t *img, float *rel,
+                       sp_query_stages *st, sp_error *err);
+/* The scores scene (the splat's geometry and SH, with the per-Gaussian (raw, rel) of the last
+ * scoring as 2 feature channels) made or brought up to date: from d_scores2 on the device when
+ * the scoring ran there, else from the host scores. */
+int sem_scores_scene(sp_query_engine *e, sp_error *err);
 /* Renders the per-Gaussian (raw, rel) of the last scoring through camera cam (2 channels, cheap
- * next to D feature channels): raw/rel [H][W] of the alpha-normalised composite where alpha >
- * 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */
+ * next to D feature channels) with the RGB in the same pass: raw/rel [H][W] of the
+ * alpha-normalised composite where alpha > 0.5 (else -1 / 0.5); rgb [H][W][3] too when not NULL. */
 int sem_render_scores(sp_query_engine *e, const sp_camera *cam, float *raw, float *rel, float *rgb,
                       sp_error *err);
+/* Float counts rounded up to 64 (256-byte aligned pieces of one device scratch block). */
+static inline size_t sem_align64(size_t floats) { return (floats + 63) & ~(size_t)63; }
+/* 1 when the semantic stages run on the device: a GPU engine whose last scoring ran there, unless
+ * host_stages asks for the host. */
+int sem_device_stages(const sp_query_engine *e, int host_stages);
 /* Per-pixel raw cosine / relevancy of a rendered feature image (feat [npix][dim], alpha [npix])
  * where alpha > 0.5 (else -1 / 0.5). SP_E_NOMEM when the normalised copy cannot be made. */
 int sem_score_pixels(sp_query_engine *e, const sp_sem_scorer *sc, const float *feat,

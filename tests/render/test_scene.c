@@ -1,8 +1,10 @@
 /* Rendering for callers other than training, on the CPU: first-surface depth against a naive
  * double reference (render_ref.h) and at an occlusion edge (where expected depth blends the two
  * surfaces and first-surface depth picks one); sp_scene snapshots and sp_scene_update; batches of
- * views (sp_render_views) equal to one view at a time and to sp_render_splat; bad requests. The
- * CUDA side of all this is in test_cuda_raster (batches, surface depth bit for bit). */
+ * views (sp_render_views) equal to one view at a time and to sp_render_splat; bad requests;
+ * outputs left on the device (on_device, sp_scene_copy_features) equal to downloaded ones, on
+ * the CPU and (--gpu) on CUDA. The CUDA side of the rest is in test_cuda_raster (batches, surface
+ * depth bit for bit). */
 #include "scene_util.h"
 
 static sp_device *g_cpu;
@@ -282,8 +284,102 @@ static void test_bad_requests(void)
     sp_splat_free(&s);
 }
 
-int main(void)
+/* ---- outputs left on the device ------------------------------------------------------------------ */
+
+/* Downloads what a device request got into host outputs o (sizes of outs). */
+static void fetch(sp_device *dev, const sp_render_request *d, outs *o, size_t npix, sp_error *err)
 {
+    memset(o, 0, sizeof *o);
+    if (d->rgb) CHECK_OK(sp_device_download(dev, o->rgb, d->rgb, npix * 12, err), err);
+    if (d->features) CHECK_OK(sp_device_download(dev, o->feat, d->features, npix * 20, err), err);
+    if (d->depth) CHECK_OK(sp_device_download(dev, o->depth, d->depth, npix * 4, err), err);
+    if (d->alpha) CHECK_OK(sp_device_download(dev, o->alpha, d->alpha, npix * 4, err), err);
+}
+
+/* A request like q whose outputs are fresh device buffers. */
+static sp_render_request on_device(sp_device *dev, const sp_render_request *q, size_t npix, sp_error *err)
+{
+    sp_render_request d = *q;
+    d.on_device = 1;
+    d.rgb = q->rgb ? sp_device_alloc(dev, npix * 12, err) : NULL;
+    d.features = q->features ? sp_device_alloc(dev, npix * 20, err) : NULL;
+    d.depth = q->depth ? sp_device_alloc(dev, npix * 4, err) : NULL;
+    d.alpha = q->alpha ? sp_device_alloc(dev, npix * 4, err) : NULL;
+    return d;
+}
+
+static void release(sp_device *dev, sp_render_request *d)
+{
+    sp_device_release(dev, d->rgb), sp_device_release(dev, d->features);
+    sp_device_release(dev, d->depth), sp_device_release(dev, d->alpha);
+}
+
+/* on_device requests give the bits host requests give (expected depth divided on the device too),
+ * and sp_scene_copy_features equals re-uploading the same features from the host. */
+static void views_on_device(sp_device *dev)
+{
+    sp_splat s;
+    random_splat(&s, 300, 6);
+    sp_error err = {0};
+    sp_raster *r = NULL;
+    sp_scene *sc = NULL;
+    CHECK_OK(sp_raster_create(&r, dev, &err), &err);
+    CHECK_OK(sp_scene_create(&sc, dev, &s, SP_SCENE_RGB | SP_SCENE_FEATURES, &err), &err);
+    sp_camera cams[4] = {view_cam(40, 30, 0.f), view_cam(31, 22, 0.2f), view_cam(40, 30, -0.15f),
+                         view_cam(40, 30, 0.1f)};
+    static outs a[4], b[4];
+    sp_render_request qa[4], qd[4];
+    float bg[3] = {0.1f, 0.2f, 0.3f};
+    ask(&a[0], &qa[0], 1, 1, 1, 1, SP_DEPTH_EXPECTED);
+    qa[0].background = bg;
+    ask(&a[1], &qa[1], 1, 0, 1, 0, SP_DEPTH_SURFACE);
+    qa[1].depth_alpha = 0.7f;
+    ask(&a[2], &qa[2], 0, 1, 1, 0, SP_DEPTH_EXPECTED); /* expected depth without alpha asked */
+    ask(&a[3], &qa[3], 0, 0, 1, 1, SP_DEPTH_EXPECTED); /* weights only */
+    CHECK_OK(sp_render_views(r, sc, cams, 4, qa, &err), &err);
+    for (int v = 0; v < 4; v++) qd[v] = on_device(dev, &qa[v], 40 * 30, &err);
+    CHECK_OK(sp_render_views(r, sc, cams, 4, qd, &err), &err);
+    for (int v = 0; v < 4; v++) {
+        fetch(dev, &qd[v], &b[v], (size_t)cams[v].width * cams[v].height, &err);
+        CHECK_MSG(memcmp(&a[v], &b[v], sizeof a[v]) == 0, "view %d left on the device differs", v);
+        release(dev, &qd[v]);
+    }
+    /* features copied on the device = the same features uploaded from the host */
+    for (size_t i = 0; i < s.n * 5; i++) s.features[i] = 0.5f * s.features[i] + 0.1f;
+    float *d_feat = sp_device_alloc(dev, s.n * 5 * sizeof(float), &err);
+    CHECK_OK(sp_device_upload(dev, d_feat, s.features, s.n * 5 * sizeof(float), &err), &err);
+    CHECK_OK(sp_scene_copy_features(sc, d_feat, &err), &err);
+    sp_scene *fresh = NULL;
+    CHECK_OK(sp_scene_create(&fresh, dev, &s, SP_SCENE_FEATURES, &err), &err);
+    ask(&a[0], &qa[0], 0, 1, 0, 1, SP_DEPTH_EXPECTED), ask(&b[0], &qd[0], 0, 1, 0, 1, SP_DEPTH_EXPECTED);
+    CHECK_OK(sp_render_views(r, sc, cams, 1, qa, &err), &err);
+    CHECK_OK(sp_render_views(r, fresh, cams, 1, qd, &err), &err);
+    CHECK(memcmp(&a[0], &b[0], sizeof a[0]) == 0);
+    sp_scene *geo = NULL;
+    CHECK_OK(sp_scene_create(&geo, dev, &s, 0, &err), &err);
+    CHECK_FAILS(sp_scene_copy_features(geo, d_feat, &err), SP_E_ARG, &err, "SP_SCENE_FEATURES");
+    sp_device_release(dev, d_feat);
+    sp_scene_free(geo);
+    sp_scene_free(fresh);
+    sp_scene_free(sc);
+    sp_raster_free(r);
+    sp_splat_free(&s);
+}
+
+static void test_views_on_device_cpu(void) { views_on_device(g_cpu); }
+
+static void test_views_on_device_gpu(void)
+{
+    sp_device *gpu = NULL;
+    sp_error err = {0};
+    CHECK_OK(sp_device_create(&gpu, SP_DEVICE_CUDA, 2, &err), &err);
+    if (gpu) views_on_device(gpu);
+    sp_device_free(gpu);
+}
+
+int main(int argc, char **argv)
+{
+    TEST_ARGS(argc, argv);
     sp_error err = {0};
     if (sp_device_create(&g_cpu, SP_DEVICE_CPU, 2, &err)) {
         fprintf(stderr, "%s\n", err.msg);
@@ -293,6 +389,8 @@ int main(void)
     RUN(test_surface_at_edges);
     RUN(test_views_and_scenes);
     RUN(test_bad_requests);
+    RUN(test_views_on_device_cpu);
+    RUN_GPU(test_views_on_device_gpu);
     sp_device_free(g_cpu);
     return TEST_EXIT();
 }

@@ -75,6 +75,19 @@ static void test_multiview_finds_table_and_lamp(void)
         CHECK(res.view_index >= 0 && res.view_index < NCAM);
         CHECK_MSG(dist3(res.position, c) < 0.15, "%s at %.3f %.3f %.3f (truth %.2f %.2f %.2f)", names[q],
                   res.position[0], res.position[1], res.position[2], c[0], c[1], c[2]);
+        /* the stage breakdown: the CPU engine renders, scores and colours on the host (no copy) */
+        const sp_query_stages *st = &res.ms_stage;
+        CHECK(st->pick >= 0 && st->render > 0 && st->score > 0 && st->backproject >= 0 && st->cluster >= 0);
+        CHECK(st->hm_render > 0 && st->hm_colormap > 0 && st->hm_copy == 0);
+        CHECK(st->render + st->score + st->backproject + st->cluster + st->pick <= res.ms_localize + 1e-3);
+        /* host_stages changes nothing on a CPU engine */
+        sp_query_result h;
+        g_opts.host_stages = 1;
+        CHECK_OK(sp_query_engine_query(g_eng, names[q], &g_opts, &h, &err), &err);
+        g_opts.host_stages = 0;
+        CHECK(h.n_instances == res.n_instances && memcmp(h.position, res.position, sizeof h.position) == 0);
+        CHECK(memcmp(h.relevancy_image, res.relevancy_image, (size_t)res.width * res.height * 3) == 0);
+        sp_query_result_free(&h);
         sp_query_result_free(&res);
     }
     g_opts.method = SP_QUERY_3D;

@@ -147,6 +147,8 @@ int sp_cuda_sh_to_rgb_backward(sp_device *dev, size_t n, int degree, int degree_
                                const float *sh, const float *means, sp_vec3 cam_center,
                                const float *rgb, const float *v_rgb, int stride, float *v_sh,
                                float *v_means, sp_error *err);
+int sp_cuda_depth_normalize(sp_device *dev, float *depth, const float *alpha, size_t npix,
+                            sp_error *err);
 int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geom,
                   const sp_raster_view *views, size_t n_views, sp_error *err);
 

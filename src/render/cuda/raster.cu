@@ -66,6 +66,7 @@ static size_t cu_last_pairs(const void *state)
 
 static const sp_render_backend cuda_backend = {
     "cuda", cu_create, cu_destroy, sp_cuda_raster_forward, sp_cuda_raster_backward, cu_radii,
-    cu_last_pairs, sp_cuda_views, sp_cuda_sh_to_rgb, sp_cuda_sh_to_rgb_backward, cu_stages};
+    cu_last_pairs, sp_cuda_views, sp_cuda_depth_normalize, sp_cuda_sh_to_rgb,
+    sp_cuda_sh_to_rgb_backward, cu_stages};
 
 extern "C" const sp_render_backend *sp_render_cuda_backend(void) { return &cuda_backend; }

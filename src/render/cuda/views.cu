@@ -219,3 +219,19 @@ int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geo
     free(ends);
     return rc;
 }
+
+/* Expected depth of outputs left on the device: sum w z / sum w, IEEE division (__fdiv_rn, not
+ * fast math) so it equals the host's division of the downloaded buffers. */
+__global__ void k_depth_normalize(float *__restrict__ depth, const float *__restrict__ alpha, size_t npix)
+{
+    size_t i = (size_t)blockIdx.x * blockDim.x + threadIdx.x;
+    if (i < npix) depth[i] = alpha[i] >= 1e-6f ? __fdiv_rn(depth[i], alpha[i]) : 0.f;
+}
+
+int sp_cuda_depth_normalize(sp_device *dev, float *depth, const float *alpha, size_t npix, sp_error *err)
+{
+    if (npix == 0) return 0;
+    k_depth_normalize<<<sp_div_up(npix, 256), 256, 0, sp_cuda_stream(dev)>>>(depth, alpha, npix);
+    SP_CUDA_LAUNCHED(err, "normalizing expected depth");
+    return 0;
+}
