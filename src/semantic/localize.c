@@ -71,13 +71,24 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
     sp_query_instance *inst = NULL;
     vw *buf = NULL;
     uint32_t *members = NULL;
+    size_t *start = NULL;
     int rc = 0;
     if (!k || !tmp) goto nomem;
+    /* Sorted by a dense key (the three cell indices side by side in only the bits they need),
+     * which orders like pack()'s key (x, then y, then z) in fewer radix passes; floorf is
+     * monotonic, so each axis's largest index is that of hi. */
+    int bits[3];
+    for (int a = 0; a < 3; a++) {
+        uint64_t top = (uint64_t)floorf((hi[a] - lo[a]) / voxel);
+        bits[a] = 0;
+        while (top >> bits[a]) bits[a]++;
+    }
+    const int sy = bits[2], sx = bits[1] + bits[2];
     for (size_t i = 0; i < m; i++) {
-        long ix = (long)floorf((pts[i * 3] - lo[0]) / voxel);
-        long iy = (long)floorf((pts[i * 3 + 1] - lo[1]) / voxel);
-        long iz = (long)floorf((pts[i * 3 + 2] - lo[2]) / voxel);
-        k[i].key = pack(ix, iy, iz);
+        uint64_t ix = (uint64_t)floorf((pts[i * 3] - lo[0]) / voxel);
+        uint64_t iy = (uint64_t)floorf((pts[i * 3 + 1] - lo[1]) / voxel);
+        uint64_t iz = (uint64_t)floorf((pts[i * 3 + 2] - lo[2]) / voxel);
+        k[i].key = ix << sx | iy << sy | iz;
         k[i].idx = (uint32_t)i;
     }
     sem_sort_keyed(k, tmp, m); /* k was in index order: now by (key, index) */
@@ -95,7 +106,12 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         free(vkey);
         goto nomem;
     }
-    for (size_t j = 0; j < m; j++) vkey[vox_of[j]] = k[j].key;
+    for (size_t j = 0; j < m; j++)
+        if (j == 0 || k[j].key != k[j - 1].key) {
+            uint64_t d = k[j].key;
+            vkey[vox_of[j]] = pack((long)(d >> sx), (long)((d >> sy) & (((uint64_t)1 << bits[1]) - 1)),
+                                   (long)(d & (((uint64_t)1 << bits[2]) - 1)));
+        }
     for (long v = 0; v < nv; v++) parent[v] = v;
     /* sparse voxels (stray points that would bridge two instances) take no part */
     double *vweight = calloc((size_t)nv, sizeof(double));
@@ -104,27 +120,30 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
         goto nomem;
     }
     for (size_t j = 0; j < m; j++) vweight[vox_of[j]] += w[k[j].idx];
-    const uint64_t mask = ((uint64_t)1 << KEY_BITS) - 1;
+    /* The 13 neighbours after a voxel in key order: (0,0,+1), then (dx,dy) = (0,1), (1,-1),
+     * (1,0), (1,1) with dz = -1..1, three consecutive keys each (pack() is linear in the cell
+     * indices, which never leave their fields). Their keys grow with v, so one forward cursor
+     * per (dx,dy) finds them in a single sweep, in the same order as a search per neighbour. */
+    const uint64_t X = (uint64_t)1 << (2 * KEY_BITS), Y = (uint64_t)1 << KEY_BITS;
+    const uint64_t step[4] = {Y - 1, X - Y - 1, X - 1, X + Y - 1};
+    long cur[4] = {0, 0, 0, 0};
     for (long v = 0; v < nv; v++) {
         if (vweight[v] < min_voxel_weight) continue;
-        long ix = (long)((vkey[v] >> (2 * KEY_BITS)) & mask) - KEY_OFF;
-        long iy = (long)((vkey[v] >> KEY_BITS) & mask) - KEY_OFF;
-        long iz = (long)(vkey[v] & mask) - KEY_OFF;
-        for (int dx = -1; dx <= 1; dx++)
-            for (int dy = -1; dy <= 1; dy++)
-                for (int dz = -1; dz <= 1; dz++) {
-                    uint64_t q = pack(ix + dx, iy + dy, iz + dz);
-                    if (q <= vkey[v]) continue; /* each pair once */
-                    long a = v + 1, b = nv - 1, hit = -1;
-                    while (a <= b) {
-                        long mid = (a + b) / 2;
-                        if (vkey[mid] == q) { hit = mid; break; }
-                        if (vkey[mid] < q) a = mid + 1; else b = mid - 1;
-                    }
-                    if (hit < 0 || vweight[hit] < min_voxel_weight) continue;
-                    long ra = find_root(parent, v), rb = find_root(parent, hit);
-                    if (ra != rb) parent[ra > rb ? ra : rb] = ra < rb ? ra : rb;
-                }
+        long hits[13], nh = 0;
+        if (v + 1 < nv && vkey[v + 1] == vkey[v] + 1) hits[nh++] = v + 1;
+        for (int g = 0; g < 4; g++) {
+            uint64_t base = vkey[v] + step[g];
+            long c = cur[g];
+            while (c < nv && vkey[c] < base) c++;
+            cur[g] = c;
+            for (long h = c; h < nv && vkey[h] <= base + 2; h++) hits[nh++] = h;
+        }
+        for (long t = 0; t < nh; t++) {
+            long hit = hits[t];
+            if (vweight[hit] < min_voxel_weight) continue;
+            long ra = find_root(parent, v), rb = find_root(parent, hit);
+            if (ra != rb) parent[ra > rb ? ra : rb] = ra < rb ? ra : rb;
+        }
     }
     free(vkey);
     /* components: comp id per root (-1 for sparse voxels), weights */
@@ -153,22 +172,36 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
     buf = malloc(sizeof(vw) * m);
     members = malloc(sizeof(uint32_t) * m);
     if (!inst || !buf || !members) goto nomem;
+    /* each kept component's points, in sorted (voxel) order, bucketed in one pass: start[c] is
+     * where component c's run begins in members (dropped components get none) */
+    start = calloc((size_t)nc + 1, sizeof *start);
+    if (!start) goto nomem;
+    for (size_t j = 0; j < m; j++) {
+        long c = comp[vox_of[j]];
+        if (c >= 0 && cw[c] >= min_fraction * best) start[c + 1]++;
+    }
+    for (long c = 0; c < nc; c++) start[c + 1] += start[c];
+    for (size_t j = 0; j < m; j++) {
+        long c = comp[vox_of[j]];
+        if (c >= 0 && cw[c] >= min_fraction * best) members[start[c]++] = k[j].idx;
+    }
     int ni = 0;
+    size_t run = 0; /* start[c] now ends component c's run */
     for (long c = 0; c < nc; c++) {
         if (cw[c] < min_fraction * best) continue;
         sp_query_instance *I = &inst[ni++];
         I->score = (float)cw[c];
         I->confidence = -1;
-        size_t cnt = 0; /* the component's points, in sorted (voxel) order */
-        for (size_t j = 0; j < m; j++)
-            if (comp[vox_of[j]] == c) members[cnt++] = k[j].idx;
+        const uint32_t *mem = members + run;
+        size_t cnt = start[c] - run;
+        run = start[c];
         for (size_t t = 0; conf && t < cnt; t++)
-            if (conf[members[t]] > I->confidence) I->confidence = conf[members[t]];
+            if (conf[mem[t]] > I->confidence) I->confidence = conf[mem[t]];
         for (int a = 0; a < 3; a++) {
             /* values by size, ties in member order (a stable sort) */
             for (size_t t = 0; t < cnt; t++) {
-                tmp[t].key = sem_float_order(pts[members[t] * 3 + a]);
-                tmp[t].idx = members[t];
+                tmp[t].key = sem_float_order(pts[mem[t] * 3 + a]);
+                tmp[t].idx = mem[t];
             }
             sem_sort_keyed(tmp, tmp + cnt, cnt);
             for (size_t t = 0; t < cnt; t++) buf[t].v = pts[tmp[t].idx * 3 + a], buf[t].w = w[tmp[t].idx];
@@ -178,7 +211,23 @@ int sem_cluster(const float *pts, const float *w, const float *conf, size_t m, f
             I->n_points = (int)cnt;
         }
     }
-    /* heaviest first (insertion sort: few instances) */
+    /* heaviest first, ties in component order: a stable sort on descending score. Many
+     * instances (stray points kept by a low cut) by radix on the scores' order keys (scores are
+     * sums from +0, never -0); a few, or any NaN, by insertion as before. */
+    int nan_score = 0;
+    for (int i = 0; i < ni; i++) nan_score |= isnan(inst[i].score);
+    if (ni > 16 && !nan_score) {
+        sp_query_instance *sorted = malloc(sizeof *sorted * (size_t)ni);
+        if (!sorted) goto nomem;
+        for (int i = 0; i < ni; i++) {
+            tmp[i].key = ~sem_float_order(inst[i].score) & 0xffffffffu;
+            tmp[i].idx = (uint32_t)i;
+        }
+        sem_sort_keyed(tmp, tmp + ni, (size_t)ni);
+        for (int i = 0; i < ni; i++) sorted[i] = inst[tmp[i].idx];
+        free(inst);
+        inst = sorted;
+    }
     for (int i = 1; i < ni; i++) {
         sp_query_instance t = inst[i];
         int j = i - 1;
@@ -203,6 +252,7 @@ done:
     free(inst);
     free(buf);
     free(members);
+    free(start);
     free(tmp);
     return rc;
 }
