@@ -47,8 +47,10 @@ static void same_heatmap(const sp_query_result *a, const sp_query_result *b)
     for (size_t p = 0; p < np; p++) {
         worst_rel = fmax(worst_rel, fabs(a->relevancy[p] - b->relevancy[p]));
         int d = 0;
-        for (int c = 0; c < 3; c++) d = abs(a->relevancy_image[3 * p + c] - b->relevancy_image[3 * p + c]) > d
-                                            ? abs(a->relevancy_image[3 * p + c] - b->relevancy_image[3 * p + c]) : d;
+        for (int c = 0; c < 3; c++) {
+            int dc = abs(a->relevancy_image[3 * p + c] - b->relevancy_image[3 * p + c]);
+            if (dc > d) d = dc;
+        }
         off += d > 0;
         if (d > worst_px) worst_px = d;
     }
