@@ -208,13 +208,7 @@ def garage_door():
 
 
 def walls():
-    v, n = [], [0]
-
-    def wall(x0, y0, x1, y1, z0=0.0, z1=H, c="plaster"):
-        n[0] += 1
-        sx = abs(x1 - x0) if x1 != x0 else T
-        sy = abs(y1 - y0) if y1 != y0 else T
-        v.append(box(f"wall_{n[0]}", c, (x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2, sx, sy, z1 - z0))
+    v, wall = base.wall_builder(H, T)
     # south wall around the garage door's opening; north wall around the house door's
     wall(0, 0, GX0, 0); wall(GX1, 0, W, 0); wall(GX0, 0, GX1, 0, GH, H)
     wall(0, D, HX0, D); wall(HX1, D, W, D); wall(HX0, D, HX1, D, 2.1, H)
@@ -223,11 +217,11 @@ def walls():
 
 
 def floor():
-    return [box("floor_garage", "concrete", W / 2, D / 2, -0.01, W, D, 0.02)]
+    return base.floor_slab("floor_garage", "concrete", W, D)
 
 
 def ceiling():
-    return [box("ceiling", "white", W / 2, D / 2, H + 0.01, W, D, 0.02)]
+    return base.ceiling_slab(W, D, H)
 
 
 def main():

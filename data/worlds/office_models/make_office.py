@@ -158,15 +158,29 @@ def window():
             box("pane", "glass", 0, -0.016, 0, 1.2, 0.004, 1.1)]
 
 
-def walls():
+def wall_builder(height, thickness=T):
+    """Wall segments along x or y, as boxes wall_1, wall_2, ...: returns (visuals, wall); every
+    generator of an inline world builds its walls with it."""
     v, n = [], [0]
 
-    def wall(x0, y0, x1, y1, z0=0.0, z1=H, c="plaster"):
+    def wall(x0, y0, x1, y1, z0=0.0, z1=height, c="plaster"):
         n[0] += 1
-        cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-        sx = abs(x1 - x0) if x1 != x0 else T
-        sy = abs(y1 - y0) if y1 != y0 else T
-        v.append(box(f"wall_{n[0]}", c, cx, cy, (z0 + z1) / 2, sx, sy, z1 - z0))
+        sx = abs(x1 - x0) if x1 != x0 else thickness
+        sy = abs(y1 - y0) if y1 != y0 else thickness
+        v.append(box(f"wall_{n[0]}", c, (x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2, sx, sy, z1 - z0))
+    return v, wall
+
+
+def floor_slab(name, material, w, d):
+    return [box(name, material, w / 2, d / 2, -0.01, w, d, 0.02)]
+
+
+def ceiling_slab(w, d, h):
+    return [box("ceiling", "white", w / 2, d / 2, h + 0.01, w, d, 0.02)]
+
+
+def walls():
+    v, wall = wall_builder(H)
     # outer walls; the entrance (x 1.0..1.9) in the south wall
     wall(0, 0, 1.0, 0); wall(1.9, 0, W, 0); wall(1.0, 0, 1.9, 0, 2.1, H)
     wall(0, D, W, D); wall(0, 0, 0, D); wall(W, 0, W, D)
@@ -178,11 +192,11 @@ def walls():
 
 
 def floor():
-    return [box("floor_office", "carpet", W / 2, D / 2, -0.01, W, D, 0.02)]
+    return floor_slab("floor_office", "carpet", W, D)
 
 
 def ceiling():
-    return [box("ceiling", "white", W / 2, D / 2, H + 0.01, W, D, 0.02)]
+    return ceiling_slab(W, D, H)
 
 
 def point_light(name, x, y, z, rgb):

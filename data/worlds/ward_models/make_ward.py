@@ -161,13 +161,7 @@ def waste_bin():
 
 
 def walls():
-    v, n = [], [0]
-
-    def wall(x0, y0, x1, y1, z0=0.0, z1=H, c="plaster"):
-        n[0] += 1
-        sx = abs(x1 - x0) if x1 != x0 else T
-        sy = abs(y1 - y0) if y1 != y0 else T
-        v.append(box(f"wall_{n[0]}", c, (x0 + x1) / 2, (y0 + y1) / 2, (z0 + z1) / 2, sx, sy, z1 - z0))
+    v, wall = base.wall_builder(H, T)
     # outer walls; the corridor's entrance (y 0.6..1.6) in the west wall
     wall(0, 0, W, 0); wall(0, D, W, D); wall(W, 0, W, D)
     wall(0, 0, 0, 0.6); wall(0, 1.6, 0, D); wall(0, 0.6, 0, 1.6, 2.1, H)
@@ -178,11 +172,11 @@ def walls():
 
 
 def floor():
-    return [box("floor_ward", "vinyl", W / 2, D / 2, -0.01, W, D, 0.02)]
+    return base.floor_slab("floor_ward", "vinyl", W, D)
 
 
 def ceiling():
-    return [box("ceiling", "white", W / 2, D / 2, H + 0.01, W, D, 0.02)]
+    return base.ceiling_slab(W, D, H)
 
 
 def main():
