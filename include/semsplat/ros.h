@@ -383,7 +383,8 @@ int sp_ros_decode_cancel_request(const uint8_t *bytes, size_t size, sp_ros_cance
 int sp_ros_decode_cancel_response(const uint8_t *bytes, size_t size, sp_ros_cancel_response *out,
                                   sp_error *err);
 
-/* Quaternion <-> yaw for planar poses (yaw of the rotation's heading; roll/pitch ignored). */
+/* Quaternion <-> yaw for planar poses (yaw of the rotation's heading; roll/pitch ignored). The
+ * quaternion need not be unit length; any finite one gives a finite yaw (0 for all zeros). */
 double sp_ros_quat_yaw(double qx, double qy, double qz, double qw);
 void sp_ros_yaw_quat(double yaw, double *qx, double *qy, double *qz, double *qw);
 

@@ -234,7 +234,16 @@ int cdr_end(cdr_in *in)
 
 double sp_ros_quat_yaw(double qx, double qy, double qz, double qw)
 {
-    return atan2(2.0 * (qw * qz + qx * qy), 1.0 - 2.0 * (qy * qy + qz * qz));
+    /* Scaled by the largest component first: any finite quaternion, however far from unit length
+     * (a malformed sample), then gives a finite yaw instead of inf - inf = NaN. */
+    double m = fmax(fmax(fabs(qx), fabs(qy)), fmax(fabs(qz), fabs(qw)));
+    if (!(m > 0) || !isfinite(m)) return 0.0;
+    qx /= m;
+    qy /= m;
+    qz /= m;
+    qw /= m;
+    double n2 = qx * qx + qy * qy + qz * qz + qw * qw;
+    return atan2(2.0 * (qw * qz + qx * qy), n2 - 2.0 * (qy * qy + qz * qz));
 }
 
 void sp_ros_yaw_quat(double yaw, double *qx, double *qy, double *qz, double *qw)
