@@ -194,6 +194,11 @@ static int parse_yaml(const char *path, char *text, map_yaml *m, sp_error *err)
     if (fabs(m->origin[0]) > 1e6 || fabs(m->origin[1]) > 1e6)
         return sp_error_set(err, SP_E_FORMAT, "%s: origin [%g, %g] is more than 1000 km from the frame's origin",
                             path, m->origin[0], m->origin[1]);
+    /* map_server's meaning needs 0 <= free_thresh < occupied_thresh <= 1 (scale mode divides by
+     * their difference: equal thresholds made every cell between them NaN). */
+    if (!(m->free_thresh >= 0 && m->free_thresh < m->occupied_thresh && m->occupied_thresh <= 1))
+        return sp_error_set(err, SP_E_FORMAT, "%s: thresholds free %g, occupied %g: need 0 <= free_thresh < "
+                            "occupied_thresh <= 1", path, m->free_thresh, m->occupied_thresh);
     if (fabs(m->origin[2]) > 1e-6)
         return sp_error_set(err, SP_E_UNSUPPORTED, "%s: origin yaw %g: rotated maps are not supported "
                             "(the grid is axis-aligned in the world frame)", path, m->origin[2]);
