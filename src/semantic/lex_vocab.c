@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "lexical.h"
+#include "semsplat/io.h"
 
 int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err)
 {
@@ -38,6 +39,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     free(v->vocab_words);
     for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
     free(v->regions);
+    free(v->aliases);
     free(v);
 }
 
@@ -94,12 +96,17 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     return rc;
 }
 
-static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_error *err)
+static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
+    const lex_db *lx = v->lx;
     snprintf(c->name, sizeof c->name, "%s", name);
-    lex_tokens raw, t;
+    lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
+    /* a name that is wholly a name of the alias table is read as what it usually means indoors
+     * ("wheelie bin": a garbage can), its first target; its own words still make exact matches.
+     * Part of a name is left alone: "projector screen" is no "projector monitor". */
     int rc = lex_merge_collocations(lx, &raw, &t, err);
+    if (!rc && lex_alias_whole(v, &t, &read)) rc = lex_merge_collocations(lx, &read, &t, err);
     if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
@@ -185,6 +192,21 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     np->n_senses = kept;
 }
 
+/* The alias table (data/semantic/aliases.json), and a user's aliases.json beside a region table
+ * given by path, when there is one. */
+static int load_aliases(sp_lex_vocab *v, const char *regions_path, sp_error *err)
+{
+    char path[2048], mine[2048];
+    sp_path_join(path, sizeof path, sp_data_dir(), "semantic/aliases.json");
+    int rc = lex_aliases_load(v, path, err);
+    const char *slash = regions_path ? strrchr(regions_path, '/') : NULL;
+    if (rc || !regions_path || !regions_path[0]) return rc;
+    if (slash) snprintf(mine, sizeof mine, "%.*s/aliases.json", (int)(slash - regions_path), regions_path);
+    else snprintf(mine, sizeof mine, "aliases.json");
+    if (strcmp(mine, path) && sp_file_exists(mine)) rc = lex_aliases_load(v, mine, err);
+    return rc;
+}
+
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
                         int n, const char *regions_path, sp_error *err)
 {
@@ -197,13 +219,14 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
     v->lx = lx;
     v->classes = calloc(n ? (size_t)n : 1, sizeof *v->classes);
     int rc = v->classes ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    if (!rc) rc = load_aliases(v, regions_path, err);
     for (int i = 0; i < n && !rc; i++) {
         if (!classes[i] || !classes[i][0]) {
             rc = sp_error_set(err, SP_E_ARG, "lexical: class %d has an empty name", i);
             break;
         }
         v->n = i + 1;
-        if ((rc = class_prepare(lx, &v->classes[i], classes[i], err)))
+        if ((rc = class_prepare(v, &v->classes[i], classes[i], err)))
             sp_error_prefix(err, "lexical: class '%s': ", classes[i]);
         for (int k = 0; k < v->classes[i].n_tok && !rc; k++) rc = add_vocab_word(v, v->classes[i].tok[k], err);
     }

@@ -191,8 +191,19 @@ typedef struct lex_region {
     sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
 } lex_region;
 
+/* A name WordNet lacks or files under another sense ("shop vac", "wheelie bin", "trolley"),
+ * from data/semantic/aliases.json: another reading of the words, as WordNet lemmas. */
+typedef struct lex_alias {
+    int n_words;
+    char words[4][LEX_WORD]; /* the name, tokenized (the last word also matches its plural) */
+    int n_targets;
+    char targets[3][64];     /* WordNet noun lemmas, words separated by spaces */
+} lex_alias;
+
 struct sp_lex_vocab {
     const lex_db *lx;
+    int n_aliases;
+    lex_alias *aliases;
     int n;
     lex_class *classes;
     int n_vocab_words;
@@ -219,6 +230,20 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
 void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
 /* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */
 int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *sub, const char *why);
+
+/* Loads an alias table (JSON: {"names": {name: [lemma, ...]}}, keys starting with '_' ignored)
+ * into v, appending. */
+int lex_aliases_load(sp_lex_vocab *v, const char *path, sp_error *err);
+/* in with every alias name replaced by its reading-th target (the longest name first at each
+ * word); returns how many names were replaced (0: none has a reading-th target, out = in).
+ * used gets "name = target; ...". */
+int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, lex_tokens *out,
+                      char *used, size_t cap);
+/* 1 when the tokens are wholly one alias name: out gets its first target. */
+int lex_alias_whole(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out);
+/* sp_lex_match on one reading of the text: its words already tokenized (lex_match.c). */
+int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
+                      sp_lex_result *res, sp_error *err);
 
 /* What a query modifier did for the best class. */
 enum { LEX_MOD_IGNORED = 0, LEX_MOD_USED = 1, LEX_MOD_CONTRARY = 2 };
