@@ -210,6 +210,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
     for (int k = from; k < to; k++) {
         const char *w = t->w[k];
         int cls = lex_word_class_of(w);
+        /* an auxiliary that ends the phrase is the noun when WordNet has one ("a can", "the
+         * jerry can": no verb follows it) */
+        if (cls == LW_FUNCTION && k == to - 1) {
+            int noun = lex_is_pos(lx, WN_NOUN, w, err), verb = lex_is_pos(lx, WN_VERB, w, err);
+            if (noun < 0 || verb < 0) return noun < 0 ? noun : verb;
+            if (noun && verb) cls = LW_CONTENT;
+        }
         if (cls == LW_FUNCTION) continue;
         if (cls == LW_PARTITIVE && k + 1 < to && !strcmp(t->w[k + 1], "of")) {
             k++;
