@@ -30,6 +30,8 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
                 /* a collocation may end in a partitive ("tv set") or in a function word that is
                  * also a noun ("trash can", "watering can"): WordNet's entry decides */
                 if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) continue;
+                /* "clean up" is a verb and its particle, not the noun "cleanup" */
+                if (lex_is_particle(in->w[i + k - 1])) continue;
                 char joined[4 * LEX_WORD];
                 size_t o = 0;
                 for (int j = 0; j < k; j++)
@@ -212,7 +214,7 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
         int cls = lex_word_class_of(w);
         /* an auxiliary that ends the phrase is the noun when WordNet has one ("a can", "the
          * jerry can": no verb follows it) */
-        if (cls == LW_FUNCTION && k == to - 1) {
+        if (cls == LW_FUNCTION && k == to - 1 && !lex_is_particle(w)) {
             int noun = lex_is_pos(lx, WN_NOUN, w, err), verb = lex_is_pos(lx, WN_VERB, w, err);
             if (noun < 0 || verb < 0) return noun < 0 ? noun : verb;
             if (noun && verb) cls = LW_CONTENT;
@@ -234,7 +236,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
             int nb = lex_bases(lx, WN_NOUN, w, b, err);
             if (nb < 0) return nb;
             int where = lex_is_generic_region(w) || (nb > 0 && lex_is_generic_region(b[0]));
-            if (cls == LW_CONTENT && !where && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
+            if (cls != LW_CONTENT || where) continue;
+            /* a description is matched word by word against definitions, which hold words, not
+             * collocations: "keep FROZEN FOOD" is frozen + food ("in which food is frozen") */
+            char parts[LEX_WORD];
+            snprintf(parts, sizeof parts, "%s", w);
+            for (char *save = NULL, *p = strtok_r(parts, "_", &save); p && np->n_desc < 16; p = strtok_r(NULL, "_", &save))
+                snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", p);
             continue;
         }
         if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;

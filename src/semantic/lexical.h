@@ -52,6 +52,8 @@ void lex_tokenize(const char *text, lex_tokens *t);
  * "chest of drawers", "book shelf" -> "bookshelf") into one token, its base form. */
 int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *out, sp_error *err);
 int lex_word_class_of(const char *w);
+/* A particle of a phrasal verb ("up" of "clean up"): no collocation ends in one. */
+int lex_is_particle(const char *w);
 /* Relation phrase starting at token i: its length in tokens (0 = none) and its canonical name. */
 int lex_relation_at(const lex_tokens *t, int i, const char **name);
 /* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
