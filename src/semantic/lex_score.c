@@ -370,6 +370,15 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
     }
+    /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
+     * and the car, a wheeled vehicle), those whose own definition names the query's word come
+     * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */
+    if (m->kind == SP_LEX_HYPERNYM && base < 1.0f) {
+        char one[1][WN_LEMMA_MAX];
+        snprintf(one[0], WN_LEMMA_MAX, "%s", np->head);
+        int src;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+    }
     /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
      * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */
     float fmod = 1.0f;

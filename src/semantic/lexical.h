@@ -16,6 +16,7 @@
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
+#define LEX_TIE 0.005f   /* orders hypernym matches the taxonomy ties: no evidence, an order */
 /* A description ending in a preposition ("something to write ON") asks where or with what the
  * verb is done; a definition naming the class as what the verb acts on (a past participle,
  * "a WRITTEN work") is then one weak step (DELTA) of evidence, not a full match. */
