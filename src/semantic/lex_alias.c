@@ -143,16 +143,31 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
     return n;
 }
 
-int lex_alias_whole(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out)
+int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out, sp_error *err)
 {
     word_list *wl = malloc(sizeof *wl);
-    if (!wl) return 0;
+    if (!wl) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     words_of(in, wl);
     const lex_alias *a = wl->n ? alias_at(v, wl, 0) : NULL;
-    int whole = a && a->n_words == wl->n;
-    if (whole) lex_tokenize(a->targets[0], out);
+    int rc = a && a->n_words == wl->n, noun = 1;
+    if (rc) lex_tokenize(a->targets[0], out);
+    else if (in->n > 1 && (noun = lex_is_pos(v->lx, WN_NOUN, in->w[in->n - 1], err)) < 0) rc = noun;
+    else if (in->n > 1 && !noun) {
+        /* a head WordNet lacks ("hand SANITIZER") is read through the table; the words before
+         * it stay ("hand disinfectant") */
+        lex_tokens last = {1, {{0}}}, read;
+        snprintf(last.w[0], LEX_WORD, "%s", in->w[in->n - 1]);
+        words_of(&last, wl);
+        a = alias_at(v, wl, 0);
+        if ((rc = a && a->n_words == wl->n)) {
+            *out = *in;
+            out->n--;
+            lex_tokenize(a->targets[0], &read);
+            for (int i = 0; i < read.n && out->n < LEX_MAX_TOKENS; i++) snprintf(out->w[out->n++], LEX_WORD, "%s", read.w[i]);
+        }
+    }
     free(wl);
-    return whole;
+    return rc;
 }
 
 static int plain(const sp_lex_result *r) { return !r->relation[0] && !r->target.is_region; }

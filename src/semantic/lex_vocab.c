@@ -103,10 +103,13 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
     /* a name that is wholly a name of the alias table is read as what it usually means indoors
-     * ("wheelie bin": a garbage can), its first target; its own words still make exact matches.
-     * Part of a name is left alone: "projector screen" is no "projector monitor". */
+     * ("wheelie bin": a garbage can), its first target, and so is a head WordNet lacks ("hand
+     * sanitizer"); its own words still make exact matches. A head WordNet has is left alone:
+     * "projector screen" is no "projector monitor". */
     int rc = lex_merge_collocations(lx, &raw, &t, err);
-    if (!rc && lex_alias_whole(v, &t, &read)) rc = lex_merge_collocations(lx, &read, &t, err);
+    int aliased = rc ? 0 : lex_alias_class(v, &t, &read, err);
+    if (aliased < 0) return aliased;
+    if (aliased) rc = lex_merge_collocations(lx, &read, &t, err);
     if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {

@@ -16,7 +16,7 @@
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
-#define LEX_TIE 0.005f   /* orders hypernym matches the taxonomy ties: no evidence, an order */
+#define LEX_TIE 0.001f   /* orders hypernym matches the taxonomy ties: no evidence, an order */
 /* A description ending in a preposition ("something to write ON") asks where or with what the
  * verb is done; a definition naming the class as what the verb acts on (a past participle,
  * "a WRITTEN work") is then one weak step (DELTA) of evidence, not a full match. */
@@ -242,8 +242,10 @@ int lex_aliases_load(sp_lex_vocab *v, const char *path, sp_error *err);
  * used gets "name = target; ...". */
 int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, lex_tokens *out,
                       char *used, size_t cap);
-/* 1 when the tokens are wholly one alias name: out gets its first target. */
-int lex_alias_whole(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out);
+/* A class name's reading through the alias table: 1 and its first target when the name is wholly
+ * an alias, or when its head is no WordNet noun and is one (the words before it kept); 0 when
+ * neither, negative on errors. */
+int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out, sp_error *err);
 /* sp_lex_match on one reading of the text: its words already tokenized (lex_match.c). */
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err);
