@@ -184,7 +184,10 @@ static void cite(sp_lex_class_match *m, const char *used)
  * relation or a region reading replaces res when it is more confident. */
 static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
 {
-    if (plain(res) && plain(alt)) {
+    /* the words as written have no noun for a head ("racking", "shelving": description words,
+     * matched against every definition) but the alias names a thing: it is the reading */
+    int named = plain(res) && plain(alt) && !res->target.head[0] && alt->target.head[0];
+    if (plain(res) && plain(alt) && !named) {
         sp_lex_class_match *by_class[SP_LEX_MAX_CLASSES] = {0};
         for (int i = 0; i < res->target.n_matches; i++) by_class[res->target.matches[i].class_index] = &res->target.matches[i];
         int better = alt->confidence > res->confidence;
@@ -197,7 +200,7 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
             res->n_ignored = alt->n_ignored;
             memcpy(res->ignored, alt->ignored, sizeof res->ignored);
         }
-    } else if (alt->confidence > res->confidence) {
+    } else if (named || alt->confidence > res->confidence) {
         char text[sizeof res->text];
         snprintf(text, sizeof text, "%s", res->text);
         for (int i = 0; i < alt->target.n_matches; i++) cite(&alt->target.matches[i], used);

@@ -49,6 +49,15 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
         if (took) {
             snprintf(out->w[out->n++], LEX_WORD, "%s", base);
             i += took;
+        } else if (out->n > 0 && (!strcmp(in->w[i], "unit") || !strcmp(in->w[i], "units"))) {
+            /* "unit" after a word WordNet has no noun for names that thing as one piece: a
+             * "shelving unit" is shelving (WordNet's unit: "an assemblage of parts that is
+             * regarded as a single entity"); after a noun it stays ("sink unit") */
+            int noun = lex_is_pos(lx, WN_NOUN, out->w[out->n - 1], err);
+            if (noun < 0) return noun;
+            if (noun || lex_word_class_of(out->w[out->n - 1]) != LW_CONTENT)
+                snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[i]);
+            i++;
         } else {
             snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[i]);
             i++;
