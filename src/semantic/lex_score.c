@@ -30,6 +30,39 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
+/* Adds the single-word lemmas of synset id at f. */
+static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, id, &s, err);
+    if (rc) return rc;
+    for (int k = 0; k < s.n_words; k++) {
+        char w[WN_LEMMA_MAX];
+        snprintf(w, sizeof w, "%s", s.words[k]);
+        for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+        if (!strchr(w, '_')) exp_add(e, w, f);
+    }
+    wn_synset_free(&s);
+    return 0;
+}
+
+/* An adjective's commonest sense by the nouns WordNet derives from it ("+": hot -> hotness, heat:
+ * "hot water" meets "heated water"), one weak step like a synonym (LEX_SYN). */
+static int expand_adjective(const lex_db *lx, const char *base, expansion *e, sp_error *err)
+{
+    uint32_t off;
+    int n = wn_lookup(lx->db, WN_ADJ, base, &off, 1, NULL, err);
+    if (n <= 0) return n;
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_ADJ}, &s, err);
+    if (rc) return rc;
+    for (int k = 0; !rc && k < s.n_pointers; k++)
+        if (!strcmp(s.pointers[k].symbol, "+") && s.pointers[k].target.pos == WN_NOUN)
+            rc = exp_add_synset(lx, s.pointers[k].target, e, LEX_SYN, err);
+    wn_synset_free(&s);
+    return rc;
+}
+
 static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *err)
 {
     e->n = 0;
@@ -39,7 +72,12 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         int nb = lex_bases(lx, (wn_pos)p, word, b, err);
         if (nb < 0) return nb;
         for (int k = 0; k < nb; k++) exp_add(e, b[k], 1.0f);
-        if (nb == 0 || p == WN_ADJ) continue;
+        if (nb == 0) continue;
+        if (p == WN_ADJ) {
+            int rc = expand_adjective(lx, b[0], e, err);
+            if (rc) return rc;
+            continue;
+        }
         uint32_t off;
         int n = wn_lookup(lx->db, (wn_pos)p, b[0], &off, 1, NULL, err);
         if (n < 0) return n;
