@@ -16,8 +16,9 @@
  * someone who had not read or run the encoder, and first run by the lead on the phase-4 encoder)
  * is the blind measurement now: 81/121 = 0.669 present, 27/32 = 0.844 absent; printed, no bar.
  * The garage (phrases_garage.json, data/worlds/garage.world, written blind, first run by the lead on
- * the phase-4 and phase-5 encoders) is the blind table now: 94/139 = 0.676, 29/30, both times;
- * printed, no bar. Run with an argument (house | bookstore | office | ward | garage) to print every phrase of one table, and a query after
+ * the phase-4 and phase-5 encoders: 94/139 = 0.676, 29/30, both times) is development data since
+ * phase 6 (the alias table, data/semantic/aliases.json), like all five tables: no blind table is
+ * left here, so every floor below guards against regressions. Run with an argument (house | bookstore | office | ward | garage) to print every phrase of one table, and a query after
  * it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
@@ -248,6 +249,27 @@ static void test_aliases(const sp_lexicon *lx)
     CHECK(lex_alias_rewrite(v, &two, 0, &out, used, sizeof used) == 1 && out.n == 2 && !strcmp(out.w[1], "handcart"));
     CHECK_MSG(!strcmp(used, "'cart' = handcart"), "%s", used);
     sp_lex_vocab_free(v);
+    /* a user's aliases.json beside the region table they pass adds its names; a bad one fails */
+    const char *dir = test_tmpdir("lex_aliases");
+    char rp[1200], ap[1200];
+    snprintf(rp, sizeof rp, "%s/regions.json", dir);
+    snprintf(ap, sizeof ap, "%s/aliases.json", dir);
+    FILE *f = fopen(rp, "w");
+    if (f) fputs("{\"lounge\": [\"sofa\"]}", f), fclose(f);
+    f = fopen(ap, "w");
+    if (f) fputs("{\"names\": {\"zorbo\": [\"sofa\"]}}", f), fclose(f);
+    const char *mine[] = {"sofa", "lamp"};
+    v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, mine, 2, rp, &err), &err);
+    if (v && res) {
+        CHECK_OK(sp_lex_match(v, "the zorbo", res, &err), &err);
+        CHECK(res->found && !strcmp(sp_lex_vocab_class(v, res->target.matches[0].class_index), "sofa"));
+    }
+    sp_lex_vocab_free(v);
+    f = fopen(ap, "w");
+    if (f) fputs("{\"names\": {\"zorbo\": 3}}", f), fclose(f);
+    v = NULL;
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, mine, 2, rp, &err), SP_E_FORMAT, &err, "zorbo");
     free(res);
 }
 
@@ -446,16 +468,19 @@ int main(int argc, char **argv)
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
      * were read), so its floor only guards against regressions (82/96 when it was set); the ward:
      * development data since phase 5, a regression floor too (93/121 = 0.769 and 30/32 when set) */
-    const double floor_p1[] = {0.9, 0.9, 0.85, 0.75}, floor_absent[] = {0.9, 0.9, 0.9, 0.9};
+    /* phase 6 (aliases, docs/DESIGN.md changes 24-29) read all five tables' misses: the ward's
+     * floor rises to 0.8 (100/121 = 0.826, 29/32 when set) and the garage gets one (113/139 =
+     * 0.813, 28/30 when set); regression floors, not bars */
+    const double floor_p1[] = {0.9, 0.9, 0.85, 0.8, 0.8}, floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9};
     for (int w = 0; w < 5; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w == 4) continue; /* the garage: the blind table now, measured and printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
         /* the ward's "tall IV stand": "tall" occurs in a definition the class's head reaches, so
          * it counts as described, not ignored (7/8 when this was written) */
-        CHECK_MSG(t.ignored_ok + (w == 3) >= t.ignored_total, "%s: attribute words not reported as ignored", worlds[w]);
+        /* and the garage's "white freezer": a refrigerator is "white goods" (10/11) */
+        CHECK_MSG(t.ignored_ok + (w >= 3) >= t.ignored_total, "%s: attribute words not reported as ignored", worlds[w]);
     }
     sp_lexicon_free(lx);
     return TEST_EXIT();
