@@ -30,18 +30,24 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
+/* Adds the single-word lemmas of synset s at f (lower case). */
+static void exp_add_words(expansion *e, const wn_synset *s, float f)
+{
+    for (int k = 0; k < s->n_words; k++) {
+        char w[WN_LEMMA_MAX];
+        snprintf(w, sizeof w, "%s", s->words[k]);
+        for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+        if (!strchr(w, '_')) exp_add(e, w, f);
+    }
+}
+
 /* Adds the single-word lemmas of synset id at f. */
 static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_error *err)
 {
     wn_synset s;
     int rc = wn_read(lx->db, id, &s, err);
     if (rc) return rc;
-    for (int k = 0; k < s.n_words; k++) {
-        char w[WN_LEMMA_MAX];
-        snprintf(w, sizeof w, "%s", s.words[k]);
-        for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
-        if (!strchr(w, '_')) exp_add(e, w, f);
-    }
+    exp_add_words(e, &s, f);
     wn_synset_free(&s);
     return 0;
 }
@@ -86,12 +92,7 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         wn_id id = {off, (uint8_t)p};
         int rc = wn_read(lx->db, id, &s, err);
         if (rc) return rc;
-        for (int k = 0; k < s.n_words; k++) {
-            char w[WN_LEMMA_MAX];
-            snprintf(w, sizeof w, "%s", s.words[k]);
-            for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
-            if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
-        }
+        exp_add_words(e, &s, LEX_SYN);
         /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
          * typewriter, store -> storage), the same one weak step */
         for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
