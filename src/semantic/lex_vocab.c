@@ -90,7 +90,7 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     for (char *p = src; *p && *p != ':'; p++)
         if (*p == '_') *p = ' ';
     rc = lex_bag_add_text(lx, bag, def, weight, src, err);
-    if (!rc) rc = lex_bag_add_text(lx, bag, lemmas, weight, src, err);
+    if (!rc) rc = lex_bag_add_lemmas(bag, lemmas, weight, src, err);
     if (!rc && verbs) rc = bag_derived_verbs(lx, bag, &s, weight, err);
     wn_synset_free(&s);
     return rc;

@@ -142,6 +142,9 @@ void lex_bag_free(lex_bag *b);
 /* Adds the base forms of every content word of text at weight, citing source. */
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
                      const char *source, sp_error *err);
+/* Adds the words of WordNet lemmas as they are: a lemma is a base form already ("works", the
+ * factory, is no "work"). */
+int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
  * absent), patient entries scaled by patient_factor; *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
