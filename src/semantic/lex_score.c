@@ -30,30 +30,34 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
-/* Adds the single-word lemmas of synset s at f (lower case). */
-static void exp_add_words(expansion *e, const wn_synset *s, float f)
+/* Adds the single-word lemmas of synset s at f (lower case); heads: and the last word of the
+ * others ("low_temperature" -> temperature). */
+static void exp_add_words(expansion *e, const wn_synset *s, float f, int heads)
 {
     for (int k = 0; k < s->n_words; k++) {
         char w[WN_LEMMA_MAX];
         snprintf(w, sizeof w, "%s", s->words[k]);
         for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
-        if (!strchr(w, '_')) exp_add(e, w, f);
+        const char *last = strrchr(w, '_');
+        if (!last) exp_add(e, w, f);
+        else if (heads) exp_add(e, last + 1, f);
     }
 }
 
-/* Adds the single-word lemmas of synset id at f. */
+/* Adds the lemmas of synset id at f, multi-word ones by their head. */
 static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_error *err)
 {
     wn_synset s;
     int rc = wn_read(lx->db, id, &s, err);
     if (rc) return rc;
-    exp_add_words(e, &s, f);
+    exp_add_words(e, &s, f, 1);
     wn_synset_free(&s);
     return 0;
 }
 
-/* An adjective's commonest sense by the nouns WordNet derives from it ("+": hot -> hotness, heat:
- * "hot water" meets "heated water"), one weak step like a synonym (LEX_SYN). */
+/* An adjective's commonest sense by the nouns WordNet derives from it ("+": hot -> hotness, heat,
+ * high temperature: "hot water" meets "heated water"; cold -> coldness, low temperature), one weak
+ * step like a synonym (LEX_SYN). */
 static int expand_adjective(const lex_db *lx, const char *base, expansion *e, sp_error *err)
 {
     uint32_t off;
@@ -92,7 +96,7 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         wn_id id = {off, (uint8_t)p};
         int rc = wn_read(lx->db, id, &s, err);
         if (rc) return rc;
-        exp_add_words(e, &s, LEX_SYN);
+        exp_add_words(e, &s, LEX_SYN, 0);
         /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
          * typewriter, store -> storage), the same one weak step */
         for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
