@@ -96,21 +96,44 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     return rc;
 }
 
+/* Adds the physical senses of the class name's alias reading (tokens read) to np's; a name with
+ * no head of its own takes the reading's head and modifiers. */
+static int add_alias_senses(const lex_db *lx, lex_np *np, const lex_tokens *read, sp_error *err)
+{
+    lex_tokens t;
+    lex_np a;
+    int rc = lex_merge_collocations(lx, read, &t, err);
+    if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &a, err);
+    if (rc) return rc;
+    if (!np->n_senses) {
+        lex_np_free(np);
+        *np = a;
+        return 0;
+    }
+    for (int i = 0; i < a.n_senses && np->n_senses < LEX_MAX_SENSES; i++) {
+        int dup = 0;
+        for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == a.senses[i].off;
+        if (!dup) np->senses[np->n_senses++] = a.senses[i];
+    }
+    lex_np_free(&a);
+    return 0;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
     snprintf(c->name, sizeof c->name, "%s", name);
     lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
-    /* a name that is wholly a name of the alias table is read as what it usually means indoors
-     * ("wheelie bin": a garbage can), its first target, and so is a head WordNet lacks ("hand
-     * sanitizer"); its own words still make exact matches. A head WordNet has is left alone:
-     * "projector screen" is no "projector monitor". */
     int rc = lex_merge_collocations(lx, &raw, &t, err);
+    if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
+    /* a name that is wholly a name of the alias table also means what it usually means indoors
+     * ("wheelie bin": a garbage can, its first target), and so does a head WordNet lacks ("hand
+     * sanitizer"): those senses are added to its own. A head WordNet has is left alone:
+     * "projector screen" is no "projector monitor". */
     int aliased = rc ? 0 : lex_alias_class(v, &t, &read, err);
     if (aliased < 0) return aliased;
-    if (aliased) rc = lex_merge_collocations(lx, &read, &t, err);
-    if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
+    if (aliased) rc = add_alias_senses(lx, &c->np, &read, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
         char b[WN_MAX_BASES][WN_LEMMA_MAX];
