@@ -113,7 +113,7 @@ static int add_alias_senses(const lex_db *lx, lex_np *np, const lex_tokens *read
     for (int i = 0; i < a.n_senses && np->n_senses < LEX_MAX_SENSES; i++) {
         int dup = 0;
         for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == a.senses[i].off;
-        if (!dup) np->senses[np->n_senses++] = a.senses[i];
+        if (!dup) np->senses[np->n_senses++] = a.senses[i], np->n_alias++;
     }
     lex_np_free(&a);
     return 0;
@@ -196,9 +196,10 @@ static int add_vocab_word(sp_lex_vocab *v, const char *w, sp_error *err)
 static void choose_by_context(sp_lex_vocab *v, int ci)
 {
     lex_np *np = &v->classes[ci].np;
-    if (np->n_senses < 2 || v->n < 2) return;
+    int own = np->n_senses - np->n_alias; /* the alias table's senses are not in question */
+    if (own < 2 || v->n < 2) return;
     float support[LEX_MAX_SENSES], best = 0;
-    for (int s = 0; s < np->n_senses; s++) {
+    for (int s = 0; s < own; s++) {
         float sum = 0;
         for (int k = 0; k < v->n; k++) {
             if (k == ci) continue;
@@ -214,7 +215,7 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     }
     int kept = 0;
     for (int s = 0; s < np->n_senses; s++)
-        if (support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+        if (s >= own || support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
     np->n_senses = kept;
 }
 

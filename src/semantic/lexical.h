@@ -161,6 +161,8 @@ typedef struct lex_np {
     char head[WN_LEMMA_MAX];              /* the collocation as a WordNet lemma */
     int placeholder;                      /* the head was "something", "a place", ... */
     int fallback;                         /* class name without an attested physical sense */
+    int n_alias;                          /* the last n_alias senses come from the alias table
+                                           * (class names): context never drops them */
     int split;                            /* the head is a closed compound split in two: its
                                            * first part is the last modifier ("nightstand") */
     int stranded;                         /* the description ends in a preposition: "something
