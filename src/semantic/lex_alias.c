@@ -196,9 +196,16 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
             if (r && m->score > r->score) *r = *m, cite(r, used);
         }
         qsort(res->target.matches, (size_t)res->target.n_matches, sizeof res->target.matches[0], lex_match_cmp);
-        if (better) { /* the attributes are those of the reading that decided */
-            res->n_ignored = alt->n_ignored;
-            memcpy(res->ignored, alt->ignored, sizeof res->ignored);
+        if (better) { /* the attributes are those of the reading that decided, in the user's words */
+            lex_tokens said;
+            lex_tokenize(res->text, &said);
+            res->n_ignored = 0;
+            for (int i = 0; i < alt->n_ignored; i++)
+                for (int k = 0; k < said.n; k++)
+                    if (!strcmp(said.w[k], alt->ignored[i])) {
+                        snprintf(res->ignored[res->n_ignored++], sizeof res->ignored[0], "%s", alt->ignored[i]);
+                        break;
+                    }
         }
     } else if (named || alt->confidence > res->confidence) {
         char text[sizeof res->text];
