@@ -104,15 +104,12 @@ static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int
 int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, lex_tokens *out,
                       char *used, size_t cap)
 {
-    word_list *wl = malloc(sizeof *wl);
+    word_list words, *wl = &words; /* 3 KB: no allocation that could fail */
     int n = 0;
     size_t o = 0;
     *out = *in;
     if (used && cap) used[0] = 0;
-    if (!wl || !v->n_aliases) {
-        free(wl);
-        return 0;
-    }
+    if (!v->n_aliases) return 0;
     words_of(in, wl);
     out->n = 0;
     for (int p = 0; p < wl->n;) {
@@ -138,15 +135,13 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
         p += a->n_words;
         n++;
     }
-    free(wl);
     if (!n) *out = *in;
     return n;
 }
 
 int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out, sp_error *err)
 {
-    word_list *wl = malloc(sizeof *wl);
-    if (!wl) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    word_list words, *wl = &words;
     words_of(in, wl);
     const lex_alias *a = wl->n ? alias_at(v, wl, 0) : NULL;
     int rc = a && a->n_words == wl->n, noun = 1;
@@ -166,7 +161,6 @@ int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out
             for (int i = 0; i < read.n && out->n < LEX_MAX_TOKENS; i++) snprintf(out->w[out->n++], LEX_WORD, "%s", read.w[i]);
         }
     }
-    free(wl);
     return rc;
 }
 
