@@ -251,6 +251,7 @@ static void test_phase5_rules(const sp_lexicon *lx)
 typedef struct {
     int present, present_ok, absent, absent_ok, ignored_ok, ignored_total;
     int bin_n[4], bin_ok[4]; /* found results by confidence: [0.5,0.7) [0.7,0.9) [0.9,1] */
+    int kind_n[2], kind_ok[2]; /* present phrasings of kind region, relation */
 } tally;
 
 static int bin_of(float c) { return c < 0.7f ? 0 : c < 0.9f ? 1 : 2; }
@@ -327,6 +328,8 @@ static tally run_table(const sp_lexicon *lx, const char *name, int verbose, cons
         }
         if (absent) t.absent++, t.absent_ok += ok;
         else t.present++, t.present_ok += ok;
+        int rk = !strcmp(kind, "region") ? 0 : !strcmp(kind, "relation") ? 1 : -1;
+        if (!absent && rk >= 0) t.kind_n[rk]++, t.kind_ok[rk] += ok;
         if (res->found) t.bin_n[bin_of(res->confidence)]++, t.bin_ok[bin_of(res->confidence)] += ok;
         const cJSON *ig;
         cJSON_ArrayForEach(ig, ignored) {
@@ -355,6 +358,7 @@ static tally run_table(const sp_lexicon *lx, const char *name, int verbose, cons
            (double)SP_LEX_THRESHOLD);
     printf("%s: found results correct by confidence: [0.5,0.7) %d/%d, [0.7,0.9) %d/%d, [0.9,1] %d/%d\n", name,
            t.bin_ok[0], t.bin_n[0], t.bin_ok[1], t.bin_n[1], t.bin_ok[2], t.bin_n[2]);
+    printf("%s: kind region %d/%d, relation %d/%d\n", name, t.kind_ok[0], t.kind_n[0], t.kind_ok[1], t.kind_n[1]);
     return t;
 }
 
