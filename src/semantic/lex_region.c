@@ -91,6 +91,16 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         strncat(name, np->head, sizeof name - strlen(name) - 1);
         *r = lex_region_find(v, name);
     }
+    /* The kind of area is a word of style: "the utility corner" is the table's "utility room",
+     * "the work space" its "work area" (only after a generic head: a "locker" is no locker room). */
+    if (!*r && lex_is_generic_region(np->head)) {
+        char stem[64] = "";
+        for (int i = 0; i < n_mods; i++) {
+            strncat(stem, i ? " " : "", sizeof stem - strlen(stem) - 1);
+            strncat(stem, np->mods[i], sizeof stem - strlen(stem) - 1);
+        }
+        if (stem[0]) *r = lex_region_find_stem(v, stem);
+    }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
         wn_synset syn;
         wn_id id = {np->senses[s].off, WN_NOUN};
@@ -236,6 +246,21 @@ int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err)
     }
     cJSON_Delete(js);
     return rc;
+}
+
+const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem)
+{
+    char key[64];
+    snprintf(key, sizeof key, "%s", stem);
+    for (char *p = key; *p; p++)
+        if (*p == '_') *p = ' ';
+    size_t n = strlen(key);
+    const lex_region *r = lex_region_find(v, key);
+    for (int i = 0; !r && n && i < v->n_regions; i++) {
+        const char *name = v->regions[i].name;
+        if (!strncmp(name, key, n) && name[n] == ' ' && lex_is_generic_region(name + n + 1)) r = &v->regions[i];
+    }
+    return r;
 }
 
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name)

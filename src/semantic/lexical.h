@@ -203,6 +203,9 @@ struct sp_lex_vocab {
 
 int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
+/* The table region named stem, or "stem G" with G a generic area word ("utility" -> "utility
+ * room"), or NULL. */
+const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
 /* Resolves every table region's members once (r->cache). */
