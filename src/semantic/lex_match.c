@@ -162,6 +162,25 @@ static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_erro
     return verb > 0 && noun == 0;
 }
 
+/* A query that is a "where" clause whose subject names things ("where the car is parked",
+ * "where the bins are") names the place of that subject: it reads as "the place where ...", a
+ * region of the objects it names. A question ("where is the car", "where can I sit"), a purpose
+ * ("where to store my shoes") or a person's doing ("where I can cook", "where we keep the
+ * tools": a thing to cook on, to keep them in) describes a thing and is left as it is. */
+static void where_clause(lex_tokens *t)
+{
+    static const char *const aux[] = {"to", "is", "are", "was", "were", "can", "could", "do", "does",
+                                      "did", "should", "would", "will", "shall", "may", "might", "must",
+                                      "i", "we", "you", "one", "someone", "somebody", "people", "they",
+                                      "he", "she", NULL};
+    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return;
+    for (int i = 0; aux[i]; i++)
+        if (!strcmp(t->w[1], aux[i])) return;
+    memmove(t->w[1], t->w[0], sizeof t->w[0] * (size_t)t->n);
+    snprintf(t->w[0], LEX_WORD, "place");
+    t->n++;
+}
+
 int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
 {
     if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
@@ -172,6 +191,7 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
     if (raw.n == 0) return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);
     int rc = lex_merge_collocations(v->lx, &raw, &t, err);
     if (rc) return rc;
+    where_clause(&t);
     sp_lex_result *trial = malloc(sizeof *trial);
     if (!trial) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     /* The first relation word where both sides match splits target and anchor. */
