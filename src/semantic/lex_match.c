@@ -61,6 +61,12 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * sense is an elevator's cabin). */
     const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
     int generic = lex_is_generic_region(np->head);
+    /* a WordNet collocation of a generic area ("seating_area", "parking_area") that names no room
+     * and no table region is such an area too, its leading words the complement */
+    char lead[WN_LEMMA_MAX] = "";
+    const char *last = strrchr(np->head, '_');
+    if (!r && !def && last && lex_is_generic_region(last + 1))
+        snprintf(lead, sizeof lead, "%.*s", (int)(last - np->head), np->head);
     int linked = np->head_start + 1 < t->n && lex_is_region_link(t->w[np->head_start + 1]);
     /* "somewhere for a patient to lie down" is a place to lie down: a placeholder whose
      * complement holds a purpose clause ("to" + verb) describes a thing, it names no area. */
@@ -68,10 +74,12 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         if (!strcmp(t->w[i], "to")) linked = 0;
     if (r || (def && !generic)) {
         if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
-    } else if (generic && depth == 0 && (linked || np->n_mods > 0)) {
+    } else if ((generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
         /* The complement: modifiers and the words after the link, without the link words. */
         lex_tokens ct = {0, {{0}}};
         for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+        for (char *save = NULL, *w = strtok_r(lead, "_", &save); w && ct.n < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &save))
+            snprintf(ct.w[ct.n++], LEX_WORD, "%s", w);
         for (int i = 0; i < np->n_desc && ct.n < LEX_MAX_TOKENS; i++)
             if (!lex_is_region_link(np->desc[i])) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->desc[i]);
         if (ct.n == 0) return 0;
@@ -84,7 +92,9 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                 ph->n_matches = sub->n_matches;
             } else {
                 lex_region_start(v, ph);
-                lex_region_absorb(ph, sub, "objects of the area");
+                /* no object named: an activity ("the cooking area", "the storage area") */
+                if (!lex_region_absorb(ph, sub, "objects of the area") && (rc = lex_region_activity(v, &ct, ph, err)) > 0)
+                    rc = 0;
             }
         }
         free(sub);

@@ -72,7 +72,76 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 }
 
 
-#define ROOM 4105893u /* room.n.01 */
+#define ROOM 4105893u      /* room.n.01 */
+#define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
+#define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
+
+/* 1 when the sense is a place one can be in: a room or a workplace, and for a name of the
+ * region table also a part of a structure with a function (a showroom; not for any word: a
+ * fireplace, a recess in a wall, is such an area too). A building as a whole is none: a shed or
+ * a garage is also a thing seen from outside. */
+static int place_sense(const lex_sense *s, int table_entry)
+{
+    return lex_anc_find(s, ROOM) > 0 || lex_anc_find(s, WORKPLACE) > 0 || (table_entry && lex_anc_find(s, AREA) > 0);
+}
+
+/* The verbs an activity word names: its own verb bases ("cooking" -> cook, "parking" -> park),
+ * else the verbs WordNet derives from this very word in its commonest noun sense ("+": storage ->
+ * store); returns the count. */
+static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
+{
+    int n = lex_bases(lx, WN_VERB, w, out, err);
+    if (n != 0) return n < cap ? n : cap;
+    uint32_t offs[WN_MAX_SENSES];
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(lx, WN_NOUN, w, b, err);
+    int ns = nb > 0 ? wn_lookup(lx->db, WN_NOUN, b[0], offs, WN_MAX_SENSES, NULL, err) : nb;
+    if (ns <= 0) return ns;
+    wn_synset syn;
+    int rc = wn_read(lx->db, (wn_id){offs[0], WN_NOUN}, &syn, err);
+    if (rc) return rc;
+    int self = 0; /* the word's number in its synset */
+    for (int k = 0; k < syn.n_words; k++)
+        if (!strcmp(syn.words[k], b[0])) self = k + 1;
+    for (int p = 0; p < syn.n_pointers && !rc && n < cap; p++) {
+        const wn_pointer *pt = &syn.pointers[p];
+        if (strcmp(pt->symbol, "+") || pt->target.pos != WN_VERB || (pt->source_word && pt->source_word != self))
+            continue;
+        wn_synset vs;
+        if ((rc = wn_read(lx->db, pt->target, &vs, err))) break;
+        int k = pt->target_word ? pt->target_word - 1 : 0;
+        int dup = 0;
+        for (int j = 0; j < n; j++) dup |= !strcmp(out[j], vs.words[k]);
+        if (k < vs.n_words && !dup && !strchr(vs.words[k], '_')) snprintf(out[n++], WN_LEMMA_MAX, "%s", vs.words[k]);
+        wn_synset_free(&vs);
+    }
+    wn_synset_free(&syn);
+    return rc ? rc : n;
+}
+
+int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
+{
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0, any = 0;
+    for (int i = 0; i < words->n && !rc; i++) {
+        if (lex_word_class_of(words->w[i]) != LW_CONTENT || lex_is_generic_region(words->w[i])) continue;
+        char verbs[4][WN_LEMMA_MAX];
+        int nv = activity_verbs(v->lx, words->w[i], verbs, 4, err);
+        if (nv < 0) rc = nv;
+        for (int k = 0; k < nv && !rc; k++) {
+            /* the things one does it with: "something to store" */
+            char text[2 * WN_LEMMA_MAX];
+            snprintf(text, sizeof text, "something to %s", verbs[k]);
+            snprintf(ph->text, sizeof ph->text, "%s", text);
+            char why[96];
+            snprintf(why, sizeof why, "what one does there ('%s': %s)", words->w[i], verbs[k]);
+            if (!(rc = score_text(v, text, ph, err))) any |= lex_region_absorb(region, ph, why);
+        }
+    }
+    free(ph);
+    return rc ? rc : any;
+}
 
 /* The table region a head stands for: its own name or a synonym's ("hall" -> hallway). */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
@@ -100,6 +169,12 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
             strncat(stem, np->mods[i], sizeof stem - strlen(stem) - 1);
         }
         if (stem[0]) *r = lex_region_find_stem(v, stem);
+    }
+    const char *last = strrchr(np->head, '_'); /* a WordNet collocation: "parking_area" */
+    if (!*r && last && lex_is_generic_region(last + 1)) {
+        char stem[64];
+        snprintf(stem, sizeof stem, "%.*s", (int)(last - np->head), np->head);
+        *r = lex_region_find_stem(v, stem);
     }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
         wn_synset syn;
@@ -160,6 +235,11 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
         if (*p == '_') *p = ' ';
     int support = 0, rc = region_members(v, r, definition, ph, &support, err);
     if (rc) return rc;
+    if (!r) { /* a place WordNet knows and the table does not: also what its name says is done */
+        lex_tokens t;
+        lex_tokenize(ph->region, &t);
+        if ((rc = lex_region_activity(v, &t, ph, err)) < 0) return rc;
+    }
     named_after(v, ph->region, ph);
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom. */
     int kinds = 0;
@@ -175,13 +255,13 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
     return 0;
 }
 
-/* The definition a region's name gives: its first sense that is a room, else its first. */
+/* The definition a region's name gives: its first sense that is a place, else its first. */
 const char *lex_region_definition(const lex_np *np, int table_entry)
 {
-    if (np->n_senses && np->senses[0].rank == 1 && lex_anc_find(&np->senses[0], ROOM) > 0)
+    if (np->n_senses && np->senses[0].rank == 1 && place_sense(&np->senses[0], table_entry))
         return np->senses[0].definition;
     for (int s = 0; table_entry && s < np->n_senses; s++)
-        if (lex_anc_find(&np->senses[s], ROOM) > 0) return np->senses[s].definition;
+        if (place_sense(&np->senses[s], 1)) return np->senses[s].definition;
     return table_entry && np->n_senses ? np->senses[0].definition : NULL;
 }
 

@@ -212,12 +212,15 @@ int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
 int lex_regions_prepare(sp_lex_vocab *v, sp_error *err);
 /* The table region an NP's head stands for (itself or a synonym), or NULL. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
-/* The definition of a region name's room sense (first sense that is a room; for table entries
- * any room sense, else the first), or NULL when it names no room. */
+/* The definition of a region name's place sense (first sense that is a room, a functional area
+ * or a workplace; for table entries any such sense, else the first), or NULL when none. */
 const char *lex_region_definition(const lex_np *np, int table_entry);
 /* Members of a named region into ph, sorted (the cached ones for table regions). */
 int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
                        const char *definition, sp_lex_phrase *ph, sp_error *err);
+/* The region of an activity: the classes that do what the words name ("cooking", "storage" ->
+ * "something to cook / store") raised in region (indexed by class); returns 1 when any. */
+int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
 /* Clears ph's matches to every class at score 0, indexed by class. */
 void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
 /* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */
