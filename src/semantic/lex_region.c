@@ -1,8 +1,9 @@
 /* Regions for the lexical text encoder: the region table (data/semantic/regions.json), and the
  * classes that define a region: the table's object phrases, the nouns of the region's WordNet
- * definition, classes named after it. Table regions are resolved once, when
- * the vocabulary is made. */
+ * definition, classes named after it, the classes doing what its name says is done there. Table
+ * regions are resolved once, on first use. */
 #include <cjson/cJSON.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -218,17 +219,11 @@ static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase 
 }
 
 
-/* Members of a named region into ph (sorted best first). r: its table entry or NULL (a room
- * WordNet knows); definition: the WordNet definition of its room sense. */
-int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
-                       const char *definition, sp_lex_phrase *ph, sp_error *err)
+/* Members of a named region into ph (sorted best first). r: its table entry or NULL (a place
+ * WordNet knows); definition: the WordNet definition of its place sense. */
+static int members_compute(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                           const char *definition, sp_lex_phrase *ph, sp_error *err)
 {
-    if (r && r->cache) {
-        memcpy(ph->matches, r->cache->matches, sizeof ph->matches);
-        ph->n_matches = r->cache->n_matches;
-        snprintf(ph->region, sizeof ph->region, "%s", r->name);
-        return 0;
-    }
     lex_region_start(v, ph);
     snprintf(ph->region, sizeof ph->region, "%s", name);
     for (char *p = ph->region; *p; p++)
@@ -265,28 +260,44 @@ const char *lex_region_definition(const lex_np *np, int table_entry)
     return table_entry && np->n_senses ? np->senses[0].definition : NULL;
 }
 
-int lex_regions_prepare(sp_lex_vocab *v, sp_error *err)
+/* A table region's members in this vocabulary, resolved into r->cache. WordNet's definition only
+ * for a name WordNet has as one noun: "meeting room" is no entry, and the definition of its head
+ * "room" (walls, floor, ceiling) defines no kind. */
+static int region_prepare(const sp_lex_vocab *v, lex_region *r, sp_error *err)
 {
-    int rc = 0;
-    for (int i = 0; i < v->n_regions && !rc; i++) {
-        lex_region *r = &v->regions[i];
-        lex_tokens raw, t;
-        lex_tokenize(r->name, &raw);
-        lex_np np;
-        if ((rc = lex_merge_collocations(v->lx, &raw, &t, err))) break;
-        if ((rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) break;
-        sp_lex_phrase *ph = malloc(sizeof *ph);
-        if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-        /* WordNet's definition only for a name WordNet has as one noun: "meeting room" is no
-         * entry, and the definition of its head "room" (walls, floor, ceiling) defines no kind */
-        else if (!(rc = lex_region_members(v, r, r->name,
-                                           np.n_mods == np.split ? lex_region_definition(&np, 1) : NULL,
-                                           ph, err)))
-            r->cache = ph;
-        else
-            free(ph);
-        lex_np_free(&np);
+    lex_tokens raw, t;
+    lex_tokenize(r->name, &raw);
+    lex_np np;
+    int rc = lex_merge_collocations(v->lx, &raw, &t, err);
+    if (rc || (rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) return rc;
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    else if (!(rc = members_compute(v, r, r->name, np.n_mods == np.split ? lex_region_definition(&np, 1) : NULL,
+                                    ph, err)))
+        r->cache = ph;
+    else
+        free(ph);
+    lex_np_free(&np);
+    return rc;
+}
+
+int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                       const char *definition, sp_lex_phrase *ph, sp_error *err)
+{
+    if (!r) return members_compute(v, NULL, name, definition, ph, err);
+    /* Table regions are resolved on first use, not when the vocabulary is made (the table has
+     * dozens of rooms a scene never asks about: start-up stays small); the cache is written once
+     * under the vocabulary's lock, so threads may share the vocabulary. */
+    sp_lex_vocab *mv = (sp_lex_vocab *)v;
+    lex_region *mr = (lex_region *)r;
+    pthread_mutex_lock(&mv->region_lock);
+    int rc = mr->cache ? 0 : region_prepare(v, mr, err);
+    if (!rc) {
+        memcpy(ph->matches, mr->cache->matches, sizeof ph->matches);
+        ph->n_matches = mr->cache->n_matches;
+        snprintf(ph->region, sizeof ph->region, "%s", r->name);
     }
+    pthread_mutex_unlock(&mv->region_lock);
     return rc;
 }
 

@@ -4,6 +4,8 @@
 #ifndef SP_LEXICAL_H
 #define SP_LEXICAL_H
 
+#include <pthread.h>
+
 #include "semsplat/semantic.h"
 #include "wordnet.h"
 
@@ -188,7 +190,7 @@ typedef struct lex_region {
     char name[64];
     int n_members;
     char members[24][64];
-    sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
+    sp_lex_phrase *cache; /* its members in this vocabulary, resolved on first use */
 } lex_region;
 
 struct sp_lex_vocab {
@@ -199,6 +201,7 @@ struct sp_lex_vocab {
     char (*vocab_words)[LEX_WORD]; /* every class-name word: modifiers that discriminate */
     int n_regions;
     lex_region *regions;
+    pthread_mutex_t region_lock; /* guards the regions' caches, filled on first use */
 };
 
 int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
@@ -208,14 +211,12 @@ const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
 const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
-/* Resolves every table region's members once (r->cache). */
-int lex_regions_prepare(sp_lex_vocab *v, sp_error *err);
 /* The table region an NP's head stands for (itself or a synonym), or NULL. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
 /* The definition of a region name's place sense (first sense that is a room, a functional area
  * or a workplace; for table entries any such sense, else the first), or NULL when none. */
 const char *lex_region_definition(const lex_np *np, int table_entry);
-/* Members of a named region into ph, sorted (the cached ones for table regions). */
+/* Members of a named region into ph, sorted (table regions: resolved once, on first use). */
 int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
                        const char *definition, sp_lex_phrase *ph, sp_error *err);
 /* The region of an activity: the classes that do what the words name ("cooking", "storage" ->
