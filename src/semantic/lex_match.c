@@ -162,6 +162,25 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
 
+/* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
+ * MIDDLE OF the living room", "at the far END OF the hallway", "in the CORNER OF the bedroom"):
+ * the thing is in that part of the anchor, so the anchor is what follows "of". */
+static int anchor_start(const lex_tokens *t, int a)
+{
+    static const char *const parts[] = {"middle", "centre", "center", "end", "back", "rear", "front",
+                                        "side", "corner", "edge", "top", "bottom", "far", "near",
+                                        "left", "right", "other", "opposite", "half", NULL};
+    int any = 0;
+    for (int i = a; i < t->n - 1 && i < a + 5; i++) {
+        if (!strcmp(t->w[i], "of")) return any ? i + 1 : a;
+        int part = 0;
+        for (int k = 0; parts[k] && !part; k++) part = !strcmp(t->w[i], parts[k]);
+        if (part) any = 1;
+        else if (lex_word_class_of(t->w[i]) != LW_FUNCTION) return a;
+    }
+    return a;
+}
+
 /* "to" before a verb that is no noun starts a purpose clause ("something to sit on"). */
 static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_error *err)
 {
@@ -202,6 +221,13 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
     int rc = lex_merge_collocations(v->lx, &raw, &t, err);
     if (rc) return rc;
     where_clause(&t);
+    /* "the far end of the hallway", "the top of the bookshelf": a part of a place or a thing is
+     * found where that place or thing is */
+    int skip = anchor_start(&t, 0);
+    if (skip > 0) {
+        memmove(t.w[0], t.w[skip], sizeof t.w[0] * (size_t)(t.n - skip));
+        t.n -= skip;
+    }
     sp_lex_result *trial = malloc(sizeof *trial);
     if (!trial) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     /* The first relation word where both sides match splits target and anchor. */
@@ -216,7 +242,7 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         memset(trial, 0, sizeof *trial);
         if ((rc = resolve(v, &t, 0, i, &trial->target, trial, 0, err))) break;
         if (best_of(&trial->target) < SP_LEX_THRESHOLD || trial->target.is_region) continue;
-        if ((rc = resolve(v, &t, i + k, t.n, &trial->anchor, trial, 0, err))) break;
+        if ((rc = resolve(v, &t, anchor_start(&t, i + k), t.n, &trial->anchor, trial, 0, err))) break;
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
