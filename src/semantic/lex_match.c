@@ -92,9 +92,13 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                 ph->n_matches = sub->n_matches;
             } else {
                 lex_region_start(v, ph);
-                /* no object named: an activity ("the cooking area", "the storage area") */
-                if (!lex_region_absorb(ph, sub, "objects of the area") && (rc = lex_region_activity(v, &ct, ph, err)) > 0)
-                    rc = 0;
+                /* the classes named after its words ("the patient area": the patient bed), the
+                 * objects it names, and when none of those an activity ("the cooking area") */
+                char words[sizeof sub->text];
+                join_words(&ct, 0, ct.n, words, sizeof words);
+                int any = lex_region_named_after(v, words, ph);
+                any |= lex_region_absorb(ph, sub, "objects of the area");
+                if (!any && (rc = lex_region_activity(v, &ct, ph, err)) > 0) rc = 0;
             }
         }
         free(sub);

@@ -196,7 +196,7 @@ void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph)
 }
 
 /* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any. */
-static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
+int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
 {
     int any = 0;
     char name[WN_LEMMA_MAX];
@@ -235,7 +235,7 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
         lex_tokenize(ph->region, &t);
         if ((rc = lex_region_activity(v, &t, ph, err)) < 0) return rc;
     }
-    named_after(v, ph->region, ph);
+    lex_region_named_after(v, ph->region, ph);
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom. */
     int kinds = 0;
     for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
