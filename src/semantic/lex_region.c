@@ -86,13 +86,19 @@ static int place_sense(const lex_sense *s, int table_entry)
     return lex_anc_find(s, ROOM) > 0 || lex_anc_find(s, WORKPLACE) > 0 || (table_entry && lex_anc_find(s, AREA) > 0);
 }
 
-/* The verbs an activity word names: its own verb bases ("cooking" -> cook, "parking" -> park),
- * else the verbs WordNet derives from this very word in its commonest noun sense ("+": storage ->
- * store); returns the count. */
+/* The verbs an activity word names: the word is a form of the verb ("cooking" -> cook, "parking"
+ * -> park), else the verbs WordNet derives from this very word in its commonest noun sense ("+":
+ * storage -> store). A word that is itself a verb's base names a thing as often as an act ("the
+ * back room", "the work area": "something to back" is a chair), so it names none. */
 static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
 {
-    int n = lex_bases(lx, WN_VERB, w, out, err);
-    if (n != 0) return n < cap ? n : cap;
+    char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb0 = lex_bases(lx, WN_VERB, w, vb, err), n = 0;
+    if (nb0 < 0) return nb0;
+    for (int i = 0; i < nb0; i++)
+        if (!strcmp(vb[i], w)) nb0 = 0; /* the word is a verb base itself */
+    for (int i = 0; i < nb0 && n < cap; i++) snprintf(out[n++], WN_LEMMA_MAX, "%s", vb[i]);
+    if (n != 0 || lex_bases(lx, WN_VERB, w, vb, err) > 0) return n;
     uint32_t offs[WN_MAX_SENSES];
     char b[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb = lex_bases(lx, WN_NOUN, w, b, err);
@@ -113,7 +119,8 @@ static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_M
         int k = pt->target_word ? pt->target_word - 1 : 0;
         int dup = 0;
         for (int j = 0; j < n; j++) dup |= !strcmp(out[j], vs.words[k]);
-        if (k < vs.n_words && !dup && !strchr(vs.words[k], '_')) snprintf(out[n++], WN_LEMMA_MAX, "%s", vs.words[k]);
+        if (k < vs.n_words && !dup && !strchr(vs.words[k], '_') && strcmp(vs.words[k], w))
+            snprintf(out[n++], WN_LEMMA_MAX, "%s", vs.words[k]);
         wn_synset_free(&vs);
     }
     wn_synset_free(&syn);
