@@ -152,7 +152,7 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
 int lex_is_generic_region(const char *w)
 {
     static const char *const words[] = {"area", "areas", "region", "zone", "section", "part",
-                                        "corner", "space", "room", "place", "somewhere", "spot",
+                                        "corner", "space", "room", "place", "somewhere", "spot", "station", "nook", "alcove",
                                         "side", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(w, words[i])) return 1;
