@@ -93,12 +93,14 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
             } else {
                 lex_region_start(v, ph);
                 /* the classes named after its words ("the patient area": the patient bed), the
-                 * objects it names, and when none of those an activity ("the cooking area") */
+                 * objects it names, and when none of those an activity ("the cooking area"),
+                 * else whom or what it is for ("the children's section") */
                 char words[sizeof sub->text];
                 join_words(&ct, 0, ct.n, words, sizeof words);
                 int any = lex_region_named_after(v, words, ph);
                 any |= lex_region_absorb(ph, sub, "objects of the area");
-                if (!any && (rc = lex_region_activity(v, &ct, ph, err)) > 0) rc = 0;
+                if (!any && (rc = lex_region_activity(v, &ct, ph, err)) >= 0) any = rc, rc = 0;
+                if (!rc && !any && (rc = lex_region_for(v, &ct, ph, err)) > 0) rc = 0;
             }
         }
         free(sub);

@@ -77,6 +77,26 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 #define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
 #define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
 
+int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
+{
+    char text[sizeof region->text] = "something for";
+    int n = 0;
+    for (int i = 0; i < words->n; i++) {
+        if (lex_is_generic_region(words->w[i])) continue;
+        strncat(text, " ", sizeof text - strlen(text) - 1);
+        strncat(text, words->w[i], sizeof text - strlen(text) - 1);
+        n++;
+    }
+    if (!n) return 0;
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    snprintf(ph->text, sizeof ph->text, "%s", text);
+    int rc = score_text(v, text, ph, err);
+    if (!rc) rc = lex_region_absorb(region, ph, "what the area is for");
+    free(ph);
+    return rc;
+}
+
 /* 1 when the sense is a place one can be in: a room or a workplace, and for a name of the
  * region table also a part of a structure with a function (a showroom; not for any word: a
  * fireplace, a recess in a wall, is such an area too). A building as a whole is none: a shed or

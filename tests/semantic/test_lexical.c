@@ -253,10 +253,10 @@ static void test_phase5_rules(const sp_lexicon *lx)
 static void test_region_rules(const sp_lexicon *lx)
 {
     const char *names[] = {"stove", "bed", "sofa", "printer", "car", "bicycle", "water heater", "chest freezer",
-                           "shelving unit", "storage bin", "rug", "door", "window"};
+                           "shelving unit", "storage bin", "rug", "door", "window", "crib"};
     sp_lex_vocab *v = NULL;
     sp_lex_result *res = NULL;
-    if (rules_vocab(lx, names, 13, &v, &res)) return;
+    if (rules_vocab(lx, names, 14, &v, &res)) return;
     /* an area named by an activity: the classes that do it ("something to cook") */
     CHECK(!strcmp(found_class(v, "the cooking area", res), "stove") && res->target.is_region);
     CHECK(!strcmp(found_class(v, "the sleeping corner", res), "bed") && res->target.is_region);
@@ -281,6 +281,8 @@ static void test_region_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "the far end of the storage room", res), "shelving unit") && res->target.is_region);
     /* classes named after an area's words are its members ("the freezer corner": the chest freezer) */
     CHECK(!strcmp(found_class(v, "the freezer corner", res), "chest freezer") && res->target.is_region);
+    /* else whom it is for: "something for a baby" */
+    CHECK(!strcmp(found_class(v, "the baby corner", res), "crib") && res->target.is_region);
     /* a generic word with a modifier naming an object of the scene stays that object's area */
     CHECK(!strcmp(found_class(v, "the sofa corner", res), "sofa") && res->target.is_region);
     /* a room of the table whose objects are not here matches nothing ("kitchenette": no fridge,
