@@ -187,6 +187,20 @@ static int anchor_start(const lex_tokens *t, int a)
     return a;
 }
 
+/* 1 when w is a verb's participle ("hanging", "parked", "hung", "left"): a verb form whose base
+ * differs from it, not a third-person "-s" ("books" is no participle of "book"). */
+static int participle(const sp_lex_vocab *v, const char *w)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    sp_error err = {0};
+    size_t n = strlen(w);
+    if (n < 3 || w[n - 1] == 's' || lex_word_class_of(w) != LW_CONTENT) return 0;
+    int nb = lex_bases(v->lx, WN_VERB, w, b, &err);
+    for (int i = 0; i < nb; i++)
+        if (strcmp(b[i], w)) return 1;
+    return 0;
+}
+
 /* "to" before a verb that is no noun starts a purpose clause ("something to sit on"). */
 static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_error *err)
 {
@@ -247,6 +261,13 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         if (lex_is_generic_region(t.w[i - 1])) continue; /* "area with appliances" is one region */
         memset(trial, 0, sizeof *trial);
         if ((rc = resolve(v, &t, 0, i, &trial->target, trial, 0, err))) break;
+        /* "the painting HANGING above the couch", "the car PARKED in front of ...": a reduced
+         * relative clause; its participles are dropped when the target does not match with them */
+        for (int te = i; best_of(&trial->target) < SP_LEX_THRESHOLD && te > 1 && participle(v, t.w[te - 1]);) {
+            memset(trial, 0, sizeof *trial);
+            if ((rc = resolve(v, &t, 0, --te, &trial->target, trial, 0, err))) break;
+        }
+        if (rc) break;
         if (best_of(&trial->target) < SP_LEX_THRESHOLD || trial->target.is_region) continue;
         if ((rc = resolve(v, &t, anchor_start(&t, i + k), t.n, &trial->anchor, trial, 0, err))) break;
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
