@@ -212,6 +212,20 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
         wn_synset_free(&syn);
     }
+    /* A place whose own name the table lacks is the table's nearest kind of place it is a kind
+     * of, one or two hypernym steps up ("washroom" -> the bathroom, "refectory" -> dining hall
+     * -> the dining room), never the bare "room" or "area"; only for a commonest sense that is
+     * a place (a room or a workplace), as for WordNet's definitions. */
+    const lex_sense *se = np->n_senses ? &np->senses[0] : NULL;
+    for (int a = 1; !*r && se && se->rank == 1 && place_sense(se, 0) && a < se->n_anc; a++) {
+        if (se->anc[a].dist > 2) continue;
+        wn_synset syn;
+        int rc = wn_read(v->lx->db, (wn_id){se->anc[a].off, WN_NOUN}, &syn, err);
+        if (rc) return rc;
+        for (int k = 0; k < syn.n_words && !*r; k++)
+            if (!lex_is_generic_region(syn.words[k])) *r = lex_region_find(v, syn.words[k]);
+        wn_synset_free(&syn);
+    }
     return 0;
 }
 

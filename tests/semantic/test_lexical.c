@@ -253,10 +253,10 @@ static void test_phase5_rules(const sp_lexicon *lx)
 static void test_region_rules(const sp_lexicon *lx)
 {
     const char *names[] = {"stove", "bed", "sofa", "printer", "car", "bicycle", "water heater", "chest freezer",
-                           "shelving unit", "storage bin", "rug", "door", "window", "crib"};
+                           "shelving unit", "storage bin", "rug", "door", "window", "crib", "toilet", "bathtub"};
     sp_lex_vocab *v = NULL;
     sp_lex_result *res = NULL;
-    if (rules_vocab(lx, names, 14, &v, &res)) return;
+    if (rules_vocab(lx, names, 16, &v, &res)) return;
     /* an area named by an activity: the classes that do it ("something to cook") */
     CHECK(!strcmp(found_class(v, "the cooking area", res), "stove") && res->target.is_region);
     CHECK(!strcmp(found_class(v, "the sleeping corner", res), "bed") && res->target.is_region);
@@ -269,6 +269,11 @@ static void test_region_rules(const sp_lexicon *lx)
                   (!strcmp(top, "water heater") || !strcmp(top, "chest freezer")), "utility corner -> '%s' [%s]", top,
               res->target.region);
     CHECK(!strcmp(found_class(v, "the parking area", res), "car") && res->target.is_region);
+    /* a WordNet room the table lacks is the table's nearest kind of room it is ("washroom": a
+     * bathroom, one step up) */
+    top = found_class(v, "the washroom", res);
+    CHECK_MSG(res->target.is_region && !strcmp(res->target.region, "bathroom") &&
+                  (!strcmp(top, "toilet") || !strcmp(top, "bathtub")), "washroom -> '%s' [%s]", top, res->target.region);
     /* a "where" clause about things is their place; a question or a person's doing is not */
     CHECK(!strcmp(found_class(v, "where the car is parked", res), "car") && res->target.is_region);
     found_class(v, "where I can cook", res);
