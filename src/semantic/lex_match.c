@@ -41,6 +41,8 @@ static int sub_sorted(const sp_lex_phrase *ph)
     return 1;
 }
 
+static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->matches[0].score : 0; }
+
 /* Resolves the phrase [from, to) of t into ph: a region or an object phrase. */
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
@@ -105,8 +107,8 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         }
         free(sub);
         if (rc) return rc;
-    } else {
-        return 0;
+    } else if (generic || best_of(ph) >= SP_LEX_THRESHOLD || (rc = lex_region_of_act(v, np, ph, err)) <= 0) {
+        return rc; /* an act names its place only when no object is named ("the storage") */
     }
     if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
     ph->is_region = 1;
@@ -148,7 +150,6 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
     return rc;
 }
 
-static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->matches[0].score : 0; }
 
 /* "the table in the dining room": among the target's matches, the classes that define the
  * anchor region come first (stable otherwise). */

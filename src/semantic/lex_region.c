@@ -77,6 +77,20 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 #define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
 #define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
 
+#define ACT 30358u /* act.n.02: something that people do */
+
+int lex_region_of_act(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_error *err)
+{
+    if (np->placeholder || !np->n_senses || np->senses[0].rank != 1 || lex_anc_find(&np->senses[0], ACT) <= 0)
+        return 0;
+    lex_tokens t = {1, {{0}}};
+    snprintf(t.w[0], LEX_WORD, "%s", np->head);
+    lex_region_start(v, ph);
+    snprintf(ph->region, sizeof ph->region, "%s", np->head);
+    int rc = lex_region_activity(v, &t, ph, err);
+    return rc < 0 ? rc : rc | lex_region_named_after(v, np->head, ph);
+}
+
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
 {
     char text[sizeof region->text] = "something for";
