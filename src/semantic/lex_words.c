@@ -87,7 +87,6 @@ static const relation_phrase relations[] = {
     {{"across", "from"}, "across from"},    {{"leading", "to"}, "to"},
     {{"closest", "to"}, "near"},             {{"nearest", "to"}, "near"},
     {{"out", "to"}, "to"},                   {{"out", "into"}, "to"},
-    {{"nearest"}, "near"},                   {{"closest"}, "near"},
     {{"near"}, "near"},   {{"nearby"}, "near"},   {{"beside"}, "beside"}, {{"besides"}, "beside"},
     {{"by"}, "by"},       {{"in"}, "in"},         {{"inside"}, "in"},     {{"within"}, "in"},
     {{"into"}, "in"},     {{"on"}, "on"},         {{"onto"}, "on"},       {{"upon"}, "on"},

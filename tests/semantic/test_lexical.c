@@ -289,10 +289,12 @@ static void test_region_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "the rug in the middle of the storage area", res), "rug"));
     CHECK(!strcmp(res->relation, "in") && res->anchor.is_region && !strcmp(res->anchor.region, "storage area"));
     CHECK(!strcmp(found_class(v, "the far end of the storage room", res), "shelving unit") && res->target.is_region);
-    /* a reduced relative clause's participle is dropped from the target; "nearest" is near */
+    /* a reduced relative clause's participle is dropped from the target; "nearest to" is near */
     CHECK(!strcmp(found_class(v, "the rug lying in front of the sofa", res), "rug") &&
           !strcmp(res->relation, "in front of"));
-    CHECK(!strcmp(found_class(v, "the bicycle nearest the door", res), "bicycle") && !strcmp(res->relation, "near"));
+    CHECK(!strcmp(found_class(v, "the bicycle nearest to the door", res), "bicycle") && !strcmp(res->relation, "near"));
+    /* ... but a lone "nearest" is an adjective, not a preposition: "the nearest bed" keeps its head */
+    CHECK(!strcmp(found_class(v, "the nearest bed", res), "bed") && res->target.matches[0].kind != SP_LEX_GLOSS);
     /* classes named after an area's words are its members ("the freezer corner": the chest freezer) */
     CHECK(!strcmp(found_class(v, "the freezer corner", res), "chest freezer") && res->target.is_region);
     /* else whom it is for: "something for a baby" */
