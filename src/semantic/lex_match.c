@@ -259,7 +259,8 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         if (!k || i + k >= t.n) continue;
         if (!strcmp(name, "to") && purpose_to(v, &t, i, err)) continue;
         if (!strcmp(name, "of") && lex_word_class_of(t.w[i - 1]) == LW_PARTITIVE) continue;
-        if (lex_is_generic_region(t.w[i - 1])) continue; /* "area with appliances" is one region */
+        /* "area with appliances" is one region; "the nurses station next to the door" is two */
+        if (lex_is_generic_region(t.w[i - 1]) && lex_is_region_link(t.w[i])) continue;
         memset(trial, 0, sizeof *trial);
         if ((rc = resolve(v, &t, 0, i, &trial->target, trial, 0, err))) break;
         /* "the painting HANGING above the couch", "the car PARKED in front of ...": a reduced

@@ -256,10 +256,11 @@ static void test_phase5_rules(const sp_lexicon *lx)
 static void test_region_rules(const sp_lexicon *lx)
 {
     const char *names[] = {"stove", "bed", "sofa", "printer", "car", "bicycle", "water heater", "chest freezer",
-                           "shelving unit", "storage bin", "rug", "door", "window", "crib", "toilet", "bathtub"};
+                           "shelving unit", "storage bin", "rug", "door", "window", "crib", "toilet", "bathtub",
+                           "charging station"};
     sp_lex_vocab *v = NULL;
     sp_lex_result *res = NULL;
-    if (rules_vocab(lx, names, 16, &v, &res)) return;
+    if (rules_vocab(lx, names, 17, &v, &res)) return;
     /* an area named by an activity: the classes that do it ("something to cook") */
     CHECK(!strcmp(found_class(v, "the cooking area", res), "stove") && res->target.is_region);
     CHECK(!strcmp(found_class(v, "the sleeping corner", res), "bed") && res->target.is_region);
@@ -293,6 +294,9 @@ static void test_region_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "the rug lying in front of the sofa", res), "rug") &&
           !strcmp(res->relation, "in front of"));
     CHECK(!strcmp(found_class(v, "the bicycle nearest to the door", res), "bicycle") && !strcmp(res->relation, "near"));
+    /* a class named with a generic area word ("station") is still split off its relation */
+    CHECK(!strcmp(found_class(v, "the charging station next to the door", res), "charging station") &&
+          !strcmp(res->relation, "next to"));
     /* ... but a lone "nearest" is an adjective, not a preposition: "the nearest bed" keeps its head */
     CHECK(!strcmp(found_class(v, "the nearest bed", res), "bed") && res->target.matches[0].kind != SP_LEX_GLOSS);
     /* classes named after an area's words are its members ("the freezer corner": the chest freezer) */
