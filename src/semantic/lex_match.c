@@ -99,16 +99,19 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                  * else whom or what it is for ("the children's section") */
                 char words[sizeof sub->text];
                 join_words(&ct, 0, ct.n, words, sizeof words);
-                int any = lex_region_named_after(v, words, ph);
+                /* only words that name the area ("the cooking area"), not its contents ("the
+                 * corner with the plant": a plant or nothing) */
+                int named_by = !linked;
+                int any = named_by ? lex_region_named_after(v, words, ph) : 0;
                 any |= lex_region_absorb(ph, sub, "objects of the area");
-                if (!any && (rc = lex_region_activity(v, &ct, ph, err)) >= 0) any = rc, rc = 0;
-                if (!rc && !any && (rc = lex_region_for(v, &ct, ph, err)) > 0) rc = 0;
+                if (named_by && !any && (rc = lex_region_activity(v, &ct, ph, err)) >= 0) any = rc, rc = 0;
+                if (named_by && !rc && !any && (rc = lex_region_for(v, &ct, ph, err)) > 0) rc = 0;
             }
         }
         free(sub);
         if (rc) return rc;
-    } else if (generic || best_of(ph) >= SP_LEX_THRESHOLD || (rc = lex_region_of_act(v, np, ph, err)) <= 0) {
-        return rc; /* an act names its place only when no object is named ("the storage") */
+    } else {
+        return 0;
     }
     if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
     ph->is_region = 1;
@@ -144,6 +147,11 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
             free(reg);
         }
     }
+    /* A bare area word ("the room", "the area", "a corner") names no object: WordNet's "area"
+     * is a hypernym of lockers and cabinets (a compartment is a room), which no one means. */
+    if (!rc && !ph->is_region && np.n_mods == 0 && !np.placeholder && lex_is_generic_region(np.head) &&
+        !(ph->n_matches && ph->matches[0].kind == SP_LEX_EXACT))
+        for (int i = 0; i < ph->n_matches; i++) ph->matches[i].score = 0;
     for (int i = 0; !rc && res && !ph->is_region && i < np.n_mods; i++)
         if (use[i] == LEX_MOD_IGNORED) add_ignored(res, np.mods[i]);
     lex_np_free(&np);

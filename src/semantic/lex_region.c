@@ -11,15 +11,22 @@
 #include "lexical.h"
 #include "semsplat/io.h"
 
-/* Scores text (an object phrase) into ph; the region resolution's building block. */
+/* Scores text (an object phrase) into ph; the region resolution's building block. A member
+ * phrase names a particular kind ("tool rack", "drying rack", "kitchen cabinet"): when its best
+ * class matches only with a modifier ignored (the TV stand is a rack, but no tool rack), the
+ * scene lacks that kind and the phrase supports nothing (two such phrases made a storage room
+ * or a laundry of any TV stand and trash can). */
 static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
 {
     lex_tokens raw, t;
     lex_tokenize(text, &raw);
     int rc = lex_merge_collocations(v->lx, &raw, &t, err);
     lex_np np;
+    int use[8] = {0};
     if (!rc) rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err);
-    if (!rc) rc = lex_score_np(v, &np, ph, NULL, err);
+    if (!rc) rc = lex_score_np(v, &np, ph, use, err);
+    for (int i = 0; !rc && i < np.n_mods && i < 8; i++)
+        if (use[i] == LEX_MOD_IGNORED) ph->n_matches = 0;
     lex_np_free(&np);
     return rc;
 }
@@ -76,20 +83,6 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 #define ROOM 4105893u      /* room.n.01 */
 #define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
 #define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
-
-#define ACT 30358u /* act.n.02: something that people do */
-
-int lex_region_of_act(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_error *err)
-{
-    if (np->placeholder || !np->n_senses || np->senses[0].rank != 1 || lex_anc_find(&np->senses[0], ACT) <= 0)
-        return 0;
-    lex_tokens t = {1, {{0}}};
-    snprintf(t.w[0], LEX_WORD, "%s", np->head);
-    lex_region_start(v, ph);
-    snprintf(ph->region, sizeof ph->region, "%s", np->head);
-    int rc = lex_region_activity(v, &t, ph, err);
-    return rc < 0 ? rc : rc | lex_region_named_after(v, np->head, ph);
-}
 
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
 {

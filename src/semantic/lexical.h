@@ -222,9 +222,6 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
 /* The region of an activity: the classes that do what the words name ("cooking", "storage" ->
  * "something to cook / store") raised in region (indexed by class); returns 1 when any. */
 int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
-/* "the storage", "the cooking": a head whose commonest sense is an act (act.n.02) is the region
- * of that activity (lex_region_activity on the head) in ph; returns 1 when any class does it. */
-int lex_region_of_act(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_error *err);
 /* The region of whom or what an area is for ("the children's section": "something for
  * children", the high chair) raised in region (indexed by class); returns 1 when any. */
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
