@@ -210,6 +210,45 @@ static int participle(const sp_lex_vocab *v, const char *w)
     return 0;
 }
 
+/* "between the sofa and the armchair": the two phrases around "and", each resolved, their
+ * classes together the anchor (each class at its better score); unchanged when either half
+ * finds nothing or names a region. */
+static int between_pair(const sp_lex_vocab *v, const lex_tokens *t, int a, sp_lex_result *trial, int ignored,
+                        sp_error *err)
+{
+    int j = a;
+    while (j < t->n && strcmp(t->w[j], "and")) j++;
+    if (j == a || j + 1 >= t->n) return 0;
+    sp_lex_phrase *x = malloc(sizeof *x), *y = malloc(sizeof *y);
+    int rc = x && y ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    /* the whole phrase read "sofa" as an ignored modifier of "armchair": the halves report
+     * their own words when they are the anchor, the whole phrase's stand otherwise */
+    int had = trial->n_ignored;
+    char saved[SP_LEX_MAX_IGNORED][sizeof trial->ignored[0]];
+    memcpy(saved, trial->ignored, sizeof saved);
+    trial->n_ignored = ignored;
+    if (!rc) rc = resolve(v, t, a, j, x, trial, 0, err);
+    if (!rc) rc = resolve(v, t, j + 1, t->n, y, trial, 0, err);
+    int merged = 0;
+    if (!rc && best_of(x) >= SP_LEX_THRESHOLD && best_of(y) >= SP_LEX_THRESHOLD && !x->is_region && !y->is_region) {
+        for (int i = 0; i < y->n_matches; i++)
+            for (int k = 0; k < x->n_matches; k++)
+                if (x->matches[k].class_index == y->matches[i].class_index && y->matches[i].score > x->matches[k].score)
+                    x->matches[k] = y->matches[i];
+        qsort(x->matches, (size_t)x->n_matches, sizeof x->matches[0], lex_match_cmp);
+        join_words(t, a, t->n, x->text, sizeof x->text);
+        trial->anchor = *x;
+        merged = 1;
+    }
+    if (!merged) {
+        trial->n_ignored = had;
+        memcpy(trial->ignored, saved, sizeof saved);
+    }
+    free(x);
+    free(y);
+    return rc;
+}
+
 /* "to" before a verb that is no noun starts a purpose clause ("something to sit on"). */
 static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_error *err)
 {
@@ -279,7 +318,9 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         }
         if (rc) break;
         if (best_of(&trial->target) < SP_LEX_THRESHOLD || trial->target.is_region) continue;
+        int ignored = trial->n_ignored;
         if ((rc = resolve(v, &t, anchor_start(&t, i + k), t.n, &trial->anchor, trial, 0, err))) break;
+        if (!strcmp(name, "between") && (rc = between_pair(v, &t, anchor_start(&t, i + k), trial, ignored, err))) break;
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);

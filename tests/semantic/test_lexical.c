@@ -292,6 +292,16 @@ static void test_region_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "the rug lying in front of the sofa", res), "rug") &&
           !strcmp(res->relation, "in front of"));
     CHECK(!strcmp(found_class(v, "the bicycle nearest to the door", res), "bicycle") && !strcmp(res->relation, "near"));
+    /* "between X and Y": both phrases anchor it */
+    found_class(v, "the rug between the sofa and the bed", res);
+    int has_sofa = 0, has_bed = 0;
+    for (int i = 0; i < res->anchor.n_matches; i++) {
+        const char *c = sp_lex_vocab_class(v, res->anchor.matches[i].class_index);
+        if (res->anchor.matches[i].score < SP_LEX_THRESHOLD) continue;
+        has_sofa |= !strcmp(c, "sofa"), has_bed |= !strcmp(c, "bed");
+    }
+    CHECK_MSG(!strcmp(res->relation, "between") && has_sofa && has_bed, "between: relation '%s', sofa %d, bed %d",
+              res->relation, has_sofa, has_bed);
     /* a class named with a generic area word ("station") is still split off its relation */
     CHECK(!strcmp(found_class(v, "the charging station next to the door", res), "charging station") &&
           !strcmp(res->relation, "next to"));
