@@ -97,7 +97,8 @@ static int localize_target(sp_query_engine *e, const sp_lex_vocab *v, const sp_l
     int rc = 0, have = 0;
     float *cls_score = NULL;
     int *cls = NULL;
-    int named = ph->n_matches > 0 && ph->matches[0].kind == SP_LEX_EXACT;
+    /* ... but "the sofa and the armchair" (a "between" anchor) names two things */
+    int named = ph->n_matches > 0 && ph->matches[0].kind == SP_LEX_EXACT && !strstr(ph->text, " and ");
     for (int i = 0; i < ph->n_matches && !rc; i++) {
         const sp_lex_class_match *m = &ph->matches[i];
         if (m->score < SP_LEX_THRESHOLD) break; /* matches are sorted */

@@ -41,6 +41,8 @@ static int sub_sorted(const sp_lex_phrase *ph)
     return 1;
 }
 
+static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->matches[0].score : 0; }
+
 /* Resolves the phrase [from, to) of t into ph: a region or an object phrase. */
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
@@ -61,6 +63,12 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * sense is an elevator's cabin). */
     const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
     int generic = lex_is_generic_region(np->head);
+    /* a WordNet collocation of a generic area ("seating_area", "parking_area") that names no room
+     * and no table region is such an area too, its leading words the complement */
+    char lead[WN_LEMMA_MAX] = "";
+    const char *last = strrchr(np->head, '_');
+    if (!r && !def && last && lex_is_generic_region(last + 1))
+        snprintf(lead, sizeof lead, "%.*s", (int)(last - np->head), np->head);
     int linked = np->head_start + 1 < t->n && lex_is_region_link(t->w[np->head_start + 1]);
     /* "somewhere for a patient to lie down" is a place to lie down: a placeholder whose
      * complement holds a purpose clause ("to" + verb) describes a thing, it names no area. */
@@ -68,10 +76,12 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         if (!strcmp(t->w[i], "to")) linked = 0;
     if (r || (def && !generic)) {
         if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
-    } else if (generic && depth == 0 && (linked || np->n_mods > 0)) {
+    } else if ((generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
         /* The complement: modifiers and the words after the link, without the link words. */
         lex_tokens ct = {0, {{0}}};
         for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+        for (char *save = NULL, *w = strtok_r(lead, "_", &save); w && ct.n < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &save))
+            snprintf(ct.w[ct.n++], LEX_WORD, "%s", w);
         for (int i = 0; i < np->n_desc && ct.n < LEX_MAX_TOKENS; i++)
             if (!lex_is_region_link(np->desc[i])) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->desc[i]);
         if (ct.n == 0) return 0;
@@ -84,7 +94,18 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                 ph->n_matches = sub->n_matches;
             } else {
                 lex_region_start(v, ph);
-                lex_region_absorb(ph, sub, "objects of the area");
+                /* the classes named after its words ("the patient area": the patient bed), the
+                 * objects it names, and when none of those an activity ("the cooking area"),
+                 * else whom or what it is for ("the children's section") */
+                char words[sizeof sub->text];
+                join_words(&ct, 0, ct.n, words, sizeof words);
+                /* only words that name the area ("the cooking area"), not its contents ("the
+                 * corner with the plant": a plant or nothing) */
+                int named_by = !linked;
+                int any = named_by ? lex_region_named_after(v, words, ph) : 0;
+                any |= lex_region_absorb(ph, sub, "objects of the area");
+                if (named_by && !any && (rc = lex_region_activity(v, &ct, ph, err)) >= 0) any = rc, rc = 0;
+                if (named_by && !rc && !any && (rc = lex_region_for(v, &ct, ph, err)) > 0) rc = 0;
             }
         }
         free(sub);
@@ -126,13 +147,17 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
             free(reg);
         }
     }
+    /* A bare area word ("the room", "the area", "a corner") names no object: WordNet's "area"
+     * is a hypernym of lockers and cabinets (a compartment is a room), which no one means. */
+    if (!rc && !ph->is_region && np.n_mods == 0 && !np.placeholder && lex_is_generic_region(np.head) &&
+        !(ph->n_matches && ph->matches[0].kind == SP_LEX_EXACT))
+        for (int i = 0; i < ph->n_matches; i++) ph->matches[i].score = 0;
     for (int i = 0; !rc && res && !ph->is_region && i < np.n_mods; i++)
         if (use[i] == LEX_MOD_IGNORED) add_ignored(res, np.mods[i]);
     lex_np_free(&np);
     return rc;
 }
 
-static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->matches[0].score : 0; }
 
 /* "the table in the dining room": among the target's matches, the classes that define the
  * anchor region come first (stable otherwise). */
@@ -152,6 +177,78 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
 
+/* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
+ * MIDDLE OF the living room", "at the far END OF the hallway", "in the CORNER OF the bedroom"):
+ * the thing is in that part of the anchor, so the anchor is what follows "of". */
+static int anchor_start(const lex_tokens *t, int a)
+{
+    static const char *const parts[] = {"middle", "centre", "center", "end", "back", "rear", "front",
+                                        "side", "corner", "edge", "top", "bottom", "far", "near",
+                                        "left", "right", "other", "opposite", "half", NULL};
+    int any = 0;
+    for (int i = a; i < t->n - 1 && i < a + 5; i++) {
+        if (!strcmp(t->w[i], "of")) return any ? i + 1 : a;
+        int part = 0;
+        for (int k = 0; parts[k] && !part; k++) part = !strcmp(t->w[i], parts[k]);
+        if (part) any = 1;
+        else if (lex_word_class_of(t->w[i]) != LW_FUNCTION) return a;
+    }
+    return a;
+}
+
+/* 1 when w is a verb's participle ("hanging", "parked", "hung", "left"): a verb form whose base
+ * differs from it, not a third-person "-s" ("books" is no participle of "book"). */
+static int participle(const sp_lex_vocab *v, const char *w)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    sp_error err = {0};
+    size_t n = strlen(w);
+    if (n < 3 || w[n - 1] == 's' || lex_word_class_of(w) != LW_CONTENT) return 0;
+    int nb = lex_bases(v->lx, WN_VERB, w, b, &err);
+    for (int i = 0; i < nb; i++)
+        if (strcmp(b[i], w)) return 1;
+    return 0;
+}
+
+/* "between the sofa and the armchair": the two phrases around "and", each resolved, their
+ * classes together the anchor (each class at its better score); unchanged when either half
+ * finds nothing or names a region. */
+static int between_pair(const sp_lex_vocab *v, const lex_tokens *t, int a, sp_lex_result *trial, int ignored,
+                        sp_error *err)
+{
+    int j = a;
+    while (j < t->n && strcmp(t->w[j], "and")) j++;
+    if (j == a || j + 1 >= t->n) return 0;
+    sp_lex_phrase *x = malloc(sizeof *x), *y = malloc(sizeof *y);
+    int rc = x && y ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    /* the whole phrase read "sofa" as an ignored modifier of "armchair": the halves report
+     * their own words when they are the anchor, the whole phrase's stand otherwise */
+    int had = trial->n_ignored;
+    char saved[SP_LEX_MAX_IGNORED][sizeof trial->ignored[0]];
+    memcpy(saved, trial->ignored, sizeof saved);
+    trial->n_ignored = ignored;
+    if (!rc) rc = resolve(v, t, a, j, x, trial, 0, err);
+    if (!rc) rc = resolve(v, t, j + 1, t->n, y, trial, 0, err);
+    int merged = 0;
+    if (!rc && best_of(x) >= SP_LEX_THRESHOLD && best_of(y) >= SP_LEX_THRESHOLD && !x->is_region && !y->is_region) {
+        for (int i = 0; i < y->n_matches; i++)
+            for (int k = 0; k < x->n_matches; k++)
+                if (x->matches[k].class_index == y->matches[i].class_index && y->matches[i].score > x->matches[k].score)
+                    x->matches[k] = y->matches[i];
+        qsort(x->matches, (size_t)x->n_matches, sizeof x->matches[0], lex_match_cmp);
+        join_words(t, a, t->n, x->text, sizeof x->text);
+        trial->anchor = *x;
+        merged = 1;
+    }
+    if (!merged) {
+        trial->n_ignored = had;
+        memcpy(trial->ignored, saved, sizeof saved);
+    }
+    free(x);
+    free(y);
+    return rc;
+}
+
 /* "to" before a verb that is no noun starts a purpose clause ("something to sit on"). */
 static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_error *err)
 {
@@ -162,6 +259,25 @@ static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_erro
     return verb > 0 && noun == 0;
 }
 
+/* A query that is a "where" clause whose subject names things ("where the car is parked",
+ * "where the bins are") names the place of that subject: it reads as "the place where ...", a
+ * region of the objects it names. A question ("where is the car", "where can I sit"), a purpose
+ * ("where to store my shoes") or a person's doing ("where I can cook", "where we keep the
+ * tools": a thing to cook on, to keep them in) describes a thing and is left as it is. */
+static void where_clause(lex_tokens *t)
+{
+    static const char *const aux[] = {"to", "is", "are", "was", "were", "can", "could", "do", "does",
+                                      "did", "should", "would", "will", "shall", "may", "might", "must",
+                                      "i", "we", "you", "one", "someone", "somebody", "people", "they",
+                                      "he", "she", NULL};
+    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return;
+    for (int i = 0; aux[i]; i++)
+        if (!strcmp(t->w[1], aux[i])) return;
+    memmove(t->w[1], t->w[0], sizeof t->w[0] * (size_t)t->n);
+    snprintf(t->w[0], LEX_WORD, "place");
+    t->n++;
+}
+
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err)
 {
@@ -170,6 +286,14 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     lex_tokens t;
     int rc = lex_merge_collocations(v->lx, raw, &t, err);
     if (rc) return rc;
+    where_clause(&t);
+    /* "the far end of the hallway", "the top of the bookshelf": a part of a place or a thing is
+     * found where that place or thing is */
+    int skip = anchor_start(&t, 0);
+    if (skip > 0) {
+        memmove(t.w[0], t.w[skip], sizeof t.w[0] * (size_t)(t.n - skip));
+        t.n -= skip;
+    }
     sp_lex_result *trial = malloc(sizeof *trial);
     if (!trial) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     /* The first relation word where both sides match splits target and anchor. */
@@ -180,11 +304,21 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         if (!k || i + k >= t.n) continue;
         if (!strcmp(name, "to") && purpose_to(v, &t, i, err)) continue;
         if (!strcmp(name, "of") && lex_word_class_of(t.w[i - 1]) == LW_PARTITIVE) continue;
-        if (lex_is_generic_region(t.w[i - 1])) continue; /* "area with appliances" is one region */
+        /* "area with appliances" is one region; "the nurses station next to the door" is two */
+        if (lex_is_generic_region(t.w[i - 1]) && lex_is_region_link(t.w[i])) continue;
         memset(trial, 0, sizeof *trial);
         if ((rc = resolve(v, &t, 0, i, &trial->target, trial, 0, err))) break;
+        /* "the painting HANGING above the couch", "the car PARKED in front of ...": a reduced
+         * relative clause; its participles are dropped when the target does not match with them */
+        for (int te = i; best_of(&trial->target) < SP_LEX_THRESHOLD && te > 1 && participle(v, t.w[te - 1]);) {
+            memset(trial, 0, sizeof *trial);
+            if ((rc = resolve(v, &t, 0, --te, &trial->target, trial, 0, err))) break;
+        }
+        if (rc) break;
         if (best_of(&trial->target) < SP_LEX_THRESHOLD || trial->target.is_region) continue;
-        if ((rc = resolve(v, &t, i + k, t.n, &trial->anchor, trial, 0, err))) break;
+        int ignored = trial->n_ignored;
+        if ((rc = resolve(v, &t, anchor_start(&t, i + k), t.n, &trial->anchor, trial, 0, err))) break;
+        if (!strcmp(name, "between") && (rc = between_pair(v, &t, anchor_start(&t, i + k), trial, ignored, err))) break;
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);

@@ -1,8 +1,9 @@
 /* Regions for the lexical text encoder: the region table (data/semantic/regions.json), and the
  * classes that define a region: the table's object phrases, the nouns of the region's WordNet
- * definition, classes named after it. Table regions are resolved once, when
- * the vocabulary is made. */
+ * definition, classes named after it, the classes doing what its name says is done there. Table
+ * regions are resolved once, on first use. */
 #include <cjson/cJSON.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,15 +11,22 @@
 #include "lexical.h"
 #include "semsplat/io.h"
 
-/* Scores text (an object phrase) into ph; the region resolution's building block. */
+/* Scores text (an object phrase) into ph; the region resolution's building block. A member
+ * phrase names a particular kind ("tool rack", "drying rack", "kitchen cabinet"): when its best
+ * class matches only with a modifier ignored (the TV stand is a rack, but no tool rack), the
+ * scene lacks that kind and the phrase supports nothing (two such phrases made a storage room
+ * or a laundry of any TV stand and trash can). */
 static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
 {
     lex_tokens raw, t;
     lex_tokenize(text, &raw);
     int rc = lex_merge_collocations(v->lx, &raw, &t, err);
     lex_np np;
+    int use[8] = {0};
     if (!rc) rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err);
-    if (!rc) rc = lex_score_np(v, &np, ph, NULL, err);
+    if (!rc) rc = lex_score_np(v, &np, ph, use, err);
+    for (int i = 0; !rc && i < np.n_mods && i < 8; i++)
+        if (use[i] == LEX_MOD_IGNORED) ph->n_matches = 0;
     lex_np_free(&np);
     return rc;
 }
@@ -72,7 +80,103 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 }
 
 
-#define ROOM 4105893u /* room.n.01 */
+#define ROOM 4105893u      /* room.n.01 */
+#define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
+#define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
+
+int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
+{
+    char text[sizeof region->text] = "something for";
+    int n = 0;
+    for (int i = 0; i < words->n; i++) {
+        if (lex_is_generic_region(words->w[i])) continue;
+        strncat(text, " ", sizeof text - strlen(text) - 1);
+        strncat(text, words->w[i], sizeof text - strlen(text) - 1);
+        n++;
+    }
+    if (!n) return 0;
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    snprintf(ph->text, sizeof ph->text, "%s", text);
+    int rc = score_text(v, text, ph, err);
+    if (!rc) rc = lex_region_absorb(region, ph, "what the area is for");
+    free(ph);
+    return rc;
+}
+
+/* 1 when the sense is a place one can be in: a room or a workplace, and for a name of the
+ * region table also a part of a structure with a function (a showroom; not for any word: a
+ * fireplace, a recess in a wall, is such an area too). A building as a whole is none: a shed or
+ * a garage is also a thing seen from outside. */
+static int place_sense(const lex_sense *s, int table_entry)
+{
+    return lex_anc_find(s, ROOM) > 0 || lex_anc_find(s, WORKPLACE) > 0 || (table_entry && lex_anc_find(s, AREA) > 0);
+}
+
+/* The verbs an activity word names: the word is a form of the verb ("cooking" -> cook, "parking"
+ * -> park), else the verbs WordNet derives from this very word in its commonest noun sense ("+":
+ * storage -> store). A word that is itself a verb's base names a thing as often as an act ("the
+ * back room", "the work area": "something to back" is a chair), so it names none. */
+static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
+{
+    char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb0 = lex_bases(lx, WN_VERB, w, vb, err), n = 0;
+    if (nb0 < 0) return nb0;
+    for (int i = 0; i < nb0; i++)
+        if (!strcmp(vb[i], w)) nb0 = 0; /* the word is a verb base itself */
+    for (int i = 0; i < nb0 && n < cap; i++) snprintf(out[n++], WN_LEMMA_MAX, "%s", vb[i]);
+    if (n != 0 || lex_bases(lx, WN_VERB, w, vb, err) > 0) return n;
+    uint32_t offs[WN_MAX_SENSES];
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(lx, WN_NOUN, w, b, err);
+    int ns = nb > 0 ? wn_lookup(lx->db, WN_NOUN, b[0], offs, WN_MAX_SENSES, NULL, err) : nb;
+    if (ns <= 0) return ns;
+    wn_synset syn;
+    int rc = wn_read(lx->db, (wn_id){offs[0], WN_NOUN}, &syn, err);
+    if (rc) return rc;
+    int self = 0; /* the word's number in its synset */
+    for (int k = 0; k < syn.n_words; k++)
+        if (!strcmp(syn.words[k], b[0])) self = k + 1;
+    for (int p = 0; p < syn.n_pointers && !rc && n < cap; p++) {
+        const wn_pointer *pt = &syn.pointers[p];
+        if (strcmp(pt->symbol, "+") || pt->target.pos != WN_VERB || (pt->source_word && pt->source_word != self))
+            continue;
+        wn_synset vs;
+        if ((rc = wn_read(lx->db, pt->target, &vs, err))) break;
+        int k = pt->target_word ? pt->target_word - 1 : 0;
+        int dup = 0;
+        for (int j = 0; j < n; j++) dup |= !strcmp(out[j], vs.words[k]);
+        if (k < vs.n_words && !dup && !strchr(vs.words[k], '_') && strcmp(vs.words[k], w))
+            snprintf(out[n++], WN_LEMMA_MAX, "%s", vs.words[k]);
+        wn_synset_free(&vs);
+    }
+    wn_synset_free(&syn);
+    return rc ? rc : n;
+}
+
+int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
+{
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0, any = 0;
+    for (int i = 0; i < words->n && !rc; i++) {
+        if (lex_word_class_of(words->w[i]) != LW_CONTENT || lex_is_generic_region(words->w[i])) continue;
+        char verbs[4][WN_LEMMA_MAX];
+        int nv = activity_verbs(v->lx, words->w[i], verbs, 4, err);
+        if (nv < 0) rc = nv;
+        for (int k = 0; k < nv && !rc; k++) {
+            /* the things one does it with: "something to store" */
+            char text[2 * WN_LEMMA_MAX];
+            snprintf(text, sizeof text, "something to %s", verbs[k]);
+            snprintf(ph->text, sizeof ph->text, "%s", text);
+            char why[96];
+            snprintf(why, sizeof why, "what one does there ('%s': %s)", words->w[i], verbs[k]);
+            if (!(rc = score_text(v, text, ph, err))) any |= lex_region_absorb(region, ph, why);
+        }
+    }
+    free(ph);
+    return rc ? rc : any;
+}
 
 /* The table region a head stands for: its own name or a synonym's ("hall" -> hallway). */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
@@ -91,12 +195,42 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         strncat(name, np->head, sizeof name - strlen(name) - 1);
         *r = lex_region_find(v, name);
     }
+    /* The kind of area is a word of style: "the utility corner" is the table's "utility room",
+     * "the work space" its "work area" (only after a generic head: a "locker" is no locker room). */
+    if (!*r && lex_is_generic_region(np->head)) {
+        char stem[64] = "";
+        for (int i = 0; i < n_mods; i++) {
+            strncat(stem, i ? " " : "", sizeof stem - strlen(stem) - 1);
+            strncat(stem, np->mods[i], sizeof stem - strlen(stem) - 1);
+        }
+        if (stem[0]) *r = lex_region_find_stem(v, stem);
+    }
+    const char *last = strrchr(np->head, '_'); /* a WordNet collocation: "parking_area" */
+    if (!*r && last && lex_is_generic_region(last + 1)) {
+        char stem[64];
+        snprintf(stem, sizeof stem, "%.*s", (int)(last - np->head), np->head);
+        *r = lex_region_find_stem(v, stem);
+    }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
         wn_synset syn;
         wn_id id = {np->senses[s].off, WN_NOUN};
         int rc = wn_read(v->lx->db, id, &syn, err);
         if (rc) return rc;
         for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
+        wn_synset_free(&syn);
+    }
+    /* A place whose own name the table lacks is the table's nearest kind of place it is a kind
+     * of, one or two hypernym steps up ("washroom" -> the bathroom, "refectory" -> dining hall
+     * -> the dining room), never the bare "room" or "area"; only for a commonest sense that is
+     * a place (a room or a workplace), as for WordNet's definitions. */
+    const lex_sense *se = np->n_senses ? &np->senses[0] : NULL;
+    for (int a = 1; !*r && se && se->rank == 1 && place_sense(se, 0) && a < se->n_anc; a++) {
+        if (se->anc[a].dist > 2) continue;
+        wn_synset syn;
+        int rc = wn_read(v->lx->db, (wn_id){se->anc[a].off, WN_NOUN}, &syn, err);
+        if (rc) return rc;
+        for (int k = 0; k < syn.n_words && !*r; k++)
+            if (!lex_is_generic_region(syn.words[k])) *r = lex_region_find(v, syn.words[k]);
         wn_synset_free(&syn);
     }
     return 0;
@@ -110,7 +244,7 @@ void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph)
 }
 
 /* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any. */
-static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
+int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
 {
     int any = 0;
     char name[WN_LEMMA_MAX];
@@ -133,24 +267,23 @@ static int named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase 
 }
 
 
-/* Members of a named region into ph (sorted best first). r: its table entry or NULL (a room
- * WordNet knows); definition: the WordNet definition of its room sense. */
-int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
-                       const char *definition, sp_lex_phrase *ph, sp_error *err)
+/* Members of a named region into ph (sorted best first). r: its table entry or NULL (a place
+ * WordNet knows); definition: the WordNet definition of its place sense. */
+static int members_compute(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                           const char *definition, sp_lex_phrase *ph, sp_error *err)
 {
-    if (r && r->cache) {
-        memcpy(ph->matches, r->cache->matches, sizeof ph->matches);
-        ph->n_matches = r->cache->n_matches;
-        snprintf(ph->region, sizeof ph->region, "%s", r->name);
-        return 0;
-    }
     lex_region_start(v, ph);
     snprintf(ph->region, sizeof ph->region, "%s", name);
     for (char *p = ph->region; *p; p++)
         if (*p == '_') *p = ' ';
     int support = 0, rc = region_members(v, r, definition, ph, &support, err);
     if (rc) return rc;
-    named_after(v, ph->region, ph);
+    if (!r) { /* a place WordNet knows and the table does not: also what its name says is done */
+        lex_tokens t;
+        lex_tokenize(ph->region, &t);
+        if ((rc = lex_region_activity(v, &t, ph, err)) < 0) return rc;
+    }
+    lex_region_named_after(v, ph->region, ph);
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom. */
     int kinds = 0;
     for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
@@ -165,38 +298,54 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
     return 0;
 }
 
-/* The definition a region's name gives: its first sense that is a room, else its first. */
+/* The definition a region's name gives: its first sense that is a place, else its first. */
 const char *lex_region_definition(const lex_np *np, int table_entry)
 {
-    if (np->n_senses && np->senses[0].rank == 1 && lex_anc_find(&np->senses[0], ROOM) > 0)
+    if (np->n_senses && np->senses[0].rank == 1 && place_sense(&np->senses[0], table_entry))
         return np->senses[0].definition;
     for (int s = 0; table_entry && s < np->n_senses; s++)
-        if (lex_anc_find(&np->senses[s], ROOM) > 0) return np->senses[s].definition;
+        if (place_sense(&np->senses[s], 1)) return np->senses[s].definition;
     return table_entry && np->n_senses ? np->senses[0].definition : NULL;
 }
 
-int lex_regions_prepare(sp_lex_vocab *v, sp_error *err)
+/* A table region's members in this vocabulary, resolved into r->cache. WordNet's definition only
+ * for a name WordNet has as one noun: "meeting room" is no entry, and the definition of its head
+ * "room" (walls, floor, ceiling) defines no kind. */
+static int region_prepare(const sp_lex_vocab *v, lex_region *r, sp_error *err)
 {
-    int rc = 0;
-    for (int i = 0; i < v->n_regions && !rc; i++) {
-        lex_region *r = &v->regions[i];
-        lex_tokens raw, t;
-        lex_tokenize(r->name, &raw);
-        lex_np np;
-        if ((rc = lex_merge_collocations(v->lx, &raw, &t, err))) break;
-        if ((rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) break;
-        sp_lex_phrase *ph = malloc(sizeof *ph);
-        if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-        /* WordNet's definition only for a name WordNet has as one noun: "meeting room" is no
-         * entry, and the definition of its head "room" (walls, floor, ceiling) defines no kind */
-        else if (!(rc = lex_region_members(v, r, r->name,
-                                           np.n_mods == np.split ? lex_region_definition(&np, 1) : NULL,
-                                           ph, err)))
-            r->cache = ph;
-        else
-            free(ph);
-        lex_np_free(&np);
+    lex_tokens raw, t;
+    lex_tokenize(r->name, &raw);
+    lex_np np;
+    int rc = lex_merge_collocations(v->lx, &raw, &t, err);
+    if (rc || (rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err))) return rc;
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    else if (!(rc = members_compute(v, r, r->name, np.n_mods == np.split ? lex_region_definition(&np, 1) : NULL,
+                                    ph, err)))
+        r->cache = ph;
+    else
+        free(ph);
+    lex_np_free(&np);
+    return rc;
+}
+
+int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
+                       const char *definition, sp_lex_phrase *ph, sp_error *err)
+{
+    if (!r) return members_compute(v, NULL, name, definition, ph, err);
+    /* Table regions are resolved on first use, not when the vocabulary is made (the table has
+     * dozens of rooms a scene never asks about: start-up stays small); the cache is written once
+     * under the vocabulary's lock, so threads may share the vocabulary. */
+    sp_lex_vocab *mv = (sp_lex_vocab *)v;
+    lex_region *mr = (lex_region *)r;
+    pthread_mutex_lock(&mv->region_lock);
+    int rc = mr->cache ? 0 : region_prepare(v, mr, err);
+    if (!rc) {
+        memcpy(ph->matches, mr->cache->matches, sizeof ph->matches);
+        ph->n_matches = mr->cache->n_matches;
+        snprintf(ph->region, sizeof ph->region, "%s", r->name);
     }
+    pthread_mutex_unlock(&mv->region_lock);
     return rc;
 }
 
@@ -236,6 +385,21 @@ int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err)
     }
     cJSON_Delete(js);
     return rc;
+}
+
+const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem)
+{
+    char key[64];
+    snprintf(key, sizeof key, "%s", stem);
+    for (char *p = key; *p; p++)
+        if (*p == '_') *p = ' ';
+    size_t n = strlen(key);
+    const lex_region *r = lex_region_find(v, key);
+    for (int i = 0; !r && n && i < v->n_regions; i++) {
+        const char *name = v->regions[i].name;
+        if (!strncmp(name, key, n) && name[n] == ' ' && lex_is_generic_region(name + n + 1)) r = &v->regions[i];
+    }
+    return r;
 }
 
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name)

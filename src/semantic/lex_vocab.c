@@ -40,6 +40,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
     free(v->regions);
     free(v->aliases);
+    pthread_mutex_destroy(&v->region_lock);
     free(v);
 }
 
@@ -243,6 +244,10 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
         return sp_error_set(err, SP_E_ARG, "lexical: %d classes (at most %d)", n, SP_LEX_MAX_CLASSES);
     sp_lex_vocab *v = calloc(1, sizeof *v);
     if (!v) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    if (pthread_mutex_init(&v->region_lock, NULL) != 0) {
+        free(v);
+        return sp_error_set(err, SP_E_NOMEM, "lexical: cannot create a lock");
+    }
     v->lx = lx;
     v->classes = calloc(n ? (size_t)n : 1, sizeof *v->classes);
     int rc = v->classes ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
@@ -264,7 +269,6 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
         if (!regions_path) sp_path_join(path, sizeof path, sp_data_dir(), "semantic/regions.json");
         else snprintf(path, sizeof path, "%s", regions_path);
         if (path[0]) rc = lex_regions_load(v, path, err);
-        if (!rc) rc = lex_regions_prepare(v, err);
     }
     if (rc) {
         sp_lex_vocab_free(v);

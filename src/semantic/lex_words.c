@@ -91,6 +91,8 @@ static const relation_phrase relations[] = {
     {{"next", "to"}, "next to"},             {{"close", "to"}, "near"},
     {{"near", "to"}, "near"},                {{"adjacent", "to"}, "next to"},
     {{"across", "from"}, "across from"},    {{"leading", "to"}, "to"},
+    {{"closest", "to"}, "near"},             {{"nearest", "to"}, "near"},
+    {{"out", "to"}, "to"},                   {{"out", "into"}, "to"},
     {{"near"}, "near"},   {{"nearby"}, "near"},   {{"beside"}, "beside"}, {{"besides"}, "beside"},
     {{"by"}, "by"},       {{"in"}, "in"},         {{"inside"}, "in"},     {{"within"}, "in"},
     {{"into"}, "in"},     {{"on"}, "on"},         {{"onto"}, "on"},       {{"upon"}, "on"},
@@ -158,7 +160,7 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
 int lex_is_generic_region(const char *w)
 {
     static const char *const words[] = {"area", "areas", "region", "zone", "section", "part",
-                                        "corner", "space", "room", "place", "somewhere", "spot",
+                                        "corner", "space", "room", "place", "somewhere", "spot", "station", "nook", "alcove",
                                         "side", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(w, words[i])) return 1;

@@ -4,6 +4,8 @@
 #ifndef SP_LEXICAL_H
 #define SP_LEXICAL_H
 
+#include <pthread.h>
+
 #include "semsplat/semantic.h"
 #include "wordnet.h"
 
@@ -196,7 +198,7 @@ typedef struct lex_region {
     char name[64];
     int n_members;
     char members[24][64];
-    sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
+    sp_lex_phrase *cache; /* its members in this vocabulary, resolved on first use */
 } lex_region;
 
 /* A name WordNet lacks or files under another sense ("shop vac", "wheelie bin", "trolley"),
@@ -218,22 +220,33 @@ struct sp_lex_vocab {
     char (*vocab_words)[LEX_WORD]; /* every class-name word: modifiers that discriminate */
     int n_regions;
     lex_region *regions;
+    pthread_mutex_t region_lock; /* guards the regions' caches, filled on first use */
 };
 
 int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
+/* The table region named stem, or "stem G" with G a generic area word ("utility" -> "utility
+ * room"), or NULL. */
+const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
-/* Resolves every table region's members once (r->cache). */
-int lex_regions_prepare(sp_lex_vocab *v, sp_error *err);
 /* The table region an NP's head stands for (itself or a synonym), or NULL. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
-/* The definition of a region name's room sense (first sense that is a room; for table entries
- * any room sense, else the first), or NULL when it names no room. */
+/* The definition of a region name's place sense (first sense that is a room, a functional area
+ * or a workplace; for table entries any such sense, else the first), or NULL when none. */
 const char *lex_region_definition(const lex_np *np, int table_entry);
-/* Members of a named region into ph, sorted (the cached ones for table regions). */
+/* Members of a named region into ph, sorted (table regions: resolved once, on first use). */
 int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *name,
                        const char *definition, sp_lex_phrase *ph, sp_error *err);
+/* The region of an activity: the classes that do what the words name ("cooking", "storage" ->
+ * "something to cook / store") raised in region (indexed by class); returns 1 when any. */
+int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
+/* The region of whom or what an area is for ("the children's section": "something for
+ * children", the high chair) raised in region (indexed by class); returns 1 when any. */
+int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
+/* Raises the classes named after the region's words ("kitchen counter" of the kitchen, "patient
+ * bed" of "the patient area") to 0.9 in ph (indexed by class); returns 1 when any. */
+int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph);
 /* Clears ph's matches to every class at score 0, indexed by class. */
 void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
 /* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */

@@ -40,6 +40,7 @@ static const seed seeds[] = {
     /* beyond the seeds: relations that pick one instance of several, and a named room */
     {"the chair near the window", {"dining_chair_3", "dining_chair_4"}, 0},
     {"the painting above the couch", {"painting_1"}, 0},
+    {"the table between the couch and the tv stand", {"coffee_table"}, 0}, /* both anchor it */
     {"the kitchen", {"refrigerator", "kitchen counter", "sink", "stove"}, 1},
 };
 #define N_SEEDS 10
