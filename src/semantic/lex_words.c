@@ -7,13 +7,44 @@
 
 #include "lexical.h"
 
+/* The ASCII letter a UTF-8 Latin-1 letter folds to ("cafe" for "café", "creme" for "crème"):
+ * WordNet's lemmas are ASCII, so an accented word would be split at its accent. Lead byte 0xC3,
+ * continuation 0x80..0xBF (U+00C0..U+00FF); 0 for signs and letters with no one-letter fold. */
+static char fold_latin1(unsigned char cont)
+{
+    static const char map[] = "aaaaaaaceeeeiiii"  /* U+00C0..CF (AE ligature as a) */
+                              "dnooooo\0ouuuuy\0s" /* U+00D0..DF (x sign, thorn: none) */
+                              "aaaaaaaceeeeiiii"  /* U+00E0..EF */
+                              "dnooooo\0ouuuuy\0y"; /* U+00F0..FF */
+    if (cont < 0x80 || cont > 0xBF) return 0;
+    return map[cont - 0x80];
+}
+
+/* A UTF-8 sequence at p that reads as one ASCII character: an accented Latin-1 letter, or a
+ * typographic apostrophe (U+2019, "fridge’s"). Returns its length in bytes (0: none) and the
+ * character in *out. */
+static int fold_utf8(const unsigned char *p, unsigned char *out)
+{
+    if (p[0] == 0xC3 && p[1]) {
+        char f = fold_latin1(p[1]);
+        if (f) { *out = (unsigned char)f; return 2; }
+    }
+    if (p[0] == 0xE2 && p[1] == 0x80 && (p[2] == 0x98 || p[2] == 0x99)) { *out = '\''; return 3; }
+    return 0;
+}
+
 void lex_tokenize(const char *text, lex_tokens *t)
 {
     t->n = 0;
     char cur[LEX_WORD];
     int len = 0;
     for (const char *p = text;; p++) {
-        unsigned char c = (unsigned char)*p;
+        unsigned char c = (unsigned char)*p, f;
+        int step = fold_utf8((const unsigned char *)p, &f);
+        if (step) {
+            c = f;
+            p += step - 1;
+        }
         int keep = isalnum(c) || ((c == '\'' || c == '-') && len > 0 && isalnum((unsigned char)p[1]));
         if (keep) {
             if (len + 1 < LEX_WORD) cur[len++] = (char)tolower(c);
