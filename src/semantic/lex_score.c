@@ -391,6 +391,26 @@ static int split_kind(const lex_np *np, const lex_class *c)
     return 1;
 }
 
+/* A name WordNet joins is also a kind of its last word ("machine" -> the washing machine, which
+ * WordNet files under home appliance): a query naming that word's sense itself (or a synonym)
+ * scores the class one level below it, as for a name WordNet lacks. Only the word itself: the
+ * word's own place in WordNet is not the class's ("cooler" is a refrigerator, the water cooler
+ * a device), so its hypernyms do not reach the class this way. */
+static void name_head_tax(const lex_np *np, const lex_class *c, float *base, sp_lex_class_match *m)
+{
+    const lex_np *h = &c->name_head;
+    for (int i = 0; i < np->n_senses; i++)
+        for (int j = 0; j < h->n_senses; j++) {
+            lex_tax t = lex_compare(&np->senses[i], &h->senses[j]);
+            if (t.kind != SP_LEX_SYNONYM) continue;
+            t = specialize(t, &np->senses[i], &h->senses[j], split_kind(np, c), 1);
+            if (t.score <= *base) continue;
+            *base = t.score;
+            m->kind = t.kind;
+            describe_tax(m, &t, &np->senses[i], &h->senses[j]);
+        }
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -413,6 +433,10 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
     }
+    /* A name WordNet joins is also a kind of its last word ("machine" -> the washing machine,
+     * which WordNet files under home appliance): the query against that word's senses, the
+     * class one level below them, as for a name WordNet lacks. */
+    if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
     /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
      * and the car, a wheeled vehicle), those whose own definition names the query's word come
      * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */

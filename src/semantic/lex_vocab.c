@@ -33,6 +33,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     if (!v) return;
     for (int i = 0; i < v->n; i++) {
         lex_np_free(&v->classes[i].np);
+        lex_np_free(&v->classes[i].name_head);
         lex_bag_free(&v->classes[i].bag);
     }
     free(v->classes);
@@ -120,6 +121,21 @@ static int add_alias_senses(const lex_db *lx, lex_np *np, const lex_tokens *read
     return 0;
 }
 
+/* The name's last word read alone, when WordNet joined the name into one collocation whose
+ * last word is a noun of its own ("washing machine", "punching bag", "exercise bike"): the
+ * scorer reads the class also as a kind of that word (one level below it). */
+static int name_head_prepare(const lex_db *lx, lex_class *c, const lex_tokens *raw, sp_error *err)
+{
+    if (raw->n < 2 || !strchr(c->np.head, '_') || c->np.n_mods > 0) return 0;
+    lex_tokens last;
+    last.n = 1;
+    snprintf(last.w[0], LEX_WORD, "%s", raw->w[raw->n - 1]);
+    int rc = lex_np_parse(lx, &last, 0, 1, 1, &c->name_head, err);
+    if (rc) return rc;
+    if (!strcmp(c->name_head.head, c->np.head)) lex_np_free(&c->name_head), memset(&c->name_head, 0, sizeof c->name_head);
+    return 0;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -166,6 +182,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
     }
+    if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
     for (int s = 0; s < c->np.n_senses && !rc; s++) {

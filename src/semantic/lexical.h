@@ -192,6 +192,9 @@ typedef struct lex_class {
     char tok[8][LEX_WORD]; /* base forms of its name's words */
     int n_part;
     char part[4][LEX_WORD]; /* parts of a modifier WordNet lacks ("overbed": over, bed) */
+    lex_np name_head; /* the last word of a name WordNet joins ("washing machine"), read alone:
+                       * an English compound is a kind of its last word, wherever WordNet files
+                       * it (its washer is home appliance, not machine); no senses otherwise */
 } lex_class;
 
 typedef struct lex_region {
