@@ -437,6 +437,24 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * which WordNet files under home appliance): the query against that word's senses, the
      * class one level below them, as for a name WordNet lacks. */
     if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
+    /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
+     * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
+     * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
+    if (has_head && np->n_mods == 0 && !np->n_desc && m->kind != SP_LEX_EXACT && c->mod_head.n_senses &&
+        base < LEX_HOLDS)
+        for (int i = 0; i < np->n_senses; i++)
+            for (int j = 0; j < c->mod_head.n_senses; j++) {
+                lex_tax t = lex_compare(&np->senses[i], &c->mod_head.senses[j]);
+                if (t.kind != SP_LEX_SYNONYM && t.kind != SP_LEX_HYPERNYM) continue;
+                if (LEX_HOLDS * t.score <= base) continue;
+                {
+                    base = LEX_HOLDS * t.score;
+                    m->kind = SP_LEX_MODIFIER;
+                    snprintf(m->query_sense, sizeof m->query_sense, "%s", np->senses[i].anc[0].name);
+                    snprintf(m->class_sense, sizeof m->class_sense, "%s", c->name);
+                    snprintf(m->path, sizeof m->path, "'%s' is what the %s holds", np->head, c->name);
+                }
+            }
     /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
      * and the car, a wheeled vehicle), those whose own definition names the query's word come
      * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */

@@ -34,6 +34,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     for (int i = 0; i < v->n; i++) {
         lex_np_free(&v->classes[i].np);
         lex_np_free(&v->classes[i].name_head);
+        lex_np_free(&v->classes[i].mod_head);
         lex_bag_free(&v->classes[i].bag);
     }
     free(v->classes);
@@ -136,6 +137,35 @@ static int name_head_prepare(const lex_db *lx, lex_class *c, const lex_tokens *r
     return 0;
 }
 
+/* The noun modifier next to the head of a name WordNet lacks ("dumbbell" of "dumbbell rack",
+ * "storage" of "storage shelf"), its physical senses that are no person, when the head is a
+ * holder (a container or a support in WordNet: rack, shelf, bin, case): a query naming it alone
+ * is what the class holds ("dumbbells" -> the dumbbell rack). */
+static int holder_sense(const lex_np *np)
+{
+    static const char *const holders[] = {"container", "support", "supporting structure", NULL};
+    for (int s = 0; s < np->n_senses; s++)
+        for (int a = 0; a < np->senses[s].n_anc; a++)
+            for (int h = 0; holders[h]; h++)
+                if (!strcmp(np->senses[s].anc[a].name, holders[h])) return 1;
+    return 0;
+}
+
+static int mod_head_prepare(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    if (!holder_sense(&c->np)) return 0; /* a screen is not what holds its projector */
+    lex_tokens one;
+    one.n = 1;
+    snprintf(one.w[0], LEX_WORD, "%s", c->np.mods[c->np.n_mods - 1]);
+    int rc = lex_np_parse(lx, &one, 0, 1, 1, &c->mod_head, err);
+    if (rc) return rc;
+    int k = 0;
+    for (int i = 0; i < c->mod_head.n_senses; i++)
+        if (!lex_sense_person(&c->mod_head.senses[i])) c->mod_head.senses[k++] = c->mod_head.senses[i];
+    c->mod_head.n_senses = k;
+    return 0;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -183,6 +213,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         }
     }
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
+    if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
     for (int s = 0; s < c->np.n_senses && !rc; s++) {

@@ -18,6 +18,7 @@
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
+#define LEX_HOLDS (LEX_DELTA * LEX_DELTA) /* the query names what a class's modifier names */
 #define LEX_TIE 0.001f   /* orders hypernym matches the taxonomy ties: no evidence, an order */
 /* A description ending in a preposition ("something to write ON") asks where or with what the
  * verb is done; a definition naming the class as what the verb acts on (a past participle,
@@ -195,6 +196,8 @@ typedef struct lex_class {
     lex_np name_head; /* the last word of a name WordNet joins ("washing machine"), read alone:
                        * an English compound is a kind of its last word, wherever WordNet files
                        * it (its washer is home appliance, not machine); no senses otherwise */
+    lex_np mod_head; /* the noun modifier next to the head of a name WordNet lacks, read alone
+                      * ("dumbbell" of "dumbbell rack"): what the thing is for or holds */
 } lex_class;
 
 typedef struct lex_region {
