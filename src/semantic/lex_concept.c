@@ -9,6 +9,7 @@
 #define PHYSICAL_ENTITY 1930u /* physical_entity.n.01 */
 #define PERSON 7846u /* person.n.01 */
 #define ARTIFACT 21939u /* artifact.n.01 */
+#define PROCESS 29677u /* process.n.06, physical process: radiation, waves, flows */
 #define MAX_HYPER 8
 
 static void name_of(const wn_synset *s, char *out, size_t cap)
@@ -92,6 +93,7 @@ int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_er
 int lex_sense_physical(const lex_sense *s) { return lex_anc_find(s, PHYSICAL_ENTITY) >= 0; }
 int lex_sense_person(const lex_sense *s) { return lex_anc_find(s, PERSON) >= 0; }
 int lex_sense_artifact(const lex_sense *s) { return lex_anc_find(s, ARTIFACT) >= 0; }
+int lex_sense_process(const lex_sense *s) { return lex_anc_find(s, PROCESS) >= 0; }
 
 void lex_path(const lex_sense *s, int a, char *out, size_t cap)
 {

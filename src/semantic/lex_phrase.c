@@ -106,7 +106,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             tmp->attested = i == 0 || i < tagged;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
-            if (no_person && lex_sense_person(tmp)) continue;
+            if (no_person && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
             np->senses[np->n_senses++] = *tmp;
         }
     }
@@ -190,7 +190,8 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
-     * "printer" the tradesman) when the name also names an artifact ("person" keeps its own). */
+     * "printer" the tradesman) and no physical process ("microwave" the radiation, its only
+     * attested sense) when the name also names an artifact ("person" keeps its own). */
     int no_person = 0;
     rc = 0;
     if (physical_only) {
