@@ -342,6 +342,32 @@ static void test_phase5_rules(const sp_lexicon *lx)
 
 /* Region and relation rules of l8 (issue 17): names the region table lacks, read through WordNet
  * and the table's own names; a vocabulary of general classes, not one of the tables' worlds. */
+/* Phase 7 (l9-lexical): accents and typographic apostrophes fold to ASCII; a joined class name
+ * is a kind of its last word; a holder is found by what its modifier names; a class name that
+ * names an artifact is no physical process. */
+static void test_phase7_rules(const sp_lexicon *lx)
+{
+    lex_tokens t;
+    lex_tokenize("Caf\xc3\xa9 cr\xc3\xa8me the fridge\xe2\x80\x99s door", &t);
+    CHECK(t.n == 5);
+    if (t.n == 5) {
+        CHECK(!strcmp(t.w[0], "cafe"));
+        CHECK(!strcmp(t.w[1], "creme"));
+        CHECK(!strcmp(t.w[3], "fridge"));
+    }
+    const char *names[] = {"washing machine", "dumbbell rack", "projector screen", "microwave", "chair"};
+    sp_lex_vocab *v = NULL;
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, names, 5, &v, &res)) return;
+    CHECK(!strcmp(found_class(v, "machine", res), "washing machine"));
+    CHECK(!strcmp(found_class(v, "dumbbells", res), "dumbbell rack"));
+    CHECK(!strcmp(found_class(v, "microwave oven", res), "microwave"));
+    CHECK(!strcmp(found_class(v, "projector", res), "")); /* a screen holds no projector */
+    CHECK(!strcmp(found_class(v, "kettlebell", res), ""));
+    free(res);
+    sp_lex_vocab_free(v);
+}
+
 static void test_region_rules(const sp_lexicon *lx)
 {
     const char *names[] = {"stove", "bed", "sofa", "printer", "car", "bicycle", "water heater", "chest freezer",
@@ -547,6 +573,7 @@ int main(int argc, char **argv)
     test_phase5_rules(lx);
     test_aliases(lx);
     test_region_rules(lx);
+    test_phase7_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
      * were read), so its floor only guards against regressions (82/96 when it was set); the ward:
@@ -554,13 +581,16 @@ int main(int argc, char **argv)
     /* phase 6 (aliases, docs/DESIGN.md changes 24-29) read all five tables' misses: the ward's
      * floor rises to 0.8 (100/121 = 0.826, 29/32 when set) and the garage gets one (113/139 =
      * 0.813, 28/30 when set); regression floors, not bars */
-    const double floor_p1[] = {0.9, 0.9, 0.85, 0.8, 0.8}, floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9};
+    /* phase 7 (l9-lexical) read the cafe's and the basement's misses too: they get regression
+     * floors (cafe 144/187 = 0.770 and 32/35, basement 164/195 = 0.841 and 27/34 when set) */
+    const double floor_p1[] = {0.9, 0.9, 0.85, 0.8, 0.8, 0.75, 0.8},
+                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.9, 0.75};
     for (int w = 0; w < 7; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= 5) continue; /* the cafe and the basement: blind tables, printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
+        if (w >= 5) continue; /* the cafe's and basement's attribute misses (14/16) were not studied */
         /* the ward's "tall IV stand": "tall" occurs in a definition the class's head reaches, so
          * it counts as described, not ignored (7/8 when this was written) */
         /* and the garage's "white freezer": a refrigerator is "white goods" (10/11) */
