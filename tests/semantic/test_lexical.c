@@ -24,7 +24,8 @@
  * (phrases_cafe.json, data/worlds/cafe.world: a coffee shop) and the basement
  * (phrases_basement.json, data/worlds/basement.world: a laundry room, a utility and storage corner
  * and a home gym), written by helpers who had not read or run the encoder, never read by those
- * who wrote phase 6; printed with their misses, no bar (first runs: docs/DESIGN.md). Run with an
+ * who wrote phase 6 (first runs: docs/DESIGN.md); since phase 7 (l9-lexical) they are
+ * development data too, with regression floors. Run with an
  * argument (house | bookstore | office | ward | garage | cafe | basement) to print every phrase of
  * one table, and a query after it to print its explanation. */
 #include <cjson/cJSON.h>
