@@ -31,6 +31,8 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.occupied_evidence = 0.5f;
     o.pass_veto = 1.0f;
     o.veto_beside = 1;
+    o.lowest_needs_hit = 1;
+    o.hit_blocks_free = 1;
     o.prob_hit = 0.7f;
     o.prob_miss = 0.4f;
     o.occupied_prob = 0.5f;
@@ -278,12 +280,18 @@ static inline float logit(float p) { return logf(p / (1.0f - p)); }
  * surface may be theirs: surface points are good to a cell; measured, counting them also for
  * voxels no scan hit turns the cells beside walls, where footprints spill over, occupied). (Surface points alone are
  * weak evidence on a trained splat: its rendered surfaces stand centimetres off the true ones.) */
-static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, long k)
+static int voxel_vetoed(const sp_costmap_opts *o, const nav_carve_out *co, long k)
+{
+    int H = co->hit_scans[k], M = co->miss_scans[k];
+    return M - (o->veto_beside && H > 0 ? co->near_scans[k] : 0) > o->pass_veto * (1.0f + H);
+}
+
+static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, int slice, long k)
 {
     int H = co->hit_scans[k], M = co->miss_scans[k];
     if (log_free)
-        return log_free[k] <= logf(1.0f - o->occupied_evidence) &&
-               M - (o->veto_beside && H > 0 ? co->near_scans[k] : 0) <= o->pass_veto * (1.0f + H);
+        return log_free[k] <= logf(1.0f - o->occupied_evidence) && !voxel_vetoed(o, co, k) &&
+               (slice > 0 || H > 0 || !o->lowest_needs_hit);
     float l_hit = logit(o->prob_hit), l_miss = logit(o->prob_miss), l_occ = logit(o->occupied_prob);
     int need = H + M < o->min_hit_scans ? H + M : o->min_hit_scans;
     return H > 0 && H >= need && (float)H * l_hit + (float)M * l_miss >= l_occ;
@@ -292,7 +300,49 @@ static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, con
 /* A column is occupied when one of its voxels is; free when none is and every one of its voxels
  * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
  * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
- * make the table free; unknown otherwise. log_free: the footprint evidence, or NULL (scans). */
+ * make the table free; unknown otherwise. With hit_blocks_free (footprints), a column where some
+ * scan's surface ended in a voxel that the other scans' rays did not veto is not free either:
+ * the views rendered something there, too faint in the footprints to be an obstacle (a trained
+ * splat's table top of a few large translucent Gaussians), and never seen past. log_free: the
+ * footprint evidence, or NULL (scans). */
+/* hit_blocks_free: a free column where some scan's surface ended in the band, or beside one (the
+ * 3 x 3 around: rendered surface points stand about a cell off, so a table's edge lies beside
+ * the last cell hit), becomes unknown, unless the capture stood there. Counted are the voxels
+ * hit by hit_blocks_free scans that the veto did not clear, in columns that are not occupied
+ * already (an obstacle's own edge is its footprints'), from the first slice wholly above the
+ * floor tolerance (a hazy floor's rendered surface spreads past the tolerance into the slice it
+ * ends in). surface [cells] is scratch. */
+static void block_surfaces(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const uint8_t *stood,
+                           uint8_t *surface)
+{
+    const nav_slices *sl = &co->sl;
+    int v0 = 0;
+    while (v0 < sl->n - 1 && sl->z0 + v0 * sl->dz < cm->floor_z + o->floor_tolerance_m - 1e-4f) v0++;
+    for (int y = 0; y < cm->ny; y++)
+        for (int x = 0; x < cm->nx; x++) {
+            long i = nav_idx(cm, x, y);
+            int beside = 0;
+            for (int dy = -1; dy <= 1 && !beside; dy++)
+                for (int dx = -1; dx <= 1 && !beside; dx++)
+                    beside = nav_inside(cm, x + dx, y + dy) && cm->occ[nav_idx(cm, x + dx, y + dy)] == SP_CELL_OCCUPIED;
+            surface[i] = 0;
+            for (int v = v0; v < sl->n && !surface[i] && cm->occ[i] != SP_CELL_OCCUPIED; v++) {
+                long k = v * sl->cells + i;
+                surface[i] = co->hit_scans[k] >= o->hit_blocks_free && !voxel_vetoed(o, co, k) ? (beside ? 2 : 1) : 0;
+            }
+        }
+    for (int y = 0; y < cm->ny; y++)
+        for (int x = 0; x < cm->nx; x++) {
+            long i = nav_idx(cm, x, y);
+            if (cm->occ[i] != SP_CELL_FREE || (stood && stood[i])) continue;
+            int near = surface[i] != 0;
+            for (int dy = -1; dy <= 1 && !near; dy++)
+                for (int dx = -1; dx <= 1 && !near; dx++)
+                    near = nav_inside(cm, x + dx, y + dy) && surface[nav_idx(cm, x + dx, y + dy)] == 1;
+            if (near) cm->occ[i] = SP_CELL_UNKNOWN;
+        }
+}
+
 static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free,
                      const uint8_t *stood)
 {
@@ -304,7 +354,7 @@ static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_o
             long k = v * sl->cells + i;
             seen += (unsigned)(co->hit_scans[k] + co->miss_scans[k]);
             observed += co->hit_scans[k] + co->miss_scans[k] > 0;
-            occ = voxel_occupied(o, co, log_free, k);
+            occ = voxel_occupied(o, co, log_free, v, k);
         }
         int floor = co->floor_scans[i] > 0;
         int free_ok = (observed == sl->n && (!o->free_needs_floor || floor)) || (o->free_from_floor && floor && observed);
@@ -526,8 +576,10 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     cm->seen = calloc(n, sizeof(uint16_t));
     uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
     float *log_free = o.occupancy == SP_OCCUPANCY_FOOTPRINTS ? calloc(nv, sizeof(float)) : NULL;
+    int blocks = log_free && o.hit_blocks_free > 0;
+    uint8_t *surface = blocks ? malloc(n) : NULL;
     if (!co.hit_scans || !co.miss_scans || !co.near_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen ||
-        (o.cameras_stand && !stood) || (o.occupancy == SP_OCCUPANCY_FOOTPRINTS && !log_free)) {
+        (o.cameras_stand && !stood) || (o.occupancy == SP_OCCUPANCY_FOOTPRINTS && !log_free) || (blocks && !surface)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells x %d slices",
                           cm->nx, cm->ny, co.sl.n);
         goto done;
@@ -543,6 +595,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     }
     if (stood) mark_stands(cm, cams, n_cams, o.robot_radius_m, stood);
     classify(cm, &o, &co, log_free, stood);
+    if (surface) block_surfaces(cm, &o, &co, stood, surface);
     if (despeckle(cm, o.despeckle_cells) || fill_pockets(cm, o.fill_max_area_m2)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
         goto done;
@@ -557,7 +610,7 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     sp_logf(log, SP_LOG_DEBUG, "costmap: CPU time: carving %.0f ms, fusion and inflation %.0f ms",
             1e3 * (t2 - t1), 1e3 * (nav_cpu_now() - t2));
 done:
-    free(co.hit_scans), free(co.miss_scans), free(co.near_scans), free(co.floor_scans), free(stood), free(log_free);
+    free(co.hit_scans), free(co.miss_scans), free(co.near_scans), free(co.floor_scans), free(stood), free(log_free), free(surface);
     if (rc) sp_costmap_free(cm);
     return rc;
 }
