@@ -300,18 +300,17 @@ static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, con
 /* A column is occupied when one of its voxels is; free when none is and every one of its voxels
  * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
  * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
- * make the table free; unknown otherwise. With hit_blocks_free (footprints), a column where some
- * scan's surface ended in a voxel that the other scans' rays did not veto is not free either:
- * the views rendered something there, too faint in the footprints to be an obstacle (a trained
- * splat's table top of a few large translucent Gaussians), and never seen past. log_free: the
- * footprint evidence, or NULL (scans). */
-/* hit_blocks_free: a free column where some scan's surface ended in the band, or beside one (the
- * 3 x 3 around: rendered surface points stand about a cell off, so a table's edge lies beside
- * the last cell hit), becomes unknown, unless the capture stood there. Counted are the voxels
- * hit by hit_blocks_free scans that the veto did not clear, in columns that are not occupied
- * already (an obstacle's own edge is its footprints'), from the first slice wholly above the
- * floor tolerance (a hazy floor's rendered surface spreads past the tolerance into the slice it
- * ends in). surface [cells] is scratch. */
+ * make the table free; unknown otherwise (block_surfaces then takes more free columns back).
+ * log_free: the footprint evidence, or NULL (scans). */
+/* hit_blocks_free: a free column where some scan's surface ended in the band becomes unknown,
+ * unless the capture stood there, and so do the free columns beside it (the 3 x 3 around: a
+ * rendered surface point stands about a cell off, so a table's edge lies beside the last cell
+ * hit) when it is not itself beside an obstacle (there the surface points are the obstacle's, a
+ * cell off; measured, growing those too takes the ideal house from 95.06 to 94.86 %). Counted
+ * are the voxels hit by hit_blocks_free scans that the veto did not clear, in columns not
+ * occupied already, from the first slice wholly above the floor tolerance (a hazy floor's
+ * rendered surface spreads past the tolerance into the slice it ends in). surface [cells] is
+ * scratch: 1 a surface column, 2 one beside an obstacle. */
 static void block_surfaces(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const uint8_t *stood,
                            uint8_t *surface)
 {
@@ -321,15 +320,15 @@ static void block_surfaces(sp_costmap *cm, const sp_costmap_opts *o, const nav_c
     for (int y = 0; y < cm->ny; y++)
         for (int x = 0; x < cm->nx; x++) {
             long i = nav_idx(cm, x, y);
-            int beside = 0;
-            for (int dy = -1; dy <= 1 && !beside; dy++)
-                for (int dx = -1; dx <= 1 && !beside; dx++)
-                    beside = nav_inside(cm, x + dx, y + dy) && cm->occ[nav_idx(cm, x + dx, y + dy)] == SP_CELL_OCCUPIED;
             surface[i] = 0;
             for (int v = v0; v < sl->n && !surface[i] && cm->occ[i] != SP_CELL_OCCUPIED; v++) {
                 long k = v * sl->cells + i;
-                surface[i] = co->hit_scans[k] >= o->hit_blocks_free && !voxel_vetoed(o, co, k) ? (beside ? 2 : 1) : 0;
+                surface[i] = co->hit_scans[k] >= o->hit_blocks_free && !voxel_vetoed(o, co, k);
             }
+            for (int dy = -1; dy <= 1 && surface[i] == 1; dy++)
+                for (int dx = -1; dx <= 1 && surface[i] == 1; dx++)
+                    if (nav_inside(cm, x + dx, y + dy) && cm->occ[nav_idx(cm, x + dx, y + dy)] == SP_CELL_OCCUPIED)
+                        surface[i] = 2;
         }
     for (int y = 0; y < cm->ny; y++)
         for (int x = 0; x < cm->nx; x++) {
