@@ -401,10 +401,11 @@ typedef struct sp_demo_opts {
     int downscale;           /* training image downscale (0: 1) */
     int skip_missing;        /* synth: render without missing assets */
     int walk_only;           /* synth's walk-only plan (no view aimed at a ground-truth object) */
-    int plan;                /* SP_DEMO_PLAN_*: AUTO = walk_only ? WALK : on a GPU MIXED (spins and
-                              * arcs at objects), on the CPU DRIVE (one drive through the rooms:
-                              * with 48 views, 47 standpoints instead of 4 spins, so the costmap
-                              * sees the rooms from inside them; measured in DESIGN.md) */
+    int plan;                /* SP_DEMO_PLAN_*: AUTO = walk_only ? WALK : MIXED (spins and arcs at
+                              * objects); DRIVE: one robot drive through the rooms (the CPU house
+                              * demo's 48 views: 47 standpoints instead of 4 spins, a better map and
+                              * better queries; a small room's 24 views: nothing matched; see
+                              * DESIGN.md's nav section) */
     int reuse;               /* skip stages whose outputs exist in out_dir */
     float match_radius_m;    /* scoring (0: 0.5) */
     const char *model;       /* an existing model folder: no pipeline, only the video */
