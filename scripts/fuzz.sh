@@ -1,10 +1,12 @@
 #!/bin/sh
 # Runs the libFuzzer harnesses (tests/fuzz/fuzz_*.c) for a time or an execution count.
 #
-#   scripts/fuzz.sh [-t SECONDS | -n RUNS] [-j JOBS] [-B BUILD] [-o OUT] [--merge] [--no-build] [HARNESS...]
+#   scripts/fuzz.sh [-t SECONDS | -n RUNS] [-s SEED] [-j JOBS] [-B BUILD] [-o OUT] [--merge] [--no-build] [HARNESS...]
 #
 #   -t SECONDS   run each harness this long (default 10)
 #   -n RUNS      stop a harness after this many executions (with -t: whichever comes first)
+#   -s SEED      libFuzzer's random seed (default 0: a new one each run); CI passes 1 so that a
+#                fault it finds is found again by the same command here
 #   -j JOBS      harnesses run at once (default 1; the machine is shared: 2 at most)
 #   -B BUILD     build folder (default build-fuzz: CC=clang, -DSP_FUZZ=ON, configured here)
 #   -o OUT       output folder (default /tmp/semsplat-fuzz): OUT/corpus/<h> new inputs (the
@@ -26,6 +28,7 @@ ROOT=$(pwd)
 SECONDS_EACH=10
 RUNS=
 JOBS=1
+SEED=0
 BUILD=build-fuzz
 OUT=/tmp/semsplat-fuzz
 MERGE=0
@@ -35,12 +38,13 @@ while [ $# -gt 0 ]; do
     case "$1" in
     -t) SECONDS_EACH=$2; TIME_SET=1; shift 2 ;;
     -n) RUNS=$2; [ "$TIME_SET" = 1 ] || SECONDS_EACH=2147483; shift 2 ;;
+    -s) SEED=$2; shift 2 ;;
     -j) JOBS=$2; shift 2 ;;
     -B) BUILD=$2; shift 2 ;;
     -o) OUT=$2; shift 2 ;;
     --merge) MERGE=1; shift ;;
     --no-build) DO_BUILD=0; shift ;;
-    -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) break ;;
     esac
@@ -83,7 +87,7 @@ run_one() {
     log="$OUT/logs/$h.log"
     status=0
     # -timeout: an input taking 10 s is a hang; -rss_limit_mb: 2 GB is a memory blow-up.
-    nice -n 10 "$bin" $limit -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    nice -n 10 "$bin" $limit -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -seed="$SEED" \
         ${dict:+-dict=$dict} -artifact_prefix="$OUT/crashes/$h/" \
         "$OUT/corpus/$h" "tests/fuzz/corpus/$h" >"$log" 2>&1 || status=$?
     execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)

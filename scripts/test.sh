@@ -5,7 +5,9 @@
 #      no GPU, and the GPU tests skip either way), less five house-scale tests and half the
 #      bad-input table unless SP_ASAN_FULL=1 (CI time: docs/robustness.md);
 #   3. build-fuzz/: every libFuzzer harness (tests/fuzz/) for SP_FUZZ_SECONDS (default 5) on its
-#      corpus, two at a time (scripts/fuzz.sh; a crash, hang or leak fails CI).
+#      corpus, two at a time, libFuzzer seed SP_FUZZ_SEED (default 1, so a fault CI finds is found
+#      again by `scripts/fuzz.sh -s 1 -t 5 HARNESS`; 0 = random) (scripts/fuzz.sh; a crash, hang or
+#      leak fails CI).
 # Extra arguments go to both ctest runs. SP_SKIP_SANITIZE=1 / SP_SKIP_FUZZ=1 leave out 2 / 3.
 # Each stage's wall time is printed as "test.sh: <stage> <seconds> s" (CI cost).
 set -e
@@ -33,6 +35,6 @@ if [ "${SP_SKIP_SANITIZE:-0}" != 1 ]; then
 fi
 if [ "${SP_FUZZ_SECONDS:-5}" -gt 0 ] && [ "${SP_SKIP_FUZZ:-0}" != 1 ]; then
     rm -rf build-fuzz/ci
-    ./scripts/fuzz.sh -t "${SP_FUZZ_SECONDS:-5}" -j 2 -o build-fuzz/ci
+    ./scripts/fuzz.sh -t "${SP_FUZZ_SECONDS:-5}" -s "${SP_FUZZ_SEED:-1}" -j 2 -o build-fuzz/ci
     stage fuzz
 fi

@@ -254,6 +254,10 @@ int sp_json_parse(const char *text, size_t size, const char *name, struct cJSON 
 /* 0 and *out when v is a number holding an integer in [lo, hi] (|lo|, |hi| < 2^53), else -1.
  * The one way to read an integer field: a plain (int)valuedouble is undefined for 1e300. */
 int sp_json_int(const struct cJSON *v, long lo, long hi, long *out);
+/* A number node that reads back bit for bit (the shortest of %.15g..%.17g that does; cJSON's own
+ * printing keeps 15 digits when they are within an epsilon, which can move the last bit).
+ * NULL when d is not finite or memory runs out. */
+struct cJSON *sp_json_number_exact(double d);
 /* Pretty-prints to path atomically. */
 int sp_json_write_file(const char *path, const struct cJSON *json, sp_error *err);
 

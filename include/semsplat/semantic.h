@@ -447,6 +447,11 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * closed compounds WordNet lacks are split, "nightstand" = "night" + "stand"), the modifiers
  * before it, and description words after a clause marker ("something TO sit on", "a seat FOR
  * two", "WHAT tells the time").
+ * Names WordNet lacks or files under another sense ("shop vac", "telly", "trolley", "hob") are
+ * read through an alias table (data/semantic/aliases.json, extendable by an aliases.json beside a
+ * region table passed as regions_path): a query is also matched with each alias replaced by its
+ * WordNet lemmas (up to three readings) and every class keeps its best reading; a class name that
+ * is wholly an alias, or whose head WordNet lacks, is read through its first lemma.
  * Per class c, the confidence in 0..1 is, from the head h (all its senses; a word whose senses
  * are all taxonomic groups, "ficus", also its members' senses) and the class's head (its
  * physical senses that the tagged corpora attest, persons and named individuals (WordNet
@@ -509,7 +514,9 @@ void sp_lexicon_free(sp_lexicon *lx);
 
 /* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES; each index keeps its name) against lx,
  * which must outlive the vocabulary. regions_path: a region table (JSON object: region name ->
- * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none). Resolves the
+ * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none); the alias
+ * table sp_data_dir()/semantic/aliases.json is always read, and an aliases.json beside a given
+ * regions_path adds its names. Resolves the
  * table's regions once (house, 25 classes: about 60 ms). */
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
                         int n, const char *regions_path, sp_error *err);

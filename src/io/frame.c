@@ -45,7 +45,15 @@ int sp_frame_check(const sp_frame *f, const char *what, sp_error *err)
                                 i / 4, i % 4);
     if (M[12] != 0 || M[13] != 0 || M[14] != 0 || M[15] != 1)
         return sp_error_set(err, SP_E_FORMAT, "%s: world_from_model's last row is not 0 0 0 1", what);
+    /* Scenes are kept in single precision: a translation or scale a float cannot carry (or that
+     * is no indoor scene: 1000 km away) would turn positions into inf later, silently. */
+    for (int r = 0; r < 3; r++)
+        if (fabs(M[4 * r + 3]) > 1e6)
+            return sp_error_set(err, SP_E_FORMAT, "%s: world_from_model's translation %g (row %d) is more "
+                                "than 1000 km", what, M[4 * r + 3], r);
     double s = sp_frame_scale(f);
+    if (s > 0 && (s < 1e-6 || s > 1e6))
+        return sp_error_set(err, SP_E_FORMAT, "%s: world_from_model's scale %g is outside 1e-6..1e6", what, s);
     if (!(s > 0))
         return sp_error_set(err, SP_E_FORMAT, "%s: world_from_model has determinant <= 0 (a "
                             "reflection or a collapse, not a similarity)", what);
@@ -142,8 +150,11 @@ int sp_frame_write_fit(const char *path, const sp_frame *f, const char *fit_json
     cJSON_AddStringToObject(o, "source", f->source);
     cJSON_AddStringToObject(o, "frame", sp_frame_name(f));
     cJSON *m = cJSON_AddArrayToObject(o, "world_from_model");
-    for (int r = 0; r < 4; r++)
-        cJSON_AddItemToArray(m, cJSON_CreateDoubleArray(f->world_from_model + 4 * r, 4));
+    for (int r = 0; r < 4; r++) { /* exact numbers: a frame read and written again is the same frame */
+        cJSON *row = cJSON_CreateArray();
+        for (int c = 0; c < 4; c++) cJSON_AddItemToArray(row, sp_json_number_exact(f->world_from_model[4 * r + c]));
+        cJSON_AddItemToArray(m, row);
+    }
     cJSON_AddStringToObject(o, "up", f->up);
     cJSON_AddStringToObject(o, "units", f->units);
     if (f->residual_m >= 0) cJSON_AddNumberToObject(o, "residual_m", f->residual_m);

@@ -77,6 +77,17 @@ int sp_json_int(const struct cJSON *v, long lo, long hi, long *out)
     return 0;
 }
 
+struct cJSON *sp_json_number_exact(double d)
+{
+    if (!isfinite(d)) return NULL;
+    char buf[40];
+    for (int digits = 15; digits <= 17; digits++) {
+        snprintf(buf, sizeof buf, "%.*g", digits, d);
+        if (strtod(buf, NULL) == d) break;
+    }
+    return cJSON_CreateRaw(buf);
+}
+
 int sp_json_write_file(const char *path, const struct cJSON *json, sp_error *err)
 {
     char *text = cJSON_Print(json);

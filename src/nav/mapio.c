@@ -187,6 +187,18 @@ static int parse_yaml(const char *path, char *text, map_yaml *m, sp_error *err)
             return sp_error_set(err, SP_E_FORMAT, "%s: the required key '%s' is missing", path, names[k]);
     if (!(m->resolution > 0))
         return sp_error_set(err, SP_E_FORMAT, "%s: resolution %g is not positive", path, m->resolution);
+    /* The grid is kept in single precision: a cell size or an origin that a float cannot hold
+     * (or that is no indoor map: the origin 1000 km away) is refused, not rounded to 0 or inf. */
+    if (m->resolution < 1e-6 || m->resolution > 1e3)
+        return sp_error_set(err, SP_E_FORMAT, "%s: resolution %g m per cell is outside 1e-6..1e3", path, m->resolution);
+    if (fabs(m->origin[0]) > 1e6 || fabs(m->origin[1]) > 1e6)
+        return sp_error_set(err, SP_E_FORMAT, "%s: origin [%g, %g] is more than 1000 km from the frame's origin",
+                            path, m->origin[0], m->origin[1]);
+    /* map_server's meaning needs 0 <= free_thresh < occupied_thresh <= 1 (scale mode divides by
+     * their difference: equal thresholds made every cell between them NaN). */
+    if (!(m->free_thresh >= 0 && m->free_thresh < m->occupied_thresh && m->occupied_thresh <= 1))
+        return sp_error_set(err, SP_E_FORMAT, "%s: thresholds free %g, occupied %g: need 0 <= free_thresh < "
+                            "occupied_thresh <= 1", path, m->free_thresh, m->occupied_thresh);
     if (fabs(m->origin[2]) > 1e-6)
         return sp_error_set(err, SP_E_UNSUPPORTED, "%s: origin yaw %g: rotated maps are not supported "
                             "(the grid is axis-aligned in the world frame)", path, m->origin[2]);
@@ -218,6 +230,13 @@ static int read_pgm(const char *path, const char *data, size_t size, sp_image *i
         return sp_error_set(err, SP_E_FORMAT, "%s: PGM %ldx%ld maxval %ld out of range", path, v[0], v[1], v[2]);
     int bytes = v[2] > 255 ? 2 : 1;
     size_t n = (size_t)v[0] * v[1];
+    /* The file must hold every pixel before anything is allocated: a 20-byte header claiming
+     * 53235 x 53235 is refused as truncated, not answered with a 2.8 GB allocation. Binary:
+     * one whitespace byte, then n * bytes; ASCII: each value after at least one separator. */
+    size_t need = ascii ? 2 * n : 1 + n * bytes, have = size - p;
+    if (have < need)
+        return sp_error_set(err, SP_E_FORMAT, "%s: PGM truncated: %zu bytes after the header for %ldx%ld pixels",
+                            path, have, v[0], v[1]);
     memset(img, 0, sizeof *img);
     img->width = (int)v[0], img->height = (int)v[1], img->channels = 1;
     img->bit_depth = bytes == 2 ? 16 : 8;

@@ -198,6 +198,20 @@ static int past_form(const char *w, const char *base)
     return !(n > 1 && w[n - 1] == 's');
 }
 
+int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err)
+{
+    lex_tokens t;
+    lex_tokenize(lemmas, &t);
+    int src = bag_source(b, source, err);
+    if (src < 0) return src;
+    for (int i = 0; i < t.n; i++) {
+        if (strlen(t.w[i]) < 2 || lex_word_class_of(t.w[i]) != LW_CONTENT) continue;
+        int rc = bag_put(b, t.w[i], weight, src, 0, err);
+        if (rc) return rc;
+    }
+    return 0;
+}
+
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
                      const char *source, sp_error *err)
 {

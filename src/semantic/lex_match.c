@@ -162,15 +162,13 @@ static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_erro
     return verb > 0 && noun == 0;
 }
 
-int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
+int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
+                      sp_lex_result *res, sp_error *err)
 {
-    if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
     memset(res, 0, sizeof *res);
     snprintf(res->text, sizeof res->text, "%s", text);
-    lex_tokens raw, t;
-    lex_tokenize(text, &raw);
-    if (raw.n == 0) return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);
-    int rc = lex_merge_collocations(v->lx, &raw, &t, err);
+    lex_tokens t;
+    int rc = lex_merge_collocations(v->lx, raw, &t, err);
     if (rc) return rc;
     sp_lex_result *trial = malloc(sizeof *trial);
     if (!trial) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");

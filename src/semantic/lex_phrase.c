@@ -30,6 +30,8 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
                 /* a collocation may end in a partitive ("tv set") or in a function word that is
                  * also a noun ("trash can", "watering can"): WordNet's entry decides */
                 if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) continue;
+                /* "clean up" is a verb and its particle, not the noun "cleanup" */
+                if (lex_is_particle(in->w[i + k - 1])) continue;
                 char joined[4 * LEX_WORD];
                 size_t o = 0;
                 for (int j = 0; j < k; j++)
@@ -47,6 +49,15 @@ int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *o
         if (took) {
             snprintf(out->w[out->n++], LEX_WORD, "%s", base);
             i += took;
+        } else if (out->n > 0 && (!strcmp(in->w[i], "unit") || !strcmp(in->w[i], "units"))) {
+            /* "unit" after a word WordNet has no noun for names that thing as one piece: a
+             * "shelving unit" is shelving (WordNet's unit: "an assemblage of parts that is
+             * regarded as a single entity"); after a noun it stays ("sink unit") */
+            int noun = lex_is_pos(lx, WN_NOUN, out->w[out->n - 1], err);
+            if (noun < 0) return noun;
+            if (noun || lex_word_class_of(out->w[out->n - 1]) != LW_CONTENT)
+                snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[i]);
+            i++;
         } else {
             snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[i]);
             i++;
@@ -210,6 +221,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
     for (int k = from; k < to; k++) {
         const char *w = t->w[k];
         int cls = lex_word_class_of(w);
+        /* an auxiliary that ends the phrase is the noun when WordNet has one ("a can", "the
+         * jerry can": no verb follows it) */
+        if (cls == LW_FUNCTION && k == to - 1 && !lex_is_particle(w)) {
+            int noun = lex_is_pos(lx, WN_NOUN, w, err), verb = lex_is_pos(lx, WN_VERB, w, err);
+            if (noun < 0 || verb < 0) return noun < 0 ? noun : verb;
+            if (noun && verb) cls = LW_CONTENT;
+        }
         if (cls == LW_FUNCTION) continue;
         if (cls == LW_PARTITIVE && k + 1 < to && !strcmp(t->w[k + 1], "of")) {
             k++;
@@ -227,7 +245,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
             int nb = lex_bases(lx, WN_NOUN, w, b, err);
             if (nb < 0) return nb;
             int where = lex_is_generic_region(w) || (nb > 0 && lex_is_generic_region(b[0]));
-            if (cls == LW_CONTENT && !where && np->n_desc < 16) snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", w);
+            if (cls != LW_CONTENT || where) continue;
+            /* a description is matched word by word against definitions, which hold words, not
+             * collocations: "keep FROZEN FOOD" is frozen + food ("in which food is frozen") */
+            char parts[LEX_WORD];
+            snprintf(parts, sizeof parts, "%s", w);
+            for (char *save = NULL, *p = strtok_r(parts, "_", &save); p && np->n_desc < 16; p = strtok_r(NULL, "_", &save))
+                snprintf(np->desc[np->n_desc++], LEX_WORD, "%s", p);
             continue;
         }
         if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;

@@ -30,6 +30,49 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
+/* Adds the single-word lemmas of synset s at f (lower case); heads: and the last word of the
+ * others ("low_temperature" -> temperature). */
+static void exp_add_words(expansion *e, const wn_synset *s, float f, int heads)
+{
+    for (int k = 0; k < s->n_words; k++) {
+        char w[WN_LEMMA_MAX];
+        snprintf(w, sizeof w, "%s", s->words[k]);
+        for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
+        const char *last = strrchr(w, '_');
+        if (!last) exp_add(e, w, f);
+        else if (heads) exp_add(e, last + 1, f);
+    }
+}
+
+/* Adds the lemmas of synset id at f, multi-word ones by their head. */
+static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, id, &s, err);
+    if (rc) return rc;
+    exp_add_words(e, &s, f, 1);
+    wn_synset_free(&s);
+    return 0;
+}
+
+/* An adjective's commonest sense by the nouns WordNet derives from it ("+": hot -> hotness, heat,
+ * high temperature: "hot water" meets "heated water"; cold -> coldness, low temperature), one weak
+ * step like a synonym (LEX_SYN). */
+static int expand_adjective(const lex_db *lx, const char *base, expansion *e, sp_error *err)
+{
+    uint32_t off;
+    int n = wn_lookup(lx->db, WN_ADJ, base, &off, 1, NULL, err);
+    if (n <= 0) return n;
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_ADJ}, &s, err);
+    if (rc) return rc;
+    for (int k = 0; !rc && k < s.n_pointers; k++)
+        if (!strcmp(s.pointers[k].symbol, "+") && s.pointers[k].target.pos == WN_NOUN)
+            rc = exp_add_synset(lx, s.pointers[k].target, e, LEX_SYN, err);
+    wn_synset_free(&s);
+    return rc;
+}
+
 static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *err)
 {
     e->n = 0;
@@ -39,7 +82,12 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         int nb = lex_bases(lx, (wn_pos)p, word, b, err);
         if (nb < 0) return nb;
         for (int k = 0; k < nb; k++) exp_add(e, b[k], 1.0f);
-        if (nb == 0 || p == WN_ADJ) continue;
+        if (nb == 0) continue;
+        if (p == WN_ADJ) {
+            int rc = expand_adjective(lx, b[0], e, err);
+            if (rc) return rc;
+            continue;
+        }
         uint32_t off;
         int n = wn_lookup(lx->db, (wn_pos)p, b[0], &off, 1, NULL, err);
         if (n < 0) return n;
@@ -48,12 +96,7 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         wn_id id = {off, (uint8_t)p};
         int rc = wn_read(lx->db, id, &s, err);
         if (rc) return rc;
-        for (int k = 0; k < s.n_words; k++) {
-            char w[WN_LEMMA_MAX];
-            snprintf(w, sizeof w, "%s", s.words[k]);
-            for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
-            if (!strchr(w, '_')) exp_add(e, w, LEX_SYN);
-        }
+        exp_add_words(e, &s, LEX_SYN, 0);
         /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
          * typewriter, store -> storage), the same one weak step */
         for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
@@ -369,6 +412,15 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+    }
+    /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
+     * and the car, a wheeled vehicle), those whose own definition names the query's word come
+     * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */
+    if (m->kind == SP_LEX_HYPERNYM && base < 1.0f) {
+        char one[1][WN_LEMMA_MAX];
+        snprintf(one[0], WN_LEMMA_MAX, "%s", np->head);
+        int src;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
     }
     /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
      * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */

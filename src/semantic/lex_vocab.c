@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "lexical.h"
+#include "semsplat/io.h"
 
 int sp_lexicon_open(sp_lexicon **out, const char *wordnet_dir, sp_error *err)
 {
@@ -38,6 +39,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     free(v->vocab_words);
     for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
     free(v->regions);
+    free(v->aliases);
     free(v);
 }
 
@@ -88,19 +90,50 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     for (char *p = src; *p && *p != ':'; p++)
         if (*p == '_') *p = ' ';
     rc = lex_bag_add_text(lx, bag, def, weight, src, err);
-    if (!rc) rc = lex_bag_add_text(lx, bag, lemmas, weight, src, err);
+    if (!rc) rc = lex_bag_add_lemmas(bag, lemmas, weight, src, err);
     if (!rc && verbs) rc = bag_derived_verbs(lx, bag, &s, weight, err);
     wn_synset_free(&s);
     return rc;
 }
 
-static int class_prepare(const lex_db *lx, lex_class *c, const char *name, sp_error *err)
+/* Adds the physical senses of the class name's alias reading (tokens read) to np's; a name with
+ * no head of its own takes the reading's head and modifiers. */
+static int add_alias_senses(const lex_db *lx, lex_np *np, const lex_tokens *read, sp_error *err)
 {
+    lex_tokens t;
+    lex_np a;
+    int rc = lex_merge_collocations(lx, read, &t, err);
+    if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &a, err);
+    if (rc) return rc;
+    if (!np->n_senses) {
+        lex_np_free(np);
+        *np = a;
+        return 0;
+    }
+    for (int i = 0; i < a.n_senses && np->n_senses < LEX_MAX_SENSES; i++) {
+        int dup = 0;
+        for (int j = 0; j < np->n_senses; j++) dup |= np->senses[j].off == a.senses[i].off;
+        if (!dup) np->senses[np->n_senses++] = a.senses[i], np->n_alias++;
+    }
+    lex_np_free(&a);
+    return 0;
+}
+
+static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
+{
+    const lex_db *lx = v->lx;
     snprintf(c->name, sizeof c->name, "%s", name);
-    lex_tokens raw, t;
+    lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
     int rc = lex_merge_collocations(lx, &raw, &t, err);
     if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
+    /* a name that is wholly a name of the alias table also means what it usually means indoors
+     * ("wheelie bin": a garbage can, its first target), and so does a head WordNet lacks ("hand
+     * sanitizer"): those senses are added to its own. A head WordNet has is left alone:
+     * "projector screen" is no "projector monitor". */
+    int aliased = rc ? 0 : lex_alias_class(v, &t, &read, err);
+    if (aliased < 0) return aliased;
+    if (aliased) rc = add_alias_senses(lx, &c->np, &read, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
         char b[WN_MAX_BASES][WN_LEMMA_MAX];
@@ -163,9 +196,10 @@ static int add_vocab_word(sp_lex_vocab *v, const char *w, sp_error *err)
 static void choose_by_context(sp_lex_vocab *v, int ci)
 {
     lex_np *np = &v->classes[ci].np;
-    if (np->n_senses < 2 || v->n < 2) return;
+    int own = np->n_senses - np->n_alias; /* the alias table's senses are not in question */
+    if (own < 2 || v->n < 2) return;
     float support[LEX_MAX_SENSES], best = 0;
-    for (int s = 0; s < np->n_senses; s++) {
+    for (int s = 0; s < own; s++) {
         float sum = 0;
         for (int k = 0; k < v->n; k++) {
             if (k == ci) continue;
@@ -181,8 +215,23 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     }
     int kept = 0;
     for (int s = 0; s < np->n_senses; s++)
-        if (support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+        if (s >= own || support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
     np->n_senses = kept;
+}
+
+/* The alias table (data/semantic/aliases.json), and a user's aliases.json beside a region table
+ * given by path, when there is one. */
+static int load_aliases(sp_lex_vocab *v, const char *regions_path, sp_error *err)
+{
+    char path[2048], mine[2048];
+    sp_path_join(path, sizeof path, sp_data_dir(), "semantic/aliases.json");
+    int rc = lex_aliases_load(v, path, err);
+    const char *slash = regions_path ? strrchr(regions_path, '/') : NULL;
+    if (rc || !regions_path || !regions_path[0]) return rc;
+    if (slash) snprintf(mine, sizeof mine, "%.*s/aliases.json", (int)(slash - regions_path), regions_path);
+    else snprintf(mine, sizeof mine, "aliases.json");
+    if (strcmp(mine, path) && sp_file_exists(mine)) rc = lex_aliases_load(v, mine, err);
+    return rc;
 }
 
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
@@ -197,13 +246,14 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
     v->lx = lx;
     v->classes = calloc(n ? (size_t)n : 1, sizeof *v->classes);
     int rc = v->classes ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    if (!rc) rc = load_aliases(v, regions_path, err);
     for (int i = 0; i < n && !rc; i++) {
         if (!classes[i] || !classes[i][0]) {
             rc = sp_error_set(err, SP_E_ARG, "lexical: class %d has an empty name", i);
             break;
         }
         v->n = i + 1;
-        if ((rc = class_prepare(lx, &v->classes[i], classes[i], err)))
+        if ((rc = class_prepare(v, &v->classes[i], classes[i], err)))
             sp_error_prefix(err, "lexical: class '%s': ", classes[i]);
         for (int k = 0; k < v->classes[i].n_tok && !rc; k++) rc = add_vocab_word(v, v->classes[i].tok[k], err);
     }

@@ -48,7 +48,9 @@ static const char *const function_words[] = {
     "every", "all", "both", "own", "want", "need", "let", "lets", "i'd", "i'm", "one", "two",
     "three", "four", "five", "six", "seven", "eight", "nine", "ten", "how", "why", "get", "then",
     "not", "no", "else", "other", "another", "such", "much", "many", "more", "most", "usually",
-    "typically", "often", NULL};
+    "typically", "often",
+    /* particles of phrasal verbs ("clean UP", "lie DOWN", "let OUT"): they name nothing */
+    "up", "down", "out", "off", "away", NULL};
 /* Heads that say nothing about what the thing is: the description carries the meaning. */
 static const char *const placeholder_words[] = {
     "something", "anything", "somewhere", "anywhere", "someplace", "anyplace", "everything",
@@ -59,6 +61,10 @@ static const char *const clause_words[] = {"that", "which", "what", "who", "whom
 static const char *const partitive_words[] = {"piece", "pieces", "kind", "kinds", "type", "types",
                                               "sort", "sorts", "pair", "set", "bit", "bunch",
                                               "sort", NULL};
+
+static const char *const particle_words[] = {"up", "down", "out", "off", "away", NULL};
+
+int lex_is_particle(const char *w) { return in_list(w, particle_words); }
 
 int lex_word_class_of(const char *w)
 {

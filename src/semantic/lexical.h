@@ -16,6 +16,7 @@
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
+#define LEX_TIE 0.001f   /* orders hypernym matches the taxonomy ties: no evidence, an order */
 /* A description ending in a preposition ("something to write ON") asks where or with what the
  * verb is done; a definition naming the class as what the verb acts on (a past participle,
  * "a WRITTEN work") is then one weak step (DELTA) of evidence, not a full match. */
@@ -52,6 +53,8 @@ void lex_tokenize(const char *text, lex_tokens *t);
  * "chest of drawers", "book shelf" -> "bookshelf") into one token, its base form. */
 int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *out, sp_error *err);
 int lex_word_class_of(const char *w);
+/* A particle of a phrasal verb ("up" of "clean up"): no collocation ends in one. */
+int lex_is_particle(const char *w);
 /* Relation phrase starting at token i: its length in tokens (0 = none) and its canonical name. */
 int lex_relation_at(const lex_tokens *t, int i, const char **name);
 /* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
@@ -139,6 +142,9 @@ void lex_bag_free(lex_bag *b);
 /* Adds the base forms of every content word of text at weight, citing source. */
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
                      const char *source, sp_error *err);
+/* Adds the words of WordNet lemmas as they are: a lemma is a base form already ("works", the
+ * factory, is no "work"). */
+int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
  * absent), patient entries scaled by patient_factor; *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
@@ -155,6 +161,8 @@ typedef struct lex_np {
     char head[WN_LEMMA_MAX];              /* the collocation as a WordNet lemma */
     int placeholder;                      /* the head was "something", "a place", ... */
     int fallback;                         /* class name without an attested physical sense */
+    int n_alias;                          /* the last n_alias senses come from the alias table
+                                           * (class names): context never drops them */
     int split;                            /* the head is a closed compound split in two: its
                                            * first part is the last modifier ("nightstand") */
     int stranded;                         /* the description ends in a preposition: "something
@@ -191,8 +199,19 @@ typedef struct lex_region {
     sp_lex_phrase *cache; /* its members in this vocabulary, resolved once */
 } lex_region;
 
+/* A name WordNet lacks or files under another sense ("shop vac", "wheelie bin", "trolley"),
+ * from data/semantic/aliases.json: another reading of the words, as WordNet lemmas. */
+typedef struct lex_alias {
+    int n_words;
+    char words[4][LEX_WORD]; /* the name, tokenized (the last word also matches its plural) */
+    int n_targets;
+    char targets[3][64];     /* WordNet noun lemmas, words separated by spaces */
+} lex_alias;
+
 struct sp_lex_vocab {
     const lex_db *lx;
+    int n_aliases;
+    lex_alias *aliases;
     int n;
     lex_class *classes;
     int n_vocab_words;
@@ -219,6 +238,22 @@ int lex_region_members(const sp_lex_vocab *v, const lex_region *r, const char *n
 void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph);
 /* Raises ph's members (indexed by class) to the classes matching sub; returns 1 when any. */
 int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *sub, const char *why);
+
+/* Loads an alias table (JSON: {"names": {name: [lemma, ...]}}, keys starting with '_' ignored)
+ * into v, appending. */
+int lex_aliases_load(sp_lex_vocab *v, const char *path, sp_error *err);
+/* in with every alias name replaced by its reading-th target (the longest name first at each
+ * word); returns how many names were replaced (0: none has a reading-th target, out = in).
+ * used gets "name = target; ...". */
+int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, lex_tokens *out,
+                      char *used, size_t cap);
+/* A class name's reading through the alias table: 1 and its first target when the name is wholly
+ * an alias, or when its head is no WordNet noun and is one (the words before it kept); 0 when
+ * neither, negative on errors. */
+int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out, sp_error *err);
+/* sp_lex_match on one reading of the text: its words already tokenized (lex_match.c). */
+int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
+                      sp_lex_result *res, sp_error *err);
 
 /* What a query modifier did for the best class. */
 enum { LEX_MOD_IGNORED = 0, LEX_MOD_USED = 1, LEX_MOD_CONTRARY = 2 };

@@ -69,6 +69,15 @@ static void test_round_trip_and_checks(void)
     bad.world_from_model[7] = NAN;
     CHECK_FAILS(sp_frame_check(&bad, "f", &err), SP_E_FORMAT, &err, "world_from_model[1][3]");
     bad = f;
+    bad.world_from_model[3] = 8.9e23; /* a float cannot carry it: refused, not inf later */
+    CHECK_FAILS(sp_frame_check(&bad, "f", &err), SP_E_FORMAT, &err, "1000 km");
+    /* every bit survives a write and a read (cJSON's 15-digit printing can move the last one) */
+    bad = f;
+    bad.world_from_model[7] = 0.1 + 0.2;
+    CHECK_OK(sp_frame_write(path, &bad, &err), &err);
+    CHECK_OK(sp_frame_read(path, &g, &err), &err);
+    CHECK(!memcmp(g.world_from_model, bad.world_from_model, sizeof g.world_from_model));
+    bad = f;
     snprintf(bad.source, sizeof bad.source, "gps");
     CHECK_FAILS(sp_frame_check(&bad, "f", &err), SP_E_FORMAT, &err, "gps");
     /* malformed files name the field */

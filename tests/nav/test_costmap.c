@@ -179,6 +179,10 @@ static void test_bad_maps(void)
         {"image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0.5]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "yaw"},
         {"image: missing.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "missing.pgm"},
         {"image: trunc.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "truncated"},
+        /* found by fuzzing: equal thresholds (scale mode divided by 0), an origin no float holds */
+        {"image: map.pgm\nresolution: 0.05\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.4\nfree_thresh: 0.4\n", "free_thresh <"},
+        {"image: map.pgm\nresolution: 0.05\norigin: [1e40, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "1000 km"},
+        {"image: map.pgm\nresolution: 1e-9\norigin: [0, 0, 0]\nnegate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.19\n", "outside"},
     };
     char pgm[1024];
     snprintf(pgm, sizeof pgm, "%s/trunc.pgm", dir);

@@ -1,0 +1,237 @@
+/* Names WordNet lacks or files under another sense: everyday, regional (UK / US) and trade names of
+ * indoor objects ("shop vac", "wheelie bin", "IV pole", "telly", "hoover", "trolley"), from a
+ * curated table (data/semantic/aliases.json) that maps each to WordNet noun lemmas. An alias is
+ * another READING of the words: a query is matched as written and with each alias replaced by
+ * its targets, and every class keeps its best reading (a user may mean either: "trolley" is
+ * WordNet's streetcar and the British cart). A class name is prepared through its first target
+ * (lex_vocab.c): the scene's object is the thing the name usually means indoors. */
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+#include "semsplat/io.h"
+
+#define MAX_READINGS 3
+
+static int add_alias(sp_lex_vocab *v, const char *path, const cJSON *it, sp_error *err)
+{
+    lex_tokens t;
+    lex_tokenize(it->string, &t);
+    if (t.n < 1 || t.n > 4 || (!cJSON_IsArray(it) && !cJSON_IsString(it)))
+        return sp_error_set(err, SP_E_FORMAT, "%s: alias '%s': a name of 1 to 4 words with a lemma or a list "
+                            "of lemmas", path, it->string);
+    lex_alias *na = realloc(v->aliases, sizeof *na * (size_t)(v->n_aliases + 1));
+    if (!na) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    v->aliases = na;
+    lex_alias *a = memset(&na[v->n_aliases], 0, sizeof *na);
+    a->n_words = t.n;
+    for (int i = 0; i < t.n; i++) snprintf(a->words[i], LEX_WORD, "%s", t.w[i]);
+    const cJSON *m = cJSON_IsString(it) ? it : it->child;
+    for (; m && a->n_targets < MAX_READINGS; m = cJSON_IsString(it) ? NULL : m->next) {
+        if (!cJSON_IsString(m) || !m->valuestring[0])
+            return sp_error_set(err, SP_E_FORMAT, "%s: alias '%s': targets must be strings", path, it->string);
+        snprintf(a->targets[a->n_targets++], 64, "%s", m->valuestring);
+    }
+    if (!a->n_targets) return sp_error_set(err, SP_E_FORMAT, "%s: alias '%s' has no target", path, it->string);
+    v->n_aliases++;
+    return 0;
+}
+
+int lex_aliases_load(sp_lex_vocab *v, const char *path, sp_error *err)
+{
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return sp_error_prefix(err, "lexical: alias table: ");
+    const cJSON *names = cJSON_GetObjectItemCaseSensitive(js, "names"), *it;
+    if (!cJSON_IsObject(names)) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing object \"names\"", path);
+    cJSON_ArrayForEach(it, names) {
+        if (rc) break;
+        if (it->string && it->string[0] != '_') rc = add_alias(v, path, it, err);
+    }
+    cJSON_Delete(js);
+    return rc;
+}
+
+/* 1 when w is key or one of its plurals (-s, -es, -y -> -ies). */
+static int word_or_plural(const char *w, const char *key)
+{
+    size_t nk = strlen(key), nw = strlen(w);
+    if (!strcmp(w, key)) return 1;
+    if (nw > nk && !strncmp(w, key, nk) && (!strcmp(w + nk, "s") || !strcmp(w + nk, "es"))) return 1;
+    return nk > 1 && key[nk - 1] == 'y' && nw == nk + 2 && !strncmp(w, key, nk - 1) && !strcmp(w + nk - 1, "ies");
+}
+
+/* The words of tokens (a joined collocation "hospital_bed" gives two), each with its token. */
+typedef struct {
+    int n;
+    char w[2 * LEX_MAX_TOKENS][LEX_WORD];
+    int tok[2 * LEX_MAX_TOKENS];
+} word_list;
+
+static void words_of(const lex_tokens *in, word_list *wl)
+{
+    wl->n = 0;
+    for (int i = 0; i < in->n; i++) {
+        char t[LEX_WORD];
+        snprintf(t, sizeof t, "%s", in->w[i]);
+        for (char *save = NULL, *p = strtok_r(t, "_", &save); p && wl->n < 2 * LEX_MAX_TOKENS; p = strtok_r(NULL, "_", &save)) {
+            snprintf(wl->w[wl->n], LEX_WORD, "%s", p);
+            wl->tok[wl->n++] = i;
+        }
+    }
+}
+
+/* The longest alias whose words are whole tokens from word p on (a WordNet collocation is not
+ * broken up: "laundry cart" is WordNet's, its "cart" no alias), or NULL. */
+static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p)
+{
+    const lex_alias *best = NULL;
+    for (int k = 0; k < v->n_aliases; k++) {
+        const lex_alias *a = &v->aliases[k];
+        int e = p + a->n_words; /* one past the last word */
+        if (e > wl->n || (best && a->n_words <= best->n_words)) continue;
+        if (e < wl->n && wl->tok[e] == wl->tok[e - 1]) continue; /* ends inside a token */
+        int ok = 1;
+        for (int j = 0; j < a->n_words && ok; j++)
+            ok = j + 1 < a->n_words ? !strcmp(wl->w[p + j], a->words[j]) : word_or_plural(wl->w[p + j], a->words[j]);
+        if (ok) best = a;
+    }
+    return best;
+}
+
+int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, lex_tokens *out,
+                      char *used, size_t cap)
+{
+    word_list words, *wl = &words; /* 3 KB: no allocation that could fail */
+    int n = 0;
+    size_t o = 0;
+    *out = *in;
+    if (used && cap) used[0] = 0;
+    if (!v->n_aliases) return 0;
+    words_of(in, wl);
+    out->n = 0;
+    for (int p = 0; p < wl->n;) {
+        const lex_alias *a = (p == 0 || wl->tok[p] != wl->tok[p - 1]) ? alias_at(v, wl, p) : NULL;
+        if (!a || reading >= a->n_targets) { /* its tokens stay as they were */
+            int e = p + (a ? a->n_words : 1);
+            while (e < wl->n && wl->tok[e] == wl->tok[e - 1]) e++;
+            for (int t = wl->tok[p]; t <= wl->tok[e - 1] && out->n < LEX_MAX_TOKENS; t++)
+                snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[t]);
+            p = e;
+            continue;
+        }
+        lex_tokens t;
+        lex_tokenize(a->targets[reading], &t);
+        for (int j = 0; j < t.n && out->n < LEX_MAX_TOKENS; j++) snprintf(out->w[out->n++], LEX_WORD, "%s", t.w[j]);
+        if (used && o + 1 < cap) {
+            char name[4 * LEX_WORD] = "";
+            for (int j = 0; j < a->n_words; j++)
+                snprintf(name + strlen(name), sizeof name - strlen(name), "%s%s", j ? " " : "", a->words[j]);
+            int k = snprintf(used + o, cap - o, "%s'%s' = %s", o ? "; " : "", name, a->targets[reading]);
+            if (k > 0) o += (size_t)k;
+        }
+        p += a->n_words;
+        n++;
+    }
+    if (!n) *out = *in;
+    return n;
+}
+
+int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out, sp_error *err)
+{
+    word_list words, *wl = &words;
+    words_of(in, wl);
+    const lex_alias *a = wl->n ? alias_at(v, wl, 0) : NULL;
+    int rc = a && a->n_words == wl->n, noun = 1;
+    if (rc) lex_tokenize(a->targets[0], out);
+    else if (in->n > 1 && (noun = lex_is_pos(v->lx, WN_NOUN, in->w[in->n - 1], err)) < 0) rc = noun;
+    else if (in->n > 1 && !noun) {
+        /* a head WordNet lacks ("hand SANITIZER") is read through the table; the words before
+         * it stay ("hand disinfectant") */
+        lex_tokens last = {1, {{0}}}, read;
+        snprintf(last.w[0], LEX_WORD, "%s", in->w[in->n - 1]);
+        words_of(&last, wl);
+        a = alias_at(v, wl, 0);
+        if ((rc = a && a->n_words == wl->n)) {
+            *out = *in;
+            out->n--;
+            lex_tokenize(a->targets[0], &read);
+            for (int i = 0; i < read.n && out->n < LEX_MAX_TOKENS; i++) snprintf(out->w[out->n++], LEX_WORD, "%s", read.w[i]);
+        }
+    }
+    return rc;
+}
+
+static int plain(const sp_lex_result *r) { return !r->relation[0] && !r->target.is_region; }
+
+/* Notes the alias reading in a match's explanation. */
+static void cite(sp_lex_class_match *m, const char *used)
+{
+    char p[sizeof m->path];
+    snprintf(p, sizeof p, "%s", m->path);
+    snprintf(m->path, sizeof m->path, "alias %s%s%s", used, p[0] ? "; " : "", p);
+}
+
+/* Folds the alias reading alt into res: a plain phrase keeps every class's best reading; a
+ * relation or a region reading replaces res when it is more confident. */
+static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
+{
+    /* the words as written have no noun for a head ("racking", "shelving": description words,
+     * matched against every definition) but the alias names a thing: it is the reading */
+    int named = plain(res) && plain(alt) && !res->target.head[0] && alt->target.head[0];
+    if (plain(res) && plain(alt) && !named) {
+        sp_lex_class_match *by_class[SP_LEX_MAX_CLASSES] = {0};
+        for (int i = 0; i < res->target.n_matches; i++) by_class[res->target.matches[i].class_index] = &res->target.matches[i];
+        int better = alt->confidence > res->confidence;
+        for (int i = 0; i < alt->target.n_matches; i++) {
+            sp_lex_class_match *m = &alt->target.matches[i], *r = by_class[m->class_index];
+            if (r && m->score > r->score) *r = *m, cite(r, used);
+        }
+        qsort(res->target.matches, (size_t)res->target.n_matches, sizeof res->target.matches[0], lex_match_cmp);
+        if (better) { /* the attributes are those of the reading that decided, in the user's words */
+            lex_tokens said;
+            lex_tokenize(res->text, &said);
+            res->n_ignored = 0;
+            for (int i = 0; i < alt->n_ignored; i++)
+                for (int k = 0; k < said.n; k++)
+                    if (!strcmp(said.w[k], alt->ignored[i])) {
+                        snprintf(res->ignored[res->n_ignored++], sizeof res->ignored[0], "%s", alt->ignored[i]);
+                        break;
+                    }
+        }
+    } else if (named || alt->confidence > res->confidence) {
+        char text[sizeof res->text];
+        snprintf(text, sizeof text, "%s", res->text);
+        for (int i = 0; i < alt->target.n_matches; i++) cite(&alt->target.matches[i], used);
+        *res = *alt;
+        snprintf(res->text, sizeof res->text, "%s", text);
+    }
+    res->confidence = res->target.n_matches ? res->target.matches[0].score : 0;
+    res->found = res->confidence >= SP_LEX_THRESHOLD;
+}
+
+int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
+{
+    if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
+    lex_tokens raw;
+    lex_tokenize(text, &raw);
+    if (raw.n == 0) {
+        memset(res, 0, sizeof *res);
+        return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);
+    }
+    lex_tokens merged;
+    int rc = lex_match_reading(v, text, &raw, res, err);
+    if (!rc) rc = lex_merge_collocations(v->lx, &raw, &merged, err);
+    sp_lex_result *alt = NULL;
+    for (int k = 0; k < MAX_READINGS && !rc; k++) {
+        lex_tokens t;
+        char used[160];
+        if (lex_alias_rewrite(v, &merged, k, &t, used, sizeof used) == 0) break;
+        if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        if (!(rc = lex_match_reading(v, text, &t, alt, err))) fold(res, alt, used);
+    }
+    free(alt);
+    return rc;
+}
