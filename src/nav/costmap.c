@@ -35,6 +35,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.veto_beside = 1;
     o.lowest_needs_hit = 1;
     o.hit_blocks_free = 1;
+    o.unseen_unknown = 0;
     o.prob_hit = 0.7f;
     o.prob_miss = 0.4f;
     o.occupied_prob = 0.5f;
@@ -303,6 +304,7 @@ static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, con
  * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
  * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
  * make the table free; unknown otherwise (block_surfaces then takes more free columns back).
+ * With unseen_unknown, footprints in voxels no scan observed make a column unknown, not occupied.
  * log_free: the footprint evidence, or NULL (scans). */
 /* hit_blocks_free: a free column where some scan's surface ended in the band becomes unknown,
  * unless the capture stood there, and so do the free columns within SURFACE_GROW_M of it (a
@@ -350,14 +352,18 @@ static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_o
 {
     const nav_slices *sl = &co->sl;
     for (long i = 0; i < sl->cells; i++) {
-        int occ = 0, observed = 0;
+        int occ = 0, observed = 0, hidden = 0;
         unsigned seen = co->floor_scans[i];
         for (int v = 0; v < sl->n && !occ; v++) {
             long k = v * sl->cells + i;
+            int obs = co->hit_scans[k] + co->miss_scans[k] > 0;
             seen += (unsigned)(co->hit_scans[k] + co->miss_scans[k]);
-            observed += co->hit_scans[k] + co->miss_scans[k] > 0;
-            occ = voxel_occupied(o, co, log_free, v, k);
+            observed += obs;
+            int o_k = voxel_occupied(o, co, log_free, v, k);
+            if (o_k && !obs && o->unseen_unknown) hidden = 1; /* evidence no scan observed */
+            else occ = o_k;
         }
+        if (hidden) observed = -1; /* not free either */
         int floor = co->floor_scans[i] > 0;
         int free_ok = (observed == sl->n && (!o->free_needs_floor || floor)) || (o->free_from_floor && floor && observed);
         free_ok |= stood && stood[i];
