@@ -271,6 +271,15 @@ static void mark_stands(const sp_costmap *cm, const sp_camera *cams, size_t n_ca
 /* Log-odds of a probability. */
 static inline float logit(float p) { return logf(p / (1.0f - p)); }
 
+/* Did more scans see through voxel k than pass_veto x (1 + the scans that hit it)? (With
+ * veto_beside, once some scan hit it, those that saw through it but hit a voxel beside it do not
+ * count.) */
+static int voxel_vetoed(const sp_costmap_opts *o, const nav_carve_out *co, long k)
+{
+    int H = co->hit_scans[k], M = co->miss_scans[k];
+    return M - (o->veto_beside && H > 0 ? co->near_scans[k] : 0) > o->pass_veto * (1.0f + H);
+}
+
 /* Is voxel k occupied? SP_OCCUPANCY_SCANS fuses the scans as OctoMap does (Hornung et al.
  * 2013): every scan that hit the voxel adds logit(prob_hit), every scan that only saw through it
  * logit(prob_miss); occupied when the sum reaches logit(occupied_prob) and min_hit_scans scans
@@ -282,13 +291,8 @@ static inline float logit(float p) { return logf(p / (1.0f - p)); }
  * hit the voxel, the scans that saw through it but hit a voxel beside it do not count (the
  * surface may be theirs: surface points are good to a cell; measured, counting them also for
  * voxels no scan hit turns the cells beside walls, where footprints spill over, occupied). (Surface points alone are
- * weak evidence on a trained splat: its rendered surfaces stand centimetres off the true ones.) */
-static int voxel_vetoed(const sp_costmap_opts *o, const nav_carve_out *co, long k)
-{
-    int H = co->hit_scans[k], M = co->miss_scans[k];
-    return M - (o->veto_beside && H > 0 ? co->near_scans[k] : 0) > o->pass_veto * (1.0f + H);
-}
-
+ * weak evidence on a trained splat: its rendered surfaces stand centimetres off the true ones.)
+ * With lowest_needs_hit, footprints in the lowest slice count only where some scan hit it. */
 static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, int slice, long k)
 {
     int H = co->hit_scans[k], M = co->miss_scans[k];
@@ -300,12 +304,6 @@ static int voxel_occupied(const sp_costmap_opts *o, const nav_carve_out *co, con
     return H > 0 && H >= need && (float)H * l_hit + (float)M * l_miss >= l_occ;
 }
 
-/* A column is occupied when one of its voxels is; free when none is and every one of its voxels
- * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
- * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
- * make the table free; unknown otherwise (block_surfaces then takes more free columns back).
- * With unseen_unknown, footprints in voxels no scan observed make a column unknown, not occupied.
- * log_free: the footprint evidence, or NULL (scans). */
 /* hit_blocks_free: a free column where some scan's surface ended in the band becomes unknown,
  * unless the capture stood there, and so do the free columns within SURFACE_GROW_M of it (a
  * trained splat's rendered surface points stand a cell or two off, so a table's edge lies beyond
@@ -347,6 +345,12 @@ static void block_surfaces(sp_costmap *cm, const sp_costmap_opts *o, const nav_c
         }
 }
 
+/* A column is occupied when one of its voxels is; free when none is and every one of its voxels
+ * was observed (with free_needs_floor, its floor seen too), or (free_from_floor) its floor was
+ * seen and some voxel observed: a ray passing above a table top that no ray ended on does not
+ * make the table free; unknown otherwise (block_surfaces then takes more free columns back); with
+ * unseen_unknown, footprints in voxels no scan observed make a column unknown, not occupied.
+ * log_free: the footprint evidence, or NULL (scans). */
 static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free,
                      const uint8_t *stood)
 {
@@ -363,10 +367,9 @@ static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_o
             if (o_k && !obs && o->unseen_unknown) hidden = 1; /* evidence no scan observed */
             else occ = o_k;
         }
-        if (hidden) observed = -1; /* not free either */
         int floor = co->floor_scans[i] > 0;
         int free_ok = (observed == sl->n && (!o->free_needs_floor || floor)) || (o->free_from_floor && floor && observed);
-        free_ok |= stood && stood[i];
+        free_ok = (free_ok || (stood && stood[i])) && !hidden; /* evidence wins over a stand, seen or not */
         cm->seen[i] = seen > UINT16_MAX ? UINT16_MAX : (uint16_t)seen;
         cm->occ[i] = occ ? SP_CELL_OCCUPIED : free_ok ? SP_CELL_FREE : SP_CELL_UNKNOWN;
     }
