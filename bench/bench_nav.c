@@ -165,6 +165,9 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--occupancy")) co.occupancy = !strcmp(v, "scans") ? SP_OCCUPANCY_SCANS : SP_OCCUPANCY_FOOTPRINTS, i++;
         else if (!strcmp(argv[i], "--evidence")) co.occupied_evidence = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--veto")) co.pass_veto = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--lowest-needs-hit")) co.lowest_needs_hit = atoi(v), i++;
+        else if (!strcmp(argv[i], "--hit-blocks-free")) co.hit_blocks_free = atoi(v), i++;
+        else if (!strcmp(argv[i], "--unseen-unknown")) co.unseen_unknown = atoi(v), i++;
         else if (!strcmp(argv[i], "--veto-beside")) co.veto_beside = atoi(v), i++;
         else if (!strcmp(argv[i], "--free-from-floor")) co.free_from_floor = atoi(v), i++;
         else if (!strcmp(argv[i], "--hit-scans")) co.min_hit_scans = atoi(v), i++;

@@ -13,8 +13,9 @@ static const char *usage_text =
     "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D] [--points N]\n"
     "                     [--match-radius M] [--device cpu|cuda|auto] [--threads N]\n"
     "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n"
-    "                     [--model DIR] [--walk-only] [--no-video] [--offline-robot] [--time-scale S]\n"
-    "                     [--video-size WxH] [--fps N] [--drive-frames N] [--view-size WxH]\n\n"
+    "                     [--model DIR] [--walk-only | --plan mixed|walk|drive] [--no-video]\n"
+    "                     [--offline-robot] [--time-scale S] [--video-size WxH] [--fps N]\n"
+    "                     [--drive-frames N] [--view-size WxH]\n\n"
     "Runs synth -> train -> features -> lift -> queries and writes DIR (default demo/):\n"
     "  capture/ (COLMAP model, images, depth, labels, ground_truth.json, frame.json), model/\n"
     "  (splat.ply with f_sem_* features, train.json, frame.json, semantic.json), features/,\n"
@@ -25,7 +26,9 @@ static const char *usage_text =
     "instance inside the object's box grown by --match-radius, default 0.5 m); recall,\n"
     "precision, mean and median error over matched objects, and the mean with misses counted.\n"
     "Defaults: the bundled house (data/worlds/house.world); on a GPU 150 views at 640x480 and\n"
-    "7000 steps, on the CPU 48 views at 320x240 and 2000 steps. --capture DIR skips synth and\n"
+    "7000 steps, on the CPU 48 views at 320x240 and 2000 steps. Capture plan (--plan): mixed\n"
+    "(spins and arcs of views at objects; default), walk (the spins only, = --walk-only) or drive\n"
+    "(one robot drive through the rooms; see synth --help). --capture DIR skips synth and\n"
     "uses an existing capture (features then need --clip unless it has labels/). --reuse skips\n"
     "the stages whose outputs already exist in DIR (to re-run only the queries, say). --model DIR\n"
     "makes only the video, on an existing model folder. Video defaults: 1280x720 at 10 fps, 60\n"
@@ -71,6 +74,11 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
             o->time_scale = x;
         } else if (!strcmp(argv[i], "--no-video")) o->no_video = 1;
         else if (!strcmp(argv[i], "--walk-only")) o->walk_only = 1;
+        else if ((v = cli_flag_value(argc, argv, &i, "--plan", &bad))) {
+            o->plan = !strcmp(v, "mixed") ? SP_DEMO_PLAN_MIXED : !strcmp(v, "walk") ? SP_DEMO_PLAN_WALK
+                    : !strcmp(v, "drive") ? SP_DEMO_PLAN_DRIVE : -1;
+            if (o->plan < 0) return cli_usage_error("demo", "--plan must be mixed, walk or drive (got '%s')", v);
+        }
         else if (!strcmp(argv[i], "--offline-robot")) o->robot = SP_DEMO_ROBOT_OFFLINE;
         else if ((v = cli_flag_value(argc, argv, &i, "--size", &bad))) {
             if (cli_parse_size("demo", "--size", v, &o->width, &o->height)) return 2;

@@ -383,6 +383,9 @@ void sp_eval_run_free(sp_eval_run *r);
 
 /* ---- the demo ------------------------------------------------------------------------------------- */
 
+/* The demo's capture plan (sp_demo_opts.plan; synth's plans, see synth.h). */
+enum { SP_DEMO_PLAN_AUTO = 0, SP_DEMO_PLAN_MIXED, SP_DEMO_PLAN_WALK, SP_DEMO_PLAN_DRIVE };
+
 typedef struct sp_demo_opts {
     const char *out_dir;     /* "demo" when NULL */
     const char *world;       /* NULL: <data>/worlds/house.world */
@@ -398,6 +401,11 @@ typedef struct sp_demo_opts {
     int downscale;           /* training image downscale (0: 1) */
     int skip_missing;        /* synth: render without missing assets */
     int walk_only;           /* synth's walk-only plan (no view aimed at a ground-truth object) */
+    int plan;                /* SP_DEMO_PLAN_*: AUTO = walk_only ? WALK : MIXED (spins and arcs at
+                              * objects); DRIVE: one robot drive through the rooms (the CPU house
+                              * demo's 48 views: 47 standpoints instead of 4 spins, a better map and
+                              * better queries; a small room's 24 views: nothing matched; see
+                              * DESIGN.md's nav section) */
     int reuse;               /* skip stages whose outputs exist in out_dir */
     float match_radius_m;    /* scoring (0: 0.5) */
     const char *model;       /* an existing model folder: no pipeline, only the video */
@@ -415,6 +423,7 @@ typedef struct sp_demo_result {
     char capture_dir[1100], model_dir[1100], features_dir[1100], heatmap_dir[1100];
     char device[128];
     int views, steps, width, height;
+    int plan;                /* the capture plan synth used (SP_DEMO_PLAN_*, never AUTO) */
     int trained;             /* 1 when training ran (train holds its result) */
     sp_train_result train;
     int scored;              /* 0: the capture has no ground_truth.json; the model is ready */

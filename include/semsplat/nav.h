@@ -96,6 +96,19 @@ typedef struct sp_costmap_opts {
                                 * through it: a rendered surface point (a Gaussian's depth) is
                                 * good to about a cell, and rays pass beside a thin leg through
                                 * the cell it stands in (1; 0: every such scan counts) */
+    int lowest_needs_hit;      /* the lowest slice's footprints count only where some scan hit the
+                                * voxel: a trained floor is a haze centimetres to decimetres thick
+                                * whose rendered surface is the floor (1) */
+    int hit_blocks_free;       /* a free column within a cell of a column that is not occupied but
+                                * has a voxel (above the floor tolerance) this many scans hit and
+                                * the veto above did not clear is unknown, unless the capture stood
+                                * there: a rendered surface too faint in the footprints (a trained
+                                * table top of a few large translucent Gaussians), never seen past
+                                * (1; 0 = off; footprints only) */
+    int unseen_unknown;        /* 1: footprints in a voxel no scan observed make its column unknown,
+                                * not occupied (0: measured, +3.4 to +4.6 points of agreement on the
+                                * trained house and bookstore and the same false free, but an
+                                * obstacle marked unknown is not inflated, so off) */
     /* SP_OCCUPANCY_SCANS: the scans alone, fused as log-odds (OctoMap's sensor model) */
     float prob_hit;            /* P(occupied) from one scan's hit (0.7, OctoMap's) */
     float prob_miss;           /* P(occupied) from one scan seeing through (0.4, OctoMap's) */

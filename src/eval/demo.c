@@ -43,6 +43,7 @@ static void settle(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r)
     r->steps = o->steps > 0 ? o->steps : gpu ? 7000 : 2000;
     r->width = o->width > 0 ? o->width : gpu ? 640 : 320;
     r->height = o->height > 0 ? o->height : gpu ? 480 : 240;
+    r->plan = o->plan != SP_DEMO_PLAN_AUTO ? o->plan : o->walk_only ? SP_DEMO_PLAN_WALK : SP_DEMO_PLAN_MIXED;
     snprintf(r->device, sizeof r->device, "%s", sp_device_name(dev));
     snprintf(r->capture_dir, sizeof r->capture_dir, "%s/capture", o->out_dir);
     if (o->capture) snprintf(r->capture_dir, sizeof r->capture_dir, "%s", o->capture);
@@ -91,7 +92,7 @@ static int run_stages(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r, 
         sp_logf(o->log, SP_LOG_INFO, "demo: synth %s -> %s (%d views at %dx%d)", o->world, r->capture_dir,
                 r->views, r->width, r->height);
         t = sp_time_now();
-        rc = ev_demo_synth(o, r->capture_dir, r->views, r->width, r->height, err);
+        rc = ev_demo_synth(o, r->capture_dir, r->views, r->width, r->height, r->plan, err);
         if (rc) return sp_error_prefix(err, "demo: synth: ");
         r->t_synth = sp_time_now() - t;
     }

@@ -7,7 +7,7 @@
 
 /* The demo's synth stage: o->world rendered into capture_dir with views x width x height
  * (synth/demo_synth.c; without assimp/libxml2 the stub in nosynth/ fails with SP_E_UNSUPPORTED). */
-int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height,
+int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height, int plan,
                   sp_error *err);
 
 /* 5.2's answering context (vocab.c): the engine; the scene's lexical vocabulary (NULL: answer

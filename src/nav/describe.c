@@ -69,9 +69,10 @@ float nav_nearest_free(const sp_costmap *cm, const sp_nav_box *b, int *x0, int *
     return d_min + 1.5f * cm->res;
 }
 
-/* Walking distance (metres, 4-connected over free cells) from where one stands beside the
- * anchor: objects far on foot are in the next room, however close their footprints (a wall
- * between). field [cells]. */
+/* Walking distance (metres, 4-connected over cells that are not obstacles) from where one
+ * stands beside the anchor: objects far on foot are in the next room, however close their
+ * footprints (a wall between). Unknown cells are walked over: a wall is an obstacle, and the
+ * unknown patches a trained splat's costmap leaves beside furniture are no wall. field [cells]. */
 static int walk_field(const sp_costmap *cm, const sp_nav_box *anchor, float *field)
 {
     long n = (long)cm->nx * cm->ny, head = 0, tail = 0;
@@ -94,7 +95,7 @@ static int walk_field(const sp_costmap *cm, const sp_nav_box *anchor, float *fie
             int x = cx + (k == 0) - (k == 1), y = cy + (k == 2) - (k == 3);
             if (!nav_inside(cm, x, y)) continue;
             long j = nav_idx(cm, x, y);
-            if (cm->occ[j] != SP_CELL_FREE || isfinite(field[j])) continue;
+            if (cm->occ[j] == SP_CELL_OCCUPIED || isfinite(field[j])) continue;
             field[j] = field[c] + cm->res;
             queue[tail++] = j;
         }

@@ -24,6 +24,8 @@ static void test_bad_flags(void)
     char out[8192];
     CHECK(run_cli("demo --views abc", out, sizeof out) == 2);
     CHECK_MSG(strstr(out, "--views") != NULL, "output: %s", out);
+    CHECK(run_cli("demo --plan sideways", out, sizeof out) == 2);
+    CHECK_MSG(strstr(out, "--plan must be mixed, walk or drive") != NULL, "output: %s", out);
     CHECK(run_cli("demo --frobnicate", out, sizeof out) == 2);
     CHECK_MSG(strstr(out, "--frobnicate") != NULL, "output: %s", out);
     CHECK(run_cli("train --colmap x --out y --sh-interval abc", out, sizeof out) == 2);

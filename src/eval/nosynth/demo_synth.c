@@ -3,10 +3,10 @@
 
 #include "eval/eval_internal.h"
 
-int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height,
+int ev_demo_synth(const sp_demo_opts *o, const char *capture_dir, int views, int width, int height, int plan,
                   sp_error *err)
 {
-    (void)o, (void)capture_dir, (void)views, (void)width, (void)height;
+    (void)o, (void)capture_dir, (void)views, (void)width, (void)height, (void)plan;
     return sp_error_set(err, SP_E_UNSUPPORTED, "demo: synth is not built into this library (install "
                         "libassimp-dev and libxml2-dev, or pass an existing capture)");
 }

@@ -3,6 +3,7 @@
  * a trajectory's previews with each view's waypoint, distance along the path and
  * localizability. PNGs go through a memory stream and are written atomically. */
 #include <cairo.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -165,6 +166,42 @@ static void draw_grid(cairo_t *cr, const view *v)
     text_at(cr, MARGIN_L + v->s * cm->nx - 70, MARGIN_T + v->map_h + 32, 11, 0, "x (m) ->");
 }
 
+/* Where an object's label goes: the first of four spots beside its box (above, below, right,
+ * left) that overlaps no label already placed, else the spot overlapping them least; placed
+ * records the boxes of labels drawn so far. */
+typedef struct label_box {
+    double x0, y0, x1, y1;
+} label_box;
+
+static double overlap(const label_box *a, const label_box *b)
+{
+    double w = fmin(a->x1, b->x1) - fmax(a->x0, b->x0), h = fmin(a->y1, b->y1) - fmax(a->y0, b->y0);
+    return w > 0 && h > 0 ? w * h : 0;
+}
+
+static label_box place_label(cairo_t *cr, double a, double b, double c, double d, double size, const char *s,
+                             const label_box *placed, int n_placed)
+{
+    cairo_text_extents_t e;
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
+    cairo_set_font_size(cr, size);
+    cairo_text_extents(cr, s, &e);
+    double w = e.x_advance + 4, h = e.height + 6;
+    /* candidate baselines: above the box, below it, right of it, left of it */
+    const double spot[4][2] = {{a, b - 3}, {a, d + h}, {c + 4, b + h - 3}, {a - w - 2, b + h - 3}};
+    label_box best = {0};
+    double best_cost = INFINITY;
+    for (int k = 0; k < 4; k++) {
+        label_box r = {spot[k][0] - 2, spot[k][1] - e.height - 3, spot[k][0] - 2 + w, spot[k][1] + 3};
+        double cost = 0;
+        for (int j = 0; j < n_placed; j++) cost += overlap(&r, &placed[j]);
+        if (cost < best_cost) best = r, best_cost = cost;
+        if (cost == 0) break;
+    }
+    label(cr, best.x0 + 2, best.y1 - 3, size, s);
+    return best;
+}
+
 static void draw_objects(cairo_t *cr, const view *v, const nav_map_layers *L)
 {
     for (int i = 0; i < L->n_objects; i++) {
@@ -177,8 +214,22 @@ static void draw_objects(cairo_t *cr, const view *v, const nav_map_layers *L)
         cairo_set_line_width(cr, tgt ? 2.5 : 1.5);
         cairo_rectangle(cr, a, b, c - a, d - b);
         cairo_stroke(cr);
-        label(cr, a, b - 3, tgt ? 12 : 10, L->object_labels[i]);
     }
+    /* labels after every box, the targets' first, so they keep the best spots and no later box
+     * or label covers them */
+    label_box *placed = malloc(sizeof *placed * (size_t)(L->n_objects > 0 ? L->n_objects : 1));
+    int n_placed = 0;
+    for (int pass = 0; pass < 2; pass++)
+        for (int i = 0; i < L->n_objects; i++) {
+            int tgt = L->object_is_target && L->object_is_target[i];
+            if (tgt != (pass == 0)) continue;
+            double a, b, c, d;
+            to_px(v, L->boxes[i].min[0], L->boxes[i].max[1], &a, &b);
+            to_px(v, L->boxes[i].max[0], L->boxes[i].min[1], &c, &d);
+            label_box r = place_label(cr, a, b, c, d, tgt ? 12 : 10, L->object_labels[i], placed, n_placed);
+            if (placed) placed[n_placed++] = r;
+        }
+    free(placed);
     if (L->area) {
         double a, b, c, d;
         to_px(v, L->area->min[0], L->area->max[1], &a, &b);
