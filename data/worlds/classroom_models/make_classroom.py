@@ -58,16 +58,6 @@ def teacher_desk():
         [box(f"leg{i}", "wood", -0.66, s * 0.31, 0.365, 0.05, 0.05, 0.73) for i, s in enumerate((-1, 1))]
 
 
-def teacher_chair():
-    # a swivel chair like the office's; the back at -y
-    v = [box("seat", "fabric", 0, 0, 0.48, 0.48, 0.46, 0.07),
-         box("back", "fabric", 0, -0.22, 0.82, 0.46, 0.05, 0.55),
-         cyl("column", "dark_metal", 0, 0, 0.27, 0.03, 0.4),
-         cyl("base", "dark_metal", 0, 0, 0.05, 0.3, 0.04)]
-    return v + [box("arm_l", "black", -0.25, 0, 0.63, 0.04, 0.35, 0.04),
-                box("arm_r", "black", 0.25, 0, 0.63, 0.04, 0.35, 0.04)]
-
-
 def laptop():
     # open, the screen at +y (away from the user); sits on a desk top (pose z = top)
     return [box("base", "dark_metal", 0, 0, 0.01, 0.34, 0.24, 0.02),
@@ -146,12 +136,6 @@ def trash_can():
     return [cyl("body", "chair_blue", 0, 0, 0.22, 0.15, 0.44)]
 
 
-def wall_clock():
-    # the face looks along -y, away from the wall behind it
-    up = lambda v: turned(v, "1.5708 0 0")
-    return [up(cyl("face", "white", 0, 0, 0, 0.17, 0.03)), up(cyl("rim", "black", 0, 0.016, 0, 0.18, 0.005))]
-
-
 def easel():
     # an A-frame with a paper pad facing -y
     return [box("leg_l", "light_wood", -0.3, 0, 0.75, 0.04, 0.04, 1.5),
@@ -208,12 +192,12 @@ def main():
     # the front: the whiteboard, the teacher's area in the north-east
     add("whiteboard", (4.2, D - T / 2 - 0.02, 1.45, 0), whiteboard())
     add("teacher_desk", (6.9, 5.75, 0, 3.1416), teacher_desk())   # faces the class
-    add("teacher_chair", (6.9, 6.35, 0, 3.1416), teacher_chair())
+    add("teacher_chair", (6.9, 6.35, 0, 3.1416), base.office_chair())  # a swivel chair
     add("laptop", (6.75, 5.8, 0.77, 3.1416), laptop())
     add("globe", (7.35, 5.6, 0.77, 0), globe())
     add("supply_cabinet", (8.45, D - T / 2 - 0.23, 0, 3.1416), supply_cabinet())
     add("trash_can_1", (8.0, 5.35, 0, 0), trash_can())
-    add("wall_clock", (6.9, D - T / 2 - 0.02, 2.45, 0), wall_clock())
+    add("wall_clock", (6.9, D - T / 2 - 0.02, 2.45, 0), base.wall_clock())
     add("projector", (4.2, 3.4, H, 0), projector())
     # the west wall: the easel in the north-west corner, the fish tank
     add("easel", (0.8, 6.2, 0, 2.4), easel())
