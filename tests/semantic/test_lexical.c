@@ -27,9 +27,11 @@
  * who wrote phase 6; printed with their misses, no bar (first runs: docs/DESIGN.md). So is the
  * classroom (phrases_classroom.json, data/worlds/classroom.world: a primary-school classroom with a
  * reading corner and the teacher's area), written blind by w6-blind and committed before its first
- * run. Run with an argument (house | bookstore | office | ward | garage | cafe | basement |
- * classroom) to print every phrase of
- * one table, and a query after it to print its explanation. */
+ * run; and the
+ * hotel (phrases_hotel.json, data/worlds/hotel.world: a hotel room with its en-suite bathroom and
+ * entrance hall, written blind by w7-blind, never read by the encoder's authors). Run with an
+ * argument (house | bookstore | office | ward | garage | cafe | basement | classroom | hotel) to
+ * print every phrase of one table, and a query after it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
 
@@ -550,7 +552,7 @@ int main(int argc, char **argv)
     test_phase5_rules(lx);
     test_aliases(lx);
     test_region_rules(lx);
-    const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom"};
+    const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom", "hotel"};
     /* house and bookstore: the issue's bar; office: development data since phase 4 (its misses
      * were read), so its floor only guards against regressions (82/96 when it was set); the ward:
      * development data since phase 5, a regression floor too (93/121 = 0.769 and 30/32 when set) */
@@ -558,9 +560,9 @@ int main(int argc, char **argv)
      * floor rises to 0.8 (100/121 = 0.826, 29/32 when set) and the garage gets one (113/139 =
      * 0.813, 28/30 when set); regression floors, not bars */
     const double floor_p1[] = {0.9, 0.9, 0.85, 0.8, 0.8}, floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9};
-    for (int w = 0; w < 8; w++) {
+    for (int w = 0; w < 9; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= 5) continue; /* the cafe, the basement, the classroom: blind tables, printed, no bar */
+        if (w >= 5) continue; /* the cafe, the basement, the classroom and the hotel: blind tables, printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
