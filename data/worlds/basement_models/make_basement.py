@@ -267,11 +267,8 @@ def walls():
 
 
 def main():
-    out = []
+    out = base.shell(walls(), "floor_basement", "concrete", W, D, H)
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), base.floor_slab("floor_basement", "concrete", W, D))
-    add("ceiling", (0, 0, 0, 0), base.ceiling_slab(W, D, H))
     # the laundry room (south-west): washer, dryer and sink along the south wall under a window,
     # fronts facing north (yaw 180 degrees turns local -y to +y)
     ys = T / 2 + 0.34

@@ -224,11 +224,8 @@ def walls():
 
 
 def main():
-    out = []
+    out = base.shell(walls(), "floor_cafe", "tile", W, D, H)
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), base.floor_slab("floor_cafe", "tile", W, D))
-    add("ceiling", (0, 0, 0, 0), base.ceiling_slab(W, D, H))
     # the entrance (hinged at x 4.0, swung open against the wall), the coat rack and bin beside it
     add("door_1", (EX0 + 0.04, 0.47, 0, 1.5708), base.door())
     add("coat_rack", (3.55, 0.35, 0, 0), coat_rack())

@@ -168,20 +168,9 @@ def walls():
     return v
 
 
-def floor():
-    return base.floor_slab("floor_classroom", "lino", W, D)
-
-
-def ceiling():
-    return base.ceiling_slab(W, D, H)
-
-
 def main():
-    out = []
+    out = base.shell(walls(), "floor_classroom", "lino", W, D, H)
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), floor())
-    add("ceiling", (0, 0, 0, 0), ceiling())
     # the pupils: two rows of four desks facing the whiteboard (north), a chair behind each desk
     n = 0
     for row, y in enumerate((4.3, 2.9)):

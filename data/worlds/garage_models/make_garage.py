@@ -216,20 +216,9 @@ def walls():
     return v
 
 
-def floor():
-    return base.floor_slab("floor_garage", "concrete", W, D)
-
-
-def ceiling():
-    return base.ceiling_slab(W, D, H)
-
-
 def main():
-    out = []
+    out = base.shell(walls(), "floor_garage", "concrete", W, D, H)
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), floor())
-    add("ceiling", (0, 0, 0, 0), ceiling())
     add("garage_door", ((GX0 + GX1) / 2, T / 2 + 0.03, 0, 0), garage_door())
     # the parking side (west): the car nose-in, bikes, the mower and its fuel along the west wall
     add("car", (2.3, 3.0, 0, 0), car())

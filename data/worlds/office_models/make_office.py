@@ -191,14 +191,6 @@ def walls():
     return v
 
 
-def floor():
-    return floor_slab("floor_office", "carpet", W, D)
-
-
-def ceiling():
-    return ceiling_slab(W, D, H)
-
-
 def point_light(name, x, y, z, rgb):
     """A ceiling light without shadows (the other generators light their worlds the same way)."""
     return f"""  <light name="{name}" type="point">
@@ -208,6 +200,13 @@ def point_light(name, x, y, z, rgb):
     <attenuation><range>12</range><constant>0.4</constant><linear>0.12</linear><quadratic>0.06</quadratic></attenuation>
     <cast_shadows>false</cast_shadows>
   </light>"""
+
+
+def shell(walls_visuals, floor_name, floor_material, w, d, h):
+    """The three structure models every generated world starts with: walls, floor, ceiling."""
+    return [model("walls", (0, 0, 0, 0), walls_visuals),
+            model("floor", (0, 0, 0, 0), floor_slab(floor_name, floor_material, w, d)),
+            model("ceiling", (0, 0, 0, 0), ceiling_slab(w, d, h))]
 
 
 def world_sdf(world, comment, lights, models):
@@ -233,11 +232,8 @@ def world_sdf(world, comment, lights, models):
 
 
 def main():
-    out = []
+    out = shell(walls(), "floor_office", "carpet", W, D, H)
     add = lambda name, pose, vis: out.append(model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), floor())
-    add("ceiling", (0, 0, 0, 0), ceiling())
     # open-plan desks: two rows of two, chairs on the south side, screens facing them
     desks = [(1.6, 3.0), (3.4, 3.0), (1.6, 5.6), (3.4, 5.6)]
     for i, (x, y) in enumerate(desks, 1):

@@ -171,20 +171,9 @@ def walls():
     return v
 
 
-def floor():
-    return base.floor_slab("floor_ward", "vinyl", W, D)
-
-
-def ceiling():
-    return base.ceiling_slab(W, D, H)
-
-
 def main():
-    out = []
+    out = base.shell(walls(), "floor_ward", "vinyl", W, D, H)
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    add("walls", (0, 0, 0, 0), walls())
-    add("floor", (0, 0, 0, 0), floor())
-    add("ceiling", (0, 0, 0, 0), ceiling())
     # the bay: four beds, heads to the north wall, a cabinet to the right of each head
     beds = [1.3, 3.7, 6.1, 8.5]
     yb = D - T / 2 - 1.07
