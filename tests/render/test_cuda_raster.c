@@ -7,7 +7,7 @@
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
- * the backward's two colour-gradient sums (cfg.bwd_gather). Skips (77) without a GPU or without the CUDA build. */
+ * the backward's three colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter). Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -419,6 +419,17 @@ static void test_block_sums(void)
     g_block_sums = 0;
 }
 
+/* Wide chunks by warp reduce-scatter (cfg.bwd_gather = -1; by default chunks of 32 channels and
+ * more take the shared-memory product kernel) against the CPU. */
+static void test_reduce_scatter_wide(void)
+{
+    g_block_sums = -1;
+    compare_case(80, 64, 500, 32, 0, 0);
+    compare_case(72, 40, 400, 67, 1, 0);
+    compare_case(40, 36, 150, 48, 1, 0);
+    g_block_sums = 0;
+}
+
 /* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */
 static void test_many_tiles(void) { compare_case(4112, 4112, 3000, 1, 0, 0); }
 
@@ -572,6 +583,7 @@ int main(void)
     RUN(test_chunk_option);
     RUN(test_box_tiles);
     RUN(test_block_sums);
+    RUN(test_reduce_scatter_wide);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);
