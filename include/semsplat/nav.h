@@ -125,10 +125,12 @@ typedef struct sp_costmap_opts {
                                 * its top slice: a trained splat renders a surface centimetres off
                                 * the true one, and a desk top just under the band's top renders
                                 * above it (0.05) */
-    int unseen_unknown;        /* 1: footprints in a voxel no scan observed make its column unknown,
-                                * not occupied (0: measured, +3.4 to +4.6 points of agreement on the
-                                * trained house and bookstore and the same false free, but an
-                                * obstacle marked unknown is not inflated, so off) */
+    int unseen_unknown;        /* 1 (default): footprints in a voxel no scan observed make its
+                                * column unknown, not occupied (nobody saw it: the inside of a wall
+                                * or a cabinet, haze behind furniture), and cm->hidden marks it for
+                                * the inflation, so the robot keeps clear of it as of an obstacle
+                                * (measured: +3 to +5 points of agreement on the trained splats,
+                                * the same false free and objects reached) */
     /* SP_OCCUPANCY_SCANS: the scans alone, fused as log-odds (OctoMap's sensor model) */
     float prob_hit;            /* P(occupied) from one scan's hit (0.7, OctoMap's) */
     float prob_miss;           /* P(occupied) from one scan seeing through (0.4, OctoMap's) */
@@ -183,11 +185,14 @@ typedef struct sp_costmap {
     float band[2];       /* world z range of the robot's body: floor + band_lo .. floor + band_hi */
     uint8_t *occ;        /* SP_CELL_FREE / OCCUPIED / UNKNOWN */
     uint8_t *cost;       /* SP_COST_*: 0..252 inflation, 253 inscribed, 254 lethal, 255 unknown */
-    float *dist;         /* metres from the cell centre to the nearest occupied cell's centre
-                          * (INFINITY when there is none) */
+    float *dist;         /* metres from the cell centre to the nearest occupied (or hidden)
+                          * cell's centre (INFINITY when there is none) */
     uint16_t *seen;      /* training-camera rays that crossed the cell's band, summed over its
                           * slices, plus those that ended on its floor (NULL for maps read from
                           * files): how well the capture observed it */
+    uint8_t *hidden;     /* 1: an unknown cell where Gaussians stand that no training ray observed
+                          * (unseen_unknown): inflated as an obstacle is, so the robot's body keeps
+                          * clear of it; NULL when there are none (maps read from files) */
     sp_costmap_opts opts;/* the settings it was built or inflated with */
 } sp_costmap;
 
@@ -204,7 +209,8 @@ int sp_costmap_build_model(sp_costmap *cm, const char *model_dir, const sp_costm
 void sp_costmap_free(sp_costmap *cm);
 int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err);
 
-/* Recomputes dist and cost from occ with opts (robot radius, inflation); opts NULL = cm->opts. */
+/* Recomputes dist and cost from occ (and hidden) with opts (robot radius, inflation); opts NULL =
+ * cm->opts. */
 int sp_costmap_inflate(sp_costmap *cm, const sp_costmap_opts *opts, sp_error *err);
 
 /* Writes <stem>.pgm (trinary: free 254, occupied 0, unknown 205) and yaml_path (image, mode

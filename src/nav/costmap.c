@@ -37,7 +37,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.faint_blocks_free = 0.1f;
     o.faint_grow_tol = 1.0f;
     o.hit_above_m = 0.05f;
-    o.unseen_unknown = 0;
+    o.unseen_unknown = 1;
     o.prob_hit = 0.7f;
     o.prob_miss = 0.4f;
     o.occupied_prob = 0.5f;
@@ -67,6 +67,7 @@ void sp_costmap_free(sp_costmap *cm)
     free(cm->cost);
     free(cm->dist);
     free(cm->seen);
+    free(cm->hidden);
     memset(cm, 0, sizeof *cm);
 }
 
@@ -79,7 +80,8 @@ int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err)
     dst->cost = malloc(n);
     dst->dist = malloc(n * sizeof(float));
     dst->seen = src->seen ? malloc(n * sizeof(uint16_t)) : NULL;
-    if (!dst->occ || !dst->cost || !dst->dist || (src->seen && !dst->seen)) {
+    dst->hidden = src->hidden ? malloc(n) : NULL;
+    if (!dst->occ || !dst->cost || !dst->dist || (src->seen && !dst->seen) || (src->hidden && !dst->hidden)) {
         sp_costmap_free(dst);
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory copying %zu cells", n);
     }
@@ -87,6 +89,7 @@ int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err)
     memcpy(dst->cost, src->cost, n);
     memcpy(dst->dist, src->dist, n * sizeof(float));
     if (src->seen) memcpy(dst->seen, src->seen, n * sizeof(uint16_t));
+    if (src->hidden) memcpy(dst->hidden, src->hidden, n);
     return SP_OK;
 }
 
@@ -409,6 +412,7 @@ static void classify(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_o
         free_ok = (free_ok || (stood && stood[i])) && !hidden; /* evidence wins over a stand, seen or not */
         cm->seen[i] = seen > UINT16_MAX ? UINT16_MAX : (uint16_t)seen;
         cm->occ[i] = occ ? SP_CELL_OCCUPIED : free_ok ? SP_CELL_FREE : SP_CELL_UNKNOWN;
+        if (cm->hidden) cm->hidden[i] = (uint8_t)(hidden && !occ);
     }
 }
 
@@ -627,11 +631,12 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     cm->cost = malloc(n);
     cm->dist = malloc(n * sizeof(float));
     cm->seen = calloc(n, sizeof(uint16_t));
+    cm->hidden = o.unseen_unknown ? calloc(n, 1) : NULL;
     uint8_t *stood = o.cameras_stand ? calloc(n, 1) : NULL;
     float *log_free = o.occupancy == SP_OCCUPANCY_FOOTPRINTS ? calloc(nv, sizeof(float)) : NULL;
     int blocks = log_free && (o.hit_blocks_free > 0 || o.faint_blocks_free > 0);
     uint8_t *surface = blocks ? malloc(2 * n) : NULL;
-    if (!co.hit_scans || !co.miss_scans || !co.near_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen ||
+    if (!co.hit_scans || !co.miss_scans || !co.near_scans || !co.floor_scans || !cm->occ || !cm->cost || !cm->dist || !cm->seen || (o.unseen_unknown && !cm->hidden) ||
         (o.cameras_stand && !stood) || (o.occupancy == SP_OCCUPANCY_FOOTPRINTS && !log_free) || (blocks && !surface)) {
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %dx%d cells x %d slices",
                           cm->nx, cm->ny, co.sl.n);
@@ -653,6 +658,10 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
         rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory");
         goto done;
     }
+    long n_hidden = 0;
+    for (size_t i = 0; cm->hidden && i < n; i++) /* a filled pocket is an obstacle now */
+        n_hidden += cm->hidden[i] = cm->hidden[i] && cm->occ[i] == SP_CELL_UNKNOWN;
+    if (cm->hidden && !n_hidden) free(cm->hidden), cm->hidden = NULL;
     if ((rc = sp_costmap_inflate(cm, &o, err))) goto done;
     long n_occ = 0, n_free = 0;
     for (size_t i = 0; i < n; i++) n_occ += cm->occ[i] == SP_CELL_OCCUPIED, n_free += cm->occ[i] == SP_CELL_FREE;

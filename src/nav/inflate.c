@@ -35,7 +35,8 @@ int sp_costmap_inflate(sp_costmap *cm, const sp_costmap_opts *opts, sp_error *er
         free(seed), free(du);
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory inflating %zu cells", n);
     }
-    for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_OCCUPIED;
+    /* unknown cells where Gaussians no ray observed stand are kept clear of as obstacles are */
+    for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_OCCUPIED || (cm->hidden && cm->hidden[i]);
     int rc = sp_edt2(seed, cm->nx, cm->ny, cm->res, cm->dist, NULL, err);
     if (!rc && du) {
         for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_UNKNOWN;
