@@ -93,6 +93,7 @@ const char *sp_nav_status_name(int status)
 
 static const char *cell_word(const sp_costmap *cm, long i)
 {
+    if (cm->occ[i] == SP_CELL_UNKNOWN && cm->hidden && cm->hidden[i]) return "occupied (Gaussians no camera saw)";
     if (cm->occ[i] == SP_CELL_UNKNOWN) return "unknown (never observed)";
     if (cm->occ[i] == SP_CELL_OCCUPIED) return "occupied";
     if (cm->cost[i] >= SP_COST_INSCRIBED) return "within the robot radius of an obstacle or unknown space";
