@@ -63,9 +63,10 @@ typedef struct sp_raster_cfg {
     /* 1: time the forward's and backward's stages (sp_raster_last_stages); CUDA records events
      * on its stream between stages (no extra waits). 0 (default): no timing. */
     int profile;
-    /* CUDA only, for tuning: how the backward sums colour gradients over a warp: 1 = gather over
-     * the lanes that kept the Gaussian (v_image staged in shared memory); 0 (default) or -1 =
-     * warp reduce-scatter (measured faster on an H200). Results agree up to float summation
+    /* CUDA only, for tuning: how the backward sums colour gradients. 0 (default): chunks of 32
+     * channels and more as a product in shared memory over the tile's pixels, narrower ones by
+     * warp reduce-scatter; -1: reduce-scatter at every width; 1: gather over the lanes that kept
+     * the Gaussian (v_image staged in shared memory). Results agree up to float summation
      * order. */
     int bwd_gather;
 } sp_raster_cfg;

@@ -7,7 +7,7 @@
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
- * the backward's two colour-gradient sums (cfg.bwd_gather). Skips (77) without a GPU or without the CUDA build. */
+ * the backward's three colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter). Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -419,6 +419,17 @@ static void test_block_sums(void)
     g_block_sums = 0;
 }
 
+/* Wide chunks by warp reduce-scatter (cfg.bwd_gather = -1; by default chunks of 32 channels and
+ * more take the shared-memory product kernel) against the CPU. */
+static void test_reduce_scatter_wide(void)
+{
+    g_block_sums = -1;
+    compare_case(80, 64, 500, 32, 0, 0);
+    compare_case(72, 40, 400, 67, 1, 0);
+    compare_case(40, 36, 150, 48, 1, 0);
+    g_block_sums = 0;
+}
+
 /* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */
 static void test_many_tiles(void) { compare_case(4112, 4112, 3000, 1, 0, 0); }
 
@@ -506,6 +517,54 @@ static double max_diff(const float *a, const float *b, size_t n)
     return m;
 }
 
+/* A batch whose views all ask the same (their passes share colours and background: one
+ * compositing launch for all views): the same bits as one view at a time, and the CPU's within
+ * 1e-4; views of different sizes, one with no Gaussian in front of it. */
+static void test_views_batch_uniform(void)
+{
+    sp_error err = {0};
+    sp_camera base = make_cam(96, 72);
+    scene s = make_scene(2500, 1, &base);
+    sp_splat sp;
+    make_splat(&s, 33, &sp);
+    sp_camera cams[5] = {base, make_cam(64, 40), make_cam(33, 50), base, make_cam(50, 20)};
+    sp_vec3 eye = {0.3f, -0.2f, -0.5f}, at = {0.f, 0.f, 4.f}, upv = {0.f, -1.f, 0.f};
+    sp_camera_look_at(&cams[3], eye, at, upv);
+    sp_vec3 away = {0.f, 0.f, -10.f};
+    sp_camera_look_at(&cams[4], eye, away, upv);
+    float bg[3] = {0.2f, 0.4f, 0.9f};
+    for (int twopass = 0; twopass < 2; twopass++) {
+        sp_render_request shape[5];
+        for (int v = 0; v < 5; v++)
+            shape[v] = (sp_render_request){.rgb = twopass ? (float *)1 : NULL, .features = (float *)1,
+                                           .depth = (float *)1, .alpha = (float *)1,
+                                           .background = twopass ? bg : NULL};
+        host_out batch[5], single[5], cpu[5];
+        render_all(g_gpu, &sp, cams, 5, shape, 0, batch);
+        render_all(g_gpu, &sp, cams, 5, shape, 1, single);
+        sp_device *cd = NULL;
+        CHECK_OK(sp_device_create(&cd, SP_DEVICE_CPU, 2, &err), &err);
+        render_all(cd, &sp, cams, 5, shape, 0, cpu);
+        sp_device_free(cd);
+        for (int v = 0; v < 5; v++) {
+            size_t np = (size_t)cams[v].width * cams[v].height, F = 33;
+            float *b[4] = {batch[v].rgb, batch[v].feat, batch[v].depth, batch[v].alpha};
+            float *o[4] = {single[v].rgb, single[v].feat, single[v].depth, single[v].alpha};
+            float *c[4] = {cpu[v].rgb, cpu[v].feat, cpu[v].depth, cpu[v].alpha};
+            size_t len[4] = {np * 3, np * F, np, np};
+            for (int k = 0; k < 4; k++) {
+                if (!b[k]) continue;
+                CHECK_MSG(memcmp(b[k], o[k], len[k] * 4) == 0, "uniform view %d output %d: batch != single", v, k);
+                double d = max_diff(b[k], c[k], len[k]);
+                CHECK_MSG(d <= 1e-4, "uniform view %d output %d: GPU vs CPU %g", v, k, d);
+            }
+            for (int k = 0; k < 4; k++) free(b[k]), free(o[k]), free(c[k]);
+        }
+    }
+    sp_splat_free(&sp);
+    scene_free(&s);
+}
+
 /* A batch of views of different sizes and requests: the same bits as one view at a time on the
  * GPU, and the CPU's renders within 1e-4 (surface depth: the same bits). */
 static void test_views_batch(void)
@@ -572,9 +631,11 @@ int main(void)
     RUN(test_chunk_option);
     RUN(test_box_tiles);
     RUN(test_block_sums);
+    RUN(test_reduce_scatter_wide);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);
+    RUN(test_views_batch_uniform);
     RUN(test_sh);
     sp_device_free(g_gpu);
     return TEST_EXIT();

@@ -71,6 +71,8 @@ struct sp_cuda_raster {
     sp_device_scratch s_work;
     /* batches (sp_render_views): per-view pair counts, host copy of them */
     sp_device_scratch s_counts;
+    /* batches: the views' compositing arguments and first tiles (rasterize_fwd.cu) */
+    sp_device_scratch s_batch;
     /* cfg.profile: events recorded between the stages (SP_EV_*), made on first use */
     cudaEvent_t ev[SP_EV_COUNT];
     int ev_made, profiling, prof_fwd, prof_bwd;
@@ -104,6 +106,11 @@ int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp
 int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_cuda_view *v, size_t n, sp_error *err);
 int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
                           int max_ch, int aux, sp_error *err);
+/* A batch's views composited in one launch (their passes share colours, D and background);
+ * per-pixel state for backward is not written. */
+int sp_cuda_rasterize_fwd_views(sp_cuda_raster *r, const sp_cuda_view *const *views,
+                                const sp_cuda_pass *passes, size_t nv, int max_ch, int aux,
+                                sp_error *err);
 /* Uploads a HOST background of D floats into the raster's scratch; *out NULL when bg is NULL. */
 int sp_cuda_upload_background(sp_cuda_raster *r, const float *bg, int D, float **out, sp_error *err);
 int sp_cuda_rasterize_surface(sp_cuda_raster *r, const sp_cuda_view *v, float surface_alpha,

@@ -21,7 +21,7 @@ static void cu_destroy(void *state)
     sp_device_scratch *all[] = {&r->s_means2d, &r->s_conic_op, &r->s_depths, &r->s_radii,
                                 &r->s_box, &r->s_keys[0], &r->s_keys[1], &r->s_vals[0],
                                 &r->s_vals[1], &r->s_tile_ranges, &r->s_cub, &r->s_tfinal,
-                                &r->s_last, &r->s_bg, &r->s_work, &r->s_counts};
+                                &r->s_last, &r->s_bg, &r->s_work, &r->s_counts, &r->s_batch};
     for (size_t i = 0; i < sizeof(all) / sizeof(all[0]); i++) sp_device_scratch_release(r->dev, all[i]);
     for (int k = 0; r->ev_made && k < SP_EV_COUNT; k++) cudaEventDestroy(r->ev[k]);
     free(r);

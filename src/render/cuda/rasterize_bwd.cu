@@ -21,59 +21,13 @@
  *    shuffle and NPL fused multiply-adds per kept lane, and no D-wide register array, instead
  *    of D products and about D shuffles per lane. (Block sums in shared memory with one global
  *    atomic per Gaussian and value were measured slower on an H200 and removed.)
+ *  - chunks of 32 channels and more go to rasterize_bwd_mm.cu (colour gradients as a product in
+ *    shared memory over the tile's pixels) unless cfg.bwd_gather asks otherwise: on an H200 at 1M
+ *    Gaussians 1080p it cut this kernel's backward from 18.3 to 12.5 ms at D=64, 16.4 to 11.9 at
+ *    D=48, and matched it at D=32 (8.16 against 8.24 ms).
  * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
-#include "common.cuh"
-
-#define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
-#define FULL_MASK 0xffffffffu
-
-/* Warp reduce-scatter of N values per lane. Each of the five xor-shuffle rounds either halves
- * the values a lane carries (lanes with the round's bit set keep the upper ceil-half, the others
- * the lower; an odd count is padded with an exact zero) or, once one value is left, adds it
- * across the round's partner. Afterwards a lane holds RS_LIVE(N) totals in v[0..), for channels
- * base + i (returned base); lanes that differ only in the bits of the plain-add rounds hold the
- * same totals (one of each group of RS_GROUP(N) writes). Slots that only ever held padding are
- * exactly zero and the caller skips zeros, so they never write. About N shuffles, against 5 N
- * for a full butterfly per value. */
-__host__ __device__ constexpr int rs_live(int n, int steps)
-{
-    return steps == 0 ? n : rs_live(n >= 2 ? (n + 1) / 2 : n, steps - 1);
-}
-__host__ __device__ constexpr int rs_halvings(int n, int steps)
-{
-    return (steps == 0 || n < 2) ? 0 : 1 + rs_halvings((n + 1) / 2, steps - 1);
-}
-#define RS_LIVE(N) rs_live((N), 5)
-#define RS_GROUP(N) (32 >> rs_halvings((N), 5))
-
-template <int N>
-__device__ __forceinline__ int warp_reduce_scatter(float (&v)[N], int lane)
-{
-    int base = 0;
-    int live = N;
-#pragma unroll
-    for (int o = 16; o >= 1; o >>= 1) {
-        if (live >= 2) {
-            const int half = (live + 1) / 2;
-            const bool upper = (lane & o) != 0;
-#pragma unroll
-            for (int i = 0; i < N; i++) {
-                if (i < half) {
-                    const float hi = (i + half < live) ? v[i + half] : 0.f;
-                    const float send = upper ? v[i] : hi;
-                    const float keep = upper ? hi : v[i];
-                    v[i] = keep + __shfl_xor_sync(FULL_MASK, send, o);
-                }
-            }
-            if (upper) base += half;
-            live = half;
-        } else {
-            v[0] += __shfl_xor_sync(FULL_MASK, v[0], o);
-        }
-    }
-    return base;
-}
+#include "bwd_common.cuh"
 
 template <int CH, bool GV>
 __global__ void __launch_bounds__(BLOCK)
@@ -192,18 +146,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     Gd += z * fac;
                     geo[6] = fac * vd;
                 }
-                if (co.w * vis <= SP_ALPHA_MAX) {
-                    const float v_sigma = -co.w * vis * v_alpha;
-                    geo[0] = -v_sigma * (co.x * dx + co.y * dy);
-                    geo[1] = -v_sigma * (co.y * dx + co.z * dy);
-                    /* the conic gradient in the conic's frame (gauss_math.h) */
-                    const float2 fr = s_frame[t];
-                    const float d0 = fr.x * dx + fr.y * dy, d1 = fr.x * dy - fr.y * dx;
-                    geo[2] = 0.5f * v_sigma * d0 * d0;
-                    geo[3] = 0.5f * v_sigma * d0 * d1;
-                    geo[4] = 0.5f * v_sigma * d1 * d1;
-                    geo[5] = vis * v_alpha;
-                }
+                sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
             }
             const int g = s_id[t];
             if (v_colors && GV) {
@@ -308,6 +251,8 @@ template <int CH>
 static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                       float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
+    if (r->cfg.bwd_gather == 0 && sp_cuda_bwd_mm_fits(CH))
+        return sp_cuda_bwd_mm(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     return use_gather(r->cfg.bwd_gather, CH)
                ? launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err)
                : launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);

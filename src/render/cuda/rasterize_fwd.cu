@@ -12,17 +12,30 @@
  * depth, alpha, the final transmittance and the per-pixel end of the list for backward. */
 #include "common.cuh"
 
+#include <stdlib.h>
+
 #define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
 
+/* What compositing one tile of a view reads and writes (a kernel argument: by value for one
+ * view, an array on the device for a batch). */
+typedef struct fwd_view {
+    int W, H, tiles_x;
+    const int2 *ranges;
+    const uint32_t *ids;
+    const float2 *means2d;
+    const float4 *conic_op;
+    const float *depths;
+    float *image, *depth_out, *alpha_out;
+    float *t_final;    /* NULL: not kept (batches have no backward) */
+    int32_t *last_idx; /* with t_final */
+} fwd_view;
+
+/* Composites tile (tx, ty) of view v, channels c0 .. c0 + CH; aux: also depth, alpha and the
+ * per-pixel state for backward. */
 template <int CH>
-__global__ void __launch_bounds__(BLOCK)
-k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
-             const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
-             const float4 *__restrict__ conic_op, const float *__restrict__ depths,
-             const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
-             float *__restrict__ image, float *__restrict__ depth_out,
-             float *__restrict__ alpha_out, float *__restrict__ t_final,
-             int32_t *__restrict__ last_idx, int aux)
+__device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
+                                         const float *__restrict__ colors, int D, int c0,
+                                         const float *__restrict__ bg, bool aux)
 {
     extern __shared__ float4 smem_f4[];
     float4 *s_conic = smem_f4;                        /* [BLOCK] */
@@ -32,13 +45,12 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     int *s_id = (int *)(s_cut + BLOCK);               /* [BLOCK] */
     float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
 
-    const int c0 = c_base + blockIdx.z * CH;
     const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
-    const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x;
-    const int py_i = blockIdx.y * SP_TILE_SIZE + threadIdx.y;
-    const bool inside = px_i < W && py_i < H;
+    const int px_i = tx * SP_TILE_SIZE + threadIdx.x;
+    const int py_i = ty * SP_TILE_SIZE + threadIdx.y;
+    const bool inside = px_i < v.W && py_i < v.H;
     const float px = px_i + 0.5f, py = py_i + 0.5f;
-    const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
+    const int2 range = v.ranges[ty * v.tiles_x + tx];
 
     float acc[CH];
 #pragma unroll
@@ -51,13 +63,13 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         if (__syncthreads_count(done) == BLOCK) break;
         const int cnt = min(BLOCK, range.y - b0);
         if (tid < cnt) {
-            int g = (int)ids[b0 + tid];
+            int g = (int)v.ids[b0 + tid];
             s_id[tid] = g;
-            s_xy[tid] = means2d[g];
-            const float4 co = conic_op[g];
+            s_xy[tid] = v.means2d[g];
+            const float4 co = v.conic_op[g];
             s_conic[tid] = co;
             s_cut[tid] = sp_cu_sigma_cut(co.w);
-            s_z[tid] = depths[g];
+            s_z[tid] = v.depths[g];
         }
         __syncthreads();
         /* colours: neighbouring threads read neighbouring channels of one Gaussian */
@@ -88,16 +100,55 @@ k_raster_fwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         }
     }
     if (!inside) return;
-    const size_t pix = (size_t)py_i * W + px_i;
+    const size_t pix = (size_t)py_i * v.W + px_i;
 #pragma unroll
     for (int c = 0; c < CH; c++)
-        if (c0 + c < D) image[pix * D + c0 + c] = acc[c] + T * (bg ? bg[c0 + c] : 0.f);
-    if (aux && blockIdx.z == 0) {
-        t_final[pix] = T;
-        last_idx[pix] = last;
-        if (depth_out) depth_out[pix] = acc_z;
-        if (alpha_out) alpha_out[pix] = 1.f - T;
+        if (c0 + c < D) v.image[pix * D + c0 + c] = acc[c] + T * (bg ? bg[c0 + c] : 0.f);
+    if (aux) {
+        if (v.t_final) v.t_final[pix] = T, v.last_idx[pix] = last;
+        if (v.depth_out) v.depth_out[pix] = acc_z;
+        if (v.alpha_out) v.alpha_out[pix] = 1.f - T;
     }
+}
+
+template <int CH>
+__global__ void __launch_bounds__(BLOCK)
+k_raster_fwd(fwd_view v, const float *__restrict__ colors, int D, int c_base,
+             const float *__restrict__ bg, int aux)
+{
+    fwd_tile<CH>(v, blockIdx.x, blockIdx.y, colors, D, c_base + blockIdx.z * CH, bg,
+                 aux && blockIdx.z == 0);
+}
+
+/* A batch's views in one launch: block x is tile x of the batch, in view order (tile_base[i] is
+ * view i's first), so the small grids of small views fill the GPU together instead of one
+ * after another (a 320x240 view is 300 blocks: about one wave of an H200, its time that of its
+ * slowest tile). */
+template <int CH>
+__global__ void __launch_bounds__(BLOCK)
+k_raster_fwd_views(const fwd_view *__restrict__ views, const int *__restrict__ tile_base, int nv,
+                   const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
+                   int aux)
+{
+    const int t = blockIdx.x;
+    int lo = 0, hi = nv - 1; /* the last view whose first tile is <= t */
+    while (lo < hi) {
+        const int mid = (lo + hi + 1) >> 1;
+        if (tile_base[mid] <= t) lo = mid;
+        else hi = mid - 1;
+    }
+    const fwd_view v = views[lo];
+    const int local = t - tile_base[lo];
+    fwd_tile<CH>(v, local % v.tiles_x, local / v.tiles_x, colors, D, c_base + blockIdx.z * CH, bg,
+                 aux && blockIdx.z == 0);
+}
+
+static fwd_view fwd_view_of(const sp_cuda_view *v, const sp_cuda_pass *p, int state)
+{
+    fwd_view f = {v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids,
+                  v->proj.means2d, v->proj.conic_op, v->proj.depths, p->image, p->depth, p->alpha,
+                  state ? v->t_final : NULL, state ? v->last_idx : NULL};
+    return f;
 }
 
 static size_t fwd_smem(int ch)
@@ -106,29 +157,50 @@ static size_t fwd_smem(int ch)
                             sizeof(float) * ch);
 }
 
+/* One launch of width CH: a single view (views NULL: v) or a batch of nv views (views and
+ * tile_base on the device, total_tiles blocks). */
+typedef struct fwd_launch {
+    const sp_cuda_view *v;
+    const sp_cuda_pass *p;
+    const fwd_view *views;
+    const int *tile_base;
+    int nv, total_tiles;
+} fwd_launch;
+
 template <int CH>
-static int launch_fwd(const sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
-                      int c_base, int n_chunks, int aux, sp_error *err)
+static int launch_fwd(const sp_cuda_raster *r, const fwd_launch *L, int c_base, int n_chunks,
+                      int aux, sp_error *err)
 {
     size_t smem = fwd_smem(CH);
-    SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
-                                       (int)smem),
-                  err, "forward shared memory");
-    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
-    k_raster_fwd<CH><<<grid, block, smem, r->stream>>>(
-        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
-        v->proj.conic_op, v->proj.depths, p->colors, p->D, c_base, p->bg_dev, p->image,
-        p->depth, p->alpha, v->t_final, v->last_idx, aux);
+    const sp_cuda_pass *p = L->p;
+    dim3 block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    if (L->views) {
+        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd_views<CH>,
+                                           cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem),
+                      err, "forward shared memory");
+        dim3 grid(L->total_tiles, 1, n_chunks);
+        k_raster_fwd_views<CH><<<grid, block, smem, r->stream>>>(L->views, L->tile_base, L->nv,
+                                                                 p->colors, p->D, c_base,
+                                                                 p->bg_dev, aux);
+    } else {
+        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd<CH>,
+                                           cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem),
+                      err, "forward shared memory");
+        const sp_cuda_view *v = L->v;
+        dim3 grid(v->tiles_x, v->tiles_y, n_chunks);
+        k_raster_fwd<CH><<<grid, block, smem, r->stream>>>(fwd_view_of(v, p, 1), p->colors, p->D,
+                                                           c_base, p->bg_dev, aux);
+    }
     SP_CUDA_LAUNCHED(err, "forward rasterization");
     return 0;
 }
 
 /* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
-static int dispatch_fwd(int ch, const sp_cuda_raster *r, const sp_cuda_view *v,
-                        const sp_cuda_pass *p, int c_base, int n_chunks, int aux, sp_error *err)
+static int dispatch_fwd(int ch, const sp_cuda_raster *r, const fwd_launch *L, int c_base,
+                        int n_chunks, int aux, sp_error *err)
 {
     switch (ch) {
-#define SP_WIDTH_CASE(w) case w: return launch_fwd<w>(r, v, p, c_base, n_chunks, aux, err);
+#define SP_WIDTH_CASE(w) case w: return launch_fwd<w>(r, L, c_base, n_chunks, aux, err);
     SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
 #undef SP_WIDTH_CASE
     default: return sp_error_set(err, SP_E_ARG, "no forward kernel for chunk width %d", ch);
@@ -136,17 +208,54 @@ static int dispatch_fwd(int ch, const sp_cuda_raster *r, const sp_cuda_view *v,
 }
 
 /* D channels as full chunks of max_ch plus one narrower launch for the rest; aux: write depth,
- * alpha, the final transmittance and the list ends (once, from the first chunk). */
+ * alpha and (single views) the final transmittance and the list ends, once, from the first
+ * chunk. */
+static int rasterize_chunks(sp_cuda_raster *r, const fwd_launch *L, int max_ch, int aux,
+                            sp_error *err)
+{
+    int D = L->p->D, rc;
+    int full = D / max_ch, rem = D % max_ch;
+    if (full > 0 && (rc = dispatch_fwd(max_ch, r, L, 0, full, aux, err))) return rc;
+    if (rem > 0 && (rc = dispatch_fwd(sp_channel_width(rem, max_ch), r, L, full * max_ch, 1,
+                                      aux && full == 0, err)))
+        return rc;
+    return 0;
+}
+
 int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
                           int max_ch, int aux, sp_error *err)
 {
-    int D = p->D, rc;
-    int full = D / max_ch, rem = D % max_ch;
-    if (full > 0 && (rc = dispatch_fwd(max_ch, r, v, p, 0, full, aux, err))) return rc;
-    if (rem > 0 && (rc = dispatch_fwd(sp_channel_width(rem, max_ch), r, v, p, full * max_ch,
-                                      1, aux && full == 0, err)))
-        return rc;
-    return 0;
+    fwd_launch L = {v, p, NULL, NULL, 1, v->tiles_x * v->tiles_y};
+    return rasterize_chunks(r, &L, max_ch, aux, err);
+}
+
+int sp_cuda_rasterize_fwd_views(sp_cuda_raster *r, const sp_cuda_view *const *views,
+                                const sp_cuda_pass *passes, size_t nv, int max_ch, int aux,
+                                sp_error *err)
+{
+    if (nv == 0) return 0;
+    size_t vb = sizeof(fwd_view) * nv, bytes = vb + sizeof(int) * nv;
+    fwd_view *hv = (fwd_view *)malloc(bytes);
+    if (!hv) return sp_error_set(err, SP_E_NOMEM, "sp_render_views: out of host memory");
+    int *hb = (int *)((char *)hv + vb);
+    size_t total = 0;
+    for (size_t i = 0; i < nv; i++) {
+        hv[i] = fwd_view_of(views[i], &passes[i], 0);
+        hb[i] = (int)total;
+        total += (size_t)views[i]->tiles_x * views[i]->tiles_y;
+    }
+    int rc = total > 0x7fffffff ? sp_error_set(err, SP_E_ARG, "sp_render_views: %zu tiles in one "
+                                               "batch exceed a grid", total)
+                                : sp_cu_reserve(r, &r->s_batch, bytes, err);
+    /* a pageable copy: the host buffer is staged before the call returns, so it can go */
+    if (!rc && cudaMemcpyAsync(r->s_batch.ptr, hv, bytes, cudaMemcpyHostToDevice, r->stream) != cudaSuccess)
+        rc = sp_error_set(err, SP_E_DEVICE, "CUDA: uploading the batch's views failed");
+    free(hv);
+    if (rc) return rc;
+    /* every view's pass shares colours, D and background (the caller checked) */
+    fwd_launch L = {views[0], &passes[0], (const fwd_view *)r->s_batch.ptr,
+                    (const int *)((char *)r->s_batch.ptr + vb), (int)nv, (int)total};
+    return rasterize_chunks(r, &L, max_ch, aux, err);
 }
 
 /* Uploads a host background of D floats into the raster's scratch (NULL: none). */

@@ -3,8 +3,9 @@
  * projection buffer ([views][n]), put in depth order and its tile pairs counted into its slice of
  * one count buffer; one scan over all the slices' counts gives every pair its place in one pair
  * buffer, so one copy of the views' totals (the only wait) sizes every tile sort; then each view's
- * pairs are emitted, sorted and composited with the single-view kernels,
- * unchanged, on pointers into its slices, all queued on the device's stream. The per-pixel
+ * pairs are emitted and sorted with the single-view kernels on pointers into its slices, and
+ * when the views' passes share colours and background every pass composites all views in ONE
+ * launch (else view by view), all queued on the device's stream. The per-pixel
  * forward state (final transmittance, list ends) is shared: nothing differentiates a batch. */
 #include "common.cuh"
 
@@ -150,13 +151,55 @@ static int sort_views(sp_cuda_raster *r, batch_view *bv, size_t nv, size_t n,
     return rc;
 }
 
+/* Whether pass k of every view shares colours, D and background: then the views composite in
+ * one launch (rasterize_fwd.cu). */
+static int same_pass(const sp_raster_view *views, size_t nv, int k)
+{
+    for (size_t i = 0; i < nv; i++) {
+        const sp_raster_pass *a = &views[0].pass[k], *b = &views[i].pass[k];
+        if (views[i].n_pass <= k || a->colors != b->colors || a->D != b->D ||
+            a->background != b->background)
+            return 0;
+    }
+    return 1;
+}
+
+/* Pass k of every view in one launch (same_pass holds). */
+static int composite_pass_batched(sp_cuda_raster *r, const sp_raster_view *views, batch_view *bv,
+                                  size_t nv, int k, int max_ch, sp_error *err)
+{
+    const sp_raster_pass *p0 = &views[0].pass[k];
+    float *bg = NULL;
+    int rc = sp_cuda_upload_background(r, p0->background, p0->D, &bg, err);
+    const sp_cuda_view **vs = (const sp_cuda_view **)malloc(nv * sizeof *vs);
+    sp_cuda_pass *ps = (sp_cuda_pass *)malloc(nv * sizeof *ps);
+    if (!rc && (!vs || !ps)) rc = sp_error_set(err, SP_E_NOMEM, "sp_render_views: out of host memory");
+    for (size_t i = 0; i < nv && !rc; i++) {
+        const sp_raster_view *w = &views[i];
+        vs[i] = &bv[i].v;
+        ps[i] = (sp_cuda_pass){p0->colors, p0->D, bg, w->pass[k].image, k ? NULL : w->depth,
+                               k ? NULL : w->alpha};
+    }
+    if (!rc) rc = sp_cuda_rasterize_fwd_views(r, vs, ps, nv, max_ch, k == 0, err);
+    free(vs), free(ps);
+    return rc;
+}
+
 static int composite_views(sp_cuda_raster *r, const sp_raster_cfg *cfg, const sp_raster_view *views,
                            batch_view *bv, size_t nv, sp_error *err)
 {
     int max_ch = cfg->chunk_fwd ? cfg->chunk_fwd : SP_CHANNEL_CHUNK_MAX;
+    int batched = nv > 1 && views[0].n_pass > 0;
+    for (int k = 0; batched && k < views[0].n_pass; k++) batched = same_pass(views, nv, k);
+    for (size_t i = 0; batched && i < nv; i++) batched = views[i].n_pass == views[0].n_pass;
+    if (batched)
+        for (int k = 0; k < views[0].n_pass; k++) {
+            int rc = composite_pass_batched(r, views, bv, nv, k, max_ch, err);
+            if (rc) return rc;
+        }
     for (size_t i = 0; i < nv; i++) {
         const sp_raster_view *w = &views[i];
-        for (int k = 0; k < w->n_pass; k++) {
+        for (int k = 0; !batched && k < w->n_pass; k++) {
             const sp_raster_pass *p = &w->pass[k];
             float *bg = NULL;
             /* the one background buffer is rewritten per pass: the stream orders each copy after

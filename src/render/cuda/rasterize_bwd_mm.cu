@@ -1,0 +1,282 @@
+/* CUDA backend, stage 4 for wide chunks (32 channels and more): backward compositing with the
+ * colour gradients as a product in shared memory.
+ *
+ * The colour gradient of Gaussian t in a tile is v_colors[t][c] = sum_p fac[t][p] v_image[p][c]
+ * over the tile's 256 pixels (fac = alpha T, the pixel's blending weight). The reduce-scatter
+ * kernel (rasterize_bwd.cu) forms that sum per warp with about CH shuffles and selects per
+ * Gaussian and adds each warp's share atomically; Nsight Compute on an H200 (1M Gaussians, 1080p,
+ * D=32) showed that kernel issue-bound, two thirds of its instructions in those shuffles and
+ * selects, at 25 % occupancy (116 registers). Here the block walks its list in stages of NB = 32
+ * Gaussians: each pixel stores its fac for the stage's Gaussians in shared memory (one store
+ * each, zero where it did not keep one) and keeps the geometry sums by warp reduce-scatter as
+ * before; then every warp forms the product for GPW = 4 of the stage's Gaussians, lane l for
+ * channels l, l + 32 (four pixels per step: four broadcast float4 reads of fac, one read of
+ * v_image per pixel and channel, 16 multiply-adds), over only the 32-pixel rows of the warps
+ * that kept one of its Gaussians, and adds one atomic per Gaussian, channel and tile (not one
+ * per warp). The transmittance recursion, the alpha rule and the geometry terms are the
+ * reduce-scatter kernel's, so both agree with the CPU up to float summation order. */
+#include "bwd_common.cuh"
+
+#define NB 32                    /* Gaussians per stage, and per product */
+#define NWARPS (BLOCK / 32)      /* 8 */
+#define GPW (NB / NWARPS)        /* Gaussians per warp in the product */
+
+/* One stage's inputs as a thread loads them: Gaussian `tid` of the stage (tid < NB), and the
+ * colour values tid, tid + BLOCK, .. of the stage's [NB][CH] block (zero past the list or D). */
+template <int CPT>
+struct stage_regs {
+    int g;
+    float2 xy;
+    float4 co;
+    float z;
+    float col[CPT];
+};
+
+template <int CH, int CPT>
+__device__ __forceinline__ void stage_load(stage_regs<CPT> *s, const uint32_t *__restrict__ ids,
+                                           const float2 *__restrict__ means2d,
+                                           const float4 *__restrict__ conic_op,
+                                           const float *__restrict__ depths,
+                                           const float *__restrict__ colors, int D, int c0,
+                                           int b_end, int cnt, int tid)
+{
+    if (tid < cnt) {
+        s->g = (int)ids[b_end - 1 - tid];
+        s->xy = means2d[s->g];
+        s->co = conic_op[s->g];
+        s->z = depths[s->g];
+    }
+#pragma unroll
+    for (int i = 0; i < CPT; i++) {
+        const int k = tid + i * BLOCK, j = k / CH, c = k - j * CH;
+        s->col[i] = (j < cnt && c0 + c < D) ? colors[(size_t)ids[b_end - 1 - j] * D + c0 + c] : 0.f;
+    }
+}
+
+/* blocks per SM the registers are bounded for: 3 for 32 channels (its shared memory allows 3),
+ * else 2 */
+#define MM_MIN_BLOCKS(CH) ((CH) <= 32 ? 3 : 2)
+
+template <int CH>
+__global__ void __launch_bounds__(BLOCK, MM_MIN_BLOCKS(CH))
+k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
+                const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
+                const float4 *__restrict__ conic_op, const float *__restrict__ depths,
+                const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
+                const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
+                const float *__restrict__ v_image, const float *__restrict__ v_depth,
+                const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+                float *__restrict__ vgeo)
+{
+    constexpr int NPL = (CH + 31) / 32; /* channels per lane in the product */
+    extern __shared__ float4 smem_f4[];
+    float4 *s_conic = smem_f4;                                   /* [NB] */
+    unsigned long long *s_flag = (unsigned long long *)(s_conic + NB); /* [NB]: byte w = warp w kept it */
+    float *s_fac = (float *)(s_flag + NB);                       /* [NB][BLOCK] */
+    float *s_vout = s_fac + NB * BLOCK;                          /* [BLOCK][CH] pixels' v_image */
+    float *s_col = s_vout + BLOCK * CH;                          /* [NB][CH] */
+    float2 *s_xy = (float2 *)(s_col + NB * CH);                  /* [NB] */
+    float2 *s_frame = s_xy + NB;                                 /* [NB] conic frame (cs, sn) */
+    float *s_z = (float *)(s_frame + NB);                        /* [NB] */
+    float *s_cut = s_z + NB;                                     /* [NB] */
+    int *s_id = (int *)(s_cut + NB);                             /* [NB] */
+    __shared__ int s_block_last;
+
+    const int c0 = c_base + blockIdx.z * CH;
+    const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
+    const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
+    const int lane = tid & 31, warp = tid >> 5;
+    const int bx = blockIdx.x * SP_TILE_SIZE, by = blockIdx.y * SP_TILE_SIZE;
+    const int px_i = bx + threadIdx.x, py_i = by + threadIdx.y;
+    const bool inside = px_i < W && py_i < H;
+    const float px = px_i + 0.5f, py = py_i + 0.5f;
+    const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
+    const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
+
+    /* the tile's v_image chunk, read coalesced (pixel-major, channels contiguous) */
+    for (int k = tid; k < BLOCK * CH; k += BLOCK) {
+        const int p = k / CH, c = k - p * CH;
+        const int x = bx + p % SP_TILE_SIZE, y = by + p / SP_TILE_SIZE;
+        s_vout[k] = (x < W && y < H && c0 + c < D) ? v_image[((size_t)y * W + x) * D + c0 + c] : 0.f;
+    }
+    const float Tf = inside ? t_final[pix] : 1.f;
+    const int last = inside ? last_idx[pix] : range.x;
+    if (tid == 0) s_block_last = range.x;
+    __syncthreads();
+    atomicMax(&s_block_last, last);
+    float vout[CH];
+    float G = 0.f;
+#pragma unroll
+    for (int c = 0; c < CH; c++) {
+        vout[c] = s_vout[tid * CH + c];
+        if (bg && c0 + c < D) G += vout[c] * bg[c0 + c];
+    }
+    G *= Tf;
+    const float vd = (do_aux && inside && v_depth) ? v_depth[pix] : 0.f;
+    const float va = (do_aux && inside && v_alpha_out) ? v_alpha_out[pix] : 0.f;
+    float Gd = 0.f, T = Tf;
+    const int warp_last = __reduce_max_sync(FULL_MASK, last);
+    __syncthreads();
+    const int block_last = s_block_last;
+
+    /* Stages are double-buffered through registers: the next stage's geometry and colours are
+     * loaded while this one is composited, so the barrier that starts a stage waits on no
+     * global load. */
+    constexpr int CPT = (NB * CH + BLOCK - 1) / BLOCK; /* colour values per thread and stage */
+    stage_regs<CPT> nx;
+    stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, block_last,
+                        min(NB, block_last - range.x), tid);
+    for (int b_end = block_last; b_end > range.x; b_end -= NB) {
+        const int cnt = min(NB, b_end - range.x);
+        __syncthreads(); /* the previous stage's product is done with s_fac, s_col, s_id */
+        if (tid < cnt) {
+            s_id[tid] = nx.g;
+            s_xy[tid] = nx.xy;
+            s_conic[tid] = nx.co;
+            s_cut[tid] = sp_cu_sigma_cut(nx.co.w);
+            const float con[3] = {nx.co.x, nx.co.y, nx.co.z};
+            float fcs, fsn;
+            sp_gm_conic_frame(con, &fcs, &fsn);
+            s_frame[tid] = make_float2(fcs, fsn);
+            s_z[tid] = nx.z;
+        }
+#pragma unroll
+        for (int i = 0; i < CPT; i++) {
+            const int k = tid + i * BLOCK;
+            if (k < NB * CH) s_col[k] = nx.col[i];
+        }
+        if (b_end - NB > range.x)
+            stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, b_end - NB,
+                                min(NB, b_end - NB - range.x), tid);
+        __syncthreads();
+        for (int t = 0; t < NB; t++) {
+            const int idx = b_end - 1 - t;
+            float fac = 0.f, geo[7];
+            bool valid = false;
+#pragma unroll
+            for (int k = 0; k < 7; k++) geo[k] = 0.f;
+            if (t < cnt && idx < warp_last) { /* warp-uniform */
+                const float4 co = s_conic[t];
+                const float2 xy = s_xy[t];
+                const float dx = px - xy.x, dy = py - xy.y;
+                float vis = 0.f, alpha = 0.f;
+                if (inside && idx < last) alpha = sp_cu_alpha(co, s_cut[t], dx, dy, &vis);
+                valid = alpha > 0.f;
+                if (valid) {
+                    /* IEEE 1/x, as the CPU's division (see rasterize_bwd.cu) */
+                    const float ra = __frcp_rn(1.f - alpha);
+                    T *= ra;
+                    fac = alpha * T;
+                    const float *col = s_col + t * CH;
+                    float p = 0.f;
+#pragma unroll
+                    for (int c = 0; c < CH; c++) p += col[c] * vout[c];
+                    float v_alpha = p * T - G * ra;
+                    G += p * fac;
+                    if (do_aux) {
+                        const float z = s_z[t];
+                        v_alpha += (z * T - Gd * ra) * vd + Tf * ra * va;
+                        Gd += z * fac;
+                        geo[6] = fac * vd;
+                    }
+                    sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
+                }
+            }
+            s_fac[t * BLOCK + tid] = fac;
+            const unsigned kept = __ballot_sync(FULL_MASK, valid);
+            if (lane == 0) ((unsigned char *)(s_flag + t))[warp] = kept != 0;
+            if (!kept) continue;
+            const int slot = warp_reduce_scatter<7>(geo, lane);
+            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
+                atomicAdd(vgeo + (size_t)s_id[t] * SP_VGEO_STRIDE + slot, geo[0]);
+        }
+        __syncthreads();
+        const int t0 = warp * GPW;
+        if (!v_colors || t0 >= cnt) continue; /* warp-uniform */
+        unsigned long long rows = 0;
+#pragma unroll
+        for (int j = 0; j < GPW; j++) rows |= s_flag[t0 + j];
+        float acc[GPW][NPL];
+#pragma unroll
+        for (int j = 0; j < GPW; j++)
+#pragma unroll
+            for (int i = 0; i < NPL; i++) acc[j][i] = 0.f;
+        for (int w = 0; w < NWARPS; w++) {
+            if (!((rows >> (8 * w)) & 0xffu)) continue; /* no pixel of warp w kept any of them */
+            for (int p = 32 * w; p < 32 * w + 32; p += 4) {
+                float4 f[GPW];
+#pragma unroll
+                for (int j = 0; j < GPW; j++) f[j] = *(const float4 *)(s_fac + (t0 + j) * BLOCK + p);
+#pragma unroll
+                for (int i = 0; i < NPL; i++) {
+                    const int c = lane + 32 * i;
+                    if (CH % 32 != 0 && c >= CH) continue;
+                    const float *sv = s_vout + (size_t)p * CH + c;
+                    const float v0 = sv[0], v1 = sv[CH], v2 = sv[2 * CH], v3 = sv[3 * CH];
+#pragma unroll
+                    for (int j = 0; j < GPW; j++)
+                        acc[j][i] += f[j].x * v0 + f[j].y * v1 + f[j].z * v2 + f[j].w * v3;
+                }
+            }
+        }
+#pragma unroll
+        for (int j = 0; j < GPW; j++) {
+            if (t0 + j >= cnt) break;
+            const size_t g = (size_t)s_id[t0 + j];
+#pragma unroll
+            for (int i = 0; i < NPL; i++) {
+                const int c = lane + 32 * i;
+                if (c < CH && c0 + c < D && acc[j][i] != 0.f) atomicAdd(v_colors + g * D + c0 + c, acc[j][i]);
+            }
+        }
+    }
+}
+
+static size_t mm_smem(int ch)
+{
+    return (size_t)NB * (sizeof(float4) + sizeof(unsigned long long) + BLOCK * sizeof(float) +
+                         ch * sizeof(float) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int)) +
+           (size_t)BLOCK * ch * sizeof(float);
+}
+
+/* Whether this kernel takes chunks of width ch on this GPU: 32 channels and more (narrower ones
+ * reduce-scatter cheaply, and 256 pixels x ch floats of v_image must fit beside the stage). */
+bool sp_cuda_bwd_mm_fits(int ch)
+{
+    if (ch != 32 && ch != 40 && ch != 48 && ch != 64) return false;
+    int dev = 0, max_smem = 0;
+    if (cudaGetDevice(&dev) != cudaSuccess ||
+        cudaDeviceGetAttribute(&max_smem, cudaDevAttrMaxSharedMemoryPerBlockOptin, dev) != cudaSuccess)
+        return false;
+    return mm_smem(ch) + 64 <= (size_t)max_smem;
+}
+
+template <int CH>
+static int launch_mm(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                     float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+{
+    size_t smem = mm_smem(CH);
+    SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_bwd_mm<CH>, cudaFuncAttributeMaxDynamicSharedMemorySize,
+                                       (int)smem),
+                  err, "backward shared memory");
+    const sp_cuda_view *v = &r->view;
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    k_raster_bwd_mm<CH><<<grid, block, smem, r->stream>>>(
+        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
+        v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+    SP_CUDA_LAUNCHED(err, "backward rasterization");
+    return 0;
+}
+
+int sp_cuda_bwd_mm(int ch, const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                   float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+{
+    switch (ch) {
+    case 32: return launch_mm<32>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 40: return launch_mm<40>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 48: return launch_mm<48>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case 64: return launch_mm<64>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    default: return sp_error_set(err, SP_E_ARG, "no product backward kernel for chunk width %d", ch);
+    }
+}
