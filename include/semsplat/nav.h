@@ -104,22 +104,21 @@ typedef struct sp_costmap_opts {
                                 * floor's rendered surface spreads past it), that this many scans
                                 * hit and the veto above did not clear is unknown, and so are the
                                 * free columns within hit_grow_tol floor tolerances of it unless
-                                * it lies beside an
-                                * obstacle or the capture stood there: a rendered surface too faint
-                                * in the footprints (a trained table top of a few large translucent
-                                * Gaussians), never seen past (1; 0 = off; footprints only) */
+                                * it lies beside an obstacle or the capture stood there: a
+                                * rendered surface too faint in the footprints (a trained table
+                                * top of a few large translucent Gaussians), never seen past (1;
+                                * 0 = off; footprints only) */
     float hit_grow_tol;        /* (2: the rendered floor's thickness, the floor tolerance, is this
                                 * splat's error on rendered surfaces: an ideal splat's 0.05 m grows
                                 * a surface by 0.1 m, a hazy trained one's 0.15 m by 0.3 m, where a
                                 * table top's rendered edge lies decimetres inside the true one) */
     float faint_blocks_free;   /* a free column with footprint evidence at least this in a voxel
-                                * from the first slice wholly above the floor tolerance is unknown,
-                                * and so are the free columns within faint_grow_tol floor
-                                * tolerances of it unless it
-                                * lies beside an obstacle: a thin surface the training views
-                                * rendered faintly and saw through, held by a few faint Gaussians
-                                * (the ideal splats have none over free floor) (0.1; 0 = off;
-                                * footprints only) */
+                                * from the same slice as hit_blocks_free's is unknown, and so are
+                                * the free columns within faint_grow_tol floor tolerances of it,
+                                * unless it lies beside an obstacle (whose footprint spills over):
+                                * a thin surface the training views rendered faintly and saw
+                                * through, held by a few faint Gaussians (the ideal splats have
+                                * none over free floor) (0.1; 0 = off; footprints only) */
     float faint_grow_tol;      /* (1) */
     float hit_above_m;         /* surface points up to this far above the band's top are hits of
                                 * its top slice: a trained splat renders a surface centimetres off

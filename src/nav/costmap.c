@@ -319,21 +319,19 @@ static int first_slice_above(const sp_costmap *cm, const nav_slices *sl, float h
 
 enum { SURF_NONE, SURF_HIT, SURF_FAINT, SURF_BESIDE };
 
-/* What blocks free column i (not occupied): SURF_HIT, a voxel from slice v_hit that at least
+/* What blocks free column i (not occupied), from slice v0 up: SURF_HIT, a voxel that at least
  * hit_blocks_free scans hit and the veto did not clear (a surface some view rendered there);
- * SURF_FAINT, a voxel from slice v_faint with footprint evidence of at least faint_blocks_free (a
- * thin surface the views rendered too faintly to stop a ray); SURF_NONE. */
-static int surface_kind(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, long i,
-                        int v_hit, int v_faint)
+ * SURF_FAINT, a voxel with footprint evidence of at least faint_blocks_free (a thin surface the
+ * views rendered too faintly to stop a ray); SURF_NONE. */
+static int surface_kind(const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free, long i, int v0)
 {
     const nav_slices *sl = &co->sl;
     float faint = o->faint_blocks_free > 0 ? logf(1.0f - o->faint_blocks_free) : -INFINITY;
     int kind = SURF_NONE;
-    for (int v = v_hit < v_faint ? v_hit : v_faint; v < sl->n; v++) {
+    for (int v = v0; v < sl->n; v++) {
         long k = v * sl->cells + i;
-        if (o->hit_blocks_free > 0 && v >= v_hit && co->hit_scans[k] >= o->hit_blocks_free && !voxel_vetoed(o, co, k))
-            return SURF_HIT;
-        if (v >= v_faint && log_free[k] <= faint) kind = SURF_FAINT;
+        if (o->hit_blocks_free > 0 && co->hit_scans[k] >= o->hit_blocks_free && !voxel_vetoed(o, co, k)) return SURF_HIT;
+        if (log_free[k] <= faint) kind = SURF_FAINT;
     }
     return kind;
 }
@@ -353,25 +351,24 @@ static void grow_disk(const sp_costmap *cm, int x, int y, int r, uint8_t *grow)
  * rendered surfaces) (a trained table top's rendered edge lies decimetres inside the true one, its
  * middle may be missing) when it is not itself beside an obstacle (there the surface points are
  * the obstacle's, a cell off; measured, growing those too takes the ideal house from 95.06 to
- * 94.86 %). Hits count from the first slice wholly above twice the floor tolerance (a hazy floor's
- * rendered surface spreads past the tolerance; measured on the trained bookstore, from the first
- * slice above it the floor haze's fringe is hit over free floor 13756 times to 5625 over
- * furniture), faint evidence from the first wholly above the tolerance. surface [cells] and grow
- * [cells] are scratch. */
+ * 94.86 %). Both count from the first slice wholly above twice the floor tolerance: a hazy
+ * floor's rendered surface and its faint Gaussians spread past the tolerance (measured on the
+ * trained bookstore, in the first slice above it the haze's fringe is hit over free floor 13756
+ * times to 5625 over furniture; faint evidence counted from there, 16 of 44 objects reached
+ * instead of 23). surface [cells] and grow [cells] are scratch. */
 static void block_surfaces(sp_costmap *cm, const sp_costmap_opts *o, const nav_carve_out *co, const float *log_free,
                            const uint8_t *stood, uint8_t *surface, uint8_t *grow)
 {
     const nav_slices *sl = &co->sl;
-    int v_faint = first_slice_above(cm, sl, 2 * o->floor_tolerance_m);
-    int v_hit = first_slice_above(cm, sl, 2 * o->floor_tolerance_m);
     float tol = o->floor_tolerance_m;
+    int v0 = first_slice_above(cm, sl, 2 * tol);
     int g_hit = (int)lroundf(o->hit_grow_tol * tol / cm->res), g_faint = (int)lroundf(o->faint_grow_tol * tol / cm->res);
     size_t n = (size_t)cm->nx * cm->ny;
     memset(grow, 0, n);
     for (int y = 0; y < cm->ny; y++)
         for (int x = 0; x < cm->nx; x++) {
             long i = nav_idx(cm, x, y);
-            surface[i] = cm->occ[i] == SP_CELL_OCCUPIED ? SURF_NONE : (uint8_t)surface_kind(o, co, log_free, i, v_hit, v_faint);
+            surface[i] = cm->occ[i] == SP_CELL_OCCUPIED ? SURF_NONE : (uint8_t)surface_kind(o, co, log_free, i, v0);
             int kind = surface[i];
             for (int dy = -1; dy <= 1 && kind != SURF_NONE && surface[i] == kind; dy++)
                 for (int dx = -1; dx <= 1 && surface[i] == kind; dx++)
