@@ -167,6 +167,10 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--veto")) co.pass_veto = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--lowest-needs-hit")) co.lowest_needs_hit = atoi(v), i++;
         else if (!strcmp(argv[i], "--hit-blocks-free")) co.hit_blocks_free = atoi(v), i++;
+        else if (!strcmp(argv[i], "--hit-grow")) co.hit_grow_tol = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--faint-blocks-free")) co.faint_blocks_free = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--faint-grow")) co.faint_grow_tol = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--hit-above")) co.hit_above_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--unseen-unknown")) co.unseen_unknown = atoi(v), i++;
         else if (!strcmp(argv[i], "--veto-beside")) co.veto_beside = atoi(v), i++;
         else if (!strcmp(argv[i], "--free-from-floor")) co.free_from_floor = atoi(v), i++;

@@ -99,16 +99,37 @@ typedef struct sp_costmap_opts {
     int lowest_needs_hit;      /* the lowest slice's footprints count only where some scan hit the
                                 * voxel: a trained floor is a haze centimetres to decimetres thick
                                 * whose rendered surface is the floor (1) */
-    int hit_blocks_free;       /* a free column within a cell of a column that is not occupied but
-                                * has a voxel (above the floor tolerance) this many scans hit and
-                                * the veto above did not clear is unknown, unless the capture stood
-                                * there: a rendered surface too faint in the footprints (a trained
-                                * table top of a few large translucent Gaussians), never seen past
-                                * (1; 0 = off; footprints only) */
-    int unseen_unknown;        /* 1: footprints in a voxel no scan observed make its column unknown,
-                                * not occupied (0: measured, +3.4 to +4.6 points of agreement on the
-                                * trained house and bookstore and the same false free, but an
-                                * obstacle marked unknown is not inflated, so off) */
+    int hit_blocks_free;       /* a free column that is not occupied but has a voxel, from the
+                                * first slice wholly above twice the floor tolerance (a hazy
+                                * floor's rendered surface spreads past it), that this many scans
+                                * hit and the veto above did not clear is unknown, and so are the
+                                * free columns within hit_grow_tol floor tolerances of it unless
+                                * it lies beside an obstacle or the capture stood there: a
+                                * rendered surface too faint in the footprints (a trained table
+                                * top of a few large translucent Gaussians), never seen past (1;
+                                * 0 = off; footprints only) */
+    float hit_grow_tol;        /* (2: the rendered floor's thickness, the floor tolerance, is this
+                                * splat's error on rendered surfaces: an ideal splat's 0.05 m grows
+                                * a surface by 0.1 m, a hazy trained one's 0.15 m by 0.3 m, where a
+                                * table top's rendered edge lies decimetres inside the true one) */
+    float faint_blocks_free;   /* a free column with footprint evidence at least this in a voxel
+                                * from the same slice as hit_blocks_free's is unknown, and so are
+                                * the free columns within faint_grow_tol floor tolerances of it,
+                                * unless it lies beside an obstacle (whose footprint spills over):
+                                * a thin surface the training views rendered faintly and saw
+                                * through, held by a few faint Gaussians (the ideal splats have
+                                * none over free floor) (0.1; 0 = off; footprints only) */
+    float faint_grow_tol;      /* (1) */
+    float hit_above_m;         /* surface points up to this far above the band's top are hits of
+                                * its top slice: a trained splat renders a surface centimetres off
+                                * the true one, and a desk top just under the band's top renders
+                                * above it (0.05) */
+    int unseen_unknown;        /* 1 (default): footprints in a voxel no scan observed make its
+                                * column unknown, not occupied (nobody saw it: the inside of a wall
+                                * or a cabinet, haze behind furniture), and cm->hidden marks it for
+                                * the inflation, so the robot keeps clear of it as of an obstacle
+                                * (measured: +3 to +5 points of agreement on the trained splats,
+                                * the same false free and objects reached) */
     /* SP_OCCUPANCY_SCANS: the scans alone, fused as log-odds (OctoMap's sensor model) */
     float prob_hit;            /* P(occupied) from one scan's hit (0.7, OctoMap's) */
     float prob_miss;           /* P(occupied) from one scan seeing through (0.4, OctoMap's) */
@@ -163,11 +184,14 @@ typedef struct sp_costmap {
     float band[2];       /* world z range of the robot's body: floor + band_lo .. floor + band_hi */
     uint8_t *occ;        /* SP_CELL_FREE / OCCUPIED / UNKNOWN */
     uint8_t *cost;       /* SP_COST_*: 0..252 inflation, 253 inscribed, 254 lethal, 255 unknown */
-    float *dist;         /* metres from the cell centre to the nearest occupied cell's centre
-                          * (INFINITY when there is none) */
+    float *dist;         /* metres from the cell centre to the nearest occupied (or hidden)
+                          * cell's centre (INFINITY when there is none) */
     uint16_t *seen;      /* training-camera rays that crossed the cell's band, summed over its
                           * slices, plus those that ended on its floor (NULL for maps read from
                           * files): how well the capture observed it */
+    uint8_t *hidden;     /* 1: an unknown cell where Gaussians stand that no training ray observed
+                          * (unseen_unknown): inflated as an obstacle is, so the robot's body keeps
+                          * clear of it; NULL when there are none (maps read from files) */
     sp_costmap_opts opts;/* the settings it was built or inflated with */
 } sp_costmap;
 
@@ -184,7 +208,8 @@ int sp_costmap_build_model(sp_costmap *cm, const char *model_dir, const sp_costm
 void sp_costmap_free(sp_costmap *cm);
 int sp_costmap_copy(sp_costmap *dst, const sp_costmap *src, sp_error *err);
 
-/* Recomputes dist and cost from occ with opts (robot radius, inflation); opts NULL = cm->opts. */
+/* Recomputes dist and cost from occ (and hidden) with opts (robot radius, inflation); opts NULL =
+ * cm->opts. */
 int sp_costmap_inflate(sp_costmap *cm, const sp_costmap_opts *opts, sp_error *err);
 
 /* Writes <stem>.pgm (trinary: free 254, occupied 0, unknown 205) and yaml_path (image, mode

@@ -221,7 +221,10 @@ static int mw_cell(void *ctx, double x, double y)
     const sp_costmap *cm = sp_nav_costmap(((model_world *)ctx)->nav);
     int ix, iy;
     if (!isfinite(x) || !isfinite(y) || sp_costmap_cell(cm, (float)x, (float)y, &ix, &iy)) return AGENT_CELL_OUTSIDE;
-    uint8_t v = cm->occ[(long)iy * cm->nx + ix];
+    long i = (long)iy * cm->nx + ix;
+    uint8_t v = cm->occ[i];
+    /* an unknown cell where Gaussians no camera saw stand (the inside of a wall) holds something */
+    if (v == SP_CELL_UNKNOWN && cm->hidden && cm->hidden[i]) return AGENT_CELL_OCCUPIED;
     return v == SP_CELL_FREE ? AGENT_CELL_FREE : v == SP_CELL_OCCUPIED ? AGENT_CELL_OCCUPIED : AGENT_CELL_UNKNOWN;
 }
 

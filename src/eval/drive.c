@@ -179,8 +179,9 @@ void sp_eval_drive_map_opts(sp_nav_opts *o)
     o->costmap.despeckle_cells = 20;
     o->costmap.band_lo_m = 0.15f;
     /* hit_blocks_free (nav's default since n5) made this map's start a 5.5 m^2 island on the CPU
-     * demo model (5 of 24 objects reachable, and the demo video's three commands arrived at none);
-     * off, 18 of 24, 74.8 % agreement, 1.13 % of truly occupied cells free (0.06 % with it) */
+     * demo model (5 of 24 objects reachable, and the demo video's three commands arrived at none;
+     * with n6's rules 11 of 24); off, with faint_blocks_free (on by default), 18 of 24, 72.6 %
+     * agreement, 0.43 % of truly occupied cells free (1.13 % without faint_blocks_free) */
     o->costmap.hit_blocks_free = 0;
 }
 

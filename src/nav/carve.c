@@ -108,7 +108,8 @@ static void carve_ray(const sp_costmap *cm, ray_ctx *rc, sp_vec3 C, sp_vec3 E, f
 }
 
 /* Where a surface point counts: the flag index of its floor sighting (near the floor) or of its
- * voxel's hit (in the band), -1 for neither. Each class is a height interval of one cell. */
+ * voxel's hit (in the band, or up to hit_above_m above it: the top slice), -1 for neither. Each
+ * class is a height interval of one cell. */
 static long surface_key(const carve_job *j, const float P[3])
 {
     const sp_costmap *cm = j->cm;
@@ -117,7 +118,7 @@ static long surface_key(const carve_job *j, const float P[3])
     long cell = nav_idx(cm, ix, iy);
     float dz = P[2] - cm->floor_z;
     if (dz < j->floor_tol && dz > -j->floor_tol) return j->sl->n * j->sl->cells + cell;
-    if (P[2] >= cm->band[0] && P[2] <= cm->band[1]) return nav_slice_of(j->sl, P[2]) * j->sl->cells + cell;
+    if (P[2] >= cm->band[0] && P[2] <= cm->band[1] + j->o->hit_above_m) return nav_slice_of(j->sl, P[2]) * j->sl->cells + cell;
     return -1;
 }
 

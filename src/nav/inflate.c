@@ -35,7 +35,8 @@ int sp_costmap_inflate(sp_costmap *cm, const sp_costmap_opts *opts, sp_error *er
         free(seed), free(du);
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory inflating %zu cells", n);
     }
-    for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_OCCUPIED;
+    /* unknown cells where Gaussians no ray observed stand are kept clear of as obstacles are */
+    for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_OCCUPIED || (cm->hidden && cm->hidden[i]);
     int rc = sp_edt2(seed, cm->nx, cm->ny, cm->res, cm->dist, NULL, err);
     if (!rc && du) {
         for (size_t i = 0; i < n; i++) seed[i] = cm->occ[i] == SP_CELL_UNKNOWN;
@@ -92,6 +93,7 @@ const char *sp_nav_status_name(int status)
 
 static const char *cell_word(const sp_costmap *cm, long i)
 {
+    if (cm->occ[i] == SP_CELL_UNKNOWN && cm->hidden && cm->hidden[i]) return "occupied (Gaussians no camera saw)";
     if (cm->occ[i] == SP_CELL_UNKNOWN) return "unknown (never observed)";
     if (cm->occ[i] == SP_CELL_OCCUPIED) return "occupied";
     if (cm->cost[i] >= SP_COST_INSCRIBED) return "within the robot radius of an obstacle or unknown space";

@@ -1,7 +1,8 @@
 /* The costmap: floor detection, footprints and carving against the room's boxes, Nav2's inflation
  * formula on core's distance transform, the map_server round trip (unknown
  * stays unknown; the 0.25 trap shown), the OccupancyGrid table, the goal check and bad input;
- * thin things, the measured floor tolerance (a low sill, a hazy floor), cropped views. */
+ * thin things, the measured floor tolerance (a low sill, a hazy floor), a faint thin surface
+ * (faint_blocks_free), hidden cells inflated (unseen_unknown), cropped views. */
 #include <stdio.h>
 
 #include "nav/nav_internal.h"
@@ -387,6 +388,82 @@ static void test_floor_tolerance(void)
     sp_splat_free(&s);
 }
 
+/* A thin surface the views render too faintly to stop a ray (a trained table top of a few faint
+ * Gaussians, summed opacity well under 0.5): every ray sees through it, so without
+ * faint_blocks_free its cells are free; with it (the default) its footprint evidence, at least 0.1
+ * but under occupied_evidence, makes them unknown. hit_blocks_free is off in both runs. */
+static const ns_box faint_top = {{1.6f, 2.4f, 0.6f}, {2.4f, 3.0f, 0.6f}};
+
+static void test_faint_surface(void)
+{
+    sp_error err = {0};
+    sp_splat s;
+    CHECK_OK(ns_make_splat(&s, 1, &err), &err);
+    size_t n = s.n;
+    for (float x = faint_top.lo[0] + 0.05f; x < faint_top.hi[0]; x += 0.1f)
+        for (float y = faint_top.lo[1] + 0.05f; y < faint_top.hi[1]; y += 0.1f) {
+            float p[3] = {x, y, faint_top.lo[2]};
+            size_t i = n;
+            ns_push(&s, &n, p, 2, 0.06f);
+            s.opacity_logits[i] = -1.4f; /* opacity 0.2 */
+        }
+    s.n = n;
+    sp_splat keep = g_splat;
+    g_splat = s;
+    int n_free[2] = {0, 0}, total = 0;
+    for (int faint = 0; faint < 2; faint++) {
+        sp_costmap cm;
+        sp_costmap_opts o = sp_costmap_opts_default();
+        o.hit_blocks_free = 0;
+        if (!faint) o.faint_blocks_free = 0;
+        build_room_at(&cm, &o, 160, 120);
+        total = 0;
+        for (int iy = 0; iy < cm.ny; iy++)
+            for (int ix = 0; ix < cm.nx; ix++) {
+                float x0 = cm.origin[0] + ix * cm.res - NS_OFFX, y0 = cm.origin[1] + iy * cm.res - NS_OFFY;
+                if (!ns_overlap(&faint_top, x0, y0, x0 + cm.res, y0 + cm.res)) continue;
+                total++;
+                n_free[faint] += cm.occ[nav_idx(&cm, ix, iy)] == SP_CELL_FREE;
+            }
+        sp_costmap_free(&cm);
+    }
+    fprintf(stderr, "faint table top: %d of %d cells free without faint_blocks_free, %d with it\n", n_free[0],
+            total, n_free[1]);
+    CHECK_MSG(n_free[0] > total / 2, "without the rule only %d of %d cells free: the test shows nothing", n_free[0],
+              total);
+    CHECK_MSG(n_free[1] == 0, "%d of the faint top's %d cells are free", n_free[1], total);
+    g_splat = keep;
+    sp_splat_free(&s);
+}
+
+/* cm->hidden (unseen_unknown): an unknown cell where Gaussians no ray observed stand is inflated
+ * as an obstacle is (its own cost stays unknown), and sp_costmap_copy keeps it. */
+static void test_hidden_inflated(void)
+{
+    sp_error err = {0};
+    sp_costmap cm;
+    memset(&cm, 0, sizeof cm);
+    cm.nx = cm.ny = 21, cm.res = 0.05f, cm.opts = sp_costmap_opts_default(); /* robot radius 0.2 m */
+    size_t n = 21 * 21;
+    cm.occ = calloc(n, 1), cm.cost = malloc(n), cm.dist = malloc(n * sizeof(float)), cm.hidden = calloc(n, 1);
+    long mid = 10 * 21 + 10;
+    cm.occ[mid] = SP_CELL_UNKNOWN, cm.hidden[mid] = 1;
+    CHECK_OK(sp_costmap_inflate(&cm, NULL, &err), &err);
+    CHECK(cm.cost[mid] == SP_COST_UNKNOWN);
+    CHECK_NEAR(cm.dist[mid + 1], 0.05f, 1e-6);
+    CHECK(cm.cost[mid + 1] == SP_COST_INSCRIBED);
+    CHECK(cm.cost[mid + 21 * 4] == SP_COST_INSCRIBED); /* 0.2 m: the robot radius */
+    CHECK(cm.cost[mid + 21 * 5] < SP_COST_INSCRIBED);
+    sp_costmap c2;
+    CHECK_OK(sp_costmap_copy(&c2, &cm, &err), &err);
+    CHECK(c2.hidden && c2.hidden[mid] == 1 && c2.hidden[mid + 1] == 0);
+    sp_costmap_free(&c2);
+    cm.hidden[mid] = 0; /* a plain unknown cell is not inflated (Nav2's inflate_around_unknown off) */
+    CHECK_OK(sp_costmap_inflate(&cm, NULL, &err), &err);
+    CHECK(cm.cost[mid + 1] == SP_COST_FREE);
+    sp_costmap_free(&cm);
+}
+
 /* Views from above the band are cropped to the rows whose rays fall (only when no view counts
  * are asked for, which need every pixel): the map is the same as from the whole views (cells may
  * differ by float rounding of the shifted principal point: at most 0.1 %). */
@@ -427,6 +504,8 @@ int main(void)
     RUN(test_scans_occupancy);
     RUN(test_thin_things);
     RUN(test_floor_tolerance);
+    RUN(test_faint_surface);
+    RUN(test_hidden_inflated);
     RUN(test_crop_same);
     RUN(test_inflation_formula);
     RUN(test_map_roundtrip);
