@@ -264,18 +264,82 @@ static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_erro
  * region of the objects it names. A question ("where is the car", "where can I sit"), a purpose
  * ("where to store my shoes") or a person's doing ("where I can cook", "where we keep the
  * tools": a thing to cook on, to keep them in) describes a thing and is left as it is. */
-static void where_clause(lex_tokens *t)
+static int where_clause(lex_tokens *t)
 {
     static const char *const aux[] = {"to", "is", "are", "was", "were", "can", "could", "do", "does",
                                       "did", "should", "would", "will", "shall", "may", "might", "must",
                                       "i", "we", "you", "one", "someone", "somebody", "people", "they",
                                       "he", "she", NULL};
-    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return;
+    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return 0;
     for (int i = 0; aux[i]; i++)
-        if (!strcmp(t->w[1], aux[i])) return;
+        if (!strcmp(t->w[1], aux[i])) return 0;
     memmove(t->w[1], t->w[0], sizeof t->w[0] * (size_t)t->n);
     snprintf(t->w[0], LEX_WORD, "place");
     t->n++;
+    return 1;
+}
+
+/* 1 when w's commonest noun sense is a person ("teacher", "kids", "pupil"). */
+static int names_person(const sp_lex_vocab *v, const char *w, sp_error *err)
+{
+    lex_tokens one = {1, {{0}}};
+    snprintf(one.w[0], LEX_WORD, "%s", w);
+    lex_np np;
+    int rc = lex_np_parse(v->lx, &one, 0, 1, 0, &np, err);
+    int person = !rc && np.n_senses > 0 && np.senses[0].rank == 1 && lex_sense_person(&np.senses[0]);
+    lex_np_free(&np);
+    return rc < 0 ? rc : person;
+}
+
+static int named_after(const sp_lex_vocab *v, const sp_lex_class_match *m, const char *w)
+{
+    const lex_class *c = &v->classes[m->class_index];
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(c->tok[k], w)) return 1;
+    return 0;
+}
+
+/* The other reading of a "where" clause with a subject, when the place of its subject finds
+ * nothing: a description of the thing where it happens. "where the books are kept" is somewhere
+ * books are kept (the bookshelf: "a shelf on which to keep books"), "where the fish live"
+ * somewhere fish live. A person doing it is anyone ("where the children hang their coats" is
+ * where one hangs coats, as "where I can cook" is), and a class named after that person ("where
+ * the teacher sits": the teacher chair) comes first among equals (an order, not evidence).
+ * raw: the clause as tokenized. */
+static int where_description(const sp_lex_vocab *v, const lex_tokens *raw, sp_lex_result *res, sp_error *err)
+{
+    lex_tokens t;
+    int rc = lex_merge_collocations(v->lx, raw, &t, err);
+    if (rc) return rc;
+    int s = 1;
+    while (s < t.n && lex_word_class_of(t.w[s]) == LW_FUNCTION) s++;
+    if (s >= t.n - 1 || lex_word_class_of(t.w[s]) != LW_CONTENT) return 0;
+    int person = names_person(v, t.w[s], err);
+    if (person < 0) return person;
+    char subject[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(v->lx, WN_NOUN, t.w[s], subject, err);
+    if (nb < 0) return nb;
+    if (person) { /* drop the person: "where I hang their coats" */
+        memmove(t.w[s], t.w[s + 1], sizeof t.w[0] * (size_t)(t.n - s - 1));
+        t.n--;
+    }
+    sp_lex_result *d = malloc(sizeof *d);
+    if (!d) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    memset(d, 0, sizeof *d);
+    snprintf(d->text, sizeof d->text, "%s", res->text);
+    if (!(rc = resolve(v, &t, 0, t.n, &d->target, d, 0, err)) && !d->target.is_region &&
+        best_of(&d->target) > best_of(&res->target)) {
+        sp_lex_class_match *m = d->target.matches;
+        for (int i = 1; person && nb > 0 && i < d->target.n_matches; i++)
+            for (int j = i; j > 0 && m[j].score == m[j - 1].score && named_after(v, &m[j], subject[0]) &&
+                            !named_after(v, &m[j - 1], subject[0]); j--) {
+                sp_lex_class_match x = m[j];
+                m[j] = m[j - 1], m[j - 1] = x;
+            }
+        *res = *d;
+    }
+    free(d);
+    return rc;
 }
 
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
@@ -286,7 +350,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     lex_tokens t;
     int rc = lex_merge_collocations(v->lx, raw, &t, err);
     if (rc) return rc;
-    where_clause(&t);
+    int where = where_clause(&t);
     /* "the far end of the hallway", "the top of the bookshelf": a part of a place or a thing is
      * found where that place or thing is */
     int skip = anchor_start(&t, 0);
@@ -328,6 +392,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     }
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
+    if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);
     res->found = res->confidence >= SP_LEX_THRESHOLD;
