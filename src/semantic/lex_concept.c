@@ -224,13 +224,20 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
     for (int i = 0; i < t.n; i++) {
         const char *w = t.w[i];
         if (strlen(w) < 2 || lex_word_class_of(w) != LW_CONTENT) continue;
-        int rc = bag_put(b, w, weight, src, 0, err);
+        /* the verb of a relative clause on the thing defined ("a lamp THAT SITS on a table"):
+         * what the thing does, every reading of the word (LEX_BAG_AGENT) */
+        char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+        int agent = i > 0 && (!strcmp(t.w[i - 1], "that") || !strcmp(t.w[i - 1], "which"));
+        if (agent && (agent = lex_bases(lx, WN_VERB, w, vb, err)) < 0) return agent;
+        agent = agent > 0 ? LEX_BAG_AGENT : 0;
+        int rc = bag_put(b, w, weight, src, agent, err);
         for (int p = 0; p < 3 && !rc; p++) { /* nouns, verbs, adjectives */
             char bases[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(lx, (wn_pos)p, w, bases, err);
             if (nb < 0) return nb;
             for (int k = 0; k < nb && !rc; k++)
-                rc = bag_put(b, bases[k], weight, src, p == WN_VERB && past_form(w, bases[k]), err);
+                rc = bag_put(b, bases[k], weight, src,
+                             agent ? agent : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT : 0, err);
         }
         if (rc) return rc;
     }
@@ -243,7 +250,12 @@ float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float mi
     float best = 0;
     for (int i = 0; i < b->n; i++) {
         const lex_bag_word *e = &b->words[i];
-        float w = e->weight * (e->patient ? patient_factor : 1.0f);
+        /* what the thing does counts two weak steps against a description asking where or with
+         * what it is done (a stranded preposition: patient_factor < 1), in full otherwise */
+        float f = e->patient == LEX_BAG_PATIENT                                   ? patient_factor
+                  : e->patient == LEX_BAG_AGENT && patient_factor > 0 && patient_factor < 1 ? patient_factor * patient_factor
+                                                                                 : 1.0f;
+        float w = e->weight * f;
         for (int k = 0; k < n; k++)
             if (e->weight >= min_weight && w > best && !strcmp(e->w, bases[k])) {
                 best = w;

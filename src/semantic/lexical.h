@@ -132,9 +132,13 @@ typedef struct lex_bag_word {
     char w[LEX_WORD];  /* a base form */
     float weight;      /* DELTA^level */
     short src;         /* index into the bag's sources */
-    short patient;     /* a verb's base read from its past participle ("written" -> write): the
-                        * thing defined is what the verb acts on */
+    short patient;     /* LEX_BAG_PATIENT: a verb's base read from its past participle ("written"
+                        * -> write): the thing defined is what the verb acts on; LEX_BAG_AGENT:
+                        * the verb of a relative clause on it ("a lamp that sits on a table"):
+                        * what it does; 0: anything else */
 } lex_bag_word;
+#define LEX_BAG_PATIENT 1
+#define LEX_BAG_AGENT 2
 
 typedef struct lex_bag {
     int n, cap;
@@ -151,7 +155,8 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
  * factory, is no "work"). */
 int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
- * absent), patient entries scaled by patient_factor; *src gets the source index. */
+ * absent), patient entries scaled by patient_factor, agent entries by its square when it is
+ * in (0, 1) (a stranded description); *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
                    float patient_factor, int *src);
 
