@@ -106,7 +106,8 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             tmp->attested = i == 0 || i < tagged;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
-            if (no_person && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
+            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
+            if ((no_person & 2) && lex_sense_room(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
     }
@@ -191,12 +192,17 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
      * "printer" the tradesman) and no physical process ("microwave" the radiation, its only
-     * attested sense) when the name also names an artifact ("person" keeps its own). */
+     * attested sense) when the name also names an artifact ("person" keeps its own), and no
+     * room when it also names an artifact that is none ("toilet" the fixture, not the room
+     * WordNet's commonest sense calls a bathroom; a "kitchen" keeps its room). */
     int no_person = 0;
     rc = 0;
     if (physical_only) {
         rc = load_senses(lx, h, 1, 0, 0, np, err);
-        for (int i = 0; !rc && i < np->n_senses; i++) no_person |= lex_sense_artifact(&np->senses[i]);
+        for (int i = 0; !rc && i < np->n_senses; i++) {
+            no_person |= lex_sense_artifact(&np->senses[i]);
+            if (lex_sense_artifact(&np->senses[i]) && !lex_sense_room(&np->senses[i])) no_person |= 2;
+        }
     }
     if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
     if (!rc && physical_only && np->n_senses == 0) {
