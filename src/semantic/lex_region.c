@@ -204,6 +204,25 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
             strncat(stem, np->mods[i], sizeof stem - strlen(stem) - 1);
         }
         if (stem[0]) *r = lex_region_find_stem(v, stem);
+        /* or a WordNet room of that name whose synonym the table holds ("the sitting area":
+         * WordNet's sitting room is a living room) */
+        static const char *const kinds[] = {"room", "area", NULL};
+        for (int g = 0; !*r && stem[0] && kinds[g]; g++) {
+            char coll[WN_LEMMA_MAX];
+            snprintf(coll, sizeof coll, "%s_%s", stem, kinds[g]);
+            for (char *p = coll; *p; p++)
+                if (*p == ' ') *p = '_';
+            uint32_t off;
+            int n = wn_lookup(v->lx->db, WN_NOUN, coll, &off, 1, NULL, err);
+            if (n < 0) return n;
+            wn_synset syn;
+            if (n == 0 || (n = wn_read(v->lx->db, (wn_id){off, WN_NOUN}, &syn, err))) {
+                if (n < 0) return n;
+                continue;
+            }
+            for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
+            wn_synset_free(&syn);
+        }
     }
     const char *last = strrchr(np->head, '_'); /* a WordNet collocation: "parking_area" */
     if (!*r && last && lex_is_generic_region(last + 1)) {
