@@ -99,6 +99,31 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     return rc;
 }
 
+/* The definitions of the sense's kinds, one level down (WordNet's hyponyms, "~"), one weak step
+ * (DELTA): what a kind of the thing is for, the thing is for ("washbasin: ... where you can
+ * wash your hands and face" speaks for the sink). */
+static int bag_kinds(const lex_db *lx, lex_bag *bag, uint32_t off, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &s, err);
+    if (rc) return rc;
+    for (int p = 0; !rc && p < s.n_pointers; p++)
+        if (!strcmp(s.pointers[p].symbol, "~") && s.pointers[p].target.pos == WN_NOUN) {
+            /* the definition only: a kind's names carry its own modifiers ("COAT closet") */
+            wn_synset k;
+            if ((rc = wn_read(lx->db, s.pointers[p].target, &k, err))) break;
+            char def[512], src[192];
+            wn_definition(k.gloss, def, sizeof def);
+            snprintf(src, sizeof src, "%s: %s", k.words[0], def);
+            for (char *q = src; *q && *q != ':'; q++)
+                if (*q == '_') *q = ' ';
+            rc = lex_bag_add_text(lx, bag, def, LEX_KIND_W, src, err);
+            wn_synset_free(&k);
+        }
+    wn_synset_free(&s);
+    return rc;
+}
+
 /* Adds the physical senses of the class name's alias reading (tokens read) to np's; a name with
  * no head of its own takes the reading's head and modifiers. */
 static int add_alias_senses(const lex_db *lx, lex_np *np, const lex_tokens *read, sp_error *err)
@@ -223,6 +248,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
             rc = bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
         }
+        if (!rc) rc = bag_kinds(lx, &c->bag, se->off, err);
     }
     return rc;
 }

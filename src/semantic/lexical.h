@@ -16,6 +16,7 @@
 #define LEX_EPS 0.1f     /* an attribute the class's definitions do not mention */
 #define LEX_GAMMA 0.3f   /* weight of a description beside a head noun */
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
+#define LEX_KIND_W (LEX_DELTA * LEX_DELTA) /* a definition of a kind of the class (one level down) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
 #define LEX_HOLDS (LEX_DELTA * LEX_DELTA) /* the query names what a class's modifier names */
