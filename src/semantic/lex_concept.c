@@ -169,11 +169,13 @@ static int bag_source(lex_bag *b, const char *source, sp_error *err)
     return b->n_src++;
 }
 
-static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient, sp_error *err)
+static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient, int kind, sp_error *err)
 {
     for (int i = 0; i < b->n; i++)
         if (b->words[i].patient == patient && !strcmp(b->words[i].w, w)) {
-            if (weight > b->words[i].weight) b->words[i].weight = weight, b->words[i].src = (short)src;
+            lex_bag_word *e = &b->words[i];
+            if (weight > e->weight || (weight == e->weight && e->kind && !kind))
+                e->weight = weight, e->src = (short)src, e->kind = (short)kind;
             return 0;
         }
     if (b->n == b->cap) {
@@ -188,6 +190,7 @@ static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient
     e->weight = weight;
     e->src = (short)src;
     e->patient = (short)patient;
+    e->kind = (short)kind;
     return 0;
 }
 
@@ -210,13 +213,13 @@ int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char 
     if (src < 0) return src;
     for (int i = 0; i < t.n; i++) {
         if (strlen(t.w[i]) < 2 || lex_word_class_of(t.w[i]) != LW_CONTENT) continue;
-        int rc = bag_put(b, t.w[i], weight, src, 0, err);
+        int rc = bag_put(b, t.w[i], weight, src, 0, 0, err);
         if (rc) return rc;
     }
     return 0;
 }
 
-int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
+int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight, int kind,
                      const char *source, sp_error *err)
 {
     lex_tokens t;
@@ -232,14 +235,14 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
         int agent = i > 0 && (!strcmp(t.w[i - 1], "that") || !strcmp(t.w[i - 1], "which"));
         if (agent && (agent = lex_bases(lx, WN_VERB, w, vb, err)) < 0) return agent;
         agent = agent > 0 ? LEX_BAG_AGENT : 0;
-        int rc = bag_put(b, w, weight, src, agent, err);
+        int rc = bag_put(b, w, weight, src, agent, kind, err);
         for (int p = 0; p < 3 && !rc; p++) { /* nouns, verbs, adjectives */
             char bases[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(lx, (wn_pos)p, w, bases, err);
             if (nb < 0) return nb;
             for (int k = 0; k < nb && !rc; k++)
                 rc = bag_put(b, bases[k], weight, src,
-                             agent ? agent : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT : 0, err);
+                             agent ? agent : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT : 0, kind, err);
         }
         if (rc) return rc;
     }
@@ -247,11 +250,12 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
 }
 
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int *src)
+                   float patient_factor, int own, int *src)
 {
     float best = 0;
     for (int i = 0; i < b->n; i++) {
         const lex_bag_word *e = &b->words[i];
+        if (own && e->kind) continue;
         /* what the thing does counts two weak steps against a description asking where or with
          * what it is done (a stranded preposition: patient_factor < 1), in full otherwise */
         float f = e->patient == LEX_BAG_PATIENT                                   ? patient_factor

@@ -58,7 +58,9 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     if (np->head_start < 0) return 0;
     const lex_region *r = NULL;
     int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
-    if (rc) return rc;
+    if (rc < 0) return rc;
+    int by_wordnet_room = rc == 1; /* through a WordNet room's synonym: "sleeping room" */
+    rc = 0;
     /* A room of WordNet when its commonest sense is one ("kitchen"; not "car", whose fourth
      * sense is an elevator's cabin). */
     const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
@@ -74,9 +76,21 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * complement holds a purpose clause ("to" + verb) describes a thing, it names no area. */
     for (int i = np->head_start + 1; np->placeholder && linked && i + 1 < t->n; i++)
         if (!strcmp(t->w[i], "to")) linked = 0;
-    if (r || (def && !generic)) {
+    int table = r || (def && !generic);
+    if (table && by_wordnet_room) {
+        /* "the sleeping corner" is WordNet's sleeping room, a bedroom; when the scene shows no
+         * bedroom (one bed is not two of its kinds) it is still the corner where one sleeps */
+        sp_lex_phrase *keep = malloc(sizeof *keep);
+        if (!keep) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        *keep = *ph;
+        if (!(rc = lex_region_members(v, r, np->head, def, ph, err)) && best_of(ph) < SP_LEX_THRESHOLD)
+            *ph = *keep, table = 0, r = NULL;
+        free(keep);
+        if (rc) return rc;
+    } else if (table) {
         if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
-    } else if ((generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
+    }
+    if (!table && (generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
         /* The complement: modifiers and the words after the link, without the link words. */
         lex_tokens ct = {0, {{0}}};
         for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
@@ -110,7 +124,7 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         }
         free(sub);
         if (rc) return rc;
-    } else {
+    } else if (!table) {
         return 0;
     }
     if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);

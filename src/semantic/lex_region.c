@@ -222,6 +222,7 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
             }
             for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
             wn_synset_free(&syn);
+            if (*r) return 1;
         }
     }
     const char *last = strrchr(np->head, '_'); /* a WordNet collocation: "parking_area" */

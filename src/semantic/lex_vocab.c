@@ -92,7 +92,7 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     snprintf(src, sizeof src, "%s%s: %s", s.words[0], id.pos == WN_VERB ? " (verb)" : "", def);
     for (char *p = src; *p && *p != ':'; p++)
         if (*p == '_') *p = ' ';
-    rc = lex_bag_add_text(lx, bag, def, weight, src, err);
+    rc = lex_bag_add_text(lx, bag, def, weight, 0, src, err);
     if (!rc) rc = lex_bag_add_lemmas(bag, lemmas, weight, src, err);
     if (!rc && verbs) rc = bag_derived_verbs(lx, bag, &s, weight, err);
     wn_synset_free(&s);
@@ -117,7 +117,7 @@ static int bag_kinds(const lex_db *lx, lex_bag *bag, uint32_t off, sp_error *err
             snprintf(src, sizeof src, "%s: %s", k.words[0], def);
             for (char *q = src; *q && *q != ':'; q++)
                 if (*q == '_') *q = ' ';
-            rc = lex_bag_add_text(lx, bag, def, LEX_KIND_W, src, err);
+            rc = lex_bag_add_text(lx, bag, def, LEX_KIND_W, 1, src, err);
             wn_synset_free(&k);
         }
     wn_synset_free(&s);
@@ -239,7 +239,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     }
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
-    if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
+    if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, 0, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
     for (int s = 0; s < c->np.n_senses && !rc; s++) {
         const lex_sense *se = &c->np.senses[s];

@@ -139,6 +139,7 @@ typedef struct lex_bag_word {
                         * -> write): the thing defined is what the verb acts on; LEX_BAG_AGENT:
                         * the verb of a relative clause on it ("a lamp that sits on a table"):
                         * what it does; 0: anything else */
+    short kind;        /* from the definition of a kind of the class (one level down) */
 } lex_bag_word;
 #define LEX_BAG_PATIENT 1
 #define LEX_BAG_AGENT 2
@@ -151,17 +152,19 @@ typedef struct lex_bag {
 } lex_bag;
 
 void lex_bag_free(lex_bag *b);
-/* Adds the base forms of every content word of text at weight, citing source. */
-int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
+/* Adds the base forms of every content word of text at weight, citing source; kind: the text
+ * defines a kind of the class. */
+int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight, int kind,
                      const char *source, sp_error *err);
 /* Adds the words of WordNet lemmas as they are: a lemma is a base form already ("works", the
  * factory, is no "work"). */
 int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
  * absent), patient entries scaled by patient_factor, agent entries by its square when it is
- * in (0, 1) (a stranded description); *src gets the source index. */
+ * in (0, 1) (a stranded description); own: the class's own entries only, not its kinds'
+ * (a kind's definition saying "red" does not make the class red); *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int *src);
+                   float patient_factor, int own, int *src);
 
 /* ---- phrases and classes -------------------------------------------------------------------- */
 
@@ -246,7 +249,9 @@ const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
 const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
-/* The table region an NP's head stands for (itself or a synonym), or NULL. */
+/* The table region an NP's head stands for (itself or a synonym), or NULL; returns 1 when it was
+ * found through a WordNet room named by a generic area's modifiers ("sleeping room"), else 0 or
+ * a negative SP_E_* code. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
 /* The definition of a region name's place sense (first sense that is a room, a functional area
  * or a workplace; for table entries any such sense, else the first), or NULL when none. */
