@@ -191,6 +191,33 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
 
+/* 1 when class ci's name shares a word with class ai's name other than its last (its head). */
+static int shares_modifier(const sp_lex_vocab *v, int ci, int ai)
+{
+    const lex_class *c = &v->classes[ci], *a = &v->classes[ai];
+    for (int i = 0; i + 1 < c->n_tok; i++)
+        for (int k = 0; k < a->n_tok; k++)
+            if (!strcmp(c->tok[i], a->tok[k])) return 1;
+    return 0;
+}
+
+/* "the chair at the teacher's desk": among the target's classes the taxonomy ties, one named
+ * with a word of the anchor's name (the teacher chair) comes first: an order among equals, not
+ * evidence (the grounding still ranks instances by where they stand). */
+static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor)
+{
+    if (!anchor->n_matches || target->n_matches < 2) return;
+    int ai = anchor->matches[0].class_index;
+    sp_lex_class_match *m = target->matches;
+    for (int i = 1; i < target->n_matches && m[i].score == m[0].score && m[i].kind == m[0].kind; i++)
+        if (shares_modifier(v, m[i].class_index, ai) && !shares_modifier(v, m[0].class_index, ai)) {
+            sp_lex_class_match x = m[i];
+            memmove(&m[1], &m[0], sizeof m[0] * (size_t)i);
+            m[0] = x;
+            return;
+        }
+}
+
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
  * MIDDLE OF the living room", "at the far END OF the hallway", "in the CORNER OF the bedroom"):
  * the thing is in that part of the anchor, so the anchor is what follows "of". */
@@ -401,6 +428,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
+        else prefer_anchor_named(v, &trial->target, &trial->anchor);
         *res = *trial;
         split = 1;
     }
