@@ -108,6 +108,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
             if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
             if ((no_person & 2) && lex_sense_room(tmp)) continue;
+            if ((no_person & 4) && !lex_sense_artifact(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
     }
@@ -205,6 +206,16 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
+    /* attested senses that are neither artifacts nor living things ("radiator": any object that
+     * radiates energy) while the name also names artifacts (the heater, the car's radiator): a
+     * class is a thing made to stand there, its artifact senses are chosen by context */
+    int made = physical_only && !rc && (no_person & 2) && np->n_senses > 0;
+    for (int i = 0; made && i < np->n_senses; i++)
+        if (lex_sense_artifact(&np->senses[i]) || lex_sense_living(&np->senses[i])) made = 0;
+    if (made) {
+        np->fallback = 1;
+        rc = load_senses(lx, h, 1, 0, no_person | 4, np, err);
+    }
     if (!rc && physical_only && np->n_senses == 0) {
         np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
         rc = load_senses(lx, h, 1, 0, no_person, np, err);

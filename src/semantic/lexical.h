@@ -109,6 +109,8 @@ int lex_sense_physical(const lex_sense *s);
 int lex_sense_person(const lex_sense *s);
 /* 1 when the sense is a room (room.n.01 or a kind of it: WordNet's toilet, a closet, a booth). */
 int lex_sense_room(const lex_sense *s);
+/* 1 when the sense is a living thing (a plant, an animal, a person). */
+int lex_sense_living(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
 int lex_sense_process(const lex_sense *s);
 /* 1 when the sense is an artifact (under artifact.n.01). */
