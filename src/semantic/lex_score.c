@@ -463,6 +463,17 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         snprintf(one[0], WN_LEMMA_MAX, "%s", np->head);
         int src;
         if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, 0, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+        /* and before them those whose name says it, as a word or as the end of a closed compound
+         * ("rack": the luggage rack before the nightstand, whose stand WordNet also calls a rack;
+         * "board": the whiteboard) */
+        size_t nh = strlen(np->head);
+        for (int k = 0; k < c->n_tok; k++) {
+            size_t nt = strlen(c->tok[k]);
+            if (!strcmp(c->tok[k], np->head) || (nt >= nh + 3 && !strcmp(c->tok[k] + nt - nh, np->head))) {
+                base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+                break;
+            }
+        }
     }
     /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
      * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */
