@@ -235,6 +235,15 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
          * what the thing does, every reading of the word (LEX_BAG_AGENT) */
         char vb[WN_MAX_BASES][WN_LEMMA_MAX];
         int agent = i > 0 && (!strcmp(t.w[i - 1], "that") || !strcmp(t.w[i - 1], "which"));
+        /* and an -ing form right after a noun, a reduced relative clause ("a region LYING over
+         * another", "a device CONSISTING of"); not after a preposition ("designed for sitting")
+         * or before its noun ("a writing surface") */
+        size_t wl = strlen(w);
+        if (!agent && i > 0 && wl > 4 && !strcmp(w + wl - 3, "ing") && lex_word_class_of(t.w[i - 1]) == LW_CONTENT) {
+            int pn = lex_is_pos(lx, WN_NOUN, t.w[i - 1], err);
+            if (pn < 0) return pn;
+            agent = pn > 0;
+        }
         if (agent && (agent = lex_bases(lx, WN_VERB, w, vb, err)) < 0) return agent;
         agent = agent > 0 ? LEX_BAG_AGENT : 0;
         int rc = bag_put(b, w, weight, src, agent, kind, err);
@@ -252,17 +261,13 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
 }
 
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int own, int *src)
+                   float patient_factor, float agent_factor, int own, int *src)
 {
     float best = 0;
     for (int i = 0; i < b->n; i++) {
         const lex_bag_word *e = &b->words[i];
         if (own && e->kind) continue;
-        /* what the thing does counts two weak steps against a description asking where or with
-         * what it is done (a stranded preposition: patient_factor < 1), in full otherwise */
-        float f = e->patient == LEX_BAG_PATIENT                                   ? patient_factor
-                  : e->patient == LEX_BAG_AGENT && patient_factor > 0 && patient_factor < 1 ? patient_factor * patient_factor
-                                                                                 : 1.0f;
+        float f = e->patient == LEX_BAG_PATIENT ? patient_factor : e->patient == LEX_BAG_AGENT ? agent_factor : 1.0f;
         float w = e->weight * f;
         for (int k = 0; k < n; k++)
             if (e->weight >= min_weight && w > best && !strcmp(e->w, bases[k])) {

@@ -235,10 +235,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
 {
     memset(np, 0, sizeof *np);
     np->head_start = np->head_end = -1;
-    int marker = 0, n_np = 0, np_idx[LEX_MAX_TOKENS], np_ph[LEX_MAX_TOKENS];
+    int marker = 0, n_np = 0, np_idx[LEX_MAX_TOKENS], np_ph[LEX_MAX_TOKENS], person = 0;
+    const char *clause = NULL;
     for (int k = from; k < to; k++) {
         const char *w = t->w[k];
         int cls = lex_word_class_of(w);
+        person |= !strcmp(w, "i") || !strcmp(w, "we") || !strcmp(w, "you");
+        if (cls == LW_CLAUSE && !clause) clause = w;
         /* an auxiliary that ends the phrase is the noun when WordNet has one ("a can", "the
          * jerry can": no verb follows it) */
         if (cls == LW_FUNCTION && k == to - 1 && !lex_is_particle(w)) {
@@ -274,6 +277,8 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
         }
         if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;
     }
+    /* "something that keeps food cold", "what tells the time": the thing does it */
+    np->thing_does = clause && !person && (!strcmp(clause, "that") || !strcmp(clause, "which") || !strcmp(clause, "what"));
     /* The head: the last noun of the phrase before any clause; words after it describe. */
     int head = -1, rc;
     for (int i = n_np - 1; i >= 0 && head < 0; i--) {

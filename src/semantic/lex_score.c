@@ -120,8 +120,8 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
 
 /* Best weight of word (its expansions) in a class's bag, patient entries scaled by pf (own: not
  * in its kinds' definitions); why gets "word (source)". */
-static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, int own, char *why,
-                       size_t cap)
+static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, float af, int own,
+                       char *why, size_t cap)
 {
     float best = 0;
     int src = -1;
@@ -130,12 +130,12 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
         int s = -1;
         /* one indirection at most: a synonym counts in the class's own definition only */
-        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, own, &s) * e->f[i];
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, af, own, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
     if (best > 0 && why && src >= 0) {
         /* say when the match is the participle's, weakened by a stranded preposition */
-        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, own, NULL, 0) > best;
+        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, af, own, NULL, 0) > best;
         snprintf(why, cap, "%s (%s)%s", word, c->bag.src[src], weak ? " [participle: what it acts on]" : "");
     }
     return best;
@@ -143,14 +143,14 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
 
 /* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
-                           const char (*words)[LEX_WORD], float pf, char *why, size_t cap)
+                           const char (*words)[LEX_WORD], float pf, float af, char *why, size_t cap)
 {
     float num = 0, den = 0;
     size_t o = 0;
     if (why && cap) why[0] = 0;
     for (int i = 0; i < n; i++) {
         char one[256];
-        float m = bag_match(c, &exps[i], words[i], pf, 0, one, sizeof one);
+        float m = bag_match(c, &exps[i], words[i], pf, af, 0, one, sizeof one);
         num += w[i] * m;
         den += w[i];
         if (m > 0 && why && o + 1 < cap) {
@@ -363,13 +363,13 @@ static float agent_score(const lex_class *c, const lex_np *np, const query_prep 
     for (int a = 0; a < qp->n_agent && src < 0; a++) {
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, 0, &src) <= 0) src = -1;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, 1.0f, 0, &src) <= 0) src = -1;
         else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
     }
     if (src < 0) return 0;
     float num = qp->agent_w, den = qp->agent_w;
     for (int i = 0; i < np->n_mods - np->split; i++) {
-        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1, NULL, 0);
+        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0);
         used[i] = m > 0;
         num += qp->mod_w[i] * m, den += qp->mod_w[i];
     }
@@ -462,7 +462,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", np->head);
         int src;
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, 0, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, 1.0f, 0, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
         /* and before them those whose name says it, as a word or as the end of a closed compound
          * ("rack": the luggage rack before the nightstand, whose stand WordNet also calls a rack;
          * "board": the whiteboard) */
@@ -489,7 +489,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
-        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1, NULL, 0) > 0)
+        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
         if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
@@ -497,10 +497,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     }
     char why[192] = "";
     float pf = np->stranded ? LEX_PATIENT : 1.0f;
+    /* what the thing itself does ("a lamp that sits on a table") is two weak steps from what a
+     * person does with it ("something to sit on", "somewhere to lie down") */
+    float af = np->thing_does ? 1.0f : LEX_PATIENT * LEX_PATIENT;
     if (has_head) {
         float s = base * fmod;
         if (np->n_desc) {
-            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, why, sizeof why);
+            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, af, why, sizeof why);
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
@@ -535,7 +538,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(e.w[0], WN_LEMMA_MAX, "%s", np->head);
             all[n] = e, w[n] = 1.0f, snprintf(words[n++], LEX_WORD, "%s", np->head);
         }
-        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, why, sizeof why);
+        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, af, why, sizeof why);
         m->score = g;
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);

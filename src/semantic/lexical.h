@@ -162,11 +162,11 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
  * factory, is no "work"). */
 int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
- * absent), patient entries scaled by patient_factor, agent entries by its square when it is
- * in (0, 1) (a stranded description); own: the class's own entries only, not its kinds'
+ * absent), patient entries scaled by patient_factor, agent entries by agent_factor; own: the
+ * class's own entries only, not its kinds'
  * (a kind's definition saying "red" does not make the class red); *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int own, int *src);
+                   float patient_factor, float agent_factor, int own, int *src);
 
 /* ---- phrases and classes -------------------------------------------------------------------- */
 
@@ -185,6 +185,9 @@ typedef struct lex_np {
                                            * first part is the last modifier ("nightstand") */
     int stranded;                         /* the description ends in a preposition: "something
                                            * to write on" (where the verb is done) */
+    int thing_does;                       /* the description says what the thing does ("something
+                                           * THAT keeps food cold", "what tells the time"), not
+                                           * what a person does with it ("something to sit on") */
     int n_senses;
     lex_sense *senses;                    /* [n_senses] all noun senses (queries) or physical (classes) */
     int n_mods;
