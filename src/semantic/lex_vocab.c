@@ -248,7 +248,8 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
             rc = bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
         }
-        if (!rc) rc = bag_kinds(lx, &c->bag, se->off, err);
+        /* a name one level below its sense ("cafe table") is a sibling of the sense's kinds */
+        if (!rc && !c->spec) rc = bag_kinds(lx, &c->bag, se->off, err);
     }
     return rc;
 }
