@@ -266,6 +266,12 @@ typedef struct {
     int n_agent;   /* verbs the head is the agent noun of ("dispenser" <- dispense) */
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
+    /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
+     * of illumination"): the sense, and its definition's words with their weights */
+    int n_any, any_sense[2], any_n[2];
+    char any_word[2][12][LEX_WORD];
+    expansion any_exp[2][12];
+    float any_w[2][12];
 } query_prep;
 
 /* 1 when noun is an agent noun of verb: the verb's stem (a final 'e' dropped) followed by -er,
@@ -312,6 +318,29 @@ static int agent_verbs(const lex_db *lx, const lex_np *np, query_prep *qp, sp_er
     return 0;
 }
 
+/* any_* of qp (see query_prep). */
+static int prepare_any(const lex_db *lx, const lex_np *np, query_prep *qp, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i < np->n_senses && qp->n_any < 2 && !rc; i++) {
+        if (strncmp(np->senses[i].definition, "any ", 4)) continue;
+        int k = qp->n_any, n = 0;
+        lex_tokens t;
+        char def[192];
+        snprintf(def, sizeof def, "%s", np->senses[i].definition);
+        def[strcspn(def, "(;")] = 0; /* the condition, without examples or asides */
+        lex_tokenize(def, &t);
+        for (int j = 1; j < t.n && n < 12 && !rc; j++) {
+            if (strlen(t.w[j]) < 2 || lex_word_class_of(t.w[j]) != LW_CONTENT) continue;
+            snprintf(qp->any_word[k][n], LEX_WORD, "%s", t.w[j]);
+            if (!(rc = expand(lx, t.w[j], &qp->any_exp[k][n], err))) rc = lex_word_weight(lx, t.w[j], &qp->any_w[k][n], err);
+            n++;
+        }
+        qp->any_sense[k] = i, qp->any_n[k] = n, qp->n_any++;
+    }
+    return rc;
+}
+
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -325,6 +354,7 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
     if (!rc) rc = agent_verbs(lx, np, qp, err);
+    if (!rc && !np->placeholder) rc = prepare_any(lx, np, qp, err);
     if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
     for (int i = 0; i < np->n_mods && !rc && qp->n_agent; i++) rc = lex_word_weight(lx, np->mods[i], &qp->mod_w[i], err);
     /* Candidates for the modifier-as-referent reading: modifiers, and the leading words of a
@@ -432,6 +462,32 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+    }
+    /* A query sense defined as any thing of a kind meeting a condition ("light: any device
+     * serving as a source of illumination") names the classes below its hypernym that meet it:
+     * the taxonomy's score from that hypernym times the share of the definition's words the
+     * class's own definitions hold (the lamp, "an artificial source of visible illumination";
+     * WordNet makes the light source and the lamp siblings). */
+    for (int k = 0; has_head && k < qp->n_any && m->kind != SP_LEX_EXACT; k++) {
+        const lex_sense *q = &np->senses[qp->any_sense[k]];
+        for (int a = 1; a < q->n_anc; a++) {
+            if (q->anc[a].dist != 1) continue;
+            for (int j = 0; j < c->np.n_senses; j++) {
+                int b = lex_anc_find(&c->np.senses[j], q->anc[a].off);
+                if (b < 0) continue;
+                float t = wup3(q->anc[a].depth, 0, c->np.senses[j].anc[b].dist + c->spec);
+                float g = gloss_overlap(c, qp->any_exp[k], qp->any_w[k], qp->any_n[k],
+                                        (const char (*)[LEX_WORD])qp->any_word[k], 1.0f, 1.0f, NULL, 0);
+                if (t * g <= base) continue;
+                base = t * g;
+                m->kind = SP_LEX_HYPERNYM;
+                snprintf(m->query_sense, sizeof m->query_sense, "%s", q->anc[0].name);
+                snprintf(m->class_sense, sizeof m->class_sense, "%s", c->np.senses[j].anc[0].name);
+                snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[j].definition);
+                snprintf(m->path, sizeof m->path, "'%s' is any %s that meets its definition: %s", q->anc[0].name,
+                         q->anc[a].name, q->definition);
+            }
+        }
     }
     /* A name WordNet joins is also a kind of its last word ("machine" -> the washing machine,
      * which WordNet files under home appliance): the query against that word's senses, the
