@@ -136,6 +136,42 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     return 0;
 }
 
+/* A bare head whose commonest sense is an act ("storage": the act of storing) names the things
+ * one does it with: the description "something to V" for the verbs WordNet derives from it, one
+ * weak step (DELTA) below what that description finds, where that is more than the noun found
+ * ("storage" -> the bookshelf, "a shelf on which to keep books"; the wardrobe, "storage space"). */
+static int act_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_lex_result *res, int depth,
+                       sp_error *err)
+{
+    if (depth > 0 || np->placeholder || !np->head[0] || np->n_mods || np->n_desc || !np->n_senses ||
+        np->senses[0].rank != 1 || !lex_sense_act(&np->senses[0]) || best_of(ph) >= SP_LEX_THRESHOLD)
+        return 0;
+    char verbs[4][WN_LEMMA_MAX];
+    int nv = lex_activity_verbs(v->lx, np->head, verbs, 4, err);
+    if (nv <= 0) return nv;
+    sp_lex_phrase *d = malloc(sizeof *d);
+    if (!d) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0;
+    for (int k = 0; k < nv && !rc; k++) {
+        lex_tokens t;
+        char text[2 * WN_LEMMA_MAX];
+        snprintf(text, sizeof text, "something to %s", verbs[k]);
+        lex_tokenize(text, &t);
+        if ((rc = resolve(v, &t, 0, t.n, d, res, depth + 1, err))) break;
+        for (int i = 0; i < d->n_matches; i++)
+            for (int j = 0; j < ph->n_matches; j++)
+                if (ph->matches[j].class_index == d->matches[i].class_index &&
+                    LEX_DELTA * d->matches[i].score > ph->matches[j].score) {
+                    ph->matches[j] = d->matches[i];
+                    ph->matches[j].score *= LEX_DELTA;
+                    snprintf(ph->matches[j].path, sizeof ph->matches[j].path, "'%s' is an act: %s", np->head, text);
+                }
+    }
+    free(d);
+    if (!rc) qsort(ph->matches, (size_t)ph->n_matches, sizeof ph->matches[0], lex_match_cmp);
+    return rc;
+}
+
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err)
 {
@@ -161,6 +197,7 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
             free(reg);
         }
     }
+    if (!rc && !ph->is_region) rc = act_reading(v, &np, ph, res, depth, err);
     /* A bare area word ("the room", "the area", "a corner") names no object: WordNet's "area"
      * is a hypernym of lockers and cabinets (a compartment is a room), which no one means. */
     if (!rc && !ph->is_region && np.n_mods == 0 && !np.placeholder && lex_is_generic_region(np.head) &&

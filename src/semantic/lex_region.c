@@ -117,7 +117,7 @@ static int place_sense(const lex_sense *s, int table_entry)
  * -> park), else the verbs WordNet derives from this very word in its commonest noun sense ("+":
  * storage -> store). A word that is itself a verb's base names a thing as often as an act ("the
  * back room", "the work area": "something to back" is a chair), so it names none. */
-static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
+int lex_activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
 {
     char vb[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb0 = lex_bases(lx, WN_VERB, w, vb, err), n = 0;
@@ -162,7 +162,7 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
     for (int i = 0; i < words->n && !rc; i++) {
         if (lex_word_class_of(words->w[i]) != LW_CONTENT || lex_is_generic_region(words->w[i])) continue;
         char verbs[4][WN_LEMMA_MAX];
-        int nv = activity_verbs(v->lx, words->w[i], verbs, 4, err);
+        int nv = lex_activity_verbs(v->lx, words->w[i], verbs, 4, err);
         if (nv < 0) rc = nv;
         for (int k = 0; k < nv && !rc; k++) {
             /* the things one does it with: "something to store" */

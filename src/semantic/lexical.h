@@ -111,6 +111,8 @@ int lex_sense_person(const lex_sense *s);
 int lex_sense_room(const lex_sense *s);
 /* 1 when the sense is a living thing (a plant, an animal, a person). */
 int lex_sense_living(const lex_sense *s);
+/* 1 when the sense is an act (act.n.02: "storage", the act of storing). */
+int lex_sense_act(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
 int lex_sense_process(const lex_sense *s);
 /* 1 when the sense is an artifact (under artifact.n.01). */
@@ -270,6 +272,9 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
 /* The region of whom or what an area is for ("the children's section": "something for
  * children", the high chair) raised in region (indexed by class); returns 1 when any. */
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
+/* The verbs an activity word names ("cooking" -> cook; "storage" -> store, WordNet's "+" from
+ * its commonest noun sense); none for a word that is a verb base itself. Returns how many. */
+int lex_activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err);
 /* Raises the classes named after the region's words ("kitchen counter" of the kitchen, "patient
  * bed" of "the patient area") to 0.9 in ph (indexed by class); returns 1 when any. */
 int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph);
