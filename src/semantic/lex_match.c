@@ -377,6 +377,31 @@ static int named_after(const sp_lex_vocab *v, const sp_lex_class_match *m, const
     return 0;
 }
 
+/* Among equals, classes named after w first (stable otherwise). */
+static void prefer_named_after(const sp_lex_vocab *v, sp_lex_phrase *ph, const char *w)
+{
+    sp_lex_class_match *m = ph->matches;
+    for (int i = 1; i < ph->n_matches; i++)
+        for (int j = i; j > 0 && m[j].score == m[j - 1].score && named_after(v, &m[j], w) && !named_after(v, &m[j - 1], w);
+             j--) {
+            sp_lex_class_match x = m[j];
+            m[j] = m[j - 1], m[j - 1] = x;
+        }
+}
+
+/* The -ing form of a verb base: "read" -> reading, "write" -> writing, "sit" -> sitting (a short
+ * consonant-vowel-consonant base doubles its last letter), "see" -> seeing. */
+static void gerund(const char *base, char *out, size_t cap)
+{
+    size_t n = strlen(base);
+    const char *vowels = "aeiou";
+    if (n > 2 && base[n - 1] == 'e' && base[n - 2] != 'e') snprintf(out, cap, "%.*sing", (int)(n - 1), base);
+    else if (n >= 3 && n <= 4 && !strchr(vowels, base[n - 1]) && !strchr("wxy", base[n - 1]) &&
+             strchr(vowels, base[n - 2]) && !strchr(vowels, base[n - 3]))
+        snprintf(out, cap, "%s%cing", base, base[n - 1]);
+    else snprintf(out, cap, "%sing", base);
+}
+
 /* The other reading of a "where" clause with a subject, when the place of its subject finds
  * nothing: a description of the thing where it happens. "where the books are kept" is somewhere
  * books are kept (the bookshelf: "a shelf on which to keep books"), "where the fish live"
@@ -405,15 +430,29 @@ static int where_description(const sp_lex_vocab *v, const lex_tokens *raw, sp_le
     if (!d) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     memset(d, 0, sizeof *d);
     snprintf(d->text, sizeof d->text, "%s", res->text);
-    if (!(rc = resolve(v, &t, 0, t.n, &d->target, d, 0, err)) && !d->target.is_region &&
+    /* what a person does somewhere names an area first when the region table knows it: "where
+     * the kids read" is the reading area, "where people wait" the waiting room (a region when
+     * the scene shows one) */
+    char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nv = person && s < t.n ? lex_bases(v->lx, WN_VERB, t.w[s], vb, err) : 0;
+    if (nv < 0) rc = nv;
+    lex_tokens area = {3, {"the", "", "area"}};
+    if (nv > 0) gerund(vb[0], area.w[1], LEX_WORD);
+    if (nv > 0 && !lex_region_find_stem(v, area.w[1])) snprintf(area.w[1], LEX_WORD, "%s", vb[0]); /* "work area" */
+    if (nv > 0 && lex_region_find_stem(v, area.w[1])) { /* a place the region table knows */
+        if (!(rc = resolve(v, &area, 0, area.n, &d->target, d, 0, err)) && d->target.is_region &&
+            best_of(&d->target) >= SP_LEX_THRESHOLD) {
+            if (nb > 0) prefer_named_after(v, &d->target, subject[0]);
+            *res = *d;
+            free(d);
+            return 0;
+        }
+        memset(d, 0, sizeof *d);
+        snprintf(d->text, sizeof d->text, "%s", res->text);
+    }
+    if (!rc && !(rc = resolve(v, &t, 0, t.n, &d->target, d, 0, err)) && !d->target.is_region &&
         best_of(&d->target) > best_of(&res->target)) {
-        sp_lex_class_match *m = d->target.matches;
-        for (int i = 1; person && nb > 0 && i < d->target.n_matches; i++)
-            for (int j = i; j > 0 && m[j].score == m[j - 1].score && named_after(v, &m[j], subject[0]) &&
-                            !named_after(v, &m[j - 1], subject[0]); j--) {
-                sp_lex_class_match x = m[j];
-                m[j] = m[j - 1], m[j - 1] = x;
-            }
+        if (person && nb > 0) prefer_named_after(v, &d->target, subject[0]);
         *res = *d;
     }
     free(d);
