@@ -476,6 +476,9 @@ static void test_phase8_rules(const sp_lexicon *lx)
     /* "light: any device serving as a source of illumination" finds the lamps */
     const char *top = found_class(v, "a light", res);
     CHECK(!strcmp(top, "desk lamp") || !strcmp(top, "table lamp"));
+    /* a person's "where" clause names the table area of the activity: the reading area */
+    found_class(v, "where the kids read", res);
+    CHECK(res->found && res->target.is_region && !strcmp(res->target.region, "reading area"));
     free(res);
     sp_lex_vocab_free(v);
     /* "storage", an act: what one stores things in ("a cabinet ... for storage or display") */
