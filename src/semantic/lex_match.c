@@ -389,13 +389,15 @@ static void prefer_named_after(const sp_lex_vocab *v, sp_lex_phrase *ph, const c
         }
 }
 
-/* The -ing form of a verb base: "read" -> reading, "write" -> writing, "sit" -> sitting (a short
- * consonant-vowel-consonant base doubles its last letter), "see" -> seeing. */
+/* The -ing form of a verb base: "read" -> reading, "write" -> writing, "lie" -> lying, "sit" ->
+ * sitting (a short consonant-vowel-consonant base doubles its last letter), "see" -> seeing; only
+ * used to look a name up in the region table, where a wrong form finds nothing. */
 static void gerund(const char *base, char *out, size_t cap)
 {
     size_t n = strlen(base);
     const char *vowels = "aeiou";
-    if (n > 2 && base[n - 1] == 'e' && base[n - 2] != 'e') snprintf(out, cap, "%.*sing", (int)(n - 1), base);
+    if (n > 2 && base[n - 1] == 'e' && base[n - 2] == 'i') snprintf(out, cap, "%.*sying", (int)(n - 2), base);
+    else if (n > 2 && base[n - 1] == 'e' && base[n - 2] != 'e') snprintf(out, cap, "%.*sing", (int)(n - 1), base);
     else if (n >= 3 && n <= 4 && !strchr(vowels, base[n - 1]) && !strchr("wxy", base[n - 1]) &&
              strchr(vowels, base[n - 2]) && !strchr(vowels, base[n - 3]))
         snprintf(out, cap, "%s%cing", base, base[n - 1]);
