@@ -443,7 +443,7 @@ static void test_region_rules(const sp_lexicon *lx)
     free(res);
 }
 
-/* Phase 8 (issue 17, l10-lexical; docs/DESIGN.md changes 41-57), rule by rule on general
+/* Phase 8 (issue 17, l10-lexical; docs/DESIGN.md changes 41-58), rule by rule on general
  * vocabularies. */
 static void test_phase8_rules(const sp_lexicon *lx)
 {
