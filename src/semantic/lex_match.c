@@ -377,6 +377,36 @@ static int named_after(const sp_lex_vocab *v, const sp_lex_class_match *m, const
     return 0;
 }
 
+/* A way in a direction names the passage that goes there: "the way out", "how do I get
+ * outside" -> the exit; "the way upstairs", "get back up to the kitchen" -> the stairs; "the way
+ * in" -> the entrance. A closed list of direction words, after "way" or a verb of going ("get",
+ * "go", "back" between); the words that follow stay ("the way out to the street" is the exit
+ * to the street). */
+void lex_way_direction(lex_tokens *t)
+{
+    static const char *const dirs[][2] = {{"out", "exit"},          {"outside", "exit"},   {"outdoors", "exit"},
+                                          {"in", "entrance"},       {"inside", "entrance"}, {"indoors", "entrance"},
+                                          {"up", "stairs"},         {"upstairs", "stairs"}, {"down", "stairs"},
+                                          {"downstairs", "stairs"}};
+    for (int i = 0; i + 1 < t->n; i++) {
+        if (strcmp(t->w[i], "way") && strcmp(t->w[i], "get") && strcmp(t->w[i], "go")) continue;
+        int j = i + 1;
+        if (j + 1 < t->n && !strcmp(t->w[j], "back")) j++;
+        for (size_t k = 0; k < sizeof dirs / sizeof dirs[0]; k++) {
+            if (strcmp(t->w[j], dirs[k][0])) continue;
+            /* "get in the car", "go up the stairs": a direction followed by what it enters is a
+             * preposition with its object, not where the way leads (only "to", "of", "into" or the
+             * end may follow) */
+            if (j + 1 < t->n && strcmp(t->w[j + 1], "to") && strcmp(t->w[j + 1], "of") && strcmp(t->w[j + 1], "into"))
+                break;
+            snprintf(t->w[i], LEX_WORD, "%s", dirs[k][1]);
+            memmove(t->w[i + 1], t->w[j + 1], sizeof t->w[0] * (size_t)(t->n - j - 1));
+            t->n -= j - i;
+            return;
+        }
+    }
+}
+
 /* Among equals, classes named after w first (stable otherwise). */
 static void prefer_named_after(const sp_lex_vocab *v, sp_lex_phrase *ph, const char *w)
 {

@@ -272,6 +272,9 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
 /* The region of whom or what an area is for ("the children's section": "something for
  * children", the high chair) raised in region (indexed by class); returns 1 when any. */
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
+/* Rewrites a way in a direction as the passage that goes there ("the way out" -> "the exit",
+ * "get back up" -> "stairs"; lex_match.c). */
+void lex_way_direction(lex_tokens *t);
 /* The verbs an activity word names ("cooking" -> cook; "storage" -> store, WordNet's "+" from
  * its commonest noun sense); none for a word that is a verb base itself. Returns how many. */
 int lex_activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err);

@@ -443,7 +443,7 @@ static void test_region_rules(const sp_lexicon *lx)
     free(res);
 }
 
-/* Phase 8 (issue 17, l10-lexical; docs/DESIGN.md changes 41-58), rule by rule on general
+/* Phase 8 (issue 17, l10-lexical; docs/DESIGN.md changes 41-59), rule by rule on general
  * vocabularies. */
 static void test_phase8_rules(const sp_lexicon *lx)
 {
@@ -485,6 +485,16 @@ static void test_phase8_rules(const sp_lexicon *lx)
     const char *home[] = {"cabinet", "bed", "walls", "floor", "armchair", "sofa", "sink", "door"};
     if (rules_vocab(lx, home, 8, &v, &res)) return;
     CHECK(!strcmp(found_class(v, "storage", res), "cabinet"));
+    /* a way in a direction is the passage that goes there (the exit is an alias of the door) */
+    CHECK(!strcmp(found_class(v, "the way out", res), "door"));
+    CHECK(!strcmp(found_class(v, "how do I get outside", res), "door"));
+    lex_tokens way;
+    lex_tokenize("go up the stairs", &way);
+    lex_way_direction(&way); /* a preposition with its object: left alone */
+    CHECK(way.n == 4 && !strcmp(way.w[1], "up"));
+    lex_tokenize("how do I get back up to the kitchen", &way);
+    lex_way_direction(&way);
+    CHECK(way.n == 7 && !strcmp(way.w[3], "stairs") && !strcmp(way.w[4], "to"));
     free(res);
     sp_lex_vocab_free(v);
 }
@@ -638,9 +648,9 @@ int main(int argc, char **argv)
      * floors (cafe 144/187 = 0.770 and 32/35, basement 164/195 = 0.841 and 27/34 when set) */
     /* phase 8 (l10-lexical) read all nine tables' misses: the classroom and the hotel are
      * development data too and get floors; floors rise to just under the figures when set
-     * (office 87/96, ward 102/121, garage 123/139, cafe 151/187 and 33/35, basement 166/195,
+     * (office 87/96, ward 102/121, garage 123/139, cafe 152/187 and 33/35, basement 169/195,
      * classroom 151/178 and 33/33, hotel 136/170 and 34/40); regression floors, not bars */
-    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.87, 0.8, 0.84, 0.84, 0.79},
+    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.87, 0.8, 0.85, 0.84, 0.79},
                  floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.75, 0.96, 0.85};
     for (int w = 0; w < 9; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
