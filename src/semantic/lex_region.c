@@ -59,7 +59,14 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
     int rc = 0;
     for (int i = 0; r && i < r->n_members && !rc; i++) {
         snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
-        if (!(rc = score_text(v, r->members[i], ph, err))) *support += lex_region_absorb(out, ph, "region table");
+        if ((rc = score_text(v, r->members[i], ph, err))) break;
+        /* the table lists a place's defining objects first (the entrance: its door before the
+         * coat rack): among members that match equally, the earlier comes first (LEX_TIE, an
+         * order, not evidence) */
+        for (int k = 0; k < ph->n_matches; k++)
+            if (ph->matches[k].score >= SP_LEX_THRESHOLD + LEX_TIE)
+                ph->matches[k].score -= LEX_TIE * (float)i / (float)r->n_members;
+        *support += lex_region_absorb(out, ph, "region table");
     }
     /* The nouns of the region's definition, as object phrases (bathroom: "a room ... containing
      * a bathtub or shower and usually a washbasin and toilet"). Its verbs are not used: "used",
