@@ -455,7 +455,9 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * Per class c, the confidence in 0..1 is, from the head h (all its senses; a word whose senses
  * are all taxonomic groups, "ficus", also its members' senses) and the class's head (its
  * physical senses that the tagged corpora attest, persons and named individuals (WordNet
- * instances) left out, persons only when the name also names an artifact; when none is attested,
+ * instances) left out, persons, physical processes and rooms only when the name also names an
+ * artifact (that is no room); when the attested ones are neither artifacts nor living things
+ * and the name names artifacts ("radiator"), its artifact senses; when none is attested,
  * or the name has no tag counts at all, its physical senses closest to the other classes of the
  * scene, after Resnik 1999):
  *   T = 1                                   exact name (after plurals) or a shared synset
@@ -481,7 +483,16 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  *   it is a verb (type -> typewriter), found in the class's own definition (one weak step at
  *   most); when the description ends in a preposition ("something to write on": where
  *   the verb is done) a verb found only as a past participle ("a written work": what it acts on)
- *   counts DELTA times its weight. Location words (room, area) describe nothing.
+ *   counts DELTA times its weight, and a verb the thing itself does (a relative clause on it,
+ *   "a lamp that sits on a table", or an -ing form right after a noun) DELTA^2 times it unless
+ *   the description says what the thing does ("something that keeps food cold"); the
+ *   definitions of the class sense's kinds (one level down, definitions only) count DELTA^2
+ *   ("washbasin: ... where you can wash your hands" for the sink), not for a class one level
+ *   below its sense and not as evidence for a modifier. Location words (room, area) describe
+ *   nothing. A query sense defined as "any <kind> <condition>" ("light: any device serving as a
+ *   source of illumination") also scores T(that kind, c) G(condition words, c) for classes c
+ *   below its hypernym; a bare head whose commonest sense is an act ("storage") DELTA times the
+ *   confidence of "something to V" for the verbs WordNet derives from it.
  * A compound whose modifier is itself a class name ("tv monitor") also scores
  * T(modifier, c) WuP(head, c)^2. A head that is the agent noun of a verb WordNet derives it from
  * ("dispenser" <- dispense, "cooker" <- cook: stem + -er/-or/-ar, from a physical sense that is

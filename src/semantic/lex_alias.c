@@ -217,6 +217,7 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
     if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
     lex_tokens raw;
     lex_tokenize(text, &raw);
+    lex_way_direction(&raw); /* before the alias readings: "the way out" is the exit, a door */
     if (raw.n == 0) {
         memset(res, 0, sizeof *res);
         return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);

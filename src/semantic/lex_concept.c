@@ -10,6 +10,9 @@
 #define PERSON 7846u /* person.n.01 */
 #define ARTIFACT 21939u /* artifact.n.01 */
 #define PROCESS 29677u /* process.n.06, physical process: radiation, waves, flows */
+#define ACT_N02 30358u /* act.n.02: something that people do */
+#define LIVING_THING 4258u /* living_thing.n.01: organisms, plants, animals */
+#define ROOM_N01 4105893u /* room.n.01: an area within a building enclosed by walls and floor and ceiling */
 #define MAX_HYPER 8
 
 static void name_of(const wn_synset *s, char *out, size_t cap)
@@ -94,6 +97,9 @@ int lex_sense_physical(const lex_sense *s) { return lex_anc_find(s, PHYSICAL_ENT
 int lex_sense_person(const lex_sense *s) { return lex_anc_find(s, PERSON) >= 0; }
 int lex_sense_artifact(const lex_sense *s) { return lex_anc_find(s, ARTIFACT) >= 0; }
 int lex_sense_process(const lex_sense *s) { return lex_anc_find(s, PROCESS) >= 0; }
+int lex_sense_room(const lex_sense *s) { return lex_anc_find(s, ROOM_N01) >= 0; }
+int lex_sense_living(const lex_sense *s) { return lex_anc_find(s, LIVING_THING) >= 0; }
+int lex_sense_act(const lex_sense *s) { return lex_anc_find(s, ACT_N02) >= 0; }
 
 void lex_path(const lex_sense *s, int a, char *out, size_t cap)
 {
@@ -167,11 +173,13 @@ static int bag_source(lex_bag *b, const char *source, sp_error *err)
     return b->n_src++;
 }
 
-static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient, sp_error *err)
+static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient, int kind, sp_error *err)
 {
     for (int i = 0; i < b->n; i++)
         if (b->words[i].patient == patient && !strcmp(b->words[i].w, w)) {
-            if (weight > b->words[i].weight) b->words[i].weight = weight, b->words[i].src = (short)src;
+            lex_bag_word *e = &b->words[i];
+            if (weight > e->weight || (weight == e->weight && e->kind && !kind))
+                e->weight = weight, e->src = (short)src, e->kind = (short)kind;
             return 0;
         }
     if (b->n == b->cap) {
@@ -186,6 +194,7 @@ static int bag_put(lex_bag *b, const char *w, float weight, int src, int patient
     e->weight = weight;
     e->src = (short)src;
     e->patient = (short)patient;
+    e->kind = (short)kind;
     return 0;
 }
 
@@ -208,13 +217,13 @@ int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char 
     if (src < 0) return src;
     for (int i = 0; i < t.n; i++) {
         if (strlen(t.w[i]) < 2 || lex_word_class_of(t.w[i]) != LW_CONTENT) continue;
-        int rc = bag_put(b, t.w[i], weight, src, 0, err);
+        int rc = bag_put(b, t.w[i], weight, src, 0, 0, err);
         if (rc) return rc;
     }
     return 0;
 }
 
-int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
+int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight, int kind,
                      const char *source, sp_error *err)
 {
     lex_tokens t;
@@ -224,13 +233,29 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
     for (int i = 0; i < t.n; i++) {
         const char *w = t.w[i];
         if (strlen(w) < 2 || lex_word_class_of(w) != LW_CONTENT) continue;
-        int rc = bag_put(b, w, weight, src, 0, err);
+        /* the verb of a relative clause on the thing defined ("a lamp THAT SITS on a table"):
+         * what the thing does, every reading of the word (LEX_BAG_AGENT) */
+        char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+        int agent = i > 0 && (!strcmp(t.w[i - 1], "that") || !strcmp(t.w[i - 1], "which"));
+        /* and an -ing form right after a noun, a reduced relative clause ("a region LYING over
+         * another", "a device CONSISTING of"); not after a preposition ("designed for sitting")
+         * or before its noun ("a writing surface") */
+        size_t wl = strlen(w);
+        if (!agent && i > 0 && wl > 4 && !strcmp(w + wl - 3, "ing") && lex_word_class_of(t.w[i - 1]) == LW_CONTENT) {
+            int pn = lex_is_pos(lx, WN_NOUN, t.w[i - 1], err);
+            if (pn < 0) return pn;
+            agent = pn > 0;
+        }
+        if (agent && (agent = lex_bases(lx, WN_VERB, w, vb, err)) < 0) return agent;
+        agent = agent > 0 ? LEX_BAG_AGENT : 0;
+        int rc = bag_put(b, w, weight, src, agent, kind, err);
         for (int p = 0; p < 3 && !rc; p++) { /* nouns, verbs, adjectives */
             char bases[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(lx, (wn_pos)p, w, bases, err);
             if (nb < 0) return nb;
             for (int k = 0; k < nb && !rc; k++)
-                rc = bag_put(b, bases[k], weight, src, p == WN_VERB && past_form(w, bases[k]), err);
+                rc = bag_put(b, bases[k], weight, src,
+                             agent ? agent : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT : 0, kind, err);
         }
         if (rc) return rc;
     }
@@ -238,12 +263,14 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
 }
 
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int *src)
+                   float patient_factor, float agent_factor, int own, int *src)
 {
     float best = 0;
     for (int i = 0; i < b->n; i++) {
         const lex_bag_word *e = &b->words[i];
-        float w = e->weight * (e->patient ? patient_factor : 1.0f);
+        if (own && e->kind) continue;
+        float f = e->patient == LEX_BAG_PATIENT ? patient_factor : e->patient == LEX_BAG_AGENT ? agent_factor : 1.0f;
+        float w = e->weight * f;
         for (int k = 0; k < n; k++)
             if (e->weight >= min_weight && w > best && !strcmp(e->w, bases[k])) {
                 best = w;

@@ -58,7 +58,9 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     if (np->head_start < 0) return 0;
     const lex_region *r = NULL;
     int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
-    if (rc) return rc;
+    if (rc < 0) return rc;
+    int by_wordnet_room = rc == 1; /* through a WordNet room's synonym: "sleeping room" */
+    rc = 0;
     /* A room of WordNet when its commonest sense is one ("kitchen"; not "car", whose fourth
      * sense is an elevator's cabin). */
     const char *def = np->placeholder ? NULL : lex_region_definition(np, r != NULL);
@@ -74,9 +76,21 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * complement holds a purpose clause ("to" + verb) describes a thing, it names no area. */
     for (int i = np->head_start + 1; np->placeholder && linked && i + 1 < t->n; i++)
         if (!strcmp(t->w[i], "to")) linked = 0;
-    if (r || (def && !generic)) {
+    int table = r || (def && !generic);
+    if (table && by_wordnet_room) {
+        /* "the sleeping corner" is WordNet's sleeping room, a bedroom; when the scene shows no
+         * bedroom (one bed is not two of its kinds) it is still the corner where one sleeps */
+        sp_lex_phrase *keep = malloc(sizeof *keep);
+        if (!keep) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        *keep = *ph;
+        if (!(rc = lex_region_members(v, r, np->head, def, ph, err)) && best_of(ph) < SP_LEX_THRESHOLD)
+            *ph = *keep, table = 0, r = NULL;
+        free(keep);
+        if (rc) return rc;
+    } else if (table) {
         if ((rc = lex_region_members(v, r, np->head, def, ph, err))) return rc;
-    } else if ((generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
+    }
+    if (!table && (generic || lead[0]) && depth == 0 && (linked || np->n_mods > 0 || lead[0])) {
         /* The complement: modifiers and the words after the link, without the link words. */
         lex_tokens ct = {0, {{0}}};
         for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
@@ -110,7 +124,7 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         }
         free(sub);
         if (rc) return rc;
-    } else {
+    } else if (!table) {
         return 0;
     }
     if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
@@ -120,6 +134,42 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
         if (*p == '_') *p = ' ';
     *is_region = 1;
     return 0;
+}
+
+/* A bare head whose commonest sense is an act ("storage": the act of storing) names the things
+ * one does it with: the description "something to V" for the verbs WordNet derives from it, one
+ * weak step (DELTA) below what that description finds, where that is more than the noun found
+ * ("storage" -> the bookshelf, "a shelf on which to keep books"; the wardrobe, "storage space"). */
+static int act_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_lex_result *res, int depth,
+                       sp_error *err)
+{
+    if (depth > 0 || np->placeholder || !np->head[0] || np->n_mods || np->n_desc || !np->n_senses ||
+        np->senses[0].rank != 1 || !lex_sense_act(&np->senses[0]) || best_of(ph) >= SP_LEX_THRESHOLD)
+        return 0;
+    char verbs[4][WN_LEMMA_MAX];
+    int nv = lex_activity_verbs(v->lx, np->head, verbs, 4, err);
+    if (nv <= 0) return nv;
+    sp_lex_phrase *d = malloc(sizeof *d);
+    if (!d) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0;
+    for (int k = 0; k < nv && !rc; k++) {
+        lex_tokens t;
+        char text[2 * WN_LEMMA_MAX];
+        snprintf(text, sizeof text, "something to %s", verbs[k]);
+        lex_tokenize(text, &t);
+        if ((rc = resolve(v, &t, 0, t.n, d, res, depth + 1, err))) break;
+        for (int i = 0; i < d->n_matches; i++)
+            for (int j = 0; j < ph->n_matches; j++)
+                if (ph->matches[j].class_index == d->matches[i].class_index &&
+                    LEX_DELTA * d->matches[i].score > ph->matches[j].score) {
+                    ph->matches[j] = d->matches[i];
+                    ph->matches[j].score *= LEX_DELTA;
+                    snprintf(ph->matches[j].path, sizeof ph->matches[j].path, "'%s' is an act: %s", np->head, text);
+                }
+    }
+    free(d);
+    if (!rc) qsort(ph->matches, (size_t)ph->n_matches, sizeof ph->matches[0], lex_match_cmp);
+    return rc;
 }
 
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
@@ -147,6 +197,7 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
             free(reg);
         }
     }
+    if (!rc && !ph->is_region) rc = act_reading(v, &np, ph, res, depth, err);
     /* A bare area word ("the room", "the area", "a corner") names no object: WordNet's "area"
      * is a hypernym of lockers and cabinets (a compartment is a room), which no one means. */
     if (!rc && !ph->is_region && np.n_mods == 0 && !np.placeholder && lex_is_generic_region(np.head) &&
@@ -175,6 +226,33 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
     }
     memcpy(target->matches, in, sizeof in[0] * (size_t)ni);
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
+}
+
+/* 1 when class ci's name shares a word with class ai's name other than its last (its head). */
+static int shares_modifier(const sp_lex_vocab *v, int ci, int ai)
+{
+    const lex_class *c = &v->classes[ci], *a = &v->classes[ai];
+    for (int i = 0; i + 1 < c->n_tok; i++)
+        for (int k = 0; k < a->n_tok; k++)
+            if (!strcmp(c->tok[i], a->tok[k])) return 1;
+    return 0;
+}
+
+/* "the chair at the teacher's desk": among the target's classes the taxonomy ties, one named
+ * with a word of the anchor's name (the teacher chair) comes first: an order among equals, not
+ * evidence (the grounding still ranks instances by where they stand). */
+static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor)
+{
+    if (!anchor->n_matches || target->n_matches < 2) return;
+    int ai = anchor->matches[0].class_index;
+    sp_lex_class_match *m = target->matches;
+    for (int i = 1; i < target->n_matches && m[i].score == m[0].score && m[i].kind == m[0].kind; i++)
+        if (shares_modifier(v, m[i].class_index, ai) && !shares_modifier(v, m[0].class_index, ai)) {
+            sp_lex_class_match x = m[i];
+            memmove(&m[1], &m[0], sizeof m[0] * (size_t)i);
+            m[0] = x;
+            return;
+        }
 }
 
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
@@ -264,18 +342,153 @@ static int purpose_to(const sp_lex_vocab *v, const lex_tokens *t, int i, sp_erro
  * region of the objects it names. A question ("where is the car", "where can I sit"), a purpose
  * ("where to store my shoes") or a person's doing ("where I can cook", "where we keep the
  * tools": a thing to cook on, to keep them in) describes a thing and is left as it is. */
-static void where_clause(lex_tokens *t)
+static int where_clause(lex_tokens *t)
 {
     static const char *const aux[] = {"to", "is", "are", "was", "were", "can", "could", "do", "does",
                                       "did", "should", "would", "will", "shall", "may", "might", "must",
                                       "i", "we", "you", "one", "someone", "somebody", "people", "they",
                                       "he", "she", NULL};
-    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return;
+    if (t->n < 3 || t->n >= LEX_MAX_TOKENS || strcmp(t->w[0], "where")) return 0;
     for (int i = 0; aux[i]; i++)
-        if (!strcmp(t->w[1], aux[i])) return;
+        if (!strcmp(t->w[1], aux[i])) return 0;
     memmove(t->w[1], t->w[0], sizeof t->w[0] * (size_t)t->n);
     snprintf(t->w[0], LEX_WORD, "place");
     t->n++;
+    return 1;
+}
+
+/* 1 when w's commonest noun sense is a person ("teacher", "kids", "pupil"). */
+static int names_person(const sp_lex_vocab *v, const char *w, sp_error *err)
+{
+    lex_tokens one = {1, {{0}}};
+    snprintf(one.w[0], LEX_WORD, "%s", w);
+    lex_np np;
+    int rc = lex_np_parse(v->lx, &one, 0, 1, 0, &np, err);
+    int person = !rc && np.n_senses > 0 && np.senses[0].rank == 1 && lex_sense_person(&np.senses[0]);
+    lex_np_free(&np);
+    return rc < 0 ? rc : person;
+}
+
+static int named_after(const sp_lex_vocab *v, const sp_lex_class_match *m, const char *w)
+{
+    const lex_class *c = &v->classes[m->class_index];
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(c->tok[k], w)) return 1;
+    return 0;
+}
+
+/* A way in a direction names the passage that goes there: "the way out", "how do I get
+ * outside" -> the exit; "the way upstairs", "get back up to the kitchen" -> the stairs; "the way
+ * in" -> the entrance. A closed list of direction words, after "way" or a verb of going ("get",
+ * "go", "back" between); the words that follow stay ("the way out to the street" is the exit
+ * to the street). */
+void lex_way_direction(lex_tokens *t)
+{
+    static const char *const dirs[][2] = {{"out", "exit"},          {"outside", "exit"},   {"outdoors", "exit"},
+                                          {"in", "entrance"},       {"inside", "entrance"}, {"indoors", "entrance"},
+                                          {"up", "stairs"},         {"upstairs", "stairs"}, {"down", "stairs"},
+                                          {"downstairs", "stairs"}};
+    for (int i = 0; i + 1 < t->n; i++) {
+        if (strcmp(t->w[i], "way") && strcmp(t->w[i], "get") && strcmp(t->w[i], "go")) continue;
+        int j = i + 1;
+        if (j + 1 < t->n && !strcmp(t->w[j], "back")) j++;
+        for (size_t k = 0; k < sizeof dirs / sizeof dirs[0]; k++) {
+            if (strcmp(t->w[j], dirs[k][0])) continue;
+            /* "get in the car", "go up the stairs": a direction followed by what it enters is a
+             * preposition with its object, not where the way leads (only "to", "of", "into" or the
+             * end may follow) */
+            if (j + 1 < t->n && strcmp(t->w[j + 1], "to") && strcmp(t->w[j + 1], "of") && strcmp(t->w[j + 1], "into"))
+                break;
+            snprintf(t->w[i], LEX_WORD, "%s", dirs[k][1]);
+            memmove(t->w[i + 1], t->w[j + 1], sizeof t->w[0] * (size_t)(t->n - j - 1));
+            t->n -= j - i;
+            return;
+        }
+    }
+}
+
+/* Among equals, classes named after w first (stable otherwise). */
+static void prefer_named_after(const sp_lex_vocab *v, sp_lex_phrase *ph, const char *w)
+{
+    sp_lex_class_match *m = ph->matches;
+    for (int i = 1; i < ph->n_matches; i++)
+        for (int j = i; j > 0 && m[j].score == m[j - 1].score && named_after(v, &m[j], w) && !named_after(v, &m[j - 1], w);
+             j--) {
+            sp_lex_class_match x = m[j];
+            m[j] = m[j - 1], m[j - 1] = x;
+        }
+}
+
+/* The -ing form of a verb base: "read" -> reading, "write" -> writing, "lie" -> lying, "sit" ->
+ * sitting (a short consonant-vowel-consonant base doubles its last letter), "see" -> seeing; only
+ * used to look a name up in the region table, where a wrong form finds nothing. */
+static void gerund(const char *base, char *out, size_t cap)
+{
+    size_t n = strlen(base);
+    const char *vowels = "aeiou";
+    if (n > 2 && base[n - 1] == 'e' && base[n - 2] == 'i') snprintf(out, cap, "%.*sying", (int)(n - 2), base);
+    else if (n > 2 && base[n - 1] == 'e' && base[n - 2] != 'e') snprintf(out, cap, "%.*sing", (int)(n - 1), base);
+    else if (n >= 3 && n <= 4 && !strchr(vowels, base[n - 1]) && !strchr("wxy", base[n - 1]) &&
+             strchr(vowels, base[n - 2]) && !strchr(vowels, base[n - 3]))
+        snprintf(out, cap, "%s%cing", base, base[n - 1]);
+    else snprintf(out, cap, "%sing", base);
+}
+
+/* The other reading of a "where" clause with a subject, when the place of its subject finds
+ * nothing: a description of the thing where it happens. "where the books are kept" is somewhere
+ * books are kept (the bookshelf: "a shelf on which to keep books"), "where the fish live"
+ * somewhere fish live. A person doing it is anyone ("where the children hang their coats" is
+ * where one hangs coats, as "where I can cook" is), and a class named after that person ("where
+ * the teacher sits": the teacher chair) comes first among equals (an order, not evidence).
+ * raw: the clause as tokenized. */
+static int where_description(const sp_lex_vocab *v, const lex_tokens *raw, sp_lex_result *res, sp_error *err)
+{
+    lex_tokens t;
+    int rc = lex_merge_collocations(v->lx, raw, &t, err);
+    if (rc) return rc;
+    int s = 1;
+    while (s < t.n && lex_word_class_of(t.w[s]) == LW_FUNCTION) s++;
+    if (s >= t.n - 1 || lex_word_class_of(t.w[s]) != LW_CONTENT) return 0;
+    int person = names_person(v, t.w[s], err);
+    if (person < 0) return person;
+    char subject[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(v->lx, WN_NOUN, t.w[s], subject, err);
+    if (nb < 0) return nb;
+    if (person) { /* drop the person: "where I hang their coats" */
+        memmove(t.w[s], t.w[s + 1], sizeof t.w[0] * (size_t)(t.n - s - 1));
+        t.n--;
+    }
+    sp_lex_result *d = malloc(sizeof *d);
+    if (!d) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    memset(d, 0, sizeof *d);
+    snprintf(d->text, sizeof d->text, "%s", res->text);
+    /* what a person does somewhere names an area first when the region table knows it: "where
+     * the kids read" is the reading area, "where people wait" the waiting room (a region when
+     * the scene shows one) */
+    char vb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nv = person && s < t.n ? lex_bases(v->lx, WN_VERB, t.w[s], vb, err) : 0;
+    if (nv < 0) rc = nv;
+    lex_tokens area = {3, {"the", "", "area"}};
+    if (nv > 0) gerund(vb[0], area.w[1], LEX_WORD);
+    if (nv > 0 && !lex_region_find_stem(v, area.w[1])) snprintf(area.w[1], LEX_WORD, "%s", vb[0]); /* "work area" */
+    if (nv > 0 && lex_region_find_stem(v, area.w[1])) { /* a place the region table knows */
+        if (!(rc = resolve(v, &area, 0, area.n, &d->target, d, 0, err)) && d->target.is_region &&
+            best_of(&d->target) >= SP_LEX_THRESHOLD) {
+            if (nb > 0) prefer_named_after(v, &d->target, subject[0]);
+            *res = *d;
+            free(d);
+            return 0;
+        }
+        memset(d, 0, sizeof *d);
+        snprintf(d->text, sizeof d->text, "%s", res->text);
+    }
+    if (!rc && !(rc = resolve(v, &t, 0, t.n, &d->target, d, 0, err)) && !d->target.is_region &&
+        best_of(&d->target) > best_of(&res->target)) {
+        if (person && nb > 0) prefer_named_after(v, &d->target, subject[0]);
+        *res = *d;
+    }
+    free(d);
+    return rc;
 }
 
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
@@ -286,7 +499,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     lex_tokens t;
     int rc = lex_merge_collocations(v->lx, raw, &t, err);
     if (rc) return rc;
-    where_clause(&t);
+    int where = where_clause(&t);
     /* "the far end of the hallway", "the top of the bookshelf": a part of a place or a thing is
      * found where that place or thing is */
     int skip = anchor_start(&t, 0);
@@ -323,11 +536,13 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
+        else prefer_anchor_named(v, &trial->target, &trial->anchor);
         *res = *trial;
         split = 1;
     }
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
+    if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);
     res->found = res->confidence >= SP_LEX_THRESHOLD;

@@ -106,7 +106,9 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             tmp->attested = i == 0 || i < tagged;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
-            if (no_person && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
+            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
+            if ((no_person & 2) && lex_sense_room(tmp)) continue;
+            if ((no_person & 4) && !lex_sense_artifact(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
         }
     }
@@ -191,14 +193,29 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
      * "printer" the tradesman) and no physical process ("microwave" the radiation, its only
-     * attested sense) when the name also names an artifact ("person" keeps its own). */
+     * attested sense) when the name also names an artifact ("person" keeps its own), and no
+     * room when it also names an artifact that is none ("toilet" the fixture, not the room
+     * WordNet's commonest sense calls a bathroom; a "kitchen" keeps its room). */
     int no_person = 0;
     rc = 0;
     if (physical_only) {
         rc = load_senses(lx, h, 1, 0, 0, np, err);
-        for (int i = 0; !rc && i < np->n_senses; i++) no_person |= lex_sense_artifact(&np->senses[i]);
+        for (int i = 0; !rc && i < np->n_senses; i++) {
+            no_person |= lex_sense_artifact(&np->senses[i]);
+            if (lex_sense_artifact(&np->senses[i]) && !lex_sense_room(&np->senses[i])) no_person |= 2;
+        }
     }
     if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
+    /* attested senses that are neither artifacts nor living things ("radiator": any object that
+     * radiates energy) while the name also names artifacts (the heater, the car's radiator): a
+     * class is a thing made to stand there, its artifact senses are chosen by context */
+    int made = physical_only && !rc && (no_person & 2) && np->n_senses > 0;
+    for (int i = 0; made && i < np->n_senses; i++)
+        if (lex_sense_artifact(&np->senses[i]) || lex_sense_living(&np->senses[i])) made = 0;
+    if (made) {
+        np->fallback = 1;
+        rc = load_senses(lx, h, 1, 0, no_person | 4, np, err);
+    }
     if (!rc && physical_only && np->n_senses == 0) {
         np->fallback = 1; /* no attested physical sense: the vocabulary chooses (lex_vocab.c) */
         rc = load_senses(lx, h, 1, 0, no_person, np, err);
@@ -218,10 +235,13 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
 {
     memset(np, 0, sizeof *np);
     np->head_start = np->head_end = -1;
-    int marker = 0, n_np = 0, np_idx[LEX_MAX_TOKENS], np_ph[LEX_MAX_TOKENS];
+    int marker = 0, n_np = 0, np_idx[LEX_MAX_TOKENS], np_ph[LEX_MAX_TOKENS], person = 0;
+    const char *clause = NULL;
     for (int k = from; k < to; k++) {
         const char *w = t->w[k];
         int cls = lex_word_class_of(w);
+        person |= !strcmp(w, "i") || !strcmp(w, "we") || !strcmp(w, "you");
+        if (cls == LW_CLAUSE && !clause) clause = w;
         /* an auxiliary that ends the phrase is the noun when WordNet has one ("a can", "the
          * jerry can": no verb follows it) */
         if (cls == LW_FUNCTION && k == to - 1 && !lex_is_particle(w)) {
@@ -257,6 +277,8 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
         }
         if (n_np < LEX_MAX_TOKENS) np_idx[n_np] = k, np_ph[n_np++] = cls == LW_PLACEHOLDER;
     }
+    /* "something that keeps food cold", "what tells the time": the thing does it */
+    np->thing_does = clause && !person && (!strcmp(clause, "that") || !strcmp(clause, "which") || !strcmp(clause, "what"));
     /* The head: the last noun of the phrase before any clause; words after it describe. */
     int head = -1, rc;
     for (int i = n_np - 1; i >= 0 && head < 0; i--) {

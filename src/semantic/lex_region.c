@@ -59,7 +59,14 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
     int rc = 0;
     for (int i = 0; r && i < r->n_members && !rc; i++) {
         snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
-        if (!(rc = score_text(v, r->members[i], ph, err))) *support += lex_region_absorb(out, ph, "region table");
+        if ((rc = score_text(v, r->members[i], ph, err))) break;
+        /* the table lists a place's defining objects first (the entrance: its door before the
+         * coat rack): among members that match equally, the earlier comes first (LEX_TIE, an
+         * order, not evidence) */
+        for (int k = 0; k < ph->n_matches; k++)
+            if (ph->matches[k].score >= SP_LEX_THRESHOLD + LEX_TIE)
+                ph->matches[k].score -= LEX_TIE * (float)i / (float)r->n_members;
+        *support += lex_region_absorb(out, ph, "region table");
     }
     /* The nouns of the region's definition, as object phrases (bathroom: "a room ... containing
      * a bathtub or shower and usually a washbasin and toilet"). Its verbs are not used: "used",
@@ -117,7 +124,7 @@ static int place_sense(const lex_sense *s, int table_entry)
  * -> park), else the verbs WordNet derives from this very word in its commonest noun sense ("+":
  * storage -> store). A word that is itself a verb's base names a thing as often as an act ("the
  * back room", "the work area": "something to back" is a chair), so it names none. */
-static int activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
+int lex_activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err)
 {
     char vb[WN_MAX_BASES][WN_LEMMA_MAX];
     int nb0 = lex_bases(lx, WN_VERB, w, vb, err), n = 0;
@@ -162,7 +169,7 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
     for (int i = 0; i < words->n && !rc; i++) {
         if (lex_word_class_of(words->w[i]) != LW_CONTENT || lex_is_generic_region(words->w[i])) continue;
         char verbs[4][WN_LEMMA_MAX];
-        int nv = activity_verbs(v->lx, words->w[i], verbs, 4, err);
+        int nv = lex_activity_verbs(v->lx, words->w[i], verbs, 4, err);
         if (nv < 0) rc = nv;
         for (int k = 0; k < nv && !rc; k++) {
             /* the things one does it with: "something to store" */
@@ -204,6 +211,26 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
             strncat(stem, np->mods[i], sizeof stem - strlen(stem) - 1);
         }
         if (stem[0]) *r = lex_region_find_stem(v, stem);
+        /* or a WordNet room of that name whose synonym the table holds ("the sitting area":
+         * WordNet's sitting room is a living room) */
+        static const char *const kinds[] = {"room", "area", NULL};
+        for (int g = 0; !*r && stem[0] && kinds[g]; g++) {
+            char coll[WN_LEMMA_MAX];
+            snprintf(coll, sizeof coll, "%s_%s", stem, kinds[g]);
+            for (char *p = coll; *p; p++)
+                if (*p == ' ') *p = '_';
+            uint32_t off;
+            int n = wn_lookup(v->lx->db, WN_NOUN, coll, &off, 1, NULL, err);
+            if (n < 0) return n;
+            wn_synset syn;
+            if (n == 0 || (n = wn_read(v->lx->db, (wn_id){off, WN_NOUN}, &syn, err))) {
+                if (n < 0) return n;
+                continue;
+            }
+            for (int k = 0; k < syn.n_words && !*r; k++) *r = lex_region_find(v, syn.words[k]);
+            wn_synset_free(&syn);
+            if (*r) return 1;
+        }
     }
     const char *last = strrchr(np->head, '_'); /* a WordNet collocation: "parking_area" */
     if (!*r && last && lex_is_generic_region(last + 1)) {

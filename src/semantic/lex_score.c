@@ -118,10 +118,10 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
     return 0;
 }
 
-/* Best weight of word (its expansions) in a class's bag, patient entries scaled by pf; why gets
- * "word (source)". */
-static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, char *why,
-                       size_t cap)
+/* Best weight of word (its expansions) in a class's bag, patient entries scaled by pf (own: not
+ * in its kinds' definitions); why gets "word (source)". */
+static float bag_match(const lex_class *c, const expansion *e, const char *word, float pf, float af, int own,
+                       char *why, size_t cap)
 {
     float best = 0;
     int src = -1;
@@ -130,12 +130,12 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
         snprintf(one[0], WN_LEMMA_MAX, "%s", e->w[i]);
         int s = -1;
         /* one indirection at most: a synonym counts in the class's own definition only */
-        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, &s) * e->f[i];
+        float w = lex_bag_find(&c->bag, one, 1, e->f[i] < 1.0f ? 1.0f : 0.0f, pf, af, own, &s) * e->f[i];
         if (w > best) best = w, src = s;
     }
     if (best > 0 && why && src >= 0) {
         /* say when the match is the participle's, weakened by a stranded preposition */
-        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, NULL, 0) > best;
+        int weak = pf < 1.0f && bag_match(c, e, word, 1.0f, af, own, NULL, 0) > best;
         snprintf(why, cap, "%s (%s)%s", word, c->bag.src[src], weak ? " [participle: what it acts on]" : "");
     }
     return best;
@@ -143,14 +143,14 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
 
 /* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
-                           const char (*words)[LEX_WORD], float pf, char *why, size_t cap)
+                           const char (*words)[LEX_WORD], float pf, float af, char *why, size_t cap)
 {
     float num = 0, den = 0;
     size_t o = 0;
     if (why && cap) why[0] = 0;
     for (int i = 0; i < n; i++) {
         char one[256];
-        float m = bag_match(c, &exps[i], words[i], pf, one, sizeof one);
+        float m = bag_match(c, &exps[i], words[i], pf, af, 0, one, sizeof one);
         num += w[i] * m;
         den += w[i];
         if (m > 0 && why && o + 1 < cap) {
@@ -266,6 +266,12 @@ typedef struct {
     int n_agent;   /* verbs the head is the agent noun of ("dispenser" <- dispense) */
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
+    /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
+     * of illumination"): the sense, and its definition's words with their weights */
+    int n_any, any_sense[2], any_n[2];
+    char any_word[2][12][LEX_WORD];
+    expansion any_exp[2][12];
+    float any_w[2][12];
 } query_prep;
 
 /* 1 when noun is an agent noun of verb: the verb's stem (a final 'e' dropped) followed by -er,
@@ -312,6 +318,29 @@ static int agent_verbs(const lex_db *lx, const lex_np *np, query_prep *qp, sp_er
     return 0;
 }
 
+/* any_* of qp (see query_prep). */
+static int prepare_any(const lex_db *lx, const lex_np *np, query_prep *qp, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i < np->n_senses && qp->n_any < 2 && !rc; i++) {
+        if (strncmp(np->senses[i].definition, "any ", 4)) continue;
+        int k = qp->n_any, n = 0;
+        lex_tokens t;
+        char def[192];
+        snprintf(def, sizeof def, "%s", np->senses[i].definition);
+        def[strcspn(def, "(;")] = 0; /* the condition, without examples or asides */
+        lex_tokenize(def, &t);
+        for (int j = 1; j < t.n && n < 12 && !rc; j++) {
+            if (strlen(t.w[j]) < 2 || lex_word_class_of(t.w[j]) != LW_CONTENT) continue;
+            snprintf(qp->any_word[k][n], LEX_WORD, "%s", t.w[j]);
+            if (!(rc = expand(lx, t.w[j], &qp->any_exp[k][n], err))) rc = lex_word_weight(lx, t.w[j], &qp->any_w[k][n], err);
+            n++;
+        }
+        qp->any_sense[k] = i, qp->any_n[k] = n, qp->n_any++;
+    }
+    return rc;
+}
+
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -325,6 +354,7 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
     if (!rc) rc = agent_verbs(lx, np, qp, err);
+    if (!rc && !np->placeholder) rc = prepare_any(lx, np, qp, err);
     if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
     for (int i = 0; i < np->n_mods && !rc && qp->n_agent; i++) rc = lex_word_weight(lx, np->mods[i], &qp->mod_w[i], err);
     /* Candidates for the modifier-as-referent reading: modifiers, and the leading words of a
@@ -363,13 +393,13 @@ static float agent_score(const lex_class *c, const lex_np *np, const query_prep 
     for (int a = 0; a < qp->n_agent && src < 0; a++) {
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, &src) <= 0) src = -1;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, 1.0f, 0, &src) <= 0) src = -1;
         else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
     }
     if (src < 0) return 0;
     float num = qp->agent_w, den = qp->agent_w;
     for (int i = 0; i < np->n_mods - np->split; i++) {
-        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0);
+        float m = bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0);
         used[i] = m > 0;
         num += qp->mod_w[i] * m, den += qp->mod_w[i];
     }
@@ -433,6 +463,32 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
     }
+    /* A query sense defined as any thing of a kind meeting a condition ("light: any device
+     * serving as a source of illumination") names the classes below its hypernym that meet it:
+     * the taxonomy's score from that hypernym times the share of the definition's words the
+     * class's own definitions hold (the lamp, "an artificial source of visible illumination";
+     * WordNet makes the light source and the lamp siblings). */
+    for (int k = 0; has_head && k < qp->n_any && m->kind != SP_LEX_EXACT; k++) {
+        const lex_sense *q = &np->senses[qp->any_sense[k]];
+        for (int a = 1; a < q->n_anc; a++) {
+            if (q->anc[a].dist != 1) continue;
+            for (int j = 0; j < c->np.n_senses; j++) {
+                int b = lex_anc_find(&c->np.senses[j], q->anc[a].off);
+                if (b < 0) continue;
+                float t = wup3(q->anc[a].depth, 0, c->np.senses[j].anc[b].dist + c->spec);
+                float g = gloss_overlap(c, qp->any_exp[k], qp->any_w[k], qp->any_n[k],
+                                        (const char (*)[LEX_WORD])qp->any_word[k], 1.0f, 1.0f, NULL, 0);
+                if (t * g <= base) continue;
+                base = t * g;
+                m->kind = SP_LEX_HYPERNYM;
+                snprintf(m->query_sense, sizeof m->query_sense, "%s", q->anc[0].name);
+                snprintf(m->class_sense, sizeof m->class_sense, "%s", c->np.senses[j].anc[0].name);
+                snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[j].definition);
+                snprintf(m->path, sizeof m->path, "'%s' is any %s that meets its definition: %s", q->anc[0].name,
+                         q->anc[a].name, q->definition);
+            }
+        }
+    }
     /* A name WordNet joins is also a kind of its last word ("machine" -> the washing machine,
      * which WordNet files under home appliance): the query against that word's senses, the
      * class one level below them, as for a name WordNet lacks. */
@@ -462,7 +518,18 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", np->head);
         int src;
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+        if (lex_bag_find(&c->bag, one, 1, 1.0f, 1.0f, 1.0f, 0, &src) > 0) base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+        /* and before them those whose name says it, as a word or as the end of a closed compound
+         * ("rack": the luggage rack before the nightstand, whose stand WordNet also calls a rack;
+         * "board": the whiteboard) */
+        size_t nh = strlen(np->head);
+        for (int k = 0; k < c->n_tok; k++) {
+            size_t nt = strlen(c->tok[k]);
+            if (!strcmp(c->tok[k], np->head) || (nt >= nh + 3 && !strcmp(c->tok[k] + nt - nh, np->head))) {
+                base = base + LEX_TIE > 1.0f ? 1.0f : base + LEX_TIE;
+                break;
+            }
+        }
     }
     /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
      * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */
@@ -478,7 +545,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
-        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, NULL, 0) > 0)
+        if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
         if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
@@ -486,10 +553,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     }
     char why[192] = "";
     float pf = np->stranded ? LEX_PATIENT : 1.0f;
+    /* what the thing itself does ("a lamp that sits on a table") is two weak steps from what a
+     * person does with it ("something to sit on", "somewhere to lie down") */
+    float af = np->thing_does ? 1.0f : LEX_PATIENT * LEX_PATIENT;
     if (has_head) {
         float s = base * fmod;
         if (np->n_desc) {
-            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, why, sizeof why);
+            float g = gloss_overlap(c, qp->desc_exp, np->desc_w, np->n_desc, np->desc, pf, af, why, sizeof why);
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
@@ -524,7 +594,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(e.w[0], WN_LEMMA_MAX, "%s", np->head);
             all[n] = e, w[n] = 1.0f, snprintf(words[n++], LEX_WORD, "%s", np->head);
         }
-        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, why, sizeof why);
+        float g = gloss_overlap(c, all, w, n, (const char (*)[LEX_WORD])words, pf, af, why, sizeof why);
         m->score = g;
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);

@@ -92,9 +92,34 @@ static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, in
     snprintf(src, sizeof src, "%s%s: %s", s.words[0], id.pos == WN_VERB ? " (verb)" : "", def);
     for (char *p = src; *p && *p != ':'; p++)
         if (*p == '_') *p = ' ';
-    rc = lex_bag_add_text(lx, bag, def, weight, src, err);
+    rc = lex_bag_add_text(lx, bag, def, weight, 0, src, err);
     if (!rc) rc = lex_bag_add_lemmas(bag, lemmas, weight, src, err);
     if (!rc && verbs) rc = bag_derived_verbs(lx, bag, &s, weight, err);
+    wn_synset_free(&s);
+    return rc;
+}
+
+/* The definitions of the sense's kinds, one level down (WordNet's hyponyms, "~"), one weak step
+ * (DELTA): what a kind of the thing is for, the thing is for ("washbasin: ... where you can
+ * wash your hands and face" speaks for the sink). */
+static int bag_kinds(const lex_db *lx, lex_bag *bag, uint32_t off, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &s, err);
+    if (rc) return rc;
+    for (int p = 0; !rc && p < s.n_pointers; p++)
+        if (!strcmp(s.pointers[p].symbol, "~") && s.pointers[p].target.pos == WN_NOUN) {
+            /* the definition only: a kind's names carry its own modifiers ("COAT closet") */
+            wn_synset k;
+            if ((rc = wn_read(lx->db, s.pointers[p].target, &k, err))) break;
+            char def[512], src[192];
+            wn_definition(k.gloss, def, sizeof def);
+            snprintf(src, sizeof src, "%s: %s", k.words[0], def);
+            for (char *q = src; *q && *q != ':'; q++)
+                if (*q == '_') *q = ' ';
+            rc = lex_bag_add_text(lx, bag, def, LEX_KIND_W, 1, src, err);
+            wn_synset_free(&k);
+        }
     wn_synset_free(&s);
     return rc;
 }
@@ -214,7 +239,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     }
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
-    if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, "the class name", err);
+    if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, 0, "the class name", err);
     /* Definitions: each physical sense's own (level 0) and its hypernyms' up to two levels. */
     for (int s = 0; s < c->np.n_senses && !rc; s++) {
         const lex_sense *se = &c->np.senses[s];
@@ -223,6 +248,8 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
             rc = bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
         }
+        /* a name one level below its sense ("cafe table") is a sibling of the sense's kinds */
+        if (!rc && !c->spec) rc = bag_kinds(lx, &c->bag, se->off, err);
     }
     return rc;
 }

@@ -16,6 +16,7 @@
 #define LEX_EPS 0.1f     /* an attribute the class's definitions do not mention */
 #define LEX_GAMMA 0.3f   /* weight of a description beside a head noun */
 #define LEX_DELTA 0.8f   /* gloss word found one hypernym level up (squared two levels up) */
+#define LEX_KIND_W (LEX_DELTA * LEX_DELTA) /* a definition of a kind of the class (one level down) */
 #define LEX_SYN 0.8f     /* a description word matched through a lemma of its commonest sense */
 #define LEX_GLOSS_LEVELS 2
 #define LEX_HOLDS (LEX_DELTA * LEX_DELTA) /* the query names what a class's modifier names */
@@ -106,6 +107,12 @@ int lex_sense_load(const lex_db *lx, uint32_t off, int rank, lex_sense *s, sp_er
 int lex_sense_physical(const lex_sense *s);
 /* 1 when the sense is a person (under person.n.01: "monitor" the supervisor). */
 int lex_sense_person(const lex_sense *s);
+/* 1 when the sense is a room (room.n.01 or a kind of it: WordNet's toilet, a closet, a booth). */
+int lex_sense_room(const lex_sense *s);
+/* 1 when the sense is a living thing (a plant, an animal, a person). */
+int lex_sense_living(const lex_sense *s);
+/* 1 when the sense is an act (act.n.02: "storage", the act of storing). */
+int lex_sense_act(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
 int lex_sense_process(const lex_sense *s);
 /* 1 when the sense is an artifact (under artifact.n.01). */
@@ -132,9 +139,14 @@ typedef struct lex_bag_word {
     char w[LEX_WORD];  /* a base form */
     float weight;      /* DELTA^level */
     short src;         /* index into the bag's sources */
-    short patient;     /* a verb's base read from its past participle ("written" -> write): the
-                        * thing defined is what the verb acts on */
+    short patient;     /* LEX_BAG_PATIENT: a verb's base read from its past participle ("written"
+                        * -> write): the thing defined is what the verb acts on; LEX_BAG_AGENT:
+                        * the verb of a relative clause on it ("a lamp that sits on a table"):
+                        * what it does; 0: anything else */
+    short kind;        /* from the definition of a kind of the class (one level down) */
 } lex_bag_word;
+#define LEX_BAG_PATIENT 1
+#define LEX_BAG_AGENT 2
 
 typedef struct lex_bag {
     int n, cap;
@@ -144,16 +156,19 @@ typedef struct lex_bag {
 } lex_bag;
 
 void lex_bag_free(lex_bag *b);
-/* Adds the base forms of every content word of text at weight, citing source. */
-int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight,
+/* Adds the base forms of every content word of text at weight, citing source; kind: the text
+ * defines a kind of the class. */
+int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight, int kind,
                      const char *source, sp_error *err);
 /* Adds the words of WordNet lemmas as they are: a lemma is a base form already ("works", the
  * factory, is no "work"). */
 int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
- * absent), patient entries scaled by patient_factor; *src gets the source index. */
+ * absent), patient entries scaled by patient_factor, agent entries by agent_factor; own: the
+ * class's own entries only, not its kinds'
+ * (a kind's definition saying "red" does not make the class red); *src gets the source index. */
 float lex_bag_find(const lex_bag *b, char bases[][WN_LEMMA_MAX], int n, float min_weight,
-                   float patient_factor, int *src);
+                   float patient_factor, float agent_factor, int own, int *src);
 
 /* ---- phrases and classes -------------------------------------------------------------------- */
 
@@ -172,6 +187,9 @@ typedef struct lex_np {
                                            * first part is the last modifier ("nightstand") */
     int stranded;                         /* the description ends in a preposition: "something
                                            * to write on" (where the verb is done) */
+    int thing_does;                       /* the description says what the thing does ("something
+                                           * THAT keeps food cold", "what tells the time"), not
+                                           * what a person does with it ("something to sit on") */
     int n_senses;
     lex_sense *senses;                    /* [n_senses] all noun senses (queries) or physical (classes) */
     int n_mods;
@@ -238,7 +256,9 @@ const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
 const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);
 /* Loads a region table (JSON object name -> [phrases]) into v. */
 int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
-/* The table region an NP's head stands for (itself or a synonym), or NULL. */
+/* The table region an NP's head stands for (itself or a synonym), or NULL; returns 1 when it was
+ * found through a WordNet room named by a generic area's modifiers ("sleeping room"), else 0 or
+ * a negative SP_E_* code. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
 /* The definition of a region name's place sense (first sense that is a room, a functional area
  * or a workplace; for table entries any such sense, else the first), or NULL when none. */
@@ -252,6 +272,12 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
 /* The region of whom or what an area is for ("the children's section": "something for
  * children", the high chair) raised in region (indexed by class); returns 1 when any. */
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err);
+/* Rewrites a way in a direction as the passage that goes there ("the way out" -> "the exit",
+ * "get back up" -> "stairs"; lex_match.c). */
+void lex_way_direction(lex_tokens *t);
+/* The verbs an activity word names ("cooking" -> cook; "storage" -> store, WordNet's "+" from
+ * its commonest noun sense); none for a word that is a verb base itself. Returns how many. */
+int lex_activity_verbs(const lex_db *lx, const char *w, char out[][WN_LEMMA_MAX], int cap, sp_error *err);
 /* Raises the classes named after the region's words ("kitchen counter" of the kitchen, "patient
  * bed" of "the patient area") to 0.9 in ph (indexed by class); returns 1 when any. */
 int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph);
