@@ -20,7 +20,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "office_models"))
 sys.path.insert(0, os.path.join(HERE, "..", "ward_models"))
 import make_office as base  # noqa: E402  (primitives, lights, the SDF document)
-from make_ward import turned, castors  # noqa: E402  (rotated visuals, castors)
+from make_ward import turned  # noqa: E402  (rotated visuals)
 
 W, D, H = 12.0, 9.0, 3.0   # room width (x), depth (y), wall height
 T = 0.1                    # wall thickness
