@@ -166,7 +166,7 @@ static sp_query_engine *build_scene(const char *dir, sp_device *dev, sp_error *e
  * them: a change of class naming must show up here, not as silently stale tables. */
 static void test_tables_match_worlds(void)
 {
-    const char *worlds[10][3] = {{"house", "data/worlds/house.world", NULL},
+    const char *worlds[][3] = {{"house", "data/worlds/house.world", NULL},
                                 {"bookstore", "data/worlds/bookstore/worlds/bookstore.world",
                                  "data/worlds/bookstore/models"},
                                 {"office", "data/worlds/office.world", NULL},
@@ -176,8 +176,9 @@ static void test_tables_match_worlds(void)
                                 {"basement", "data/worlds/basement.world", NULL},
                                 {"classroom", "data/worlds/classroom.world", NULL},
                                 {"hotel", "data/worlds/hotel.world", NULL},
-                                {"grocery", "data/worlds/grocery.world", NULL}};
-    for (int k = 0; k < 10; k++) {
+                                {"grocery", "data/worlds/grocery.world", NULL},
+                                {"chemlab", "data/worlds/chemlab.world", NULL}};
+    for (int k = 0; k < (int)(sizeof worlds / sizeof worlds[0]); k++) {
         char world[1024], models[1024], table[1024];
         snprintf(world, sizeof world, "%s/%s", SP_SOURCE_DIR, worlds[k][1]);
         snprintf(models, sizeof models, "%s/%s", SP_SOURCE_DIR, worlds[k][2] ? worlds[k][2] : "");
