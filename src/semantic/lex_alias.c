@@ -83,8 +83,24 @@ static void words_of(const lex_tokens *in, word_list *wl)
     }
 }
 
+/* Whether a class of the scene is named by exactly the alias's words: the world's own name for
+ * a thing shadows the table's general reading of it (a scene with a "card terminal" means that
+ * class by it, not the cash register the table reads the name as). */
+static int names_a_class(const sp_lex_vocab *v, const lex_alias *a)
+{
+    for (int c = 0; c < v->n; c++) {
+        const lex_class *k = &v->classes[c];
+        if (k->n_tok != a->n_words) continue;
+        int same = 1;
+        for (int j = 0; j < a->n_words && same; j++) same = !strcmp(k->tok[j], a->words[j]);
+        if (same) return 1;
+    }
+    return 0;
+}
+
 /* The longest alias whose words are whole tokens from word p on (a WordNet collocation is not
- * broken up: "laundry cart" is WordNet's, its "cart" no alias), or NULL. */
+ * broken up: "laundry cart" is WordNet's, its "cart" no alias) and that names no class of the
+ * scene, or NULL. */
 static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p)
 {
     const lex_alias *best = NULL;
@@ -96,7 +112,7 @@ static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int
         int ok = 1;
         for (int j = 0; j < a->n_words && ok; j++)
             ok = j + 1 < a->n_words ? !strcmp(wl->w[p + j], a->words[j]) : word_or_plural(wl->w[p + j], a->words[j]);
-        if (ok) best = a;
+        if (ok && !names_a_class(v, a)) best = a;
     }
     return best;
 }
