@@ -654,6 +654,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] && another_kind(c, np, qp, i, &named)) {
             use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
             fmod *= LEX_MU;
+            size_t o = strlen(m->path);
+            snprintf(m->path + o, sizeof m->path - o, "%s'%s' names another kind than %s: a sibling", o ? "; " : "",
+                     np->mods[i], c->name);
         } else if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
