@@ -471,6 +471,13 @@ size_t sp_semantic_abi_sizeof(const char *type_name);
  * its hypernym and another kind of the head ("dresser") its sibling; so does a query that is a
  * closed compound WordNet lacks ("nightstand"), unless the class's name has its first part. T is multiplied by
  *   (1 - BETA)                 per query modifier that names other classes and not this one (0.3)
+ *   MU                         per query modifier naming another kind of thing than the class's
+ *                              own modifier ("WINE rack" / magazine rack: a sibling, below 0.5):
+ *                              both words' commonest senses attested and an animal, artifact,
+ *                              communication, food or plant (WordNet's lexicographer files; not
+ *                              a material, act, quality or person), neither a kind or sibling of
+ *                              the other, neither's definitions naming the other, and no word of
+ *                              the class's name in the query's modifiers or head
  *   (1 - EPS)                  per attribute its definitions do not mention (0.1; "red", "wooden":
  *                              reported in `ignored`)
  *   (1 - GAMMA + GAMMA G)      when a description stands beside the head (GAMMA 0.3).

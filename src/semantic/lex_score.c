@@ -266,6 +266,9 @@ typedef struct {
     int n_agent;   /* verbs the head is the agent noun of ("dispenser" <- dispense) */
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
+    int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
+    lex_np mod_np[8];      /* ... read alone, every noun sense */
+    lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
     /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
      * of illumination"): the sense, and its definition's words with their weights */
     int n_any, any_sense[2], any_n[2];
@@ -341,6 +344,40 @@ static int prepare_any(const lex_db *lx, const lex_np *np, query_prep *qp, sp_er
     return rc;
 }
 
+/* 1 when a query modifier names a kind of thing by its commonest noun sense (an artifact, a food,
+ * a plant or an animal: "wine", "shoe", "coffee", "flower"; WordNet's lexicographer files) and has
+ * no adjective reading: it says which kind of the head is meant ("WINE rack"), so it is no
+ * attribute to ignore. A substance or material ("leather", "glass", "oak" whose commonest sense is
+ * the wood), a colour, an act or a person stays an attribute. *s gets that sense. */
+static int kind_modifier(const lex_db *lx, const char *word, const char *base, lex_np *np, lex_bag *bag,
+                         sp_error *err)
+{
+    int adj = lex_is_pos(lx, WN_ADJ, word, err);
+    if (adj) return adj < 0 ? adj : 0;
+    /* an -ing form of a verb describes ("hanging" lamp, "serving" counter): a participle */
+    size_t n = strlen(word);
+    if (n > 4 && !strcmp(word + n - 3, "ing")) {
+        int verb = lex_is_pos(lx, WN_VERB, word, err);
+        if (verb) return verb < 0 ? verb : 0;
+    }
+    uint32_t off;
+    int tagged = 0;
+    int k = wn_lookup(lx->db, WN_NOUN, base, &off, 1, &tagged, err);
+    if (k <= 0) return k;
+    if (!tagged) return 0; /* no attested sense: WordNet's order says nothing (change 23) */
+    wn_synset syn;
+    int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &syn, err);
+    if (rc) return rc;
+    int f = syn.lexfile;
+    wn_synset_free(&syn);
+    if (!wn_lexfile_names_kind(f)) return 0;
+    lex_tokens one = {1, {{0}}};
+    snprintf(one.w[0], LEX_WORD, "%s", base);
+    if ((rc = lex_np_parse(lx, &one, 0, 1, 0, np, err))) return rc;
+    if ((rc = lex_bag_synset(lx, bag, (wn_id){off, WN_NOUN}, 1.0f, 0, err))) return rc;
+    return np->n_senses > 0;
+}
+
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -351,6 +388,11 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
         if (nb < 0) return nb;
         snprintf(qp->mod_base[i], WN_LEMMA_MAX, "%s", nb > 0 ? b[0] : np->mods[i]);
         rc = expand(lx, np->mods[i], &qp->mod_exp[i], err);
+        if (!rc && !(np->split && i == np->n_mods - 1)) {
+            int k = kind_modifier(lx, np->mods[i], qp->mod_base[i], &qp->mod_np[i], &qp->mod_bag[i], err);
+            if (k < 0) return k;
+            qp->mod_kind[i] = k;
+        }
     }
     for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
     if (!rc) rc = agent_verbs(lx, np, qp, err);
@@ -439,6 +481,59 @@ static void name_head_tax(const lex_np *np, const lex_class *c, float *base, sp_
             m->kind = t.kind;
             describe_tax(m, &t, &np->senses[i], &h->senses[j]);
         }
+}
+
+/* 1 when two senses are one kind: the same, one a kind of the other, or siblings (one direct
+ * hypernym in common: "cappuccino" and "espresso", both coffee). */
+static int same_kind(const lex_sense *a, const lex_sense *b, int siblings)
+{
+    if (lex_anc_find(a, b->off) >= 0 || lex_anc_find(b, a->off) >= 0) return 1;
+    for (int i = 1; siblings && i < a->n_anc; i++)
+        if (a->anc[i].dist == 1)
+            for (int j = 1; j < b->n_anc; j++)
+                if (b->anc[j].dist == 1 && b->anc[j].off == a->anc[i].off) return 1;
+    return 0;
+}
+
+/* 1 when the kind-naming query modifier i (kind_modifier) makes the query another kind than class
+ * c: the class is a particular kind of the query's head, named by a modifier of its own
+ * ("drying rack", "checkout counter"), which the query does not name, and the modifier is no
+ * kind of the class's modifier or of one of its senses, nor the other way, nor its sibling by
+ * their commonest senses, and neither's definition or lemmas name the other ("bakery: where
+ * baked goods (breads and cakes and PASTRIES) are sold" agrees with the pastry case, "drug: a
+ * substance used as a MEDICINE" with the medicine cart). A query 'M H' is then a sibling of
+ * 'M2 H' ("wine rack" / drying rack), not the class; a class without a modifier accepts it
+ * ("office chair" -> chair, "double bed" -> bed). */
+static int another_kind(const lex_class *c, const lex_np *np, const query_prep *qp, int i, const int *named)
+{
+    if (c->n_tok < 2 || !c->n_kind || *named) return 0;
+    for (int k = 0; k + 1 < c->n_tok; k++) /* the query's head is the class's modifier ("wire shelving") */
+        if (!strcmp(c->tok[k], np->head)) return 0;
+    int kind = 0; /* the class's modifier names a kind too ("magazine" rack), not a purpose, a
+                   * quality or a material ("storage" shelf, "privacy" curtain, "cardboard" box) */
+    for (int k = 0; k < c->n_kind; k++) kind |= c->kind_np[k].n_senses > 0 && wn_lexfile_names_kind(c->kind_lexfile[k]);
+    if (!kind) return 0;
+    const lex_np *m = &qp->mod_np[i];
+    char parts[WN_LEMMA_MAX], one[1][WN_LEMMA_MAX];
+    snprintf(parts, sizeof parts, "%s", qp->mod_base[i]);
+    int all_in = 1; /* "ice cream" of "ice cream freezer" */
+    for (char *save = NULL, *t = strtok_r(parts, "_", &save); t; t = strtok_r(NULL, "_", &save)) {
+        int in = 0;
+        for (int k = 0; k < c->n_tok; k++) in |= !strcmp(c->tok[k], t);
+        all_in &= in;
+    }
+    if (all_in) return 0;
+    for (int k = 0; k < c->n_kind; k++) {
+        const lex_np *m2 = &c->kind_np[k];
+        for (int a = 0; a < m->n_senses; a++)
+            for (int b = 0; b < m2->n_senses; b++)
+                if (same_kind(&m->senses[a], &m2->senses[b], a == 0 && b == 0)) return 0;
+        snprintf(one[0], WN_LEMMA_MAX, "%s", c->tok[k]);
+        if (lex_bag_find(&qp->mod_bag[i], one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0) return 0;
+    }
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
+    if (lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0) return 0;
+    return 1;
 }
 
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
@@ -534,6 +629,15 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     /* Modifiers: a word of this class's name agrees; a word naming other classes of the scene
      * contradicts; anything else is an attribute we cannot see, unless a definition mentions it. */
     float fmod = 1.0f;
+    int named = 0; /* a query modifier is a word of the class's name ("swivel BAR stool") */
+    for (int i = 0; i < np->n_mods - np->split; i++)
+        for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], qp->mod_base[i]);
+    if (strchr(np->head, '_')) { /* "cabinet TABLE saw": the head is the class's own name */
+        char h[WN_LEMMA_MAX];
+        snprintf(h, sizeof h, "%s", np->head);
+        for (char *save = NULL, *t = strtok_r(h, "_", &save); t; t = strtok_r(NULL, "_", &save))
+            for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], t);
+    }
     for (int i = 0; i < np->n_mods; i++) {
         int use = LEX_MOD_IGNORED;
         if (np->split && i == np->n_mods - 1) { /* part of the head: "night" of "nightstand" */
@@ -547,7 +651,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
-        if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
+        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] && another_kind(c, np, qp, i, &named)) {
+            use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
+            fmod *= LEX_MU;
+            size_t o = strlen(m->path);
+            snprintf(m->path + o, sizeof m->path - o, "%s'%s' names another kind than %s: a sibling", o ? "; " : "",
+                     np->mods[i], c->name);
+        } else if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
     }
@@ -647,6 +757,7 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
         if (mod_use && v->n) memcpy(mod_use, uses + 8 * ph->matches[0].class_index, sizeof(int) * (size_t)np->n_mods);
     }
     for (int r = 0; r < qp->n_ref; r++) lex_np_free(&qp->ref[r]);
+    for (int i = 0; i < 8; i++) lex_np_free(&qp->mod_np[i]), lex_bag_free(&qp->mod_bag[i]);
     free(qp);
     free(uses);
     return rc;

@@ -36,6 +36,8 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
         lex_np_free(&v->classes[i].name_head);
         lex_np_free(&v->classes[i].mod_head);
         lex_bag_free(&v->classes[i].bag);
+        for (int k = 0; k < v->classes[i].n_kind; k++) lex_np_free(&v->classes[i].kind_np[k]);
+        lex_bag_free(&v->classes[i].kind_bag);
     }
     free(v->classes);
     free(v->vocab_words);
@@ -59,7 +61,6 @@ int lex_vocab_has_word(const sp_lex_vocab *v, const char *w)
     return 0;
 }
 
-static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err);
 
 /* The verbs WordNet derives from the sense ("+" pointers: refrigerator -> refrigerate "make cool
  * or cold", bicycle -> bicycle "ride a bicycle", computer -> compute): what one does with the
@@ -69,12 +70,12 @@ static int bag_derived_verbs(const lex_db *lx, lex_bag *bag, const wn_synset *s,
     int rc = 0;
     for (int p = 0; p < s->n_pointers && !rc; p++)
         if (!strcmp(s->pointers[p].symbol, "+") && s->pointers[p].target.pos == WN_VERB)
-            rc = bag_synset(lx, bag, s->pointers[p].target, weight * LEX_DELTA, 0, err);
+            rc = lex_bag_synset(lx, bag, s->pointers[p].target, weight * LEX_DELTA, 0, err);
     return rc;
 }
 
 /* Adds a synset's lemmas and definition to the bag at weight (verbs: and its derived verbs'). */
-static int bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err)
+int lex_bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err)
 {
     wn_synset s;
     int rc = wn_read(lx->db, id, &s, err);
@@ -191,6 +192,37 @@ static int mod_head_prepare(const lex_db *lx, lex_class *c, sp_error *err)
     return 0;
 }
 
+/* The words of the name before its last, read alone with every noun sense, and those senses'
+ * lemmas and definitions: what kind of its head the class is ("checkout" counter, "drying" rack),
+ * to tell a query naming another kind (lex_score.c, another_kind). */
+static int kind_prepare(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i + 1 < c->n_tok && c->n_kind < 3 && !rc; i++) {
+        int noun = lex_is_pos(lx, WN_NOUN, c->tok[i], err); /* "overbed": no kind WordNet names */
+        if (noun < 0) return noun;
+        if (!noun) continue;
+        lex_tokens one = {1, {{0}}};
+        snprintf(one.w[0], LEX_WORD, "%s", c->tok[i]);
+        lex_np *k = &c->kind_np[c->n_kind++];
+        if ((rc = lex_np_parse(lx, &one, 0, 1, 0, k, err))) break;
+        c->kind_lexfile[c->n_kind - 1] = -1;
+        int tagged = 0;
+        uint32_t first;
+        int nl = wn_lookup(lx->db, WN_NOUN, c->tok[i], &first, 1, &tagged, err);
+        if (nl < 0) return nl;
+        if (k->n_senses && tagged) { /* an attested commonest sense */
+            wn_synset syn;
+            if ((rc = wn_read(lx->db, (wn_id){k->senses[0].off, WN_NOUN}, &syn, err))) break;
+            c->kind_lexfile[c->n_kind - 1] = syn.lexfile;
+            wn_synset_free(&syn);
+        }
+        for (int s = 0; s < k->n_senses && !rc; s++)
+            rc = lex_bag_synset(lx, &c->kind_bag, (wn_id){k->senses[s].off, WN_NOUN}, 1.0f, 0, err);
+    }
+    return rc;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -213,6 +245,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         if (nb < 0) return nb;
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
+    if (!rc) rc = kind_prepare(lx, c, err);
     /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
      * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
      * so the class is one level below its head and another kind of the head is its sibling.
@@ -246,7 +279,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         for (int a = 0; a < se->n_anc && !rc; a++) {
             if (se->anc[a].dist > LEX_GLOSS_LEVELS) continue;
             float w = se->anc[a].dist == 0 ? 1.0f : se->anc[a].dist == 1 ? LEX_DELTA : LEX_DELTA * LEX_DELTA;
-            rc = bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
+            rc = lex_bag_synset(lx, &c->bag, (wn_id){se->anc[a].off, WN_NOUN}, w, se->anc[a].dist == 0, err);
         }
         /* a name one level below its sense ("cafe table") is a sibling of the sense's kinds */
         if (!rc && !c->spec) rc = bag_kinds(lx, &c->bag, se->off, err);

@@ -163,6 +163,8 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
 /* Adds the words of WordNet lemmas as they are: a lemma is a base form already ("works", the
  * factory, is no "work"). */
 int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char *source, sp_error *err);
+/* Adds a synset's lemmas and definition to the bag at weight (verbs: and its derived verbs'). */
+int lex_bag_synset(const lex_db *lx, lex_bag *bag, wn_id id, float weight, int verbs, sp_error *err);
 /* Best weight of any of the bases in the bag among entries weighing at least min_weight (0 =
  * absent), patient entries scaled by patient_factor, agent entries by agent_factor; own: the
  * class's own entries only, not its kinds'
@@ -218,6 +220,11 @@ typedef struct lex_class {
                        * it (its washer is home appliance, not machine); no senses otherwise */
     lex_np mod_head; /* the noun modifier next to the head of a name WordNet lacks, read alone
                       * ("dumbbell" of "dumbbell rack"): what the thing is for or holds */
+    int n_kind;
+    lex_np kind_np[3]; /* the name's words before its last, read alone with all their noun senses
+                        * ("checkout" of "checkout counter"): the kind its modifier names */
+    int kind_lexfile[3]; /* the lexicographer file of each one's commonest sense (-1 none) */
+    lex_bag kind_bag;  /* those senses' lemmas and definitions */
 } lex_class;
 
 typedef struct lex_region {

@@ -56,6 +56,17 @@ typedef struct wn_pointer {
     uint8_t source_word, target_word; /* 1-based word numbers, 0 = the whole synset */
 } wn_pointer;
 
+/* Lexicographer files of nouns (WordNet's lexnames) that name kinds of things. */
+enum { WN_LEX_ANIMAL = 5, WN_LEX_ARTIFACT = 6, WN_LEX_COMMUNICATION = 10, WN_LEX_FOOD = 13, WN_LEX_PLANT = 20 };
+/* 1 when a noun of lexicographer file f names a kind of thing one can point at: an animal, an
+ * artifact, a food, a plant, or a communication (a magazine, a menu, a sign), not an act,
+ * attribute, state, substance or material, person, group, place or time. */
+static inline int wn_lexfile_names_kind(int f)
+{
+    return f == WN_LEX_ANIMAL || f == WN_LEX_ARTIFACT || f == WN_LEX_COMMUNICATION || f == WN_LEX_FOOD ||
+           f == WN_LEX_PLANT;
+}
+
 /* One synset, parsed from its data line. Owns its buffers (wn_synset_free). */
 typedef struct wn_synset {
     wn_id id;

@@ -539,6 +539,37 @@ static int same_relation(const char *got, const char *table)
     return !strcmp(got, table) || (n == t.n && canon && !strcmp(got, canon));
 }
 
+/* Phase 9 (issue 17, l11-lexical; docs/DESIGN.md change 62): a query modifier naming another
+ * kind of thing than the class's modifier makes the query the class's sibling, on a general
+ * vocabulary. */
+static void test_phase9_rules(const sp_lexicon *lx)
+{
+    const char *names[] = {"magazine rack", "fruit stand", "storage shelf", "privacy curtain", "bed", "chair",
+                           "bread rack", "espresso machine", "walls", "floor"};
+    sp_lex_vocab *v = NULL;
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, names, 10, &v, &res)) return;
+    /* 'M H' against 'M2 H' with M and M2 unrelated kinds of things: a sibling, not the class */
+    CHECK_MSG(!strcmp(found_class(v, "wine rack", res), ""), "wine rack -> '%s'", found_class(v, "wine rack", res));
+    CHECK(!strcmp(found_class(v, "shoe rack", res), ""));
+    CHECK(!strcmp(found_class(v, "flower stand", res), ""));
+    /* the bare head, a class without a modifier, an attribute, the class's own modifier */
+    CHECK(!strcmp(found_class(v, "rack", res), "magazine rack") || !strcmp(found_class(v, "rack", res), "bread rack"));
+    CHECK(!strcmp(found_class(v, "double bed", res), "bed"));
+    CHECK(!strcmp(found_class(v, "office chair", res), "chair"));
+    CHECK(!strcmp(found_class(v, "wooden magazine rack", res), "magazine rack"));
+    /* a class modifier naming a purpose or a quality, not a kind ("storage", "privacy") */
+    CHECK(!strcmp(found_class(v, "wire shelf", res), "storage shelf"));
+    CHECK(!strcmp(found_class(v, "cubicle curtain", res), "privacy curtain"));
+    /* related modifiers: one a kind of the other (espresso is a coffee) */
+    CHECK(!strcmp(found_class(v, "coffee machine", res), "espresso machine"));
+    /* a modifier with no attested sense ("bakery": WordNet's order says nothing) stays an
+     * attribute, ignored and reported */
+    CHECK(strcmp(found_class(v, "bakery rack", res), "") && res->n_ignored == 1);
+    sp_lex_vocab_free(v);
+    free(res);
+}
+
 static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
 {
     return ph->n_matches ? sp_lex_vocab_class(v, ph->matches[0].class_index) : "";
@@ -650,6 +681,7 @@ int main(int argc, char **argv)
     test_region_rules(lx);
     test_phase7_rules(lx);
     test_phase8_rules(lx);
+    test_phase9_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom", "hotel",
                             "grocery", "chemlab"};
     const int n_worlds = (int)(sizeof worlds / sizeof worlds[0]);
@@ -665,11 +697,15 @@ int main(int argc, char **argv)
      * development data too and get floors; floors rise to just under the figures when set
      * (office 87/96, ward 102/121, garage 123/139, cafe 152/187 and 33/35, basement 170/195,
      * classroom 152/178 and 33/33, hotel 136/170 and 34/40); regression floors, not bars */
-    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.87, 0.8, 0.85, 0.84, 0.79},
-                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.75, 0.96, 0.85};
+    /* phase 9 (l11-lexical): the grocery and the chemlab are development data too and get
+     * regression floors (163/200 and 32/36, 138/197 and 32/34 when set); a table added after
+     * them is printed without a bar */
+    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.87, 0.8, 0.85, 0.84, 0.79, 0.81, 0.70},
+                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.75, 0.96, 0.85, 0.88, 0.94};
+    const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= 9) continue; /* the blind tables (grocery, chemlab): printed, no bar */
+        if (w >= n_floors) continue; /* a blind table: printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
