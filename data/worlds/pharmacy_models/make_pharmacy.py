@@ -59,13 +59,6 @@ def cash_register():
             box("customer_display", "till_grey", 0, -0.16, 0.17, 0.14, 0.02, 0.06)]
 
 
-def computer_monitor():
-    # the dispensary computer's screen on the counter, looking at the staff side (+y)
-    return [box("screen", "black", 0, 0, 0.3, 0.55, 0.04, 0.34),
-            box("neck", "dark_metal", 0, -0.04, 0.1, 0.05, 0.04, 0.16),
-            box("foot", "dark_metal", 0, -0.04, 0.01, 0.22, 0.16, 0.02)]
-
-
 def label_printer():
     return [box("body", "white", 0, 0, 0.08, 0.18, 0.24, 0.16),
             box("slot", "black", 0, 0.121, 0.1, 0.1, 0.002, 0.01),
@@ -218,7 +211,7 @@ def main():
     # the dispensary: the counter, things on it, the shelving and the locked stores behind it
     add("pharmacy_counter", (3.5, 5.3, 0, 0), pharmacy_counter())
     top = 1.04
-    add("computer_monitor", (2.0, 5.4, top, 0), computer_monitor())
+    add("computer_monitor", (2.0, 5.4, top, 3.1416), base.monitor())  # faces the staff (+y)
     add("label_printer", (2.6, 5.4, top, 0), label_printer())
     add("cash_register", (4.8, 5.3, top, 0), cash_register())
     ys = D - T / 2 - 0.2
