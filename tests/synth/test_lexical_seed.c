@@ -178,7 +178,8 @@ static void test_tables_match_worlds(void)
                                 {"hotel", "data/worlds/hotel.world", NULL},
                                 {"grocery", "data/worlds/grocery.world", NULL},
                                 {"chemlab", "data/worlds/chemlab.world", NULL},
-                                {"pharmacy", "data/worlds/pharmacy.world", NULL}};
+                                {"pharmacy", "data/worlds/pharmacy.world", NULL},
+                                {"salon", "data/worlds/salon.world", NULL}};
     for (int k = 0; k < (int)(sizeof worlds / sizeof worlds[0]); k++) {
         char world[1024], models[1024], table[1024];
         snprintf(world, sizeof world, "%s/%s", SP_SOURCE_DIR, worlds[k][1]);

@@ -236,15 +236,8 @@ def mop_bucket():
 
 
 def walls():
-    v, wall = base.wall_builder(H, T)
-    # outer walls: the shop front (south) with the entrance, then north, west, east
-    wall(0, 0, EX0, 0); wall(EX1, 0, W, 0); wall(EX0, 0, EX1, 0, 2.1, H)
-    wall(0, D, W, D); wall(0, 0, 0, D); wall(W, 0, W, D)
-    # the stock room's partitions: west (x = SX) closed, south (y = SY) with the doorway
-    wall(SX, SY, SX, D, c="partition")
-    wall(SX, SY, DX0, SY, c="partition"); wall(DX1, SY, W, SY, c="partition")
-    wall(DX0, SY, DX1, SY, 2.1, H, c="partition")
-    return v
+    """The shop front with the entrance, the stock room partitioned off in the north-east corner."""
+    return base.corner_room_walls(W, D, H, (EX0, EX1), (SX, SY), (DX0, DX1), T)
 
 
 def main():

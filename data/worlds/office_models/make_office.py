@@ -209,6 +209,22 @@ def shell(walls_visuals, floor_name, floor_material, w, d, h):
             model("ceiling", (0, 0, 0, 0), ceiling_slab(w, d, h))]
 
 
+def corner_room_walls(w, d, h, entrance, room, doorway, thickness=T):
+    """The walls of a shop with its entrance (x entrance[0]..[1]) in the south front and a room
+    partitioned off in the north-east corner (x > room[0], y > room[1]), entered through a doorway
+    (x doorway[0]..[1]) in its south partition; the grocery and the salon are built so."""
+    v, wall = wall_builder(h, thickness)
+    (e0, e1), (sx, sy), (d0, d1) = entrance, room, doorway
+    # outer walls: the front (south) with the entrance, then north, west, east
+    wall(0, 0, e0, 0); wall(e1, 0, w, 0); wall(e0, 0, e1, 0, 2.1, h)
+    wall(0, d, w, d); wall(0, 0, 0, d); wall(w, 0, w, d)
+    # the corner room's partitions: west (x = sx) closed, south (y = sy) with the doorway
+    wall(sx, sy, sx, d, c="partition")
+    wall(sx, sy, d0, sy, c="partition"); wall(d1, sy, w, sy, c="partition")
+    wall(d0, sy, d1, sy, 2.1, h, c="partition")
+    return v
+
+
 def world_sdf(world, comment, lights, models):
     """The whole SDF document: the comment, scene, a dim sun, the lights and the models."""
     return f"""<?xml version="1.0"?>
