@@ -166,8 +166,14 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     if (!np->head[0]) return 0;
     char seq[LEX_MAX_TOKENS][WN_LEMMA_MAX];
     int n = 0;
-    for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++)
-        snprintf(seq[n++], WN_LEMMA_MAX, "%s", mod_base[i]);
+    /* a WordNet collocation among the modifiers ("blood_pressure monitor") is its words, as the
+     * class name's are */
+    for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++) {
+        char mod[WN_LEMMA_MAX];
+        snprintf(mod, sizeof mod, "%s", mod_base[i]);
+        for (char *save = NULL, *t = strtok_r(mod, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+            snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
+    }
     char head[WN_LEMMA_MAX];
     snprintf(head, sizeof head, "%s", np->head);
     for (char *save = NULL, *t = strtok_r(head, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))

@@ -279,6 +279,15 @@ static void test_aliases(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "a trolley", res), "trolley"));
     CHECK(!strcmp(found_class(v, "the till", res), "cash register"));
     sp_lex_vocab_free(v);
+    /* a class's full name is that class, also when WordNet joins words of its modifiers ("blood
+     * pressure" is a WordNet collocation) */
+    const char *clinic[] = {"computer monitor", "blood pressure monitor"};
+    free(res);
+    if (rules_vocab(lx, clinic, 2, &v, &res)) return;
+    CHECK(!strcmp(found_class(v, "blood pressure monitor", res), "blood pressure monitor"));
+    CHECK(res->target.matches[0].kind == SP_LEX_EXACT);
+    CHECK(!strcmp(found_class(v, "the computer monitor", res), "computer monitor"));
+    sp_lex_vocab_free(v);
     /* a user's aliases.json beside the region table they pass adds its names; a bad one fails */
     const char *dir = test_tmpdir("lex_aliases");
     char rp[1200], ap[1200];
