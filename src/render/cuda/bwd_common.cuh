@@ -72,6 +72,24 @@ __device__ __forceinline__ void sp_cu_bwd_geo(float4 co, float2 fr, float vis, f
     geo[5] = vis * v_alpha;
 }
 
+/* dL/dalpha of a kept Gaussian at a pixel, from p = colour . v_out and the terms carried from
+ * the Gaussians behind it (G: colour, Gd: depth), which it then extends by this one; with aux
+ * also the depth (*z, read only then) and alpha terms, and geo[6] (dL/d depth). ra = 1 / (1 - alpha),
+ * fac = alpha T. */
+__device__ __forceinline__ float sp_cu_bwd_alpha_grad(float p, float T, float ra, float fac, bool aux,
+                                                      const float *z, float vd, float va, float Tf,
+                                                      float *G, float *Gd, float geo[7])
+{
+    float v_alpha = p * T - *G * ra;
+    *G += p * fac;
+    if (aux) {
+        v_alpha += (*z * T - *Gd * ra) * vd + Tf * ra * va;
+        *Gd += *z * fac;
+        geo[6] = fac * vd;
+    }
+    return v_alpha;
+}
+
 /* rasterize_bwd_mm.cu: the shared-memory product kernel for chunks of 32 channels and more */
 bool sp_cuda_bwd_mm_fits(int ch);
 int sp_cuda_bwd_mm(int ch, const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,

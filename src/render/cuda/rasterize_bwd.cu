@@ -138,14 +138,8 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     p += col[c] * vout[c];
                     if (!GV) vcol[c < VC ? c : 0] = fac * vout[c];
                 }
-                float v_alpha = p * T - G * ra;
-                G += p * fac;
-                if (do_aux) {
-                    const float z = s_z[t];
-                    v_alpha += (z * T - Gd * ra) * vd + Tf * ra * va;
-                    Gd += z * fac;
-                    geo[6] = fac * vd;
-                }
+                const float v_alpha = sp_cu_bwd_alpha_grad(p, T, ra, fac, do_aux, s_z + t, vd, va, Tf, &G,
+                                                           &Gd, geo);
                 sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
             }
             const int g = s_id[t];
