@@ -517,6 +517,30 @@ static double max_diff(const float *a, const float *b, size_t n)
     return m;
 }
 
+/* Checks a batch's outputs against one view at a time (the same bits) and the CPU's (within
+ * 1e-4; first-surface depth: the same bits), then frees all three. */
+static void compare_batch(const sp_camera *cams, const sp_render_request *shape, int nv, size_t F,
+                          host_out *batch, host_out *single, host_out *cpu)
+{
+    for (int v = 0; v < nv; v++) {
+        size_t np = (size_t)cams[v].width * cams[v].height;
+        float *b[4] = {batch[v].rgb, batch[v].feat, batch[v].depth, batch[v].alpha};
+        float *o[4] = {single[v].rgb, single[v].feat, single[v].depth, single[v].alpha};
+        float *c[4] = {cpu[v].rgb, cpu[v].feat, cpu[v].depth, cpu[v].alpha};
+        size_t len[4] = {np * 3, np * F, np, np};
+        for (int k = 0; k < 4; k++) {
+            if (!b[k]) continue;
+            CHECK_MSG(memcmp(b[k], o[k], len[k] * 4) == 0, "view %d output %d: batch != single", v, k);
+            double d = max_diff(b[k], c[k], len[k]);
+            int exact = k == 2 && shape[v].depth_mode == SP_DEPTH_SURFACE;
+            CHECK_MSG(exact ? memcmp(b[k], c[k], len[k] * 4) == 0 : d <= 1e-4,
+                      "view %d output %d: GPU vs CPU %g", v, k, d);
+            fprintf(stderr, "  view %d output %d: |GPU - CPU| %.2g\n", v, k, d);
+        }
+        for (int k = 0; k < 4; k++) free(b[k]), free(o[k]), free(c[k]);
+    }
+}
+
 /* A batch whose views all ask the same (their passes share colours and background: one
  * compositing launch for all views): the same bits as one view at a time, and the CPU's within
  * 1e-4; views of different sizes, one with no Gaussian in front of it. */
@@ -546,20 +570,7 @@ static void test_views_batch_uniform(void)
         CHECK_OK(sp_device_create(&cd, SP_DEVICE_CPU, 2, &err), &err);
         render_all(cd, &sp, cams, 5, shape, 0, cpu);
         sp_device_free(cd);
-        for (int v = 0; v < 5; v++) {
-            size_t np = (size_t)cams[v].width * cams[v].height, F = 33;
-            float *b[4] = {batch[v].rgb, batch[v].feat, batch[v].depth, batch[v].alpha};
-            float *o[4] = {single[v].rgb, single[v].feat, single[v].depth, single[v].alpha};
-            float *c[4] = {cpu[v].rgb, cpu[v].feat, cpu[v].depth, cpu[v].alpha};
-            size_t len[4] = {np * 3, np * F, np, np};
-            for (int k = 0; k < 4; k++) {
-                if (!b[k]) continue;
-                CHECK_MSG(memcmp(b[k], o[k], len[k] * 4) == 0, "uniform view %d output %d: batch != single", v, k);
-                double d = max_diff(b[k], c[k], len[k]);
-                CHECK_MSG(d <= 1e-4, "uniform view %d output %d: GPU vs CPU %g", v, k, d);
-            }
-            for (int k = 0; k < 4; k++) free(b[k]), free(o[k]), free(c[k]);
-        }
+        compare_batch(cams, shape, 5, 33, batch, single, cpu);
     }
     sp_splat_free(&sp);
     scene_free(&s);
@@ -589,23 +600,7 @@ static void test_views_batch(void)
     sp_device *cd = NULL;
     CHECK_OK(sp_device_create(&cd, SP_DEVICE_CPU, 2, &err), &err);
     render_all(cd, &sp, cams, 4, shape, 0, cpu);
-    for (int v = 0; v < 4; v++) {
-        size_t np = (size_t)cams[v].width * cams[v].height, F = 7;
-        float *b[4] = {batch[v].rgb, batch[v].feat, batch[v].depth, batch[v].alpha};
-        float *o[4] = {single[v].rgb, single[v].feat, single[v].depth, single[v].alpha};
-        float *c[4] = {cpu[v].rgb, cpu[v].feat, cpu[v].depth, cpu[v].alpha};
-        size_t len[4] = {np * 3, np * F, np, np};
-        for (int k = 0; k < 4; k++) {
-            if (!b[k]) continue;
-            CHECK_MSG(memcmp(b[k], o[k], len[k] * 4) == 0, "view %d output %d: batch != single", v, k);
-            double d = max_diff(b[k], c[k], len[k]);
-            int exact = k == 2 && shape[v].depth_mode == SP_DEPTH_SURFACE;
-            CHECK_MSG(exact ? memcmp(b[k], c[k], len[k] * 4) == 0 : d <= 1e-4,
-                      "view %d output %d: GPU vs CPU %g", v, k, d);
-            fprintf(stderr, "  view %d output %d: |GPU - CPU| %.2g\n", v, k, d);
-        }
-        for (int k = 0; k < 4; k++) free(b[k]), free(o[k]), free(c[k]);
-    }
+    compare_batch(cams, shape, 4, 7, batch, single, cpu);
     sp_device_free(cd);
     sp_splat_free(&sp);
     scene_free(&s);
