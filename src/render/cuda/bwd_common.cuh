@@ -1,6 +1,7 @@
-/* CUDA backend, stage 4: what the two backward compositing kernels share (rasterize_bwd.cu's
- * reduce-scatter kernel and rasterize_bwd_mm.cu's shared-memory product kernel): the warp
- * reduce-scatter and one pixel's geometry gradients. */
+/* CUDA backend, stage 4: what the backward compositing kernels share (rasterize_bwd.cu's
+ * reduce-scatter kernel, rasterize_bwd_mm.cu's shared-memory product kernel and
+ * rasterize_bwd_tc.cu's tensor-core one): the warp reduce-scatter, one pixel's geometry
+ * gradients, and the product kernels' stages and walk. */
 #ifndef SP_RENDER_CUDA_BWD_COMMON_CUH
 #define SP_RENDER_CUDA_BWD_COMMON_CUH
 #include "common.cuh"
@@ -90,9 +91,157 @@ __device__ __forceinline__ float sp_cu_bwd_alpha_grad(float p, float T, float ra
     return v_alpha;
 }
 
+/* ---- stages: what the product (rasterize_bwd_mm.cu) and tensor-core (rasterize_bwd_tc.cu)
+ * kernels share. Both walk a tile's list in stages of NB Gaussians, store every pixel's blending
+ * weight fac = alpha T for the stage in shared memory, and form the colour gradients as a product
+ * over the tile's pixels after the walk. */
+#define NB 32               /* Gaussians per stage, and per product */
+#define NWARPS (BLOCK / 32) /* 8 */
+
+/* One stage's inputs as a thread loads them: Gaussian `tid` of the stage (tid < NB), and the
+ * colour values tid, tid + BLOCK, .. of the stage's [NB][CH] block (zero past the list or D). */
+template <int CPT>
+struct stage_regs {
+    int g;
+    float2 xy;
+    float4 co;
+    float z;
+    float col[CPT];
+};
+
+template <int CH, int CPT>
+__device__ __forceinline__ void stage_load(stage_regs<CPT> *s, const uint32_t *__restrict__ ids,
+                                           const float2 *__restrict__ means2d,
+                                           const float4 *__restrict__ conic_op,
+                                           const float *__restrict__ depths,
+                                           const float *__restrict__ colors, int D, int c0,
+                                           int b_end, int cnt, int tid)
+{
+    if (tid < cnt) {
+        s->g = (int)ids[b_end - 1 - tid];
+        s->xy = means2d[s->g];
+        s->co = conic_op[s->g];
+        s->z = depths[s->g];
+    }
+#pragma unroll
+    for (int i = 0; i < CPT; i++) {
+        const int k = tid + i * BLOCK, j = k / CH, c = k - j * CH;
+        s->col[i] = (j < cnt && c0 + c < D) ? colors[(size_t)ids[b_end - 1 - j] * D + c0 + c] : 0.f;
+    }
+}
+
+/* A stage in shared memory: per Gaussian t < NB its geometry, id and flag (byte w = warp w kept
+ * it), and its colours at col + t * LDC (stage_store's). */
+struct stage_smem {
+    float4 *conic;
+    unsigned long long *flag;
+    float *col;
+    float2 *xy, *frame; /* frame: the conic's principal frame (cs, sn) */
+    float *z, *cut;
+    int *id;
+};
+
+/* Stores a stage that stage_load brought into registers. */
+template <int CH, int LDC, int CPT>
+__device__ __forceinline__ void stage_store(const stage_smem &s, const stage_regs<CPT> &nx, int cnt,
+                                            int tid)
+{
+    if (tid < cnt) {
+        s.id[tid] = nx.g;
+        s.xy[tid] = nx.xy;
+        s.conic[tid] = nx.co;
+        s.cut[tid] = sp_cu_sigma_cut(nx.co.w);
+        const float con[3] = {nx.co.x, nx.co.y, nx.co.z};
+        float fcs, fsn;
+        sp_gm_conic_frame(con, &fcs, &fsn);
+        s.frame[tid] = make_float2(fcs, fsn);
+        s.z[tid] = nx.z;
+    }
+#pragma unroll
+    for (int i = 0; i < CPT; i++) {
+        const int k = tid + i * BLOCK;
+        if (k < NB * CH) s.col[LDC == CH ? k : (k / CH) * LDC + k % CH] = nx.col[i];
+    }
+}
+
+/* The tile's v_image chunk into shared memory, read coalesced: pixel p's channel c at
+ * s_vout[p * LDV + c] for c < CHP (zero for c >= CH, past D and outside the image). */
+template <int CH, int CHP, int LDV>
+__device__ __forceinline__ void load_vout(float *s_vout, const float *__restrict__ v_image, int W,
+                                          int H, int D, int c0, int bx, int by, int tid)
+{
+    for (int k = tid; k < BLOCK * CHP; k += BLOCK) {
+        const int p = k / CHP, c = k - p * CHP;
+        const int x = bx + p % SP_TILE_SIZE, y = by + p / SP_TILE_SIZE;
+        s_vout[LDV == CHP ? k : p * LDV + c] = ((CHP == CH || c < CH) && x < W && y < H && c0 + c < D)
+                                  ? v_image[((size_t)y * W + x) * D + c0 + c]
+                                  : 0.f;
+    }
+}
+
+/* What a pixel carries through the walk. */
+struct walk_px {
+    float px, py;  /* pixel centre */
+    bool inside;   /* in the image */
+    bool aux;      /* this chunk adds the depth and alpha terms */
+    int last;      /* the pixel's last Gaussian (exclusive) */
+    int warp_last; /* the warp's */
+    float Tf, vd, va;
+    float T, G, Gd; /* transmittance and the carried colour / depth terms */
+};
+
+/* One stage's walk at this thread's pixel, back to front: alpha, transmittance, dL/dalpha (its
+ * colour term p = colour_t . v_out from dot(t)) and the geometry sums (warp reduce-scatter, one
+ * atomic per value and warp); fac of Gaussian t (0 where not kept) goes to fac_out[t * ldf + tid]
+ * and the warp's flag byte to s.flag[t]. dot(t) is called only where the pixel keeps t, before
+ * fac_out[t * ldf + tid] is written (so it may read that slot). */
+template <class Dot>
+__device__ __forceinline__ void stage_walk(const stage_smem &s, walk_px &q, int b_end, int cnt,
+                                           float *fac_out, int ldf, Dot dot,
+                                           float *__restrict__ vgeo, int tid)
+{
+    const int lane = tid & 31, warp = tid >> 5;
+    for (int t = 0; t < NB; t++) {
+        const int idx = b_end - 1 - t;
+        float fac = 0.f, geo[7];
+        bool valid = false;
+#pragma unroll
+        for (int k = 0; k < 7; k++) geo[k] = 0.f;
+        if (t < cnt && idx < q.warp_last) { /* warp-uniform */
+            const float4 co = s.conic[t];
+            const float2 xy = s.xy[t];
+            const float dx = q.px - xy.x, dy = q.py - xy.y;
+            float vis = 0.f, alpha = 0.f;
+            if (q.inside && idx < q.last) alpha = sp_cu_alpha(co, s.cut[t], dx, dy, &vis);
+            valid = alpha > 0.f;
+            if (valid) {
+                /* IEEE 1/x, as the CPU's division (see rasterize_bwd.cu) */
+                const float ra = __frcp_rn(1.f - alpha);
+                q.T *= ra;
+                fac = alpha * q.T;
+                const float p = dot(t);
+                const float v_alpha = sp_cu_bwd_alpha_grad(p, q.T, ra, fac, q.aux, s.z + t, q.vd,
+                                                           q.va, q.Tf, &q.G, &q.Gd, geo);
+                sp_cu_bwd_geo(co, s.frame[t], vis, v_alpha, dx, dy, geo);
+            }
+        }
+        fac_out[t * ldf + tid] = fac;
+        const unsigned kept = __ballot_sync(FULL_MASK, valid);
+        if (lane == 0) ((unsigned char *)(s.flag + t))[warp] = kept != 0;
+        if (!kept) continue;
+        const int slot = warp_reduce_scatter<7>(geo, lane);
+        if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
+            atomicAdd(vgeo + (size_t)s.id[t] * SP_VGEO_STRIDE + slot, geo[0]);
+    }
+}
+
 /* rasterize_bwd_mm.cu: the shared-memory product kernel for chunks of 32 channels and more */
 bool sp_cuda_bwd_mm_fits(int ch);
 int sp_cuda_bwd_mm(int ch, const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                   float *vgeo, int c_base, int n_chunks, int aux, sp_error *err);
+/* rasterize_bwd_tc.cu: the same with both D-wide sums on tensor cores (cfg.bwd_gather = 2) */
+bool sp_cuda_bwd_tc_fits(int ch);
+int sp_cuda_bwd_tc(int ch, const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                    float *vgeo, int c_base, int n_chunks, int aux, sp_error *err);
 
 #endif

@@ -17,41 +17,7 @@
  * reduce-scatter kernel's, so both agree with the CPU up to float summation order. */
 #include "bwd_common.cuh"
 
-#define NB 32                    /* Gaussians per stage, and per product */
-#define NWARPS (BLOCK / 32)      /* 8 */
 #define GPW (NB / NWARPS)        /* Gaussians per warp in the product */
-
-/* One stage's inputs as a thread loads them: Gaussian `tid` of the stage (tid < NB), and the
- * colour values tid, tid + BLOCK, .. of the stage's [NB][CH] block (zero past the list or D). */
-template <int CPT>
-struct stage_regs {
-    int g;
-    float2 xy;
-    float4 co;
-    float z;
-    float col[CPT];
-};
-
-template <int CH, int CPT>
-__device__ __forceinline__ void stage_load(stage_regs<CPT> *s, const uint32_t *__restrict__ ids,
-                                           const float2 *__restrict__ means2d,
-                                           const float4 *__restrict__ conic_op,
-                                           const float *__restrict__ depths,
-                                           const float *__restrict__ colors, int D, int c0,
-                                           int b_end, int cnt, int tid)
-{
-    if (tid < cnt) {
-        s->g = (int)ids[b_end - 1 - tid];
-        s->xy = means2d[s->g];
-        s->co = conic_op[s->g];
-        s->z = depths[s->g];
-    }
-#pragma unroll
-    for (int i = 0; i < CPT; i++) {
-        const int k = tid + i * BLOCK, j = k / CH, c = k - j * CH;
-        s->col[i] = (j < cnt && c0 + c < D) ? colors[(size_t)ids[b_end - 1 - j] * D + c0 + c] : 0.f;
-    }
-}
 
 /* blocks per SM the registers are bounded for: 3 for 32 channels (its shared memory allows 3),
  * else 2 */
@@ -70,52 +36,49 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 {
     constexpr int NPL = (CH + 31) / 32; /* channels per lane in the product */
     extern __shared__ float4 smem_f4[];
-    float4 *s_conic = smem_f4;                                   /* [NB] */
-    unsigned long long *s_flag = (unsigned long long *)(s_conic + NB); /* [NB]: byte w = warp w kept it */
-    float *s_fac = (float *)(s_flag + NB);                       /* [NB][BLOCK] */
+    stage_smem st;
+    st.conic = smem_f4;                                          /* [NB] */
+    st.flag = (unsigned long long *)(st.conic + NB);             /* [NB] */
+    float *s_fac = (float *)(st.flag + NB);                      /* [NB][BLOCK] */
     float *s_vout = s_fac + NB * BLOCK;                          /* [BLOCK][CH] pixels' v_image */
-    float *s_col = s_vout + BLOCK * CH;                          /* [NB][CH] */
-    float2 *s_xy = (float2 *)(s_col + NB * CH);                  /* [NB] */
-    float2 *s_frame = s_xy + NB;                                 /* [NB] conic frame (cs, sn) */
-    float *s_z = (float *)(s_frame + NB);                        /* [NB] */
-    float *s_cut = s_z + NB;                                     /* [NB] */
-    int *s_id = (int *)(s_cut + NB);                             /* [NB] */
+    st.col = s_vout + BLOCK * CH;                                /* [NB][CH] */
+    st.xy = (float2 *)(st.col + NB * CH);                        /* [NB] */
+    st.frame = st.xy + NB;                                       /* [NB] */
+    st.z = (float *)(st.frame + NB);                             /* [NB] */
+    st.cut = st.z + NB;                                          /* [NB] */
+    st.id = (int *)(st.cut + NB);                                /* [NB] */
     __shared__ int s_block_last;
 
     const int c0 = c_base + blockIdx.z * CH;
-    const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
     const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
     const int lane = tid & 31, warp = tid >> 5;
     const int bx = blockIdx.x * SP_TILE_SIZE, by = blockIdx.y * SP_TILE_SIZE;
     const int px_i = bx + threadIdx.x, py_i = by + threadIdx.y;
-    const bool inside = px_i < W && py_i < H;
-    const float px = px_i + 0.5f, py = py_i + 0.5f;
+    walk_px q;
+    q.aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
+    q.inside = px_i < W && py_i < H;
+    q.px = px_i + 0.5f, q.py = py_i + 0.5f;
     const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
-    const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
+    const size_t pix = q.inside ? (size_t)py_i * W + px_i : 0;
 
-    /* the tile's v_image chunk, read coalesced (pixel-major, channels contiguous) */
-    for (int k = tid; k < BLOCK * CH; k += BLOCK) {
-        const int p = k / CH, c = k - p * CH;
-        const int x = bx + p % SP_TILE_SIZE, y = by + p / SP_TILE_SIZE;
-        s_vout[k] = (x < W && y < H && c0 + c < D) ? v_image[((size_t)y * W + x) * D + c0 + c] : 0.f;
-    }
-    const float Tf = inside ? t_final[pix] : 1.f;
-    const int last = inside ? last_idx[pix] : range.x;
+    load_vout<CH, CH, CH>(s_vout, v_image, W, H, D, c0, bx, by, tid);
+    q.Tf = q.inside ? t_final[pix] : 1.f;
+    q.last = q.inside ? last_idx[pix] : range.x;
     if (tid == 0) s_block_last = range.x;
     __syncthreads();
-    atomicMax(&s_block_last, last);
+    atomicMax(&s_block_last, q.last);
     float vout[CH];
-    float G = 0.f;
+    q.G = 0.f;
 #pragma unroll
     for (int c = 0; c < CH; c++) {
         vout[c] = s_vout[tid * CH + c];
-        if (bg && c0 + c < D) G += vout[c] * bg[c0 + c];
+        if (bg && c0 + c < D) q.G += vout[c] * bg[c0 + c];
     }
-    G *= Tf;
-    const float vd = (do_aux && inside && v_depth) ? v_depth[pix] : 0.f;
-    const float va = (do_aux && inside && v_alpha_out) ? v_alpha_out[pix] : 0.f;
-    float Gd = 0.f, T = Tf;
-    const int warp_last = __reduce_max_sync(FULL_MASK, last);
+    q.G *= q.Tf;
+    q.vd = (q.aux && q.inside && v_depth) ? v_depth[pix] : 0.f;
+    q.va = (q.aux && q.inside && v_alpha_out) ? v_alpha_out[pix] : 0.f;
+    q.Gd = 0.f, q.T = q.Tf;
+    q.warp_last = __reduce_max_sync(FULL_MASK, q.last);
     __syncthreads();
     const int block_last = s_block_last;
 
@@ -129,67 +92,26 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     for (int b_end = block_last; b_end > range.x; b_end -= NB) {
         const int cnt = min(NB, b_end - range.x);
         __syncthreads(); /* the previous stage's product is done with s_fac, s_col, s_id */
-        if (tid < cnt) {
-            s_id[tid] = nx.g;
-            s_xy[tid] = nx.xy;
-            s_conic[tid] = nx.co;
-            s_cut[tid] = sp_cu_sigma_cut(nx.co.w);
-            const float con[3] = {nx.co.x, nx.co.y, nx.co.z};
-            float fcs, fsn;
-            sp_gm_conic_frame(con, &fcs, &fsn);
-            s_frame[tid] = make_float2(fcs, fsn);
-            s_z[tid] = nx.z;
-        }
-#pragma unroll
-        for (int i = 0; i < CPT; i++) {
-            const int k = tid + i * BLOCK;
-            if (k < NB * CH) s_col[k] = nx.col[i];
-        }
+        stage_store<CH, CH, CPT>(st, nx, cnt, tid);
         if (b_end - NB > range.x)
             stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, b_end - NB,
                                 min(NB, b_end - NB - range.x), tid);
         __syncthreads();
-        for (int t = 0; t < NB; t++) {
-            const int idx = b_end - 1 - t;
-            float fac = 0.f, geo[7];
-            bool valid = false;
+        stage_walk(st, q, b_end, cnt, s_fac, BLOCK,
+                   [&](int t) {
+                       const float *col = st.col + t * CH;
+                       float p = 0.f;
 #pragma unroll
-            for (int k = 0; k < 7; k++) geo[k] = 0.f;
-            if (t < cnt && idx < warp_last) { /* warp-uniform */
-                const float4 co = s_conic[t];
-                const float2 xy = s_xy[t];
-                const float dx = px - xy.x, dy = py - xy.y;
-                float vis = 0.f, alpha = 0.f;
-                if (inside && idx < last) alpha = sp_cu_alpha(co, s_cut[t], dx, dy, &vis);
-                valid = alpha > 0.f;
-                if (valid) {
-                    /* IEEE 1/x, as the CPU's division (see rasterize_bwd.cu) */
-                    const float ra = __frcp_rn(1.f - alpha);
-                    T *= ra;
-                    fac = alpha * T;
-                    const float *col = s_col + t * CH;
-                    float p = 0.f;
-#pragma unroll
-                    for (int c = 0; c < CH; c++) p += col[c] * vout[c];
-                    const float v_alpha = sp_cu_bwd_alpha_grad(p, T, ra, fac, do_aux, s_z + t, vd, va, Tf,
-                                                               &G, &Gd, geo);
-                    sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
-                }
-            }
-            s_fac[t * BLOCK + tid] = fac;
-            const unsigned kept = __ballot_sync(FULL_MASK, valid);
-            if (lane == 0) ((unsigned char *)(s_flag + t))[warp] = kept != 0;
-            if (!kept) continue;
-            const int slot = warp_reduce_scatter<7>(geo, lane);
-            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
-                atomicAdd(vgeo + (size_t)s_id[t] * SP_VGEO_STRIDE + slot, geo[0]);
-        }
+                       for (int c = 0; c < CH; c++) p += col[c] * vout[c];
+                       return p;
+                   },
+                   vgeo, tid);
         __syncthreads();
         const int t0 = warp * GPW;
         if (!v_colors || t0 >= cnt) continue; /* warp-uniform */
         unsigned long long rows = 0;
 #pragma unroll
-        for (int j = 0; j < GPW; j++) rows |= s_flag[t0 + j];
+        for (int j = 0; j < GPW; j++) rows |= st.flag[t0 + j];
         float acc[GPW][NPL];
 #pragma unroll
         for (int j = 0; j < GPW; j++)
@@ -216,7 +138,7 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
 #pragma unroll
         for (int j = 0; j < GPW; j++) {
             if (t0 + j >= cnt) break;
-            const size_t g = (size_t)s_id[t0 + j];
+            const size_t g = (size_t)st.id[t0 + j];
 #pragma unroll
             for (int i = 0; i < NPL; i++) {
                 const int c = lane + 32 * i;
