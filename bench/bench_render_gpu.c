@@ -24,7 +24,9 @@
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
- *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_gather, 0)
+ *        bench_render_gpu raster N W H D [B]  one rasterizer case (B: cfg.bwd_gather, 0; -1
+ *                                          reduce-scatter, 1 gather, 2 tensor cores; the
+ *                                          lines say which backward kernel ran: bwd=...)
  *        bench_render_gpu step F          one training step case with F feature channels
  *        bench_render_gpu views N W H V   one inference-batch case */
 #include <stdint.h>
@@ -202,9 +204,11 @@ static void case_raster(size_t n, int W, int H, int D, int block_sums, const cha
     run_fwd_bwd(&c);
     OK(sp_raster_last_stages(c.r, &st, &g_err));
     c.cfg.profile = 0;
-    char set[160];
-    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s, %s)", n, W, H, D, pairs,
-             block_sums ? (block_sums > 0 ? " bwd_gather=1" : " bwd_gather=-1") : "", gpu);
+    char set[384], mode[32] = "";
+    if (block_sums) snprintf(mode, sizeof mode, " bwd_gather=%d", block_sums);
+    /* the kernel that ran (a mode falls back where its kernel does not fit the GPU or width) */
+    snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s bwd=%s, %s)", n, W, H, D, pairs, mode,
+             st.bwd_kernel ? st.bwd_kernel : "?", gpu);
     printf("raster_fwd_ms       %8.3f  ms   %s\n", f, set);
     printf("raster_fwd_bwd_ms   %8.3f  ms   %s\n", fb, set);
     printf("raster_peak_gib     %8.3f  GiB  %s extra over params %.3f GiB\n", peak, set, extra);

@@ -66,8 +66,11 @@ typedef struct sp_raster_cfg {
     /* CUDA only, for tuning: how the backward sums colour gradients. 0 (default): chunks of 32
      * channels and more as a product in shared memory over the tile's pixels, narrower ones by
      * warp reduce-scatter; -1: reduce-scatter at every width; 1: gather over the lanes that kept
-     * the Gaussian (v_image staged in shared memory). Results agree up to float summation
-     * order. */
+     * the Gaussian (v_image staged in shared memory); 2: as 0, but chunks of 32, 40, 48 and 64
+     * channels on a GPU with TF32 tensor cores (compute capability 8.0+) take the product and
+     * the per-pixel colour dot product on tensor cores (3xTF32 WMMA, float-level error; not yet
+     * measured). sp_raster_last_stages says which kernel ran. Results agree up to float
+     * rounding and summation order. Other values fail with SP_E_ARG. */
     int bwd_gather;
 } sp_raster_cfg;
 
@@ -140,6 +143,11 @@ typedef struct sp_raster_stages {
     double raster_fwd;  /* forward compositing (every channel chunk) */
     double raster_bwd;  /* gradient clearing and backward compositing (0 before a backward) */
     double project_bwd; /* projection backward */
+    /* CUDA: which kernel summed the last backward's colour gradients for its widest channel
+     * chunk ("tensor-core", "product", "gather" or "reduce-scatter"; cfg.bwd_gather picks, and
+     * a kernel that does not fit the GPU or width falls back), set with or without cfg.profile;
+     * NULL before a backward and on the CPU. */
+    const char *bwd_kernel;
 } sp_raster_stages;
 
 /* Fills *out for the last forward/backward (waits for them to finish). Returns 0 or SP_E_*. */

@@ -80,6 +80,9 @@ int sp_raster_check_view(const char *what, const sp_camera *cam, const sp_raster
     if (!(cfg->surface_alpha > 0.f && cfg->surface_alpha <= 1.f))
         return sp_error_set(err, SP_E_ARG, "%s: surface_alpha %g is outside (0, 1]", what,
                             cfg->surface_alpha);
+    if (cfg->bwd_gather < -1 || cfg->bwd_gather > 2)
+        return sp_error_set(err, SP_E_ARG, "%s: bwd_gather %d is not one of -1, 0, 1, 2", what,
+                            cfg->bwd_gather);
     if ((cfg->chunk_fwd && !is_width(cfg->chunk_fwd)) || (cfg->chunk_bwd && !is_width(cfg->chunk_bwd)))
         return sp_error_set(err, SP_E_ARG, "%s: chunk widths %d / %d: each must be 0 or one of the "
                             "specialised widths (SP_CHANNEL_WIDTHS)", what, cfg->chunk_fwd,

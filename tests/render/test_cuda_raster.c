@@ -7,7 +7,9 @@
  * bits on both backends), batches of views (sp_render_views: equal to one view at a time, and to
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
- * the backward's three colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter). Skips (77) without a GPU or without the CUDA build. */
+ * the backward's four colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter,
+ * tensor cores; the kernel that ran is printed) and the option's range. Skips (77) without a GPU
+ * or without the CUDA build. */
 #include "test.h"
 
 #include <stdint.h>
@@ -120,6 +122,7 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
 }
 
 static int g_block_sums = 0; /* cfg.bwd_gather of compare_case's renders */
+static const char *g_expect_bwd; /* when set: the backward kernel compare_case's widest chunk must take */
 
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
@@ -205,6 +208,13 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     sp_raster_grad_in gind = {up(vi, npix * D * 4, &err), up(vd, npix * 4, &err),
                               up(va, npix * 4, &err)};
     CHECK_OK(sp_raster_backward(rg, &gind, &gd, &err), &err);
+    sp_raster_stages stg;
+    CHECK_OK(sp_raster_last_stages(rg, &stg, &err), &err);
+    fprintf(stderr, "    backward kernel (widest chunk): %s\n", stg.bwd_kernel ? stg.bwd_kernel : "none");
+    CHECK(stg.bwd_kernel != NULL);
+    if (g_expect_bwd && stg.bwd_kernel)
+        CHECK_MSG(!strcmp(stg.bwd_kernel, g_expect_bwd), "backward ran %s, expected %s", stg.bwd_kernel,
+                  g_expect_bwd);
     float *g_gpu = malloc(ng * 4);
     CHECK_OK(down(g_gpu, g_dev, ng * 4, &err), &err);
     static const char *names[] = {"v_means", "v_quats", "v_log_scales", "v_opacity_logits",
@@ -430,6 +440,44 @@ static void test_reduce_scatter_wide(void)
     g_block_sums = 0;
 }
 
+/* Wide chunks on tensor cores (cfg.bwd_gather = 2: 3xTF32 WMMA for the colour product and the
+ * per-pixel colour dot) against the CPU, at every width the kernel takes: 32, 64 (also as the
+ * full chunk of 67 beside a reduce-scatter chunk of 3), 48, and 40 (whose product is padded to
+ * 48 channels; D=35 also pads the chunk itself). The D=32 case must take that kernel (any GPU
+ * this build runs on has TF32 tensor cores and room for its 76,416 bytes of shared memory); the wider ones need more
+ * shared memory per block than some GPUs give (then the product kernel runs, and says so). */
+static void test_tensor_core_wide(void)
+{
+    g_block_sums = 2;
+    g_expect_bwd = "tensor-core";
+    compare_case(80, 64, 500, 32, 0, 0);
+    compare_case(97, 63, 600, 32, 1, 1);
+    g_expect_bwd = NULL;
+    compare_case(72, 40, 400, 64, 1, 0);
+    compare_case(72, 40, 400, 67, 1, 0);
+    compare_case(40, 36, 150, 48, 1, 0);
+    compare_case(64, 48, 300, 40, 0, 0);
+    compare_case(50, 70, 400, 35, 1, 0);
+    g_block_sums = 0;
+}
+
+/* bwd_gather outside -1..2 is refused. */
+static void test_bwd_gather_range(void)
+{
+    sp_error err = {0};
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_camera cam = make_cam(32, 32);
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    cfg.bwd_gather = 3;
+    float dummy = 0;
+    sp_raster_in in = {0};
+    in.D = 3;
+    sp_raster_out out = {&dummy, NULL, NULL, NULL};
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_gather 3");
+    sp_raster_free(rg);
+}
+
 /* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */
 static void test_many_tiles(void) { compare_case(4112, 4112, 3000, 1, 0, 0); }
 
@@ -627,6 +675,8 @@ int main(void)
     RUN(test_box_tiles);
     RUN(test_block_sums);
     RUN(test_reduce_scatter_wide);
+    RUN(test_tensor_core_wide);
+    RUN(test_bwd_gather_range);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);

@@ -76,6 +76,7 @@ struct sp_cuda_raster {
     /* cfg.profile: events recorded between the stages (SP_EV_*), made on first use */
     cudaEvent_t ev[SP_EV_COUNT];
     int ev_made, profiling, prof_fwd, prof_bwd;
+    const char *bwd_kernel; /* the last backward's widest chunk's colour-sum kernel (a literal) */
 };
 typedef struct sp_cuda_raster sp_cuda_raster;
 

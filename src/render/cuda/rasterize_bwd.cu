@@ -24,7 +24,8 @@
  *  - chunks of 32 channels and more go to rasterize_bwd_mm.cu (colour gradients as a product in
  *    shared memory over the tile's pixels) unless cfg.bwd_gather asks otherwise: on an H200 at 1M
  *    Gaussians 1080p it cut the backward from 18.3 to 12.5 ms at D=64, 16.4 to 11.9 at D=48 and
- *    9.0 to 8.2 at D=32.
+ *    9.0 to 8.2 at D=32. cfg.bwd_gather = 2 takes rasterize_bwd_tc.cu instead where it fits
+ *    (the same product and the per-pixel colour dot on tensor cores, 3xTF32; not yet measured).
  * Gradients into v_colors are atomically ADDED (render.h's contract); geometry sums go to a
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
 #include "bwd_common.cuh"
@@ -215,7 +216,7 @@ static size_t bwd_smem(int ch, bool gv)
  * off is the default. */
 static bool use_gather(int mode, int ch)
 {
-    if (mode <= 0) return false;
+    if (mode != 1) return false;
     int dev = 0, max_smem = 0;
     if (cudaGetDevice(&dev) != cudaSuccess ||
         cudaDeviceGetAttribute(&max_smem, cudaDevAttrMaxSharedMemoryPerBlockOptin, dev) != cudaSuccess)
@@ -241,15 +242,29 @@ static int launch_bwd_as(const sp_cuda_raster *r, const sp_raster_grad_in *gin, 
     return 0;
 }
 
+/* Which kernel sums a chunk of width ch's colour gradients, from cfg.bwd_gather (render.h): 2 the
+ * tensor-core one where it fits (else as 0), 0 the product kernel where it fits, 1 gather, else
+ * (and -1) reduce-scatter. */
+enum bwd_kind { BWD_REDUCE_SCATTER, BWD_GATHER, BWD_PRODUCT, BWD_TENSOR_CORE };
+static const char *const bwd_kind_name[] = {"reduce-scatter", "gather", "product", "tensor-core"};
+
+static bwd_kind bwd_choose(int mode, int ch)
+{
+    if (mode == 2 && sp_cuda_bwd_tc_fits(ch)) return BWD_TENSOR_CORE;
+    if ((mode == 0 || mode == 2) && sp_cuda_bwd_mm_fits(ch)) return BWD_PRODUCT;
+    return use_gather(mode, ch) ? BWD_GATHER : BWD_REDUCE_SCATTER;
+}
+
 template <int CH>
 static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                       float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
-    if (r->cfg.bwd_gather == 0 && sp_cuda_bwd_mm_fits(CH))
-        return sp_cuda_bwd_mm(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    return use_gather(r->cfg.bwd_gather, CH)
-               ? launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err)
-               : launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    switch (bwd_choose(r->cfg.bwd_gather, CH)) {
+    case BWD_TENSOR_CORE: return sp_cuda_bwd_tc(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_PRODUCT: return sp_cuda_bwd_mm(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_GATHER: return launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    default: return launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    }
 }
 
 /* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
@@ -272,6 +287,8 @@ int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float
     int D = r->in.D, rc;
     int max_ch = r->cfg.chunk_bwd ? r->cfg.chunk_bwd : SP_CHANNEL_CHUNK_MAX;
     int full = D / max_ch, rem = D % max_ch;
+    /* the widest chunk's kernel, for sp_raster_last_stages */
+    r->bwd_kernel = bwd_kind_name[bwd_choose(r->cfg.bwd_gather, full > 0 ? max_ch : sp_channel_width(rem, max_ch))];
     if (full > 0 && (rc = dispatch_bwd(max_ch, r, gin, v_colors, vgeo, 0, full, 1, err))) return rc;
     if (rem > 0 && (rc = dispatch_bwd(sp_channel_width(rem, max_ch), r, gin, v_colors, vgeo,
                                       full * max_ch, 1, full == 0, err)))
