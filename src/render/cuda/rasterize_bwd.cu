@@ -205,59 +205,62 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     }
 }
 
-/* Two pixels per thread for narrow chunks (cfg.bwd_px = 2, CH <= 8): 128 threads per 16x16
- * tile, thread (x, y) of an 8x16 block owning pixels (x, y) and (x + 8, y), so a warp covers a
- * 16x4 patch. The per-Gaussian costs of a warp (the shared-memory loads, the ballot, the loop,
- * and above all the reduce-scatter and its atomics) are paid once per 64 pixels instead of 32:
- * both pixels' gradients are summed in registers (fused into the products) before the one
- * reduce-scatter. The two pixels share a row, so they share the alpha rule's row terms
- * (sp_gm_alpha_row: the same operations as sp_gm_alpha_g, bit for bit). Per pixel everything
- * is as in k_raster_bwd: the T recovery by IEEE reciprocal, G, Gd, the kept test idx < last
- * (a pixel outside the image has last = range.x, which no index reaches, so it needs no test
- * of its own). */
-#define PX2_T (BLOCK / 2) /* threads, and Gaussians per batch */
-#define PX2_BX (SP_TILE_SIZE / 2)
-
-template <int CH>
-__global__ void __launch_bounds__(PX2_T)
-k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
-                 const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
-                 const float4 *__restrict__ conic_op, const float *__restrict__ depths,
-                 const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
-                 const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
-                 const float *__restrict__ v_image, const float *__restrict__ v_depth,
-                 const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
-                 float *__restrict__ vgeo)
+/* PX pixels per thread for narrow chunks (cfg.bwd_px = 2 or 4, CH <= 8): 256 / PX threads per
+ * 16x16 tile, thread (x, y) of a (16 / PX) x 16 block owning pixels (x + q 16 / PX, y), q < PX,
+ * so a warp covers a 16 x 2 PX patch. The per-Gaussian costs of a warp (the shared-memory loads,
+ * the ballot, the loop, and above all the reduce-scatter and its atomics) are paid once per
+ * 32 PX pixels instead of 32: the pixels' gradients are summed in registers (fused into their
+ * products) before the one reduce-scatter. A thread's pixels share a row, so they share the
+ * alpha rule's row terms (sp_gm_alpha_row: the same operations as sp_gm_alpha_g, bit for bit);
+ * each pixel's gradient block runs only where some lane kept the Gaussian at that pixel, so a
+ * Gaussian costs per pixel what it did with one pixel per thread. Per pixel everything is as
+ * in k_raster_bwd: the T recovery by IEEE reciprocal, G, Gd, and the kept test idx < last (a
+ * pixel outside the image has last = range.x, which no index reaches, so it needs no test of
+ * its own). */
+template <int CH, int PX>
+__global__ void __launch_bounds__(BLOCK / PX)
+k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
+                const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
+                const float4 *__restrict__ conic_op, const float *__restrict__ depths,
+                const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
+                const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
+                const float *__restrict__ v_image, const float *__restrict__ v_depth,
+                const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+                float *__restrict__ vgeo)
 {
-    static_assert(CH <= 8, "two pixels per thread: narrow chunks only");
+    static_assert(CH <= 8, "several pixels per thread: narrow chunks only");
+    constexpr int NT = BLOCK / PX;          /* threads, and Gaussians per batch */
+    constexpr int BX = SP_TILE_SIZE / PX;   /* threads per tile row */
     extern __shared__ float4 smem_f4[];
-    float4 *s_conic = smem_f4;                        /* [PX2_T] */
-    float2 *s_xy = (float2 *)(s_conic + PX2_T);       /* [PX2_T] */
-    float *s_z = (float *)(s_xy + PX2_T);             /* [PX2_T] */
-    float *s_cut = s_z + PX2_T;                       /* [PX2_T] */
-    float2 *s_frame = (float2 *)(s_cut + PX2_T);      /* [PX2_T] conic frame (cs, sn) */
-    int *s_id = (int *)(s_frame + PX2_T);             /* [PX2_T] */
-    float *s_col = (float *)(s_id + PX2_T);           /* [PX2_T][CH] */
+    float4 *s_conic = smem_f4;                   /* [NT] */
+    float2 *s_xy = (float2 *)(s_conic + NT);     /* [NT] */
+    float *s_z = (float *)(s_xy + NT);           /* [NT] */
+    float *s_cut = s_z + NT;                     /* [NT] */
+    float2 *s_frame = (float2 *)(s_cut + NT);    /* [NT] conic frame (cs, sn) */
+    int *s_id = (int *)(s_frame + NT);           /* [NT] */
+    float *s_col = (float *)(s_id + NT);         /* [NT][CH] */
     __shared__ int s_block_last;
 
     const int c0 = c_base + blockIdx.z * CH;
     const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
-    const int tid = threadIdx.y * PX2_BX + threadIdx.x;
+    const int tid = threadIdx.y * BX + threadIdx.x;
     const int lane = tid & 31;
     const int py_i = blockIdx.y * SP_TILE_SIZE + threadIdx.y;
     const float py = py_i + 0.5f;
     const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
 
-    float px[2], Tf[2], T[2], G[2], Gd[2], vd[2], va[2], vout[2][CH];
-    int last[2];
+    float px[PX], Tf[PX], T[PX], G[PX], Gd[PX], vd[PX], va[PX], vout[PX][CH];
+    int last[PX];
+    int my_last = range.x;
 #pragma unroll
-    for (int q = 0; q < 2; q++) {
-        const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x + q * PX2_BX;
+    for (int q = 0; q < PX; q++) {
+        const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x + q * BX;
         const bool inside = px_i < W && py_i < H;
         const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
         px[q] = px_i + 0.5f;
         Tf[q] = inside ? t_final[pix] : 1.f;
         last[q] = inside ? last_idx[pix] : range.x;
+        my_last = max(my_last, last[q]);
         G[q] = 0.f;
 #pragma unroll
         for (int c = 0; c < CH; c++) {
@@ -271,7 +274,6 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         T[q] = Tf[q];
     }
 
-    const int my_last = max(last[0], last[1]);
     if (tid == 0) s_block_last = range.x;
     __syncthreads();
     atomicMax(&s_block_last, my_last);
@@ -279,8 +281,8 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     __syncthreads();
     const int block_last = s_block_last;
 
-    for (int b_end = block_last; b_end > range.x; b_end -= PX2_T) {
-        const int cnt = min(PX2_T, b_end - range.x);
+    for (int b_end = block_last; b_end > range.x; b_end -= NT) {
+        const int cnt = min(NT, b_end - range.x);
         __syncthreads();
         if (tid < cnt) {
             int g = (int)ids[b_end - 1 - tid];
@@ -296,7 +298,7 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             s_z[tid] = depths[g];
         }
         __syncthreads();
-        for (int k = tid; k < cnt * CH; k += PX2_T) {
+        for (int k = tid; k < cnt * CH; k += NT) {
             int j = k / CH, c = k - j * CH;
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
@@ -311,27 +313,31 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             const float con[3] = {co.x, co.y, co.z};
             sp_gm_row_terms(con, dy, &by, &hy);
             const float half_a = 0.5f * co.x;
-            float dx[2], vis[2], alpha[2];
-            bool valid[2];
+            float dx[PX], vis[PX], alpha[PX];
+            bool any = false;
 #pragma unroll
-            for (int q = 0; q < 2; q++) {
+            for (int q = 0; q < PX; q++) {
                 dx[q] = px[q] - xy.x;
                 vis[q] = 0.f;
                 alpha[q] = idx < last[q] ? sp_gm_alpha_row(half_a, by, hy, co.w, cut, dx[q], &vis[q]) : 0.f;
-                valid[q] = alpha[q] > 0.f;
+                any = any || alpha[q] > 0.f;
             }
-            if (!__any_sync(FULL_MASK, valid[0] || valid[1])) continue;
+            if (!__any_sync(FULL_MASK, any)) continue;
 
-            /* slot k < 7 geometry, 7 + c colour c, both pixels' sums */
+            /* the Gaussian's terms every pixel's block reads, loaded once */
+            float col[CH];
+#pragma unroll
+            for (int c = 0; c < CH; c++) col[c] = s_col[t * CH + c];
+            const float2 fr = s_frame[t];
+            const float z = s_z[t];
+            /* slot k < 7 geometry, 7 + c colour c, summed over the thread's pixels */
             constexpr int NV = 7 + CH;
             float all[NV];
 #pragma unroll
             for (int k = 0; k < NV; k++) all[k] = 0.f;
-            const float *col = s_col + t * CH;
-            const float2 fr = s_frame[t];
 #pragma unroll
-            for (int q = 0; q < 2; q++) {
-                if (!valid[q]) continue;
+            for (int q = 0; q < PX; q++) {
+                if (!(alpha[q] > 0.f)) continue;
                 /* IEEE 1/x, as the CPU's division (see k_raster_bwd) */
                 const float ra = __frcp_rn(1.f - alpha[q]);
                 T[q] *= ra;
@@ -342,8 +348,8 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     p += col[c] * vout[q][c];
                     all[7 + c] += fac * vout[q][c];
                 }
-                const float v_alpha = sp_cu_bwd_alpha_grad<true>(p, T[q], ra, fac, do_aux, s_z + t, vd[q],
-                                                                 va[q], Tf[q], &G[q], &Gd[q], all);
+                const float v_alpha = sp_cu_bwd_alpha_grad<true>(p, T[q], ra, fac, do_aux, &z, vd[q], va[q],
+                                                                 Tf[q], &G[q], &Gd[q], all);
                 sp_cu_bwd_geo<true>(co, fr, vis[q], v_alpha, dx[q], dy, all);
             }
             const int g = s_id[t];
@@ -362,24 +368,24 @@ k_raster_bwd_px2(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     }
 }
 
-static size_t bwd_px2_smem(int ch)
+static size_t bwd_px_smem(int ch, int px)
 {
-    return (size_t)PX2_T * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
-                            sizeof(float) * ch);
+    return (size_t)(BLOCK / px) * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) +
+                                   sizeof(int) + sizeof(float) * ch);
 }
 
-template <int CH>
-static int launch_bwd_px2(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
-                          float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+template <int CH, int PX>
+static int launch_bwd_px(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                         float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
-    size_t smem = bwd_px2_smem(CH);
+    size_t smem = bwd_px_smem(CH, PX);
     const sp_cuda_view *v = &r->view;
-    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(PX2_BX, SP_TILE_SIZE, 1);
-    k_raster_bwd_px2<CH><<<grid, block, smem, r->stream>>>(
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE / PX, SP_TILE_SIZE, 1);
+    k_raster_bwd_px<CH, PX><<<grid, block, smem, r->stream>>>(
         v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
         v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
         v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
-    SP_CUDA_LAUNCHED(err, "backward rasterization (two pixels per thread)");
+    SP_CUDA_LAUNCHED(err, "backward rasterization (several pixels per thread)");
     return 0;
 }
 
@@ -422,10 +428,11 @@ static int launch_bwd_as(const sp_cuda_raster *r, const sp_raster_grad_in *gin, 
 
 /* Which kernel sums a chunk of width ch's colour gradients, from cfg.bwd_gather (render.h): 2 the
  * tensor-core one where it fits (else as 0), 0 the product kernel where it fits, 1 gather, else
- * (and -1) reduce-scatter; that one with two pixels per thread where cfg.bwd_px = 2 and ch <= 8. */
-enum bwd_kind { BWD_REDUCE_SCATTER, BWD_GATHER, BWD_PRODUCT, BWD_TENSOR_CORE, BWD_RS_PX2 };
+ * (and -1) reduce-scatter; that one with 2 or 4 pixels per thread where cfg.bwd_px asks and
+ * ch <= 8. */
+enum bwd_kind { BWD_REDUCE_SCATTER, BWD_GATHER, BWD_PRODUCT, BWD_TENSOR_CORE, BWD_RS_PX2, BWD_RS_PX4 };
 static const char *const bwd_kind_name[] = {"reduce-scatter", "gather", "product", "tensor-core",
-                                            "reduce-scatter-2px"};
+                                            "reduce-scatter-2px", "reduce-scatter-4px"};
 
 static bwd_kind bwd_choose(const sp_raster_cfg *cfg, int ch)
 {
@@ -433,24 +440,26 @@ static bwd_kind bwd_choose(const sp_raster_cfg *cfg, int ch)
     if (mode == 2 && sp_cuda_bwd_tc_fits(ch)) return BWD_TENSOR_CORE;
     if ((mode == 0 || mode == 2) && sp_cuda_bwd_mm_fits(ch)) return BWD_PRODUCT;
     if (use_gather(mode, ch)) return BWD_GATHER;
-    return (cfg->bwd_px == 2 && ch <= 8) ? BWD_RS_PX2 : BWD_REDUCE_SCATTER;
+    if (ch <= 8 && cfg->bwd_px == 2) return BWD_RS_PX2;
+    if (ch <= 8 && cfg->bwd_px == 4) return BWD_RS_PX4;
+    return BWD_REDUCE_SCATTER;
 }
 
-/* The two-pixel kernel exists for CH <= 8 only (bwd_choose picks it only there). */
-template <int CH, bool NARROW = (CH <= 8)>
-struct px2_launch {
+/* The several-pixel kernels exist for CH <= 8 only (bwd_choose picks them only there). */
+template <int CH, int PX, bool NARROW = (CH <= 8)>
+struct px_launch {
     static int go(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
                   int c_base, int n_chunks, int aux, sp_error *err)
     {
         return launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     }
 };
-template <int CH>
-struct px2_launch<CH, true> {
+template <int CH, int PX>
+struct px_launch<CH, PX, true> {
     static int go(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
                   int c_base, int n_chunks, int aux, sp_error *err)
     {
-        return launch_bwd_px2<CH>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+        return launch_bwd_px<CH, PX>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     }
 };
 
@@ -462,7 +471,8 @@ static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, flo
     case BWD_TENSOR_CORE: return sp_cuda_bwd_tc(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case BWD_PRODUCT: return sp_cuda_bwd_mm(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case BWD_GATHER: return launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
-    case BWD_RS_PX2: return px2_launch<CH>::go(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_RS_PX2: return px_launch<CH, 2>::go(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_RS_PX4: return px_launch<CH, 4>::go(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     default: return launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     }
 }
