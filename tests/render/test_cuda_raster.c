@@ -9,7 +9,8 @@
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
  * the backward's four colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter,
  * tensor cores; the kernel that ran is printed) and the option's range, and the two-pixels-per-
- * thread backward (cfg.bwd_px = 2) with and without depth/alpha gradients. Skips (77) without a GPU
+ * thread and four-pixels-per-thread backward (cfg.bwd_px = 2, 4) with and without depth/alpha
+ * gradients. Skips (77) without a GPU
  * or without the CUDA build. */
 #include "test.h"
 
@@ -466,12 +467,12 @@ static void test_tensor_core_wide(void)
     g_block_sums = 0;
 }
 
-/* Two pixels per thread (cfg.bwd_px = 2) against the CPU at the narrow widths it takes (D = 1, 3,
- * 4, 8; 97x63 and 50x70 leave tiles with only the first of a thread's two pixels inside), with
- * and without depth/alpha gradients, with background and the antialiased mode; D=67's last chunk
- * of 3 takes it too (beside the 64-wide product chunk, without the aux terms), and D=12 (too wide
- * for it) falls back to the one-pixel kernel. */
-static void test_bwd_two_pixels(void)
+/* Two and four pixels per thread (cfg.bwd_px = 2, 4) against the CPU at the narrow widths they
+ * take (D = 1, 3, 4, 8; 97x63 and 50x70 leave tiles with only the first of a thread's pixels
+ * inside), with and without depth/alpha gradients, with background and the antialiased mode;
+ * D=67's last chunk of 3 takes the two-pixel one too (beside the 64-wide product chunk, without
+ * the aux terms), and D=12 (too wide for it) falls back to the one-pixel kernel. */
+static void test_bwd_px(void)
 {
     g_bwd_px = 2;
     g_expect_bwd = "reduce-scatter-2px";
@@ -485,6 +486,19 @@ static void test_bwd_two_pixels(void)
     compare_case(64, 48, 300, 1, 1, 0);
     compare_case(50, 70, 400, 8, 1, 1);
     g_no_aux = 0;
+    /* four pixels per thread (64 threads per tile; in 97x63 the last tile column has only the
+     * first of a thread's four pixels inside) */
+    g_bwd_px = 4;
+    g_expect_bwd = "reduce-scatter-4px";
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(50, 70, 400, 4, 0, 1);
+    compare_case(80, 64, 500, 8, 1, 0);
+    compare_case(320, 240, 20000, 3, 1, 0);
+    g_no_aux = 1;
+    compare_case(64, 48, 300, 1, 1, 0);
+    compare_case(97, 63, 600, 3, 0, 0);
+    g_no_aux = 0;
+    g_bwd_px = 2;
     g_expect_bwd = NULL; /* the widest chunk's kernel: the product one where it fits */
     compare_case(72, 40, 400, 67, 1, 0);
     g_expect_bwd = "reduce-scatter";
@@ -493,7 +507,7 @@ static void test_bwd_two_pixels(void)
     g_bwd_px = 0;
 }
 
-/* bwd_px outside 0..2 is refused. */
+/* bwd_px other than 0, 1, 2, 4 is refused. */
 static void test_bwd_px_range(void)
 {
     sp_error err = {0};
@@ -728,7 +742,7 @@ int main(void)
     RUN(test_reduce_scatter_wide);
     RUN(test_tensor_core_wide);
     RUN(test_bwd_gather_range);
-    RUN(test_bwd_two_pixels);
+    RUN(test_bwd_px);
     RUN(test_bwd_px_range);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
