@@ -72,6 +72,13 @@ typedef struct sp_raster_cfg {
      * measured). sp_raster_last_stages says which kernel ran. Results agree up to float
      * rounding and summation order. Other values fail with SP_E_ARG. */
     int bwd_gather;
+    /* CUDA only, for tuning: pixels per thread of the reduce-scatter backward for chunks of up
+     * to 8 channels (the one D=3 takes by default). 0 (default) and 1: one (a 256-thread block
+     * per tile); 2 or 4: that many pixels of a row per thread (128 or 64 threads per tile), so
+     * a warp's per-Gaussian costs (shared loads, ballot, the reduce-scatter and its atomics)
+     * serve 64 or 128 pixels, not 32 (not yet measured on a GPU). Wider chunks and the other
+     * kernels ignore it. Results agree up to summation order. Other values fail with SP_E_ARG. */
+    int bwd_px;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);
@@ -144,7 +151,8 @@ typedef struct sp_raster_stages {
     double raster_bwd;  /* gradient clearing and backward compositing (0 before a backward) */
     double project_bwd; /* projection backward */
     /* CUDA: which kernel summed the last backward's colour gradients for its widest channel
-     * chunk ("tensor-core", "product", "gather" or "reduce-scatter"; cfg.bwd_gather picks, and
+     * chunk ("tensor-core", "product", "gather", "reduce-scatter" or, with cfg.bwd_px = 2 or 4,
+     * "reduce-scatter-2px" or "-4px"; cfg.bwd_gather and cfg.bwd_px pick, and
      * a kernel that does not fit the GPU or width falls back), set with or without cfg.profile;
      * NULL before a backward and on the CPU. */
     const char *bwd_kernel;

@@ -564,17 +564,24 @@ SP_HD static inline int sp_gm_tile_hit(const float con[3], float cut, float mx, 
  * *g = exp(-sigma) otherwise. This is THE rule: the CUDA kernels call it, the CPU's cpu_alpha4
  * is the same operations four lanes wide, so both backends keep and skip the same contributions
  * bit for bit. */
-SP_HD static inline float sp_gm_alpha_g(const float conic[3], float opacity, float sigma_cut,
-                                        float dx, float dy, float *g)
+/* The rule from a row's terms (sp_gm_row_terms at the pixel's dy), for kernels that share
+ * them between pixels of one row; sp_gm_alpha_g is this after sp_gm_row_terms. */
+SP_HD static inline float sp_gm_alpha_row(float half_a, float by, float hy, float opacity,
+                                          float sigma_cut, float dx, float *g)
 {
-    float by, hy;
-    sp_gm_row_terms(conic, dy, &by, &hy);
-    float sigma = sp_gm_sigma(0.5f * conic[0], by, hy, dx);
+    float sigma = sp_gm_sigma(half_a, by, hy, dx);
     if (sigma < 0.f || sigma > sigma_cut) return 0.f;
     *g = sp_gm_expf(-sigma);
     float a = SP_FMUL(opacity, *g);
     a = a < SP_ALPHA_MAX ? a : SP_ALPHA_MAX;
     return a < SP_ALPHA_MIN ? 0.f : a;
+}
+SP_HD static inline float sp_gm_alpha_g(const float conic[3], float opacity, float sigma_cut,
+                                        float dx, float dy, float *g)
+{
+    float by, hy;
+    sp_gm_row_terms(conic, dy, &by, &hy);
+    return sp_gm_alpha_row(0.5f * conic[0], by, hy, opacity, sigma_cut, dx, g);
 }
 
 /* ---- spherical harmonics ---------------------------------------------------------------------------- */

@@ -8,7 +8,9 @@
  * the CPU), SH on both devices, bad input; exact tile culling (the same bits as every
  * bounding-box tile, pair counts as the CPU's), profiling, over 65536 tiles (32-bit tile keys),
  * the backward's four colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter,
- * tensor cores; the kernel that ran is printed) and the option's range. Skips (77) without a GPU
+ * tensor cores; the kernel that ran is printed) and the option's range, and the two-pixels-per-
+ * thread and four-pixels-per-thread backward (cfg.bwd_px = 2, 4) with and without depth/alpha
+ * gradients. Skips (77) without a GPU
  * or without the CUDA build. */
 #include "test.h"
 
@@ -123,6 +125,8 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
 
 static int g_block_sums = 0; /* cfg.bwd_gather of compare_case's renders */
 static const char *g_expect_bwd; /* when set: the backward kernel compare_case's widest chunk must take */
+static int g_bwd_px = 0;  /* cfg.bwd_px of compare_case's renders */
+static int g_no_aux = 0;  /* 1: compare_case's backward without depth and alpha gradients */
 
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
@@ -132,6 +136,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.antialiased = aa;
     cfg.bwd_gather = g_block_sums;
+    cfg.bwd_px = g_bwd_px;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -156,7 +161,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     float *g_cpu = calloc(n * (3 + 4 + 3 + 1 + D + 2), 4);
     sp_raster_grads gc = {g_cpu, g_cpu + 3 * n, g_cpu + 7 * n, g_cpu + 10 * n, g_cpu + 11 * n,
                           g_cpu + (11 + D) * n};
-    sp_raster_grad_in gin = {vi, vd, va};
+    sp_raster_grad_in gin = {vi, g_no_aux ? NULL : vd, g_no_aux ? NULL : va};
     CHECK_OK(sp_raster_backward(rc, &gin, &gc, &err), &err);
 
     /* CUDA */
@@ -174,8 +179,8 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     CHECK_OK(down(alp_g, outd.alpha, npix * 4, &err), &err);
     double e_img = rel_err(img_g, img, npix * D, 1.0), e_dep = rel_err(dep_g, dep, npix, 1.0),
            e_alp = rel_err(alp_g, alp, npix, 1.0);
-    fprintf(stderr, "  %dx%d n=%zu D=%d bg=%d aa=%d pairs cpu %zu cuda %zu: fwd err img %.2g "
-            "depth %.2g alpha %.2g\n", W, H, n, D, with_bg, aa, sp_raster_last_pairs(rc),
+    fprintf(stderr, "  %dx%d n=%zu D=%d bg=%d aa=%d aux=%d px=%d pairs cpu %zu cuda %zu: fwd err img %.2g "
+            "depth %.2g alpha %.2g\n", W, H, n, D, with_bg, aa, !g_no_aux, g_bwd_px, sp_raster_last_pairs(rc),
             sp_raster_last_pairs(rg), e_img, e_dep, e_alp);
     CHECK(e_img <= 1e-4);
     CHECK(e_dep <= 1e-4);
@@ -205,8 +210,9 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     float *g_dev = up(NULL, ng * 4, &err);
     sp_raster_grads gd = {g_dev, g_dev + 3 * n, g_dev + 7 * n, g_dev + 10 * n, g_dev + 11 * n,
                           g_dev + (11 + D) * n};
-    sp_raster_grad_in gind = {up(vi, npix * D * 4, &err), up(vd, npix * 4, &err),
-                              up(va, npix * 4, &err)};
+    float *vd_dev = up(vd, npix * 4, &err), *va_dev = up(va, npix * 4, &err);
+    sp_raster_grad_in gind = {up(vi, npix * D * 4, &err), g_no_aux ? NULL : vd_dev,
+                              g_no_aux ? NULL : va_dev};
     CHECK_OK(sp_raster_backward(rg, &gind, &gd, &err), &err);
     sp_raster_stages stg;
     CHECK_OK(sp_raster_last_stages(rg, &stg, &err), &err);
@@ -243,7 +249,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     dfree((void *)ind.log_scales), dfree((void *)ind.opacity_logits);
     dfree((void *)ind.colors), dfree(outd.image), dfree(outd.depth);
     dfree(outd.alpha), dfree(g_dev), dfree((void *)gind.v_image);
-    dfree((void *)gind.v_depth), dfree((void *)gind.v_alpha);
+    dfree(vd_dev), dfree(va_dev);
     sp_raster_free(rg);
     sp_raster_free(rc);
     sp_device_free(cpu);
@@ -459,6 +465,65 @@ static void test_tensor_core_wide(void)
     compare_case(64, 48, 300, 40, 0, 0);
     compare_case(50, 70, 400, 35, 1, 0);
     g_block_sums = 0;
+}
+
+/* Two and four pixels per thread (cfg.bwd_px = 2, 4) against the CPU at the narrow widths they
+ * take (D = 1, 3, 4, 8; 97x63 and 50x70 leave tiles with only the first of a thread's pixels
+ * inside), with and without depth/alpha gradients, with background and the antialiased mode;
+ * D=67's last chunk of 3 takes the two-pixel one too (beside the 64-wide product chunk, without
+ * the aux terms), and D=12 (too wide for it) falls back to the one-pixel kernel. */
+static void test_bwd_px(void)
+{
+    g_bwd_px = 2;
+    g_expect_bwd = "reduce-scatter-2px";
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(64, 48, 300, 1, 0, 0);
+    compare_case(50, 70, 400, 4, 1, 1);
+    compare_case(80, 64, 500, 8, 0, 0);
+    compare_case(320, 240, 20000, 3, 1, 0);
+    g_no_aux = 1;
+    compare_case(97, 63, 600, 3, 0, 0);
+    compare_case(64, 48, 300, 1, 1, 0);
+    compare_case(50, 70, 400, 8, 1, 1);
+    g_no_aux = 0;
+    /* four pixels per thread (64 threads per tile; in 97x63 the last tile column has only the
+     * first of a thread's four pixels inside) */
+    g_bwd_px = 4;
+    g_expect_bwd = "reduce-scatter-4px";
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(50, 70, 400, 4, 0, 1);
+    compare_case(80, 64, 500, 8, 1, 0);
+    compare_case(320, 240, 20000, 3, 1, 0);
+    g_no_aux = 1;
+    compare_case(64, 48, 300, 1, 1, 0);
+    compare_case(97, 63, 600, 3, 0, 0);
+    g_no_aux = 0;
+    g_bwd_px = 2;
+    g_expect_bwd = NULL; /* the widest chunk's kernel: the product one where it fits */
+    compare_case(72, 40, 400, 67, 1, 0);
+    g_expect_bwd = "reduce-scatter";
+    compare_case(40, 36, 150, 12, 0, 0);
+    g_expect_bwd = NULL;
+    g_bwd_px = 0;
+}
+
+/* bwd_px other than 0, 1, 2, 4 is refused. */
+static void test_bwd_px_range(void)
+{
+    sp_error err = {0};
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_camera cam = make_cam(32, 32);
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    float dummy = 0;
+    sp_raster_in in = {0};
+    in.D = 3;
+    sp_raster_out out = {&dummy, NULL, NULL, NULL};
+    cfg.bwd_px = 3;
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_px 3");
+    cfg.bwd_px = -1;
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_px -1");
+    sp_raster_free(rg);
 }
 
 /* bwd_gather outside -1..2 is refused. */
@@ -677,6 +742,8 @@ int main(void)
     RUN(test_reduce_scatter_wide);
     RUN(test_tensor_core_wide);
     RUN(test_bwd_gather_range);
+    RUN(test_bwd_px);
+    RUN(test_bwd_px_range);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);

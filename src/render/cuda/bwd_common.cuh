@@ -56,27 +56,38 @@ __device__ __forceinline__ int warp_reduce_scatter(float (&v)[N], int lane)
     return base;
 }
 
+/* geo[k] = v, or with ADD geo[k] += v (a kernel summing two pixels' gradients in registers; the
+ * multiply before it then fuses into the add). */
+template <bool ADD>
+__device__ __forceinline__ void sp_cu_put(float &dst, float v)
+{
+    dst = ADD ? dst + v : v;
+}
+
 /* One pixel's gradients of a Gaussian's 2D mean, conic (in the conic's frame, gauss_math.h) and
- * opacity, given dL/dalpha at the pixel; geo[0..5] (geo[6], depth, is the caller's). Zero where
- * alpha was clamped to SP_ALPHA_MAX (no gradient flows through the clamp). */
+ * opacity, given dL/dalpha at the pixel; geo[0..5] (geo[6], depth, is the caller's), set, or
+ * with ADD added. None where alpha was clamped to SP_ALPHA_MAX (no gradient flows through the
+ * clamp). */
+template <bool ADD = false>
 __device__ __forceinline__ void sp_cu_bwd_geo(float4 co, float2 fr, float vis, float v_alpha,
                                               float dx, float dy, float geo[7])
 {
     if (co.w * vis > SP_ALPHA_MAX) return;
     const float v_sigma = -co.w * vis * v_alpha;
-    geo[0] = -v_sigma * (co.x * dx + co.y * dy);
-    geo[1] = -v_sigma * (co.y * dx + co.z * dy);
+    sp_cu_put<ADD>(geo[0], -v_sigma * (co.x * dx + co.y * dy));
+    sp_cu_put<ADD>(geo[1], -v_sigma * (co.y * dx + co.z * dy));
     const float d0 = fr.x * dx + fr.y * dy, d1 = fr.x * dy - fr.y * dx;
-    geo[2] = 0.5f * v_sigma * d0 * d0;
-    geo[3] = 0.5f * v_sigma * d0 * d1;
-    geo[4] = 0.5f * v_sigma * d1 * d1;
-    geo[5] = vis * v_alpha;
+    sp_cu_put<ADD>(geo[2], 0.5f * v_sigma * d0 * d0);
+    sp_cu_put<ADD>(geo[3], 0.5f * v_sigma * d0 * d1);
+    sp_cu_put<ADD>(geo[4], 0.5f * v_sigma * d1 * d1);
+    sp_cu_put<ADD>(geo[5], vis * v_alpha);
 }
 
 /* dL/dalpha of a kept Gaussian at a pixel, from p = colour . v_out and the terms carried from
  * the Gaussians behind it (G: colour, Gd: depth), which it then extends by this one; with aux
- * also the depth (*z, read only then) and alpha terms, and geo[6] (dL/d depth). ra = 1 / (1 - alpha),
- * fac = alpha T. */
+ * also the depth (*z, read only then) and alpha terms, and geo[6] (dL/d depth; set, or with ADD
+ * added). ra = 1 / (1 - alpha), fac = alpha T. */
+template <bool ADD = false>
 __device__ __forceinline__ float sp_cu_bwd_alpha_grad(float p, float T, float ra, float fac, bool aux,
                                                       const float *z, float vd, float va, float Tf,
                                                       float *G, float *Gd, float geo[7])
@@ -86,7 +97,7 @@ __device__ __forceinline__ float sp_cu_bwd_alpha_grad(float p, float T, float ra
     if (aux) {
         v_alpha += (*z * T - *Gd * ra) * vd + Tf * ra * va;
         *Gd += *z * fac;
-        geo[6] = fac * vd;
+        sp_cu_put<ADD>(geo[6], fac * vd);
     }
     return v_alpha;
 }

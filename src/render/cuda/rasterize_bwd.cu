@@ -205,6 +205,190 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     }
 }
 
+/* PX pixels per thread for narrow chunks (cfg.bwd_px = 2 or 4, CH <= 8): 256 / PX threads per
+ * 16x16 tile, thread (x, y) of a (16 / PX) x 16 block owning pixels (x + q 16 / PX, y), q < PX,
+ * so a warp covers a 16 x 2 PX patch. The per-Gaussian costs of a warp (the shared-memory loads,
+ * the ballot, the loop, and above all the reduce-scatter and its atomics) are paid once per
+ * 32 PX pixels instead of 32: the pixels' gradients are summed in registers (fused into their
+ * products) before the one reduce-scatter. A thread's pixels share a row, so they share the
+ * alpha rule's row terms (sp_gm_alpha_row: the same operations as sp_gm_alpha_g, bit for bit);
+ * each pixel's gradient block runs only where some lane kept the Gaussian at that pixel, so a
+ * Gaussian costs per pixel what it did with one pixel per thread. Per pixel everything is as
+ * in k_raster_bwd: the T recovery by IEEE reciprocal, G, Gd, and the kept test idx < last (a
+ * pixel outside the image has last = range.x, which no index reaches, so it needs no test of
+ * its own). */
+template <int CH, int PX>
+__global__ void __launch_bounds__(BLOCK / PX)
+k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
+                const uint32_t *__restrict__ ids, const float2 *__restrict__ means2d,
+                const float4 *__restrict__ conic_op, const float *__restrict__ depths,
+                const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
+                const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
+                const float *__restrict__ v_image, const float *__restrict__ v_depth,
+                const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+                float *__restrict__ vgeo)
+{
+    static_assert(CH <= 8, "several pixels per thread: narrow chunks only");
+    constexpr int NT = BLOCK / PX;          /* threads, and Gaussians per batch */
+    constexpr int BX = SP_TILE_SIZE / PX;   /* threads per tile row */
+    extern __shared__ float4 smem_f4[];
+    float4 *s_conic = smem_f4;                   /* [NT] */
+    float2 *s_xy = (float2 *)(s_conic + NT);     /* [NT] */
+    float *s_z = (float *)(s_xy + NT);           /* [NT] */
+    float *s_cut = s_z + NT;                     /* [NT] */
+    float2 *s_frame = (float2 *)(s_cut + NT);    /* [NT] conic frame (cs, sn) */
+    int *s_id = (int *)(s_frame + NT);           /* [NT] */
+    float *s_col = (float *)(s_id + NT);         /* [NT][CH] */
+    __shared__ int s_block_last;
+
+    const int c0 = c_base + blockIdx.z * CH;
+    const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
+    const int tid = threadIdx.y * BX + threadIdx.x;
+    const int lane = tid & 31;
+    const int py_i = blockIdx.y * SP_TILE_SIZE + threadIdx.y;
+    const float py = py_i + 0.5f;
+    const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
+
+    float px[PX], Tf[PX], T[PX], G[PX], Gd[PX], vd[PX], va[PX], vout[PX][CH];
+    int last[PX];
+    int my_last = range.x;
+#pragma unroll
+    for (int q = 0; q < PX; q++) {
+        const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x + q * BX;
+        const bool inside = px_i < W && py_i < H;
+        const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
+        px[q] = px_i + 0.5f;
+        Tf[q] = inside ? t_final[pix] : 1.f;
+        last[q] = inside ? last_idx[pix] : range.x;
+        my_last = max(my_last, last[q]);
+        G[q] = 0.f;
+#pragma unroll
+        for (int c = 0; c < CH; c++) {
+            vout[q][c] = (inside && c0 + c < D) ? v_image[pix * D + c0 + c] : 0.f;
+            if (bg && c0 + c < D) G[q] += vout[q][c] * bg[c0 + c];
+        }
+        G[q] *= Tf[q];
+        vd[q] = (do_aux && inside && v_depth) ? v_depth[pix] : 0.f;
+        va[q] = (do_aux && inside && v_alpha_out) ? v_alpha_out[pix] : 0.f;
+        Gd[q] = 0.f;
+        T[q] = Tf[q];
+    }
+
+    if (tid == 0) s_block_last = range.x;
+    __syncthreads();
+    atomicMax(&s_block_last, my_last);
+    const int warp_last = __reduce_max_sync(FULL_MASK, my_last);
+    __syncthreads();
+    const int block_last = s_block_last;
+
+    for (int b_end = block_last; b_end > range.x; b_end -= NT) {
+        const int cnt = min(NT, b_end - range.x);
+        __syncthreads();
+        if (tid < cnt) {
+            int g = (int)ids[b_end - 1 - tid];
+            s_id[tid] = g;
+            s_xy[tid] = means2d[g];
+            const float4 co = conic_op[g];
+            s_conic[tid] = co;
+            s_cut[tid] = sp_cu_sigma_cut(co.w);
+            const float con[3] = {co.x, co.y, co.z};
+            float fcs, fsn;
+            sp_gm_conic_frame(con, &fcs, &fsn);
+            s_frame[tid] = make_float2(fcs, fsn);
+            s_z[tid] = depths[g];
+        }
+        __syncthreads();
+        for (int k = tid; k < cnt * CH; k += NT) {
+            int j = k / CH, c = k - j * CH;
+            s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
+        }
+        __syncthreads();
+        for (int t = max(0, b_end - warp_last); t < cnt; t++) {
+            const int idx = b_end - 1 - t;
+            const float4 co = s_conic[t];
+            const float2 xy = s_xy[t];
+            const float cut = s_cut[t];
+            const float dy = py - xy.y;
+            float by, hy;
+            const float con[3] = {co.x, co.y, co.z};
+            sp_gm_row_terms(con, dy, &by, &hy);
+            const float half_a = 0.5f * co.x;
+            float dx[PX], vis[PX], alpha[PX];
+            bool any = false;
+#pragma unroll
+            for (int q = 0; q < PX; q++) {
+                dx[q] = px[q] - xy.x;
+                vis[q] = 0.f;
+                alpha[q] = idx < last[q] ? sp_gm_alpha_row(half_a, by, hy, co.w, cut, dx[q], &vis[q]) : 0.f;
+                any = any || alpha[q] > 0.f;
+            }
+            if (!__any_sync(FULL_MASK, any)) continue;
+
+            /* the Gaussian's terms every pixel's block reads, loaded once */
+            float col[CH];
+#pragma unroll
+            for (int c = 0; c < CH; c++) col[c] = s_col[t * CH + c];
+            const float2 fr = s_frame[t];
+            const float z = s_z[t];
+            /* slot k < 7 geometry, 7 + c colour c, summed over the thread's pixels */
+            constexpr int NV = 7 + CH;
+            float all[NV];
+#pragma unroll
+            for (int k = 0; k < NV; k++) all[k] = 0.f;
+#pragma unroll
+            for (int q = 0; q < PX; q++) {
+                if (!(alpha[q] > 0.f)) continue;
+                /* IEEE 1/x, as the CPU's division (see k_raster_bwd) */
+                const float ra = __frcp_rn(1.f - alpha[q]);
+                T[q] *= ra;
+                const float fac = alpha[q] * T[q];
+                float p = 0.f;
+#pragma unroll
+                for (int c = 0; c < CH; c++) {
+                    p += col[c] * vout[q][c];
+                    all[7 + c] += fac * vout[q][c];
+                }
+                const float v_alpha = sp_cu_bwd_alpha_grad<true>(p, T[q], ra, fac, do_aux, &z, vd[q], va[q],
+                                                                 Tf[q], &G[q], &Gd[q], all);
+                sp_cu_bwd_geo<true>(co, fr, vis[q], v_alpha, dx[q], dy, all);
+            }
+            const int g = s_id[t];
+            const int base = warp_reduce_scatter<NV>(all, lane);
+            if (lane % RS_GROUP(NV) == 0) {
+#pragma unroll
+                for (int i = 0; i < RS_LIVE(NV); i++) {
+                    const int k = base + i;
+                    if (k >= NV || all[i] == 0.f) continue;
+                    if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
+                    else if (v_colors && c0 + k - 7 < D)
+                        atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                }
+            }
+        }
+    }
+}
+
+static size_t bwd_px_smem(int ch, int px)
+{
+    return (size_t)(BLOCK / px) * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) +
+                                   sizeof(int) + sizeof(float) * ch);
+}
+
+template <int CH, int PX>
+static int launch_bwd_px(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
+                         float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
+{
+    size_t smem = bwd_px_smem(CH, PX);
+    const sp_cuda_view *v = &r->view;
+    dim3 grid(v->tiles_x, v->tiles_y, n_chunks), block(SP_TILE_SIZE / PX, SP_TILE_SIZE, 1);
+    k_raster_bwd_px<CH, PX><<<grid, block, smem, r->stream>>>(
+        v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
+        v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+    SP_CUDA_LAUNCHED(err, "backward rasterization (several pixels per thread)");
+    return 0;
+}
+
 static size_t bwd_smem(int ch, bool gv)
 {
     return (size_t)BLOCK * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
@@ -244,25 +428,51 @@ static int launch_bwd_as(const sp_cuda_raster *r, const sp_raster_grad_in *gin, 
 
 /* Which kernel sums a chunk of width ch's colour gradients, from cfg.bwd_gather (render.h): 2 the
  * tensor-core one where it fits (else as 0), 0 the product kernel where it fits, 1 gather, else
- * (and -1) reduce-scatter. */
-enum bwd_kind { BWD_REDUCE_SCATTER, BWD_GATHER, BWD_PRODUCT, BWD_TENSOR_CORE };
-static const char *const bwd_kind_name[] = {"reduce-scatter", "gather", "product", "tensor-core"};
+ * (and -1) reduce-scatter; that one with 2 or 4 pixels per thread where cfg.bwd_px asks and
+ * ch <= 8. */
+enum bwd_kind { BWD_REDUCE_SCATTER, BWD_GATHER, BWD_PRODUCT, BWD_TENSOR_CORE, BWD_RS_PX2, BWD_RS_PX4 };
+static const char *const bwd_kind_name[] = {"reduce-scatter", "gather", "product", "tensor-core",
+                                            "reduce-scatter-2px", "reduce-scatter-4px"};
 
-static bwd_kind bwd_choose(int mode, int ch)
+static bwd_kind bwd_choose(const sp_raster_cfg *cfg, int ch)
 {
+    const int mode = cfg->bwd_gather;
     if (mode == 2 && sp_cuda_bwd_tc_fits(ch)) return BWD_TENSOR_CORE;
     if ((mode == 0 || mode == 2) && sp_cuda_bwd_mm_fits(ch)) return BWD_PRODUCT;
-    return use_gather(mode, ch) ? BWD_GATHER : BWD_REDUCE_SCATTER;
+    if (use_gather(mode, ch)) return BWD_GATHER;
+    if (ch <= 8 && cfg->bwd_px == 2) return BWD_RS_PX2;
+    if (ch <= 8 && cfg->bwd_px == 4) return BWD_RS_PX4;
+    return BWD_REDUCE_SCATTER;
 }
+
+/* The several-pixel kernels exist for CH <= 8 only (bwd_choose picks them only there). */
+template <int CH, int PX, bool NARROW = (CH <= 8)>
+struct px_launch {
+    static int go(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
+                  int c_base, int n_chunks, int aux, sp_error *err)
+    {
+        return launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    }
+};
+template <int CH, int PX>
+struct px_launch<CH, PX, true> {
+    static int go(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors, float *vgeo,
+                  int c_base, int n_chunks, int aux, sp_error *err)
+    {
+        return launch_bwd_px<CH, PX>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    }
+};
 
 template <int CH>
 static int launch_bwd(const sp_cuda_raster *r, const sp_raster_grad_in *gin, float *v_colors,
                       float *vgeo, int c_base, int n_chunks, int aux, sp_error *err)
 {
-    switch (bwd_choose(r->cfg.bwd_gather, CH)) {
+    switch (bwd_choose(&r->cfg, CH)) {
     case BWD_TENSOR_CORE: return sp_cuda_bwd_tc(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case BWD_PRODUCT: return sp_cuda_bwd_mm(CH, r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     case BWD_GATHER: return launch_bwd_as<CH, true>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_RS_PX2: return px_launch<CH, 2>::go(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
+    case BWD_RS_PX4: return px_launch<CH, 4>::go(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     default: return launch_bwd_as<CH, false>(r, gin, v_colors, vgeo, c_base, n_chunks, aux, err);
     }
 }
@@ -288,7 +498,7 @@ int sp_cuda_rasterize_bwd(sp_cuda_raster *r, const sp_raster_grad_in *gin, float
     int max_ch = r->cfg.chunk_bwd ? r->cfg.chunk_bwd : SP_CHANNEL_CHUNK_MAX;
     int full = D / max_ch, rem = D % max_ch;
     /* the widest chunk's kernel, for sp_raster_last_stages */
-    r->bwd_kernel = bwd_kind_name[bwd_choose(r->cfg.bwd_gather, full > 0 ? max_ch : sp_channel_width(rem, max_ch))];
+    r->bwd_kernel = bwd_kind_name[bwd_choose(&r->cfg, full > 0 ? max_ch : sp_channel_width(rem, max_ch))];
     if (full > 0 && (rc = dispatch_bwd(max_ch, r, gin, v_colors, vgeo, 0, full, 1, err))) return rc;
     if (rem > 0 && (rc = dispatch_bwd(sp_channel_width(rem, max_ch), r, gin, v_colors, vgeo,
                                       full * max_ch, 1, full == 0, err)))
