@@ -11,6 +11,7 @@
 static const char *usage_text =
     "usage: semsplat demo [--out DIR] [--world W.world] [--model-path DIR] [--capture DIR]\n"
     "                     [--views N] [--size WxH] [--steps N] [--downscale N] [--dim D] [--points N]\n"
+    "                     [--depth-lambda X]\n"
     "                     [--match-radius M] [--device cpu|cuda|auto] [--threads N]\n"
     "                     [--clip MODEL.safetensors] [--skip-missing] [--reuse] [--quiet]\n"
     "                     [--model DIR] [--walk-only | --plan mixed|walk|drive] [--no-video]\n"
@@ -26,7 +27,8 @@ static const char *usage_text =
     "instance inside the object's box grown by --match-radius, default 0.5 m); recall,\n"
     "precision, mean and median error over matched objects, and the mean with misses counted.\n"
     "Defaults: the bundled house (data/worlds/house.world); on a GPU 150 views at 640x480 and\n"
-    "7000 steps, on the CPU 48 views at 320x240 and 2000 steps. Capture plan (--plan): mixed\n"
+    "7000 steps, on the CPU 48 views at 320x240 and 2000 steps; training is depth-supervised\n"
+    "(--depth-lambda, default 0.5; 0 = RGB only) where the capture has depth/. Capture plan (--plan): mixed\n"
     "(spins and arcs of views at objects; default), walk (the spins only, = --walk-only) or drive\n"
     "(one robot drive through the rooms; see synth --help). --capture DIR skips synth and\n"
     "uses an existing capture (features then need --clip unless it has labels/). --reuse skips\n"
@@ -72,6 +74,10 @@ static int parse(int argc, char **argv, sp_demo_opts *o, cli_common *c)
             if (cli_parse_float("demo", "--time-scale", v, &x)) return 2;
             if (!(x > 0 && x <= 20)) return cli_usage_error("demo", "--time-scale %g: expected 0 < S <= 20", x);
             o->time_scale = x;
+        } else if ((v = cli_flag_value(argc, argv, &i, "--depth-lambda", &bad))) {
+            if (cli_parse_float("demo", "--depth-lambda", v, &x)) return 2;
+            if (!(x >= 0 && x <= 1e6)) return cli_usage_error("demo", "--depth-lambda %g: expected 0..1e6", x);
+            o->depth_lambda = (float)x;
         } else if (!strcmp(argv[i], "--no-video")) o->no_video = 1;
         else if (!strcmp(argv[i], "--walk-only")) o->walk_only = 1;
         else if ((v = cli_flag_value(argc, argv, &i, "--plan", &bad))) {

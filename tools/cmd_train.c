@@ -32,6 +32,11 @@ static void help(void)
         "  --refine-start N --refine-stop N --refine-every N --reset-every N\n"
         "  --grow-grad2d X       densification threshold (default 0.0002)\n"
         "  --random-bg           composite on a random background each step\n"
+        "  --depth-lambda X      depth supervision weight (default 0 = off): adds X * mean of\n"
+        "                        alpha |expected depth - measured depth| (metres) over pixels with\n"
+        "                        depth, from --depth DIR (default COLMAP/depth: a synth capture's\n"
+        "                        depth/NNNNN.npy, float32 [h][w]); views without a file skip it\n"
+        "  --depth DIR           depth folder (<image stem>.npy per view)\n"
         "  --test-every N        hold out every N-th image (default 8; 0 = none)\n"
         "  --eval-every N        held-out evaluation every N steps (default: at the end)\n"
         "  --checkpoint-every N  (default 1000)\n"
@@ -47,8 +52,8 @@ static void help(void)
 typedef struct {
     long steps, downscale, init_points, sh_degree, sh_interval, max_g, test_every, eval_every;
     long ck_every, seed, refine_start, refine_stop, refine_every, reset_every;
-    double grow;
-    const char *colmap, *images, *out, *init, *init_ply, *resume;
+    double grow, depth_lambda;
+    const char *colmap, *images, *out, *init, *init_ply, *resume, *depth;
     int want_resume, no_densify, random_bg;
 } train_flags;
 
@@ -70,6 +75,10 @@ static int parse(int argc, char **argv, train_flags *f, cli_common *c)
         else if ((v = cli_flag_value(argc, argv, &i, "--out", &bad))) f->out = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--init-ply", &bad))) f->init_ply = v;
         else if ((v = cli_flag_value(argc, argv, &i, "--init", &bad))) f->init = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--depth", &bad))) f->depth = v;
+        else if ((v = cli_flag_value(argc, argv, &i, "--depth-lambda", &bad))) {
+            if (cli_parse_float("train", "--depth-lambda", v, &f->depth_lambda)) return 2;
+        }
         INT_FLAG("--init-points", init_points)
         INT_FLAG("--steps", steps)
         INT_FLAG("--downscale", downscale)
@@ -131,13 +140,15 @@ static sp_train_model_opts to_opts(const train_flags *f, char *resume, size_t ca
     if (f->refine_every != UNSET) o->refine_every = (int)f->refine_every;
     if (f->reset_every != UNSET) o->reset_every = (int)f->reset_every;
     if (!isnan(f->grow)) o->grow_grad2d = (float)f->grow;
+    o->depth_lambda = (float)f->depth_lambda;
+    m.depth_dir = f->depth;
     return m;
 }
 
 int cmd_train(int argc, char **argv)
 {
-    train_flags f = {30000, 1, 100000, 3, UNSET, 0, 8, 0, 1000, 42, UNSET, UNSET, UNSET, UNSET, NAN,
-                     NULL, NULL, NULL, "points", NULL, NULL, 0, 0, 0};
+    train_flags f = {30000, 1, 100000, 3, UNSET, 0, 8, 0, 1000, 42, UNSET, UNSET, UNSET, UNSET, NAN, 0,
+                     NULL, NULL, NULL, "points", NULL, NULL, NULL, 0, 0, 0};
     cli_common c = cli_common_default();
     int prc = parse(argc, argv, &f, &c);
     if (prc) return prc < 0 ? 0 : prc;
@@ -155,6 +166,9 @@ int cmd_train(int argc, char **argv)
         printf("train  psnr       %.3f  dB  (%s, %d views)\n", res.psnr,
                res.eval_on_train ? "training views, none held out" : "held-out", res.n_eval_views);
         printf("train  ssim       %.4f\n", res.ssim);
+        if (res.depth_eval_pixels > 0)
+            printf("train  depth L1   %.4f  (expected depth; first surface %.4f; %.1f %% of depth pixels "
+                   "not solid)\n", res.depth_l1, res.surface_depth_l1, 100.0 * res.depth_hole_share);
         printf("train  gaussians  %zu\n", res.gaussians);
         printf("train  seconds    %.1f  s  (%d steps, %s)\n", res.seconds, res.steps, res.device);
         printf("train  wrote      %s/splat.ply, %s/train.json, %s/frame.json\n", f.out, f.out, f.out);

@@ -399,6 +399,9 @@ typedef struct sp_demo_opts {
     int dim;                 /* feature PCA dim (0: 32) */
     int points;              /* synth's points3D (0: 30000) */
     int downscale;           /* training image downscale (0: 1) */
+    float depth_lambda;      /* depth supervision weight (sp_train_options.depth_lambda) when the
+                              * capture has depth/ (synth's always has): default SP_DEMO_DEPTH_LAMBDA
+                              * (DESIGN.md's nav section, sixth round), 0 = RGB only */
     int skip_missing;        /* synth: render without missing assets */
     int walk_only;           /* synth's walk-only plan (no view aimed at a ground-truth object) */
     int plan;                /* SP_DEMO_PLAN_*: AUTO = walk_only ? WALK : MIXED (spins and arcs at
@@ -416,6 +419,8 @@ typedef struct sp_demo_opts {
     int view_width, view_height;                      /* the drive's splat view (0: 480x360) */
     const sp_log *log;
 } sp_demo_opts;
+
+#define SP_DEMO_DEPTH_LAMBDA 0.5f
 
 sp_demo_opts sp_demo_opts_default(void);
 

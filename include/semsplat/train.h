@@ -45,7 +45,10 @@ typedef struct sp_train_view {
     char name[256];  /* image file name as in the COLMAP model */
     sp_camera cam;   /* pinhole, already downscaled to the image size below */
     uint8_t *rgb;    /* [H][W][3], H = cam.height, W = cam.width */
+    float *depth;    /* [H][W] metric depth along the optical axis (0 = no measurement), or NULL:
+                      * filled by sp_train_data_load_depth */
     int is_test;     /* held out for evaluation */
+    int undistorted; /* resampled from a distorted camera at load time */
 } sp_train_view;
 
 typedef struct sp_train_data {
@@ -71,6 +74,20 @@ typedef struct sp_train_data {
  * the camera and model; undistort with COLMAP's image_undistorter first). */
 int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *images_dir,
                        int downscale, int test_every, sp_error *err);
+/* Depth targets for depth supervision (depth_lambda > 0): reads depth_dir/<image stem>.npy for every
+ * view (a synth capture's depth/NNNNN.npy: float32 [h][w] metres along the optical axis, 0 where
+ * nothing was hit; any numeric dtype is converted), downscaled like the images by `downscale` (the
+ * mean of the valid samples of each block; 0 where fewer than half are valid, so holes stay holes
+ * rather than becoming too-near averages). Depth must be in the model's units: a synth capture's
+ * model frame is metric (the world); a COLMAP reconstruction of real images is not, so its depth
+ * would first have to be scaled. A view without a file keeps depth NULL (its depth term is skipped);
+ * one warning on `log` names the first such view and the count. Errors: the folder missing or no
+ * view having a file (SP_E_NOTFOUND), a malformed or truncated .npy (the reader's error, naming the
+ * file), a file whose shape is not the image's [h][w] (SP_E_FORMAT, names the file and both
+ * sizes), a negative or non-finite value (SP_E_FORMAT), an undistorted view (SP_E_UNSUPPORTED: its
+ * depth would need the same resampling). *n_loaded (may be NULL) receives the views with depth. */
+int sp_train_data_load_depth(sp_train_data *d, const char *depth_dir, int downscale,
+                             size_t *n_loaded, const sp_log *log, sp_error *err);
 /* Computes scene_center / scene_scale from the views' camera centres. */
 void sp_train_data_update_scene(sp_train_data *d);
 void sp_train_data_free(sp_train_data *d);
@@ -135,6 +152,13 @@ typedef struct sp_train_options {
     void *feature_user;
     int cache_feature_targets; /* default 1 */
     int freeze_geometry;       /* train features only */
+
+    /* Depth supervision (views with sp_train_view.depth): the loss gains
+     *   depth_lambda * (1 / (H W)) * sum |expected depth - t|
+     * over the pixels with a target t > 0 (alpha-weighted where alpha < 0.1; see train_kernels.h
+     * for the form and why), in the depth's units (metres for a synth capture).
+     * 0 (default) = off: no depth is rendered for the loss. */
+    float depth_lambda;
 } sp_train_options;
 
 /* gsplat simple_trainer defaults for `steps` steps. Below 30000 steps the SH schedule and
@@ -154,6 +178,14 @@ typedef struct sp_train_result {
                             * held-out views (training views when none held out, eval_on_train)
                             * against get_feature_target's maps, over every pixel and channel */
     double last_loss;
+    /* Views with depth (sp_train_data_load_depth): mean |expected depth - target| in the depth's
+     * units over the pixels with a target and alpha >= 0.5 of the evaluated views (held-out, or
+     * training views when none held out), the share of such pixels with alpha < 0.5 (the splat
+     * rendering nothing solid where the sensor saw a surface), and the first-surface depth's error
+     * (sp_raster_out.surface_depth at alpha 0.5, what nav's costmap uses) over the same pixels.
+     * depth_eval_pixels = 0 when no evaluated view has depth. */
+    double depth_l1, depth_hole_share, surface_depth_l1;
+    double depth_eval_pixels;
     char device[128];
 } sp_train_result;
 
@@ -188,6 +220,8 @@ typedef enum {
 typedef struct sp_train_model_opts {
     const char *colmap_dir;  /* capture root or COLMAP model folder (required) */
     const char *images_dir;  /* NULL: <colmap_dir>/images */
+    const char *depth_dir;   /* depth targets when train.depth_lambda > 0 (NULL: <colmap_dir>/depth);
+                              * also read, when present, for the held-out depth error in train.json */
     const char *out_dir;     /* the model folder (required; made when missing) */
     int downscale;           /* integer image downscale (1) */
     int test_every;          /* hold out every n-th image (8; 0 = none) */

@@ -17,6 +17,7 @@ sp_demo_opts sp_demo_opts_default(void)
     o.out_dir = "demo";
     o.device = SP_DEVICE_AUTO;
     o.dim = 32;
+    o.depth_lambda = SP_DEMO_DEPTH_LAMBDA;
     return o;
 }
 
@@ -58,6 +59,13 @@ static int stage_train(const sp_demo_opts *o, sp_device *dev, sp_demo_result *r,
     t.colmap_dir = r->capture_dir;
     t.out_dir = r->model_dir;
     t.downscale = o->downscale > 0 ? o->downscale : 1;
+    /* Depth supervision where the capture measured depth (a synth capture always; an outside
+     * one may not): the trained geometry is what the costmap is built from. */
+    char depth[1200];
+    snprintf(depth, sizeof depth, "%s/depth", r->capture_dir);
+    if (o->depth_lambda > 0 && sp_file_exists(depth)) t.train.depth_lambda = o->depth_lambda;
+    else if (o->depth_lambda > 0)
+        sp_logf(o->log, SP_LOG_WARN, "demo: %s has no depth/: training on RGB only", r->capture_dir);
     int rc = sp_train_model(dev, &t, &r->train, o->log, err);
     r->trained = rc == 0;
     return rc ? sp_error_prefix(err, "demo: train: ") : 0;

@@ -131,6 +131,11 @@ int sp_train_write_json(const char *path, const sp_train_options *o, const sp_tr
     cJSON_AddNumberToObject(j, "eval_views", res->n_eval_views);
     cJSON_AddStringToObject(j, "eval_split", res->eval_on_train ? "train (no held-out views)" : "held-out");
     if (o->feature_dim) cJSON_AddNumberToObject(j, "feature_mse", res->feature_mse);
+    if (res->depth_eval_pixels > 0) { /* same split as psnr; metres for a synth capture */
+        cJSON_AddNumberToObject(j, "depth_l1", res->depth_l1);
+        cJSON_AddNumberToObject(j, "surface_depth_l1", res->surface_depth_l1);
+        cJSON_AddNumberToObject(j, "depth_hole_share", res->depth_hole_share);
+    }
     cJSON *s = cJSON_AddObjectToObject(j, "settings");
     if (colmap_dir) cJSON_AddStringToObject(s, "colmap", colmap_dir);
     if (images_dir) cJSON_AddStringToObject(s, "images", images_dir);
@@ -139,6 +144,7 @@ int sp_train_write_json(const char *path, const sp_train_options *o, const sp_tr
     cJSON_AddNumberToObject(s, "sh_degree", o->sh_degree);
     cJSON_AddNumberToObject(s, "sh_degree_interval", o->sh_degree_interval);
     cJSON_AddNumberToObject(s, "ssim_lambda", o->ssim_lambda);
+    cJSON_AddNumberToObject(s, "depth_lambda", o->depth_lambda);
     cJSON_AddBoolToObject(s, "random_background", o->random_background);
     cJSON_AddNumberToObject(s, "seed", (double)o->seed);
     cJSON *lr = cJSON_AddObjectToObject(s, "lr");

@@ -17,6 +17,13 @@ static int feature_mse(sp_device *dev, const float *pred, int stride, int off, c
     return cpu_feature_mse(dev->pool, pred, stride, off, target, H, W, F, lambda, v_pred, mse, err);
 }
 
+static int depth_loss(sp_device *dev, const float *depth, const float *alpha, const float *target,
+                      int H, int W, float lambda, float *v_depth, float *v_alpha, double stats[3],
+                      sp_error *err)
+{
+    return cpu_depth_loss(dev->pool, depth, alpha, target, H, W, lambda, v_depth, v_alpha, stats, err);
+}
+
 static int adam_step(sp_device *dev, float *p, const float *g, float *m, float *v, size_t n,
                      float lr, float b1, float b2, float eps, int step, sp_error *err)
 {
@@ -50,8 +57,9 @@ static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad,
     return 0;
 }
 
-const tr_kernels tr_cpu_kernels = {rgb_loss,          feature_mse,  adam_step,
-                                   densify_accumulate, copy_columns, any_nonfinite};
+const tr_kernels tr_cpu_kernels = {rgb_loss,     feature_mse,        depth_loss,
+                                   adam_step,    densify_accumulate, copy_columns,
+                                   any_nonfinite};
 
 const tr_kernels *tr_kernels_of(const sp_device *dev)
 {

@@ -216,6 +216,7 @@ int sp_train_data_load(sp_train_data *d, const char *colmap_dir, const char *ima
             if ((rc = undistort_view(v, err))) goto fail;
             rgb = v->rgb;
             v->rgb = NULL;
+            v->undistorted = 1;
             d->n_undistorted++;
         }
         if (downscale > 1) {
@@ -267,11 +268,126 @@ fail:
 void sp_train_data_free(sp_train_data *d)
 {
     if (!d) return;
-    for (size_t i = 0; i < d->n_views; i++) free(d->views[i].rgb);
+    for (size_t i = 0; i < d->n_views; i++) {
+        free(d->views[i].rgb);
+        free(d->views[i].depth);
+    }
     free(d->views);
     free(d->points);
     free(d->point_rgb);
     memset(d, 0, sizeof *d);
+}
+
+/* ---- depth targets ------------------------------------------------------------------------------ */
+
+/* depth_dir/<stem of name>.npy */
+static int depth_path(char *out, size_t cap, const char *dir, const char *name)
+{
+    char stem[256];
+    snprintf(stem, sizeof stem, "%s", name);
+    char *dot = strrchr(stem, '.'), *slash = strrchr(stem, '/');
+    if (dot && (!slash || dot > slash)) *dot = 0;
+    int n = snprintf(out, cap, "%s/%s.npy", dir, stem);
+    return n < 0 || (size_t)n >= cap;
+}
+
+/* Block mean of the valid (> 0) samples; 0 where fewer than half of a block are valid. */
+static float *downscale_depth(const float *src, int W, int f, int w, int h)
+{
+    float *dst = malloc((size_t)w * h * sizeof(float));
+    if (!dst) return NULL;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            double sum = 0;
+            int n = 0;
+            for (int dy = 0; dy < f; dy++)
+                for (int dx = 0; dx < f; dx++) {
+                    float z = src[(size_t)(y * f + dy) * W + (x * f + dx)];
+                    if (z > 0) sum += z, n++;
+                }
+            dst[(size_t)y * w + x] = 2 * n >= f * f ? (float)(sum / n) : 0.0f;
+        }
+    return dst;
+}
+
+/* Reads one view's depth file into v->depth (checked: [h][w] of the image, finite, >= 0). */
+static int load_view_depth(sp_train_view *v, const char *path, int downscale, sp_error *err)
+{
+    sp_npy a;
+    int rc = sp_npy_read(path, &a, err);
+    if (rc) return rc;
+    int w = v->cam.width, h = v->cam.height;
+    int ok_shape = (a.ndim == 2 || (a.ndim == 3 && a.shape[2] == 1)) &&
+                   a.shape[0] / (size_t)downscale == (size_t)h && a.shape[1] / (size_t)downscale == (size_t)w;
+    if (!ok_shape) {
+        rc = sp_error_set(err, SP_E_FORMAT,
+                          "%s: depth of shape %s[%zu][%zu] does not match image '%s' (%dx%d before "
+                          "a downscale of %d: needs [%d][%d])",
+                          path, a.ndim == 2 || a.ndim == 3 ? "" : "(not 2-D) ", a.shape[0],
+                          a.ndim > 1 ? a.shape[1] : 0, v->name, w * downscale, h * downscale, downscale,
+                          h * downscale, w * downscale);
+        sp_npy_free(&a);
+        return rc;
+    }
+    float *z = NULL;
+    size_t W0 = a.shape[1], n = a.shape[0] * W0;
+    rc = sp_npy_to_f32(&a, &z, err);
+    sp_npy_free(&a);
+    if (rc) return sp_error_prefix(err, "%s: ", path);
+    for (size_t i = 0; i < n; i++)
+        if (!(z[i] >= 0) || !isfinite(z[i])) {
+            rc = sp_error_set(err, SP_E_FORMAT, "%s: depth %g at pixel (%zu, %zu) (must be finite and "
+                              ">= 0; 0 = no measurement)", path, (double)z[i], i % W0, i / W0);
+            free(z);
+            return rc;
+        }
+    if (downscale > 1) {
+        float *small = downscale_depth(z, (int)W0, downscale, w, h);
+        free(z);
+        if (!small) return sp_error_set(err, SP_E_NOMEM, "%s: out of memory", path);
+        z = small;
+    }
+    free(v->depth);
+    v->depth = z;
+    return SP_OK;
+}
+
+int sp_train_data_load_depth(sp_train_data *d, const char *depth_dir, int downscale,
+                             size_t *n_loaded, const sp_log *log, sp_error *err)
+{
+    if (n_loaded) *n_loaded = 0;
+    if (downscale < 1 || downscale > 64)
+        return sp_error_set(err, SP_E_ARG, "downscale factor %d is outside 1..64", downscale);
+    if (!depth_dir || !sp_file_exists(depth_dir))
+        return sp_error_set(err, SP_E_NOTFOUND, "depth supervision: no depth folder %s (a synth "
+                            "capture writes depth/NNNNN.npy beside images/)", depth_dir ? depth_dir : "(none)");
+    size_t loaded = 0, missing = 0, first_missing = 0;
+    for (size_t i = 0; i < d->n_views; i++) {
+        sp_train_view *v = &d->views[i];
+        char path[4400];
+        if (depth_path(path, sizeof path, depth_dir, v->name))
+            return sp_error_set(err, SP_E_ARG, "%s: path too long", depth_dir);
+        if (!sp_file_exists(path)) {
+            if (missing++ == 0) first_missing = i;
+            continue;
+        }
+        if (v->undistorted)
+            return sp_error_set(err, SP_E_UNSUPPORTED, "%s: view '%s' was undistorted at load time; "
+                                "depth supervision needs pinhole views (undistort the depth too, or "
+                                "train without --depth-lambda)", path, v->name);
+        int rc = load_view_depth(v, path, downscale, err);
+        if (rc) return rc;
+        loaded++;
+    }
+    if (loaded == 0)
+        return sp_error_set(err, SP_E_NOTFOUND, "depth supervision: %s has none of the %zu views' "
+                            "depth files (e.g. for '%s')", depth_dir, d->n_views,
+                            d->n_views ? d->views[0].name : "");
+    if (missing)
+        sp_logf(log, SP_LOG_WARN, "depth: %zu of %zu views have no depth file in %s (first: '%s'); "
+                "their depth term is skipped", missing, d->n_views, depth_dir, d->views[first_missing].name);
+    if (n_loaded) *n_loaded = loaded;
+    return SP_OK;
 }
 
 /* ---- nearest neighbours on a uniform grid ------------------------------------------------------ */

@@ -70,6 +70,13 @@ static int k_feature_mse(tr_state *s, const float *pred, int stride, int off, co
     return s->k->feature_mse(s->dev, pred, stride, off, target, H, W, s->F, lambda, v_pred, mse, err);
 }
 
+static int k_depth_loss(tr_state *s, const float *depth, const float *alpha, const float *target,
+                        int H, int W, float lambda, float *v_depth, float *v_alpha, double st[3],
+                        sp_error *err)
+{
+    return s->k->depth_loss(s->dev, depth, alpha, target, H, W, lambda, v_depth, v_alpha, st, err);
+}
+
 static int k_accumulate(tr_state *s, const int32_t *radii, float sx, float sy, sp_error *err)
 {
     return s->k->densify_accumulate(s->dev, s->v_means2d, radii, s->n, sx, sy, s->grad2d, s->count,
@@ -217,6 +224,28 @@ typedef struct {
     size_t cap;      /* pixels */
 } eval_bufs;
 
+/* Depth error sums of one evaluated view against its target (pixels with a target): expected
+ * depth where alpha >= 0.5, the count of pixels where alpha < 0.5, the surface depth's error. */
+typedef struct {
+    double l1, surf_l1, solid, holes;
+} depth_sums;
+
+static void depth_view_error(const float *dsum, const float *alpha, const float *surf,
+                             const float *target, size_t np, depth_sums *ds)
+{
+    for (size_t p = 0; p < np; p++) {
+        float t = target[p];
+        if (!(t > 0)) continue;
+        if (alpha[p] < 0.5f) {
+            ds->holes += 1;
+            continue;
+        }
+        ds->l1 += fabs((double)dsum[p] / alpha[p] - t);
+        ds->surf_l1 += fabs((double)surf[p] - t);
+        ds->solid += 1;
+    }
+}
+
 static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int sh_degree,
                           int active, const float *bg, sp_train_result *res, sp_error *err)
 {
@@ -231,10 +260,20 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
     float *image_d = sp_device_alloc(s->dev, maxpx * D * sizeof(float), err);
     float *image_h = malloc(maxpx * D * sizeof(float)), *target_h = malloc(maxpx * 3 * sizeof(float));
     float *scratch = sp_alloc(SP_LOSS_SCRATCH_FLOATS(1, maxpx, 3) * sizeof(float));
-    if (!image_d || !image_h || !target_h || !scratch) {
+    /* depth, alpha, surface depth: device [3][maxpx] and host copies, only with depth targets */
+    float *dep_d = NULL, *dep_h = NULL;
+    int any_depth = 0;
+    for (size_t i = 0; i < d->n_views; i++)
+        any_depth |= d->views[i].depth != NULL && (!any_test || d->views[i].is_test);
+    if (any_depth) {
+        dep_d = sp_device_alloc(s->dev, 3 * maxpx * sizeof(float), err);
+        dep_h = malloc(3 * maxpx * sizeof(float));
+    }
+    if (!image_d || !image_h || !target_h || !scratch || (any_depth && (!dep_d || !dep_h))) {
         rc = sp_error_set(err, SP_E_NOMEM, "evaluation: out of memory");
         goto done;
     }
+    depth_sums dsum = {0, 0, 0, 0};
     double psnr = 0, ssim = 0, l1 = 0;
     int nv = 0;
     for (size_t i = 0; i < d->n_views; i++) {
@@ -245,11 +284,22 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
         if ((rc = prepare_colors(s, sh_degree, active, sp_camera_center(&v->cam), err))) goto done;
         sp_raster_in in = raster_in(s, bg);
         sp_raster_out out = {image_d, NULL, NULL, NULL};
+        size_t np = (size_t)W * H;
+        if (v->depth) {
+            out.depth = dep_d;
+            out.alpha = dep_d + maxpx;
+            out.surface_depth = dep_d + 2 * maxpx;
+        }
         sp_raster_cfg cfg = sp_raster_cfg_default();
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) goto done;
         if ((rc = sp_device_download(s->dev, image_h, image_d, (size_t)W * H * D * sizeof(float), err)))
             goto done;
-        size_t np = (size_t)W * H;
+        if (v->depth) {
+            for (int k = 0; k < 3 && !rc; k++)
+                rc = sp_device_download(s->dev, dep_h + k * maxpx, dep_d + k * maxpx, np * sizeof(float), err);
+            if (rc) goto done;
+            depth_view_error(dep_h, dep_h + maxpx, dep_h + 2 * maxpx, v->depth, np, &dsum);
+        }
         for (size_t p = 0; p < np; p++)
             for (int c = 0; c < 3; c++) {
                 float x = image_h[p * D + c];
@@ -269,7 +319,14 @@ static int evaluate_state(tr_state *s, sp_raster *r, const sp_train_data *d, int
     res->l1 = nv ? l1 / nv : 0;
     res->n_eval_views = nv;
     res->eval_on_train = !any_test;
+    double with_target = dsum.solid + dsum.holes;
+    res->depth_eval_pixels = with_target;
+    res->depth_l1 = dsum.solid > 0 ? dsum.l1 / dsum.solid : 0;
+    res->surface_depth_l1 = dsum.solid > 0 ? dsum.surf_l1 / dsum.solid : 0;
+    res->depth_hole_share = with_target > 0 ? dsum.holes / with_target : 0;
 done:
+    sp_device_release(s->dev, dep_d);
+    free(dep_h);
     sp_device_release(s->dev, image_d);
     free(image_h);
     free(target_h);
@@ -350,6 +407,8 @@ sp_train_options sp_train_options_default(int steps)
 typedef struct {
     float **target;   /* per view [H][W][3] on the device (training views only) */
     float **ftarget;  /* per view [H][W][F] on the device when cached */
+    float **dtarget;  /* per view [H][W] depth on the device (depth_lambda > 0, views with depth) */
+    float *depth, *alpha, *v_depth, *v_alpha; /* [maxpx] each, depth supervision only */
     float *ftmp_h;    /* host staging for feature targets */
     float *ftmp_d;    /* device staging when not cached */
     float *image, *v_image, *scratch;
@@ -360,14 +419,45 @@ static void bufs_free(sp_device *dev, const sp_train_data *d, step_bufs *b)
 {
     for (size_t i = 0; b->target && i < d->n_views; i++) sp_device_release(dev, b->target[i]);
     for (size_t i = 0; b->ftarget && i < d->n_views; i++) sp_device_release(dev, b->ftarget[i]);
+    for (size_t i = 0; b->dtarget && i < d->n_views; i++) sp_device_release(dev, b->dtarget[i]);
     free(b->target);
     free(b->ftarget);
+    free(b->dtarget);
+    float *dbufs[] = {b->depth, b->alpha, b->v_depth, b->v_alpha};
+    for (int k = 0; k < 4; k++) sp_device_release(dev, dbufs[k]);
     free(b->ftmp_h);
     sp_device_release(dev, b->ftmp_d);
     sp_device_release(dev, b->image);
     sp_device_release(dev, b->v_image);
     sp_device_release(dev, b->scratch);
     memset(b, 0, sizeof *b);
+}
+
+/* Depth targets of the training views cached on the device (like the RGB targets) and the
+ * per-step depth / alpha buffers, when depth supervision is on. */
+static int depth_bufs_init(tr_state *s, const sp_train_data *d, const sp_train_options *o,
+                           step_bufs *b, sp_error *err)
+{
+    if (!(o->depth_lambda > 0) || !s->rgb) return SP_OK;
+    if (!(b->dtarget = calloc(d->n_views, sizeof(float *))))
+        return sp_error_set(err, SP_E_NOMEM, "train: out of memory for depth targets");
+    size_t with = 0;
+    for (size_t i = 0; i < d->n_views; i++) {
+        const sp_train_view *v = &d->views[i];
+        if (v->is_test || !v->depth) continue;
+        size_t bytes = (size_t)v->cam.width * v->cam.height * sizeof(float);
+        if (!(b->dtarget[i] = sp_device_alloc(s->dev, bytes, err))) return err->code;
+        int rc = sp_device_upload(s->dev, b->dtarget[i], v->depth, bytes, err);
+        if (rc) return rc;
+        with++;
+    }
+    if (with == 0)
+        return sp_error_set(err, SP_E_ARG, "train: depth_lambda %g but no training view has depth "
+                            "(load it with sp_train_data_load_depth)", (double)o->depth_lambda);
+    float **bufs[] = {&b->depth, &b->alpha, &b->v_depth, &b->v_alpha};
+    for (int k = 0; k < 4; k++)
+        if (!(*bufs[k] = sp_device_alloc(s->dev, b->maxpx * sizeof(float), err))) return err->code;
+    return SP_OK;
 }
 
 static int bufs_init(tr_state *s, const sp_train_data *d, const sp_train_options *o, step_bufs *b,
@@ -416,6 +506,7 @@ static int bufs_init(tr_state *s, const sp_train_data *d, const sp_train_options
             rc = err->code;
     }
     if (rc) return rc;
+    if ((rc = depth_bufs_init(s, d, o, b, err))) return rc;
     if (!(b->image = sp_device_alloc(s->dev, b->maxpx * s->D * sizeof(float), err)) ||
         !(b->v_image = sp_device_alloc(s->dev, b->maxpx * s->D * sizeof(float), err)) ||
         !(b->scratch = sp_device_alloc(s->dev, SP_LOSS_SCRATCH_FLOATS(1, b->maxpx, 3) * sizeof(float), err)))
@@ -682,7 +773,8 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
             for (int c = 0; c < 3; c++)
                 bg[c] = o->random_background ? (float)tr_uniform(&rng) : o->background[c];
         sp_raster_in in = raster_in(&s, bg);
-        sp_raster_out out = {b.image, NULL, NULL, NULL};
+        const float *dt = b.dtarget ? b.dtarget[vi] : NULL; /* NULL: no depth term this view */
+        sp_raster_out out = {b.image, dt ? b.depth : NULL, dt ? b.alpha : NULL, NULL};
         if ((rc = sp_raster_forward(r, &v->cam, &cfg, &in, &out, err))) break;
         if ((rc = sp_device_zero(dev, b.v_image, px * s.D * sizeof(float), err))) break;
         double st[4] = {0, 0, 1, 0}, fmse = 0;
@@ -703,7 +795,11 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
                                     b.v_image, &fmse, err)))
                 break;
         }
-        double loss = (s.rgb ? st[0] : 0) + o->feature_lambda * fmse;
+        double dst[3] = {0, 0, 0};
+        if (dt && (rc = k_depth_loss(&s, b.depth, b.alpha, dt, H, W, o->depth_lambda, b.v_depth,
+                                     b.v_alpha, dst, err)))
+            break;
+        double loss = (s.rgb ? st[0] : 0) + o->feature_lambda * fmse + dst[0];
         if (!isfinite(loss)) {
             rc = nan_stop(err, step, "the loss", o, last_good_step);
             break;
@@ -714,7 +810,7 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
         if (!rc) rc = sp_device_zero(dev, s.v_means2d, s.n * 2 * sizeof(float), err);
         if (!rc && s.rgb) rc = sp_device_zero(dev, s.v_sh, s.n * s.K * 3 * sizeof(float), err);
         if (rc) break;
-        sp_raster_grad_in gin = {b.v_image, NULL, NULL};
+        sp_raster_grad_in gin = {b.v_image, dt ? b.v_depth : NULL, dt ? b.v_alpha : NULL};
         sp_raster_grads gr = {train_geom ? s.g[G_MEANS] : NULL, train_geom ? s.g[G_QUATS] : NULL,
                               train_geom ? s.g[G_SCALES] : NULL, train_geom ? s.g[G_OPAC] : NULL,
                               s.v_colors, train_geom ? s.v_means2d : NULL};

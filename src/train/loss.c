@@ -246,6 +246,71 @@ int cpu_feature_mse(sp_pool *pool, const float *pred, int pred_stride, int offse
 }
 
 typedef struct {
+    const float *depth, *alpha, *target;
+    int W;
+    float scale;
+    float *v_depth, *v_alpha;
+    double *rows; /* [H][2]: sum |r|, count */
+} depth_ctx;
+
+/* The per-pixel term of train_kernels.h's depth loss: |d - t| above the alpha floor, the
+ * alpha-weighted |depth - t alpha| / floor below it (continuous at the floor). */
+static void depth_row(void *vctx, long y, int tid)
+{
+    depth_ctx *c = vctx;
+    size_t o = (size_t)y * c->W;
+    const float inv_floor = 1.0f / SP_DEPTH_MIN_ALPHA;
+    double s = 0, n = 0;
+    for (int x = 0; x < c->W; x++) {
+        float t = c->target[o + x], a = c->alpha[o + x], vd = 0, va = 0;
+        if (t > 0) {
+            float S = c->depth[o + x];
+            if (a >= SP_DEPTH_MIN_ALPHA) {
+                float d = S / a, r = d - t;
+                float g = r > 0 ? c->scale : (r < 0 ? -c->scale : 0.0f);
+                s += fabs((double)r);
+                vd = g / a;
+                va = -g * d / a;
+            } else {
+                float r = S - t * a;
+                float g = r > 0 ? c->scale * inv_floor : (r < 0 ? -c->scale * inv_floor : 0.0f);
+                s += fabs((double)r) * inv_floor;
+                vd = g;
+                va = -g * t;
+            }
+            n += 1;
+        }
+        if (c->v_depth) {
+            c->v_depth[o + x] = vd;
+            c->v_alpha[o + x] = va;
+        }
+    }
+    c->rows[2 * y] = s;
+    c->rows[2 * y + 1] = n;
+}
+
+int cpu_depth_loss(sp_pool *pool, const float *depth, const float *alpha, const float *target,
+                   int H, int W, float lambda, float *v_depth, float *v_alpha, double stats[3],
+                   sp_error *err)
+{
+    if (H < 1 || W < 1) return sp_error_set(err, SP_E_ARG, "depth loss: bad size %dx%d", W, H);
+    if (!depth || !alpha || !target || !v_depth != !v_alpha)
+        return sp_error_set(err, SP_E_ARG, "depth loss: NULL buffer (v_depth and v_alpha go together)");
+    double npx = (double)H * W;
+    depth_ctx c = {depth, alpha, target, W, (float)(lambda / npx), v_depth, v_alpha, NULL};
+    c.rows = malloc(sizeof(double) * 2 * (size_t)H);
+    if (!c.rows) return sp_error_set(err, SP_E_NOMEM, "depth loss: out of memory");
+    sp_pool_for(pool, H, depth_row, &c);
+    double s = 0, n = 0;
+    for (int y = 0; y < H; y++) s += c.rows[2 * y], n += c.rows[2 * y + 1];
+    free(c.rows);
+    stats[0] = lambda * s / npx;
+    stats[1] = n > 0 ? s / n : 0;
+    stats[2] = n;
+    return SP_OK;
+}
+
+typedef struct {
     float *param, *m, *v;
     const float *grad;
     size_t n;

@@ -2,6 +2,7 @@
  * PLY, or a checkpoint), train, and write splat.ply, train.json, frame.json and checkpoints.
  * What `semsplat train` and the demo run. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "semsplat/io.h"
@@ -65,6 +66,33 @@ static int write_frame(const sp_train_model_opts *o, sp_error *err)
     return sp_frame_write(path, &f, err);
 }
 
+/* Depth targets: required with depth_lambda > 0; without, read when the folder exists so train.json
+ * reports the depth error of RGB-only training too (a bad file then only costs that report). */
+static int load_depth(sp_train_data *d, const sp_train_model_opts *o, const sp_log *log, sp_error *err)
+{
+    char dir[4200];
+    if (o->depth_dir) snprintf(dir, sizeof dir, "%s", o->depth_dir);
+    else snprintf(dir, sizeof dir, "%s/depth", o->colmap_dir);
+    size_t n = 0;
+    if (o->train.depth_lambda > 0) {
+        int rc = sp_train_data_load_depth(d, dir, o->downscale, &n, log, err);
+        if (rc) return sp_error_prefix(err, "train: --depth-lambda %g: ", (double)o->train.depth_lambda);
+        sp_logf(log, SP_LOG_INFO, "depth supervision: lambda %g, %zu of %zu views with depth from %s",
+                (double)o->train.depth_lambda, n, d->n_views, dir);
+        return SP_OK;
+    }
+    if (!sp_file_exists(dir)) return SP_OK;
+    sp_error e = {0};
+    if (sp_train_data_load_depth(d, dir, o->downscale, &n, NULL, &e)) {
+        sp_logf(log, SP_LOG_WARN, "depth (for the held-out depth error only): %s", e.msg);
+        for (size_t i = 0; i < d->n_views; i++) {
+            free(d->views[i].depth);
+            d->views[i].depth = NULL;
+        }
+    }
+    return SP_OK;
+}
+
 int sp_train_model(sp_device *dev, const sp_train_model_opts *o, sp_train_result *res_out,
                    const sp_log *log, sp_error *err)
 {
@@ -80,6 +108,10 @@ int sp_train_model(sp_device *dev, const sp_train_model_opts *o, sp_train_result
         return rc;
     sp_logf(log, SP_LOG_INFO, "%zu views at %dx%d, %zu points, scene scale %.3f", d.n_views,
             d.views[0].cam.width, d.views[0].cam.height, d.n_points, (double)d.scene_scale);
+    if ((rc = load_depth(&d, o, log, err))) {
+        sp_train_data_free(&d);
+        return rc;
+    }
     sp_splat s;
     memset(&s, 0, sizeof s);
     if (!o->resume) rc = init_splat(&s, &d, o, log, err);

@@ -53,6 +53,7 @@ static const float_range floats[] = {
     {"prune_scale3d", OFF(prune_scale3d), 0, 1e6, 1},
     {"scene_scale", OFF(scene_scale), 0, 1e9, 0},
     {"feature_lambda", OFF(feature_lambda), 0, 1e6, 0},
+    {"depth_lambda", OFF(depth_lambda), 0, 1e6, 0},
 };
 
 int tr_check_option_ranges(const sp_train_options *o, sp_error *err)

@@ -13,6 +13,9 @@ int cpu_rgb_loss(sp_pool *pool, const float *pred, int pred_stride, const float 
 int cpu_feature_mse(sp_pool *pool, const float *pred, int pred_stride, int offset,
                     const float *target, int H, int W, int F, float lambda, float *v_pred,
                     double *out_mse, sp_error *err);
+int cpu_depth_loss(sp_pool *pool, const float *depth, const float *alpha, const float *target,
+                   int H, int W, float lambda, float *v_depth, float *v_alpha, double stats[3],
+                   sp_error *err);
 void cpu_adam_step(sp_pool *pool, float *param, const float *grad, float *m, float *v, size_t n,
                    float lr, float beta1, float beta2, float eps, int step);
 void cpu_densify_accumulate(const float *v_means2d, const int32_t *radii, size_t n, float scale_x,

@@ -1,6 +1,6 @@
 /* The trainer's GPU kernels (src/train/cuda/, the CUDA table of train_kernels.h) against their CPU
  * references in src/train/loss.c (which have their own finite-difference tests): L1+SSIM loss and
- * gradient, feature MSE, Adam, densification statistics, column copy, the NaN guard, bad sizes.
+ * gradient, feature MSE, the depth loss, Adam, densification statistics, column copy, the NaN guard, bad sizes.
  * Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
@@ -89,6 +89,38 @@ static void test_feature_mse(void)
     free(pred), free(tgt), free(v), free(vg);
 }
 
+static void test_depth_loss(void)
+{
+    sp_error err = {0};
+    int H = 37, W = 53;
+    size_t np = (size_t)H * W;
+    float *S = malloc(np * 4), *A = malloc(np * 4), *t = malloc(np * 4);
+    for (size_t i = 0; i < np; i++) {
+        A[i] = i % 9 == 0 ? 0.03f * frand() : 0.1f + 0.9f * frand(); /* some below the alpha floor */
+        t[i] = i % 11 == 0 ? 0.0f : 0.5f + 5.0f * frand();           /* holes */
+        S[i] = A[i] * (0.5f + 5.0f * frand());
+    }
+    float *vd = malloc(np * 4), *va = malloc(np * 4), *vdg = malloc(np * 4), *vag = malloc(np * 4);
+    double st[3], stg[3];
+    CHECK_OK(cpu_depth_loss(NULL, S, A, t, H, W, 0.7f, vd, va, st, &err), &err);
+    float *dS = up(S, np, &err), *dA = up(A, np, &err), *dt = up(t, np, &err);
+    float *dvd = up(NULL, np, &err), *dva = up(NULL, np, &err);
+    CHECK_OK(K->depth_loss(g_gpu, dS, dA, dt, H, W, 0.7f, dvd, dva, stg, &err), &err);
+    down(vdg, dvd, np, &err);
+    down(vag, dva, np, &err);
+    CHECK_NEAR(stg[0], st[0], 1e-6 * fmax(1.0, st[0]));
+    CHECK_NEAR(stg[1], st[1], 1e-5 * fmax(1.0, st[1]));
+    CHECK(stg[2] == st[2]);
+    CHECK(max_rel(vdg, vd, np) < 1e-5);
+    CHECK(max_rel(vag, va, np) < 1e-5);
+    CHECK_OK(K->depth_loss(g_gpu, dS, dA, dt, H, W, 0.7f, NULL, NULL, stg, &err), &err);
+    CHECK_NEAR(stg[0], st[0], 1e-6 * fmax(1.0, st[0]));
+    CHECK_FAILS(K->depth_loss(g_gpu, dS, dA, dt, H, W, 0.7f, dvd, NULL, stg, &err), SP_E_ARG, &err,
+                "together");
+    dfree(dS), dfree(dA), dfree(dt), dfree(dvd), dfree(dva);
+    free(S), free(A), free(t), free(vd), free(va), free(vdg), free(vag);
+}
+
 static void test_adam_and_stats(void)
 {
     sp_error err = {0};
@@ -157,6 +189,7 @@ int main(void)
     }
     RUN(test_rgb_loss);
     RUN(test_feature_mse);
+    RUN(test_depth_loss);
     RUN(test_adam_and_stats);
     sp_device_free(g_gpu);
     return TEST_EXIT();

@@ -263,6 +263,110 @@ static void test_bad_captures(void)
     CHECK_FAILS(sp_train_data_load(&d, cap, NULL, 0, 8, &err), SP_E_ARG, &err, "downscale");
 }
 
+/* Depth targets from files: depth/NNN.npy beside images/ (a synth capture's layout), a view
+ * without one skipped with one warning, bad files named, and train.json recording depth_lambda
+ * and the held-out depth error. */
+typedef struct {
+    int warnings;
+    char last[512];
+} log_count;
+
+static void count_log(void *user, sp_log_level level, const char *msg)
+{
+    log_count *c = user;
+    if (level == SP_LOG_WARN) c->warnings++, snprintf(c->last, sizeof c->last, "%s", msg);
+}
+
+static void write_depth(const char *cap, int k, int w, int h, float z)
+{
+    sp_error err = {0};
+    char path[1200];
+    snprintf(path, sizeof path, "%s/depth", cap);
+    sp_mkdirs(path, &err);
+    snprintf(path, sizeof path, "%s/depth/%03d.npy", cap, k);
+    float *d = malloc((size_t)w * h * sizeof(float));
+    for (int i = 0; i < w * h; i++) d[i] = i % 17 == 0 ? 0.0f : z;
+    size_t shape[2] = {(size_t)h, (size_t)w};
+    CHECK_OK(sp_npy_write(path, SP_DTYPE_F32, 2, shape, d, &err), &err);
+    free(d);
+}
+
+static void test_depth_files(void)
+{
+    sp_error err = {0};
+    sp_train_data d;
+    const char *dir = test_tmpdir("train_depth");
+    char cap[1024], path[1200], ddir[1200];
+    snprintf(cap, sizeof cap, "%s/cap", dir);
+    write_capture(cap, SP_COLMAP_PINHOLE, &g_gt);
+    snprintf(ddir, sizeof ddir, "%s/depth", cap);
+    CHECK_OK(sp_train_data_load(&d, cap, NULL, 1, 8, &err), &err);
+    CHECK_FAILS(sp_train_data_load_depth(&d, ddir, 1, NULL, NULL, &err), SP_E_NOTFOUND, &err, "no depth folder");
+    for (int k = 0; k < NV; k++)
+        if (k != 6) write_depth(cap, k, IW, IH, 3.0f);
+    log_count lc = {0, ""};
+    sp_log log = {count_log, &lc, SP_LOG_DEBUG, -1};
+    size_t n = 0;
+    CHECK_OK(sp_train_data_load_depth(&d, ddir, 1, &n, &log, &err), &err);
+    CHECK(n == NV - 1 && d.views[6].depth == NULL && d.views[5].depth != NULL);
+    CHECK(d.views[5].depth[1] == 3.0f && d.views[5].depth[0] == 0.0f);
+    CHECK_MSG(lc.warnings == 1 && strstr(lc.last, "006.png"), "%d warnings, last '%s'", lc.warnings, lc.last);
+    /* downscaled like the images: a block mean of the valid samples */
+    sp_train_data d2;
+    CHECK_OK(sp_train_data_load(&d2, cap, NULL, 2, 8, &err), &err);
+    CHECK_OK(sp_train_data_load_depth(&d2, ddir, 2, &n, NULL, &err), &err);
+    CHECK(d2.views[5].depth && d2.views[5].depth[0] == 3.0f);
+    sp_train_data_free(&d2);
+
+    /* a model folder trained with depth: train.json says so */
+    sp_device *dev = NULL;
+    CHECK_OK(sp_device_create(&dev, SP_DEVICE_CPU, 2, &err), &err);
+    sp_train_model_opts mo = sp_train_model_opts_default(30);
+    mo.colmap_dir = cap;
+    snprintf(path, sizeof path, "%s/model", dir);
+    mo.out_dir = path;
+    mo.train.depth_lambda = 0.25f;
+    mo.train.sh_degree = 0;
+    sp_train_result res;
+    CHECK_OK(sp_train_model(dev, &mo, &res, NULL, &err), &err);
+    CHECK(res.depth_eval_pixels > 0);
+    char jp[1300];
+    snprintf(jp, sizeof jp, "%s/train.json", path);
+    cJSON *j = NULL;
+    CHECK_OK(sp_json_read_file(jp, &j, &err), &err);
+    cJSON *st = cJSON_GetObjectItem(j, "settings");
+    CHECK(st && cJSON_GetObjectItem(st, "depth_lambda") &&
+          fabs(cJSON_GetObjectItem(st, "depth_lambda")->valuedouble - 0.25) < 1e-6);
+    CHECK(cJSON_GetObjectItem(j, "depth_l1") != NULL);
+    cJSON_Delete(j);
+
+    /* a truncated file, a wrong size, a NaN: errors naming the file */
+    snprintf(path, sizeof path, "%s/depth/003.npy", cap);
+    FILE *f = fopen(path, "r+b");
+    CHECK(f != NULL);
+    if (f) {
+        CHECK(ftruncate(fileno(f), 200) == 0);
+        fclose(f);
+    }
+    CHECK_FAILS(sp_train_data_load_depth(&d, ddir, 1, NULL, NULL, &err), SP_E_FORMAT, &err, "003.npy");
+    write_depth(cap, 3, IW + 1, IH, 3.0f);
+    CHECK_FAILS(sp_train_data_load_depth(&d, ddir, 1, NULL, NULL, &err), SP_E_FORMAT, &err, "003.npy");
+    CHECK(strstr(err.msg, "does not match") != NULL);
+    write_depth(cap, 3, IW, IH, NAN);
+    CHECK_FAILS(sp_train_data_load_depth(&d, ddir, 1, NULL, NULL, &err), SP_E_FORMAT, &err, "003.npy");
+    /* the model folder run fails the same way, naming the file */
+    snprintf(path, sizeof path, "%s/model2", dir);
+    mo.out_dir = path;
+    CHECK_FAILS(sp_train_model(dev, &mo, &res, NULL, &err), SP_E_FORMAT, &err, "003.npy");
+    CHECK(strstr(err.msg, "depth-lambda") != NULL);
+    /* without depth_lambda a bad depth file costs only the depth report */
+    mo.train.depth_lambda = 0;
+    CHECK_OK(sp_train_model(dev, &mo, &res, NULL, &err), &err);
+    CHECK(res.depth_eval_pixels == 0);
+    sp_device_free(dev);
+    sp_train_data_free(&d);
+}
+
 /* Feature targets that turn NaN on the 31st call: the loop must stop at once. */
 typedef struct {
     int calls;
@@ -520,6 +624,7 @@ int main(void)
     RUN(test_train_reaches_psnr_floor);
     RUN(test_train_from_foreign_ply);
     RUN(test_bad_captures);
+    RUN(test_depth_files);
     RUN(test_nan_guard_and_resume);
     RUN(test_feature_pass_frozen_geometry);
     RUN(test_feature_mse_is_held_out);

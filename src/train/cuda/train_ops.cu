@@ -260,6 +260,70 @@ static int feature_mse(sp_device *dev, const float *pred, int pred_stride, int o
     return 0;
 }
 
+/* Depth loss (train_kernels.h): |depth / alpha - t| where t > 0 and alpha >= SP_DEPTH_MIN_ALPHA,
+ * |depth - t alpha| / SP_DEPTH_MIN_ALPHA below it; sums of the terms and the pixel count in
+ * double as the CPU's per-row sums. */
+__global__ void k_depth_loss(const float *depth, const float *alpha, const float *target,
+                             size_t npix, float scale, float *v_depth, float *v_alpha, double *sums)
+{
+    size_t p = (size_t)blockIdx.x * TPB + threadIdx.x;
+    double s = 0, c = 0;
+    if (p < npix) {
+        const float inv_floor = 1.0f / SP_DEPTH_MIN_ALPHA;
+        float t = target[p], a = alpha[p], vd = 0.0f, va = 0.0f;
+        if (t > 0.0f) {
+            float S = depth[p];
+            if (a >= SP_DEPTH_MIN_ALPHA) {
+                float d = S / a, r = d - t;
+                float g = r > 0.0f ? scale : (r < 0.0f ? -scale : 0.0f);
+                s = fabs((double)r);
+                vd = g / a;
+                va = -g * d / a;
+            } else {
+                float r = S - t * a;
+                float g = r > 0.0f ? scale * inv_floor : (r < 0.0f ? -scale * inv_floor : 0.0f);
+                s = fabs((double)r) * inv_floor;
+                vd = g;
+                va = -g * t;
+            }
+            c = 1.0;
+        }
+        if (v_depth) {
+            v_depth[p] = vd;
+            v_alpha[p] = va;
+        }
+    }
+    block_add(s, sums + 0);
+    block_add(c, sums + 1);
+}
+
+static int depth_loss(sp_device *dev, const float *depth, const float *alpha, const float *target,
+                      int H, int W, float lambda, float *v_depth, float *v_alpha, double stats[3],
+                      sp_error *err)
+{
+    cudaStream_t st = sp_cuda_stream(dev);
+    if (H < 1 || W < 1) return sp_error_set(err, SP_E_ARG, "depth loss: bad size %dx%d", W, H);
+    if (!depth || !alpha || !target || !v_depth != !v_alpha)
+        return sp_error_set(err, SP_E_ARG, "depth loss: NULL buffer (v_depth and v_alpha go together)");
+    size_t npix = (size_t)H * W;
+    double *sums = NULL;
+    CK(cudaMallocAsync((void **)&sums, 2 * sizeof(double), st), "allocating the depth loss sums");
+    cudaMemsetAsync(sums, 0, 2 * sizeof(double), st);
+    k_depth_loss<<<nblk(npix), TPB, 0, st>>>(depth, alpha, target, npix, (float)(lambda / (double)npix),
+                                             v_depth, v_alpha, sums);
+    cudaError_t e = cudaGetLastError();
+    double h[2] = {0, 0};
+    if (e == cudaSuccess) e = cudaMemcpyAsync(h, sums, sizeof(h), cudaMemcpyDeviceToHost, st);
+    cudaFreeAsync(sums, st);
+    if (e == cudaSuccess) e = cudaStreamSynchronize(st);
+    if (e != cudaSuccess)
+        return sp_error_set(err, SP_E_DEVICE, "CUDA depth loss: %s", cudaGetErrorString(e));
+    stats[0] = lambda * h[0] / (double)npix;
+    stats[1] = h[1] > 0 ? h[0] / h[1] : 0;
+    stats[2] = h[1];
+    return 0;
+}
+
 __global__ void k_adam(float *param, const float *grad, float *m, float *v, size_t n, float lr,
                        float b1, float b2, float eps, float c1, float c2)
 {
@@ -366,7 +430,8 @@ static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad,
     return 0;
 }
 
-static const tr_kernels cuda_kernels = {rgb_loss,           feature_mse,  adam_step,
-                                        densify_accumulate, copy_columns, any_nonfinite};
+static const tr_kernels cuda_kernels = {rgb_loss,     feature_mse,        depth_loss,
+                                        adam_step,    densify_accumulate, copy_columns,
+                                        any_nonfinite};
 
 extern "C" const tr_kernels *tr_cuda_kernels(void) { return &cuda_kernels; }
