@@ -7,7 +7,7 @@
 #
 #   scripts/eval_house.sh [OUT]        (default OUT = build/eval-house)
 # Environment: BUILD (build dir, default build), VIEWS (150), SIZE (640x480), STEPS (train steps,
-# 3000), DOWNSCALE (train downscale, 2), DEVICE (auto|cpu|cuda), THREADS, RADIUS (match radius in
+# 3000), DEPTH_LAMBDA (depth supervision, 0.5; 0 = RGB only), DOWNSCALE (train downscale, 2), DEVICE (auto|cpu|cuda), THREADS, RADIUS (match radius in
 # metres, 0.5), WORLD / MODEL_PATH (another world, e.g. the bookstore), MODEL (use this trained
 # model folder instead of training; its splat.ply and train.json are copied into OUT/model).
 # Writes OUT/demo.json and OUT/report.md (and heatmaps/).
@@ -21,7 +21,7 @@ mkdir -p "$OUT"
 if [ -n "${MODEL:-}" ] && [ ! -f "$OUT/model/splat.ply" ]; then
   mkdir -p "$OUT/model" && cp "$MODEL/splat.ply" "$MODEL/train.json" "$OUT/model/"
 fi
-args=(demo --out "$OUT" --reuse --views "${VIEWS:-150}" --size "${SIZE:-640x480}" --steps "${STEPS:-3000}"
+args=(demo --out "$OUT" --reuse --depth-lambda "${DEPTH_LAMBDA:-0.5}" --views "${VIEWS:-150}" --size "${SIZE:-640x480}" --steps "${STEPS:-3000}"
       --downscale "${DOWNSCALE:-2}" --device "${DEVICE:-auto}" --threads "${THREADS:-0}"
       --match-radius "${RADIUS:-0.5}")
 [ -n "${WORLD:-}" ] && args+=(--world "$WORLD")
