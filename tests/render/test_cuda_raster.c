@@ -503,6 +503,14 @@ static void test_bwd_px(void)
     compare_case(72, 40, 400, 67, 1, 0);
     g_expect_bwd = "reduce-scatter";
     compare_case(40, 36, 150, 12, 0, 0);
+    /* the default (0) is two pixels per thread; 1 keeps one */
+    g_bwd_px = 0;
+    g_expect_bwd = "reduce-scatter-2px";
+    compare_case(97, 63, 600, 3, 1, 0);
+    g_bwd_px = 1;
+    g_expect_bwd = "reduce-scatter";
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(50, 70, 400, 8, 0, 1);
     g_expect_bwd = NULL;
     g_bwd_px = 0;
 }
