@@ -80,6 +80,11 @@ typedef struct sp_raster_cfg {
      * Wider chunks and the other kernels ignore it. Results agree up to summation order. Other
      * values fail with SP_E_ARG. */
     int bwd_px;
+    /* CUDA only, for tuning: pixels per thread of the forward for chunks of up to 8 channels.
+     * 0 (default) and 2: two pixels of a row per thread (128 threads per tile), so a Gaussian's
+     * shared-memory loads, row terms and loop overhead serve two pixels; 1: one pixel per thread;
+     * 4: four. The results are the same bit for bit. Other values fail with SP_E_ARG. */
+    int fwd_px;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);
@@ -157,6 +162,9 @@ typedef struct sp_raster_stages {
      * a kernel that does not fit the GPU or width falls back), set with or without cfg.profile;
      * NULL before a backward and on the CPU. */
     const char *bwd_kernel;
+    /* CUDA: pixels per thread of the last forward's widest chunk (cfg.fwd_px resolved: 1, 2 or
+     * 4); 0 on the CPU. */
+    int fwd_px;
 } sp_raster_stages;
 
 /* Fills *out for the last forward/backward (waits for them to finish). Returns 0 or SP_E_*. */

@@ -10,7 +10,7 @@
  * the backward's four colour-gradient sums (cfg.bwd_gather: product, gather, reduce-scatter,
  * tensor cores; the kernel that ran is printed) and the option's range, and the two-pixels-per-
  * thread and four-pixels-per-thread backward (cfg.bwd_px = 2, 4) with and without depth/alpha
- * gradients. Skips (77) without a GPU
+ * gradients, and the forward's (cfg.fwd_px: the same bits as one pixel per thread). Skips (77) without a GPU
  * or without the CUDA build. */
 #include "test.h"
 
@@ -126,6 +126,7 @@ static size_t count_bad(const float *a, const float *b, size_t n, double tol, co
 static int g_block_sums = 0; /* cfg.bwd_gather of compare_case's renders */
 static const char *g_expect_bwd; /* when set: the backward kernel compare_case's widest chunk must take */
 static int g_bwd_px = 0;  /* cfg.bwd_px of compare_case's renders */
+static int g_fwd_px = 0;  /* cfg.fwd_px of compare_case's renders */
 static int g_no_aux = 0;  /* 1: compare_case's backward without depth and alpha gradients */
 
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
@@ -137,6 +138,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     cfg.antialiased = aa;
     cfg.bwd_gather = g_block_sums;
     cfg.bwd_px = g_bwd_px;
+    cfg.fwd_px = g_fwd_px;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -515,6 +517,94 @@ static void test_bwd_px(void)
     g_bwd_px = 0;
 }
 
+/* Image, depth and alpha of one CUDA forward (antialiased aa), and the pixels per thread its
+ * widest chunk took. */
+static int gpu_render_px(const scene *s, const sp_camera *cam, const sp_raster_cfg *cfg, float *img,
+                         float *dep, float *alp)
+{
+    sp_error err = {0};
+    size_t npix = (size_t)cam->width * cam->height, n = s->n;
+    int D = s->D;
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_raster_in in = {n, up(s->means, n * 12, &err), up(s->quats, n * 16, &err),
+                       up(s->log_scales, n * 12, &err), up(s->opac, n * 4, &err),
+                       up(s->colors, n * D * 4, &err), D, NULL};
+    sp_raster_out out = {up(NULL, npix * D * 4, &err), up(NULL, npix * 4, &err),
+                         up(NULL, npix * 4, &err), NULL};
+    CHECK_OK(sp_raster_forward(rg, cam, cfg, &in, &out, &err), &err);
+    CHECK_OK(down(img, out.image, npix * D * 4, &err), &err);
+    CHECK_OK(down(dep, out.depth, npix * 4, &err), &err);
+    CHECK_OK(down(alp, out.alpha, npix * 4, &err), &err);
+    sp_raster_stages st;
+    CHECK_OK(sp_raster_last_stages(rg, &st, &err), &err);
+    const void *all[] = {in.means, in.quats, in.log_scales, in.opacity_logits, in.colors, out.image,
+                         out.depth, out.alpha};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) dfree(all[i]);
+    sp_raster_free(rg);
+    return st.fwd_px;
+}
+
+/* Several pixels per thread in the forward (cfg.fwd_px = 2, 4; 0 is 2) give one pixel per
+ * thread's bits in image, depth and alpha (97x63 and 50x70 leave tiles with only the first of a
+ * thread's pixels inside; 320x240 x 20000 saturates pixels, so the early stop is exercised);
+ * chunks wider than 8 take one pixel whatever the option; the per-pixel state backward reads
+ * (final transmittance, list end) is checked through the backward against the CPU at 1 and 4;
+ * values other than 0, 1, 2, 4 are refused. */
+static void test_fwd_px(void)
+{
+    static const struct { int W, H, n, D, aa; } cases[] = {
+        {97, 63, 600, 3, 0}, {64, 48, 300, 1, 1}, {50, 70, 400, 4, 0}, {80, 64, 500, 8, 1},
+        {320, 240, 20000, 3, 0}, {40, 36, 150, 12, 0}, {72, 40, 400, 35, 0}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sp_camera cam = make_cam(cases[k].W, cases[k].H);
+        scene s = make_scene((size_t)cases[k].n, cases[k].D, &cam);
+        size_t npix = (size_t)cam.width * cam.height, ni = npix * cases[k].D;
+        float *a = malloc(ni * 4), *ad = malloc(npix * 4), *aa = malloc(npix * 4);
+        float *b = malloc(ni * 4), *bd = malloc(npix * 4), *ba = malloc(npix * 4);
+        sp_raster_cfg cfg = sp_raster_cfg_default();
+        cfg.antialiased = cases[k].aa;
+        cfg.fwd_px = 1;
+        CHECK(gpu_render_px(&s, &cam, &cfg, a, ad, aa) == 1);
+        static const int pxs[] = {2, 4, 0};
+        for (int q = 0; q < 3; q++) {
+            cfg.fwd_px = pxs[q];
+            const int took = gpu_render_px(&s, &cam, &cfg, b, bd, ba);
+            const int want = cases[k].D > 8 ? 1 : pxs[q] ? pxs[q] : 2;
+            CHECK_MSG(took == want, "%dx%d D=%d fwd_px %d took %d pixels per thread, not %d",
+                      cases[k].W, cases[k].H, cases[k].D, pxs[q], took, want);
+            CHECK_MSG(!memcmp(a, b, ni * 4) && !memcmp(ad, bd, npix * 4) && !memcmp(aa, ba, npix * 4),
+                      "%dx%d D=%d: fwd_px %d differs from one pixel per thread", cases[k].W,
+                      cases[k].H, cases[k].D, pxs[q]);
+        }
+        fprintf(stderr, "  fwd_px %dx%d n=%d D=%d aa=%d: 2, 4 and the default match 1 bit for bit\n",
+                cases[k].W, cases[k].H, cases[k].n, cases[k].D, cases[k].aa);
+        free(a), free(ad), free(aa), free(b), free(bd), free(ba);
+        scene_free(&s);
+    }
+    g_fwd_px = 1;
+    compare_case(97, 63, 600, 3, 1, 0);
+    g_fwd_px = 4;
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(50, 70, 400, 8, 0, 1);
+    g_fwd_px = 0;
+
+    sp_error err = {0};
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_camera cam = make_cam(32, 32);
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    float dummy = 0;
+    sp_raster_in in = {0};
+    in.D = 3;
+    sp_raster_out out = {&dummy, NULL, NULL, NULL};
+    cfg.fwd_px = 3;
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fwd_px 3");
+    cfg.fwd_px = 8;
+    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fwd_px 8");
+    sp_raster_free(rg);
+}
+
 /* bwd_px other than 0, 1, 2, 4 is refused. */
 static void test_bwd_px_range(void)
 {
@@ -752,6 +842,7 @@ int main(void)
     RUN(test_bwd_gather_range);
     RUN(test_bwd_px);
     RUN(test_bwd_px_range);
+    RUN(test_fwd_px);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);

@@ -77,6 +77,7 @@ struct sp_cuda_raster {
     cudaEvent_t ev[SP_EV_COUNT];
     int ev_made, profiling, prof_fwd, prof_bwd;
     const char *bwd_kernel; /* the last backward's widest chunk's colour-sum kernel (a literal) */
+    int fwd_px;             /* the last forward's pixels per thread in its widest chunk */
 };
 typedef struct sp_cuda_raster sp_cuda_raster;
 
@@ -105,13 +106,15 @@ int sp_cuda_project(sp_cuda_raster *r, const sp_cuda_view *v, const sp_raster_cf
 /* Points v->proj at the raster's projection scratch, for `count` Gaussians (a batch: views x n). */
 int sp_cuda_reserve_proj(sp_cuda_raster *r, size_t count, sp_cuda_proj *proj, sp_error *err);
 int sp_cuda_bin_and_sort(sp_cuda_raster *r, sp_cuda_view *v, size_t n, sp_error *err);
+/* Pixels per thread of the forward's narrow chunks (cfg.fwd_px; 0 = the default, 2). */
+int sp_cuda_fwd_px(const sp_raster_cfg *cfg);
 int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
-                          int max_ch, int aux, sp_error *err);
+                          int max_ch, int px, int aux, sp_error *err);
 /* A batch's views composited in one launch (their passes share colours, D and background);
  * per-pixel state for backward is not written. */
 int sp_cuda_rasterize_fwd_views(sp_cuda_raster *r, const sp_cuda_view *const *views,
-                                const sp_cuda_pass *passes, size_t nv, int max_ch, int aux,
-                                sp_error *err);
+                                const sp_cuda_pass *passes, size_t nv, int max_ch, int px,
+                                int aux, sp_error *err);
 /* Uploads a HOST background of D floats into the raster's scratch; *out NULL when bg is NULL. */
 int sp_cuda_upload_background(sp_cuda_raster *r, const float *bg, int D, float **out, sp_error *err);
 int sp_cuda_rasterize_surface(sp_cuda_raster *r, const sp_cuda_view *v, float surface_alpha,

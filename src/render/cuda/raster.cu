@@ -38,6 +38,7 @@ static int cu_stages(void *state, sp_raster_stages *o, sp_error *err)
 {
     sp_cuda_raster *r = (sp_cuda_raster *)state;
     o->bwd_kernel = r->bwd_kernel;
+    o->fwd_px = r->fwd_px;
     if (!r->prof_fwd) return 0;
     SP_CUDA_CHECK(cudaEventSynchronize(r->ev[r->prof_bwd ? SP_EV_BWD_DONE : SP_EV_FWD_DONE]), err,
                   "waiting for the profiled passes");

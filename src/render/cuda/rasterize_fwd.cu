@@ -111,12 +111,129 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
     }
 }
 
-template <int CH>
-__global__ void __launch_bounds__(BLOCK)
+/* PX pixels per thread for narrow chunks (cfg.fwd_px, CH <= 8), as the backward's
+ * k_raster_bwd_px: a (16 / PX) x 16 block per tile, thread (x, y) owning pixels (x + q 16 / PX, y),
+ * q < PX, batches of 256 / PX Gaussians. A Gaussian's shared-memory loads, its row terms
+ * (sp_gm_row_terms) and the loop's overhead serve PX pixels; per pixel every operation is
+ * fwd_tile's in the same order (sp_gm_alpha_row is sp_gm_alpha_g's arithmetic), so images,
+ * depth, alpha, the final transmittance and the list ends are the same bit for bit (tested). */
+template <int CH, int PX>
+__device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
+                                            const float *__restrict__ colors, int D, int c0,
+                                            const float *__restrict__ bg, bool aux)
+{
+    constexpr int NT = BLOCK / PX;        /* threads, and Gaussians per batch */
+    constexpr int BX = SP_TILE_SIZE / PX; /* threads per tile row */
+    extern __shared__ float4 smem_f4[];
+    float4 *s_conic = smem_f4;                  /* [NT] */
+    float2 *s_xy = (float2 *)(s_conic + NT);    /* [NT] */
+    float *s_z = (float *)(s_xy + NT);          /* [NT] */
+    float *s_cut = s_z + NT;                    /* [NT] */
+    int *s_id = (int *)(s_cut + NT);            /* [NT] */
+    float *s_col = (float *)(s_id + NT);        /* [NT][CH] */
+
+    const int tid = threadIdx.y * BX + threadIdx.x;
+    const int py_i = ty * SP_TILE_SIZE + threadIdx.y;
+    const float py = py_i + 0.5f;
+    const int2 range = v.ranges[ty * v.tiles_x + tx];
+
+    float px[PX], acc[PX][CH], acc_z[PX], T[PX];
+    int last[PX];
+    bool done[PX], all_done = true;
+#pragma unroll
+    for (int q = 0; q < PX; q++) {
+        const int px_i = tx * SP_TILE_SIZE + threadIdx.x + q * BX;
+        px[q] = px_i + 0.5f;
+        done[q] = !(px_i < v.W && py_i < v.H);
+        all_done = all_done && done[q];
+#pragma unroll
+        for (int c = 0; c < CH; c++) acc[q][c] = 0.f;
+        acc_z[q] = 0.f, T[q] = 1.f, last[q] = range.x;
+    }
+
+    for (int b0 = range.x; b0 < range.y; b0 += NT) {
+        if (__syncthreads_count(all_done) == NT) break;
+        const int cnt = min(NT, range.y - b0);
+        if (tid < cnt) {
+            int g = (int)v.ids[b0 + tid];
+            s_id[tid] = g;
+            s_xy[tid] = v.means2d[g];
+            const float4 co = v.conic_op[g];
+            s_conic[tid] = co;
+            s_cut[tid] = sp_cu_sigma_cut(co.w);
+            s_z[tid] = v.depths[g];
+        }
+        __syncthreads();
+        for (int k = tid; k < cnt * CH; k += NT) {
+            int j = k / CH, c = k - j * CH;
+            s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
+        }
+        __syncthreads();
+        for (int j = 0; j < cnt && !all_done; j++) {
+            const float4 co = s_conic[j];
+            const float2 xy = s_xy[j];
+            const float cut = s_cut[j];
+            float by, hy;
+            const float con[3] = {co.x, co.y, co.z};
+            sp_gm_row_terms(con, py - xy.y, &by, &hy);
+            const float half_a = 0.5f * co.x;
+            all_done = true;
+#pragma unroll
+            for (int q = 0; q < PX; q++) {
+                if (!done[q]) {
+                    float vis;
+                    const float alpha = sp_gm_alpha_row(half_a, by, hy, co.w, cut, px[q] - xy.x, &vis);
+                    if (alpha != 0.f) {
+                        const float next_T = T[q] * (1.f - alpha);
+                        if (next_T < SP_TRANSMITTANCE_MIN) {
+                            done[q] = true;
+                        } else {
+                            const float w = alpha * T[q];
+                            const float *col = s_col + j * CH;
+#pragma unroll
+                            for (int c = 0; c < CH; c++) acc[q][c] += col[c] * w;
+                            acc_z[q] += s_z[j] * w;
+                            T[q] = next_T;
+                            last[q] = b0 + j + 1;
+                        }
+                    }
+                }
+                all_done = all_done && done[q];
+            }
+        }
+    }
+#pragma unroll
+    for (int q = 0; q < PX; q++) {
+        const int px_i = tx * SP_TILE_SIZE + threadIdx.x + q * BX;
+        if (!(px_i < v.W && py_i < v.H)) continue;
+        const size_t pix = (size_t)py_i * v.W + px_i;
+#pragma unroll
+        for (int c = 0; c < CH; c++)
+            if (c0 + c < D) v.image[pix * D + c0 + c] = acc[q][c] + T[q] * (bg ? bg[c0 + c] : 0.f);
+        if (aux) {
+            if (v.t_final) v.t_final[pix] = T[q], v.last_idx[pix] = last[q];
+            if (v.depth_out) v.depth_out[pix] = acc_z[q];
+            if (v.alpha_out) v.alpha_out[pix] = 1.f - T[q];
+        }
+    }
+}
+
+/* One tile with PX pixels per thread (1: fwd_tile). */
+template <int CH, int PX>
+__device__ __forceinline__ void fwd_tile_as(const fwd_view &v, int tx, int ty,
+                                            const float *__restrict__ colors, int D, int c0,
+                                            const float *__restrict__ bg, bool aux)
+{
+    if (PX == 1) fwd_tile<CH>(v, tx, ty, colors, D, c0, bg, aux);
+    else fwd_tile_px<CH, PX>(v, tx, ty, colors, D, c0, bg, aux);
+}
+
+template <int CH, int PX>
+__global__ void __launch_bounds__(BLOCK / PX)
 k_raster_fwd(fwd_view v, const float *__restrict__ colors, int D, int c_base,
              const float *__restrict__ bg, int aux)
 {
-    fwd_tile<CH>(v, blockIdx.x, blockIdx.y, colors, D, c_base + blockIdx.z * CH, bg,
+    fwd_tile_as<CH, PX>(v, blockIdx.x, blockIdx.y, colors, D, c_base + blockIdx.z * CH, bg,
                  aux && blockIdx.z == 0);
 }
 
@@ -124,8 +241,8 @@ k_raster_fwd(fwd_view v, const float *__restrict__ colors, int D, int c_base,
  * view i's first), so the small grids of small views fill the GPU together instead of one
  * after another (a 320x240 view is 300 blocks: about one wave of an H200, its time that of its
  * slowest tile). */
-template <int CH>
-__global__ void __launch_bounds__(BLOCK)
+template <int CH, int PX>
+__global__ void __launch_bounds__(BLOCK / PX)
 k_raster_fwd_views(const fwd_view *__restrict__ views, const int *__restrict__ tile_base, int nv,
                    const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
                    int aux)
@@ -139,7 +256,7 @@ k_raster_fwd_views(const fwd_view *__restrict__ views, const int *__restrict__ t
     }
     const fwd_view v = views[lo];
     const int local = t - tile_base[lo];
-    fwd_tile<CH>(v, local % v.tiles_x, local / v.tiles_x, colors, D, c_base + blockIdx.z * CH, bg,
+    fwd_tile_as<CH, PX>(v, local % v.tiles_x, local / v.tiles_x, colors, D, c_base + blockIdx.z * CH, bg,
                  aux && blockIdx.z == 0);
 }
 
@@ -151,10 +268,10 @@ static fwd_view fwd_view_of(const sp_cuda_view *v, const sp_cuda_pass *p, int st
     return f;
 }
 
-static size_t fwd_smem(int ch)
+static size_t fwd_smem(int ch, int px)
 {
-    return (size_t)BLOCK * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
-                            sizeof(float) * ch);
+    return (size_t)(BLOCK / px) * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) +
+                                   sizeof(int) + sizeof(float) * ch);
 }
 
 /* One launch of width CH: a single view (views NULL: v) or a batch of nv views (views and
@@ -165,42 +282,49 @@ typedef struct fwd_launch {
     const fwd_view *views;
     const int *tile_base;
     int nv, total_tiles;
+    int px; /* pixels per thread: 1, 2 or 4 (fwd_px_of) */
 } fwd_launch;
 
-template <int CH>
+template <int CH, int PX>
 static int launch_fwd(const sp_cuda_raster *r, const fwd_launch *L, int c_base, int n_chunks,
                       int aux, sp_error *err)
 {
-    size_t smem = fwd_smem(CH);
+    size_t smem = fwd_smem(CH, PX);
     const sp_cuda_pass *p = L->p;
-    dim3 block(SP_TILE_SIZE, SP_TILE_SIZE, 1);
+    dim3 block(SP_TILE_SIZE / PX, SP_TILE_SIZE, 1);
     if (L->views) {
-        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd_views<CH>,
+        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd_views<CH, PX>,
                                            cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem),
                       err, "forward shared memory");
         dim3 grid(L->total_tiles, 1, n_chunks);
-        k_raster_fwd_views<CH><<<grid, block, smem, r->stream>>>(L->views, L->tile_base, L->nv,
+        k_raster_fwd_views<CH, PX><<<grid, block, smem, r->stream>>>(L->views, L->tile_base, L->nv,
                                                                  p->colors, p->D, c_base,
                                                                  p->bg_dev, aux);
     } else {
-        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd<CH>,
+        SP_CUDA_CHECK(cudaFuncSetAttribute(k_raster_fwd<CH, PX>,
                                            cudaFuncAttributeMaxDynamicSharedMemorySize, (int)smem),
                       err, "forward shared memory");
         const sp_cuda_view *v = L->v;
         dim3 grid(v->tiles_x, v->tiles_y, n_chunks);
-        k_raster_fwd<CH><<<grid, block, smem, r->stream>>>(fwd_view_of(v, p, 1), p->colors, p->D,
+        k_raster_fwd<CH, PX><<<grid, block, smem, r->stream>>>(fwd_view_of(v, p, 1), p->colors, p->D,
                                                            c_base, p->bg_dev, aux);
     }
     SP_CUDA_LAUNCHED(err, "forward rasterization");
     return 0;
 }
 
-/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS). */
+/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS) and L->px pixels
+ * per thread (several only where ch <= 8: wider chunks take one). */
 static int dispatch_fwd(int ch, const sp_cuda_raster *r, const fwd_launch *L, int c_base,
                         int n_chunks, int aux, sp_error *err)
 {
+    const int px = ch <= 8 ? L->px : 1;
     switch (ch) {
-#define SP_WIDTH_CASE(w) case w: return launch_fwd<w>(r, L, c_base, n_chunks, aux, err);
+#define SP_WIDTH_CASE(w)                                                                          \
+    case w:                                                                                       \
+        return px == 2   ? launch_fwd<w, (w <= 8 ? 2 : 1)>(r, L, c_base, n_chunks, aux, err)     \
+               : px == 4 ? launch_fwd<w, (w <= 8 ? 4 : 1)>(r, L, c_base, n_chunks, aux, err)     \
+                         : launch_fwd<w, 1>(r, L, c_base, n_chunks, aux, err);
     SP_CHANNEL_WIDTHS(SP_WIDTH_CASE)
 #undef SP_WIDTH_CASE
     default: return sp_error_set(err, SP_E_ARG, "no forward kernel for chunk width %d", ch);
@@ -222,16 +346,18 @@ static int rasterize_chunks(sp_cuda_raster *r, const fwd_launch *L, int max_ch, 
     return 0;
 }
 
+int sp_cuda_fwd_px(const sp_raster_cfg *cfg) { return cfg->fwd_px == 0 ? 2 : cfg->fwd_px; }
+
 int sp_cuda_rasterize_fwd(sp_cuda_raster *r, const sp_cuda_view *v, const sp_cuda_pass *p,
-                          int max_ch, int aux, sp_error *err)
+                          int max_ch, int px, int aux, sp_error *err)
 {
-    fwd_launch L = {v, p, NULL, NULL, 1, v->tiles_x * v->tiles_y};
+    fwd_launch L = {v, p, NULL, NULL, 1, v->tiles_x * v->tiles_y, px};
     return rasterize_chunks(r, &L, max_ch, aux, err);
 }
 
 int sp_cuda_rasterize_fwd_views(sp_cuda_raster *r, const sp_cuda_view *const *views,
-                                const sp_cuda_pass *passes, size_t nv, int max_ch, int aux,
-                                sp_error *err)
+                                const sp_cuda_pass *passes, size_t nv, int max_ch, int px,
+                                int aux, sp_error *err)
 {
     if (nv == 0) return 0;
     size_t vb = sizeof(fwd_view) * nv, bytes = vb + sizeof(int) * nv;
@@ -254,7 +380,7 @@ int sp_cuda_rasterize_fwd_views(sp_cuda_raster *r, const sp_cuda_view *const *vi
     if (rc) return rc;
     /* every view's pass shares colours, D and background (the caller checked) */
     fwd_launch L = {views[0], &passes[0], (const fwd_view *)r->s_batch.ptr,
-                    (const int *)((char *)r->s_batch.ptr + vb), (int)nv, (int)total};
+                    (const int *)((char *)r->s_batch.ptr + vb), (int)nv, (int)total, px};
     return rasterize_chunks(r, &L, max_ch, aux, err);
 }
 
@@ -307,7 +433,9 @@ int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cf
     sp_cu_mark(r, SP_EV_SORTED);
     sp_cuda_pass pass = {in->colors, in->D, r->bg_dev, out->image, out->depth, out->alpha};
     int max_ch = cfg->chunk_fwd ? cfg->chunk_fwd : SP_CHANNEL_CHUNK_MAX;
-    if ((rc = sp_cuda_rasterize_fwd(r, v, &pass, max_ch, 1, err))) return rc;
+    const int widest = in->D >= max_ch ? max_ch : sp_channel_width(in->D, max_ch);
+    r->fwd_px = widest <= 8 ? sp_cuda_fwd_px(cfg) : 1;
+    if ((rc = sp_cuda_rasterize_fwd(r, v, &pass, max_ch, sp_cuda_fwd_px(cfg), 1, err))) return rc;
     sp_cu_mark(r, SP_EV_FWD_DONE);
     r->prof_fwd = r->profiling;
     if (out->surface_depth &&

@@ -166,7 +166,7 @@ static int same_pass(const sp_raster_view *views, size_t nv, int k)
 
 /* Pass k of every view in one launch (same_pass holds). */
 static int composite_pass_batched(sp_cuda_raster *r, const sp_raster_view *views, batch_view *bv,
-                                  size_t nv, int k, int max_ch, sp_error *err)
+                                  size_t nv, int k, int max_ch, int px, sp_error *err)
 {
     const sp_raster_pass *p0 = &views[0].pass[k];
     float *bg = NULL;
@@ -180,7 +180,7 @@ static int composite_pass_batched(sp_cuda_raster *r, const sp_raster_view *views
         ps[i] = (sp_cuda_pass){p0->colors, p0->D, bg, w->pass[k].image, k ? NULL : w->depth,
                                k ? NULL : w->alpha};
     }
-    if (!rc) rc = sp_cuda_rasterize_fwd_views(r, vs, ps, nv, max_ch, k == 0, err);
+    if (!rc) rc = sp_cuda_rasterize_fwd_views(r, vs, ps, nv, max_ch, px, k == 0, err);
     free(vs), free(ps);
     return rc;
 }
@@ -194,7 +194,7 @@ static int composite_views(sp_cuda_raster *r, const sp_raster_cfg *cfg, const sp
     for (size_t i = 0; batched && i < nv; i++) batched = views[i].n_pass == views[0].n_pass;
     if (batched)
         for (int k = 0; k < views[0].n_pass; k++) {
-            int rc = composite_pass_batched(r, views, bv, nv, k, max_ch, err);
+            int rc = composite_pass_batched(r, views, bv, nv, k, max_ch, sp_cuda_fwd_px(cfg), err);
             if (rc) return rc;
         }
     for (size_t i = 0; i < nv; i++) {
@@ -207,7 +207,7 @@ static int composite_views(sp_cuda_raster *r, const sp_raster_cfg *cfg, const sp
             int rc = sp_cuda_upload_background(r, p->background, p->D, &bg, err);
             /* depth, alpha and the per-pixel state come from the first pass */
             sp_cuda_pass cp = {p->colors, p->D, bg, p->image, k ? NULL : w->depth, k ? NULL : w->alpha};
-            if (!rc) rc = sp_cuda_rasterize_fwd(r, &bv[i].v, &cp, max_ch, k == 0, err);
+            if (!rc) rc = sp_cuda_rasterize_fwd(r, &bv[i].v, &cp, max_ch, sp_cuda_fwd_px(cfg), k == 0, err);
             if (rc) return sp_error_prefix(err, "view %zu: ", i);
         }
         if (w->surface_depth) {
