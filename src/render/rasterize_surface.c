@@ -3,7 +3,10 @@
  * lists with the forward's own alpha rule (cpu_alpha4), row ranges and stopping rule, so it keeps
  * and skips exactly what the forward composites (and what the CUDA pass does, bit for bit): the
  * transmittance after each contribution is the forward's T * (1 - alpha), and "reaches" is
- * T <= 1 - threshold with that float T. A separate pass, so the forward's hot loop is unchanged. */
+ * T <= 1 - threshold with that float T. A separate pass, so the forward's hot loop is unchanged.
+ * Pixels end early here (at alpha 0.5, not 1 - 1e-4), so a tile's list is walked long after most
+ * of its pixels are done: a bit per done pixel and row lets a Gaussian skip done rows and done
+ * groups of four without computing their alpha (the same results: those lanes were masked). */
 #include "render/gauss_math.h"
 #include "render/render_internal.h"
 
@@ -32,6 +35,8 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
     const cpu_v4i lane = {0, 1, 2, 3};
     const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f), v_stop = cpu_v4_splat(c->t_stop);
     int ndone = 0;
+    uint32_t row_done[SP_TILE_SIZE] = {0}; /* bit px - tx0: pixel done */
+    const uint32_t row_full = (2u << (tx1 - tx0)) - 1u;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
         const cpu_gauss *rec = r->tile_rec + j;
         const cpu_rect bx = cpu_box_in_tile(rec, tr);
@@ -41,14 +46,20 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
         const cpu_v4f v_half_a = cpu_v4_splat(0.5f * con[0]), v_opac = cpu_v4_splat(rec->op);
         const cpu_v4f v_cut = cpu_v4_splat(rec->cut), vz = cpu_v4_splat(rec->z);
         for (int py = y0; py <= y1; py++) {
+            if (row_done[py - ty0] == row_full) continue; /* the whole row is done */
             const float dy = (float)py + 0.5f - my;
             float by, hy;
             sp_gm_row_terms(con, dy, &by, &hy);
             const cpu_v4f v_by = cpu_v4_splat(by), v_hy = cpu_v4_splat(hy);
             int rx0, rx1;
             cpu_row_range(con, rec->det_con, rec->cut, mx, dy, x0, x1, &rx0, &rx1);
+            if (rx1 < rx0) continue;
+            uint32_t *rd = &row_done[py - ty0];
+            const uint32_t span = (2u << (rx1 - tx0)) - (1u << (rx0 - tx0));
+            if ((*rd & span) == span) continue; /* every pixel of the row's range is done */
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
+                if (((*rd >> (px - tx0)) & 15u) == 15u) continue; /* four done pixels */
                 cpu_v4f gv;
                 const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, cpu_dx4(px, mx), &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
@@ -60,8 +71,10 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
                 const cpu_v4i stop = valid & (next_T < cpu_v4_splat(SP_TRANSMITTANCE_MIN));
                 const cpu_v4i use = valid & ~stop;
                 const cpu_v4i hit = use & (next_T <= v_stop);
-                ndone += cpu_v4_count(stop | hit);
-                store4i(done + p, dn | stop | hit);
+                const cpu_v4i ended = stop | hit;
+                ndone += cpu_v4_count(ended);
+                *rd |= cpu_v4_bits(ended) << (px - tx0);
+                store4i(done + p, dn | ended);
                 store4(surf + p, cpu_v4_select(hit, vz, load4(surf + p)));
                 store4(T + p, cpu_v4_select(use, next_T, Tv));
             }

@@ -223,11 +223,23 @@ static inline cpu_v4f cpu_alpha4(cpu_v4f half_a, cpu_v4f by, cpu_v4f hy, cpu_v4f
     return cpu_v4_select(in, a, cpu_v4_splat(0.f));
 }
 
-/* Number of set lanes of a mask. */
+/* The set lanes of a mask as bits 0..3 (lane l: bit l). */
+static inline unsigned cpu_v4_bits(cpu_v4i m)
+{
+#if defined(__SSE__)
+    return (unsigned)__builtin_ia32_movmskps((cpu_v4f)m); /* one instruction on x86 */
+#else
+    return (m[0] ? 1u : 0u) | (m[1] ? 2u : 0u) | (m[2] ? 4u : 0u) | (m[3] ? 8u : 0u);
+#endif
+}
+
+/* Number of set lanes of a mask (a table: baseline x86-64 has no popcount instruction, and
+ * __builtin_popcount became a library call in the hot loops). */
 static inline int cpu_v4_count(cpu_v4i m)
 {
 #if defined(__SSE__)
-    return __builtin_popcount((unsigned)__builtin_ia32_movmskps((cpu_v4f)m));
+    static const unsigned char nbits[16] = {0, 1, 1, 2, 1, 2, 2, 3, 1, 2, 2, 3, 2, 3, 3, 4};
+    return nbits[cpu_v4_bits(m)];
 #else
     return -(m[0] + m[1] + m[2] + m[3]);
 #endif

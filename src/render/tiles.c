@@ -52,20 +52,73 @@ static int tile_kept(const cpu_raster *r, size_t g, float cut, int x, int y)
                           y1 < b[3] ? y1 : b[3]);
 }
 
-/* Number of kept tiles of Gaussian g (its box's tiles that pass tile_kept), each also counted
- * into tile_count[tile + 1] (per-tile counts do not depend on the order Gaussians come in). */
-static size_t count_tiles(const cpu_raster *r, size_t g, uint32_t *tile_count)
+/* The binning in parallel over chunks of the depth-sorted list: each chunk counts its
+ * Gaussians' kept tiles (per Gaussian and per tile), the counts are scanned serially into every
+ * Gaussian's first slot, every tile's start and every chunk's cursor into each tile (chunk c's
+ * pairs of a tile after those of the chunks before it), then each chunk deals its pairs. The
+ * tile lists and slots are the serial walk's exactly, whatever the thread count. */
+#define BIN_CHUNK 2048             /* Gaussians per chunk, at least */
+#define BIN_MAX_CHUNKS 64
+#define BIN_MAX_COUNTS (1u << 22)  /* chunk x tile counters, at most */
+
+typedef struct bin_job {
+    cpu_raster *r;
+    const uint32_t *order; /* [m] visible Gaussians front to back */
+    size_t m, chunk;
+    size_t *pair_off;      /* [n + 1]: kept-tile counts, then first slots */
+    uint32_t *ccount;      /* [chunks][tiles]: counts, then cursors */
+} bin_job;
+
+static void bin_count_chunk(void *ctx, long c, int thread_id)
 {
-    const int32_t *b = r->pix_box + 4 * g;
-    float cut = sp_gm_sigma_cut(r->opacity[g]);
-    size_t cnt = 0;
-    for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
-        for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++)
-            if (tile_kept(r, g, cut, x, y)) {
-                cnt++;
-                tile_count[(size_t)y * r->tiles_x + x + 1]++;
+    (void)thread_id;
+    const bin_job *b = ctx;
+    const cpu_raster *r = b->r;
+    uint32_t *cnt = b->ccount + (size_t)c * r->tiles_x * r->tiles_y;
+    size_t k1 = (size_t)(c + 1) * b->chunk < b->m ? (size_t)(c + 1) * b->chunk : b->m;
+    for (size_t k = (size_t)c * b->chunk; k < k1; k++) {
+        const uint32_t g = b->order[k];
+        const int32_t *bx = r->pix_box + 4 * g;
+        const float cut = sp_gm_sigma_cut(r->opacity[g]);
+        size_t kept = 0;
+        for (int y = bx[2] / SP_TILE_SIZE; y <= bx[3] / SP_TILE_SIZE; y++)
+            for (int x = bx[0] / SP_TILE_SIZE; x <= bx[1] / SP_TILE_SIZE; x++)
+                if (tile_kept(r, g, cut, x, y)) kept++, cnt[(size_t)y * r->tiles_x + x]++;
+        b->pair_off[g] = kept;
+    }
+}
+
+static void bin_deal_chunk(void *ctx, long c, int thread_id)
+{
+    (void)thread_id;
+    const bin_job *b = ctx;
+    cpu_raster *r = b->r;
+    const int tx = r->tiles_x;
+    uint32_t *cursor = b->ccount + (size_t)c * r->tiles_x * r->tiles_y;
+    size_t k1 = (size_t)(c + 1) * b->chunk < b->m ? (size_t)(c + 1) * b->chunk : b->m;
+    for (size_t k = (size_t)c * b->chunk; k < k1; k++) {
+        const uint32_t g = b->order[k];
+        const int32_t *bx = r->pix_box + 4 * g;
+        uint32_t slot = (uint32_t)b->pair_off[g];
+        cpu_gauss rec;
+        rec.mx = r->mean2d[2 * g];
+        rec.my = r->mean2d[2 * g + 1];
+        for (int i = 0; i < 3; i++) rec.con[i] = r->conic[3 * g + i];
+        rec.op = r->opacity[g];
+        rec.z = r->depth[g];
+        rec.det_con = r->conic_det[g];
+        rec.cut = sp_gm_sigma_cut(rec.op);
+        rec.g = (int32_t)g;
+        for (int i = 0; i < 4; i++) rec.box[i] = bx[i];
+        rec.pad[0] = rec.pad[1] = 0.f;
+        for (int y = bx[2] / SP_TILE_SIZE; y <= bx[3] / SP_TILE_SIZE; y++)
+            for (int x = bx[0] / SP_TILE_SIZE; x <= bx[1] / SP_TILE_SIZE; x++) {
+                if (!tile_kept(r, g, rec.cut, x, y)) continue;
+                uint32_t pos = cursor[(size_t)y * tx + x]++;
+                r->tile_rec[pos] = rec;
+                r->tile_slot[pos] = slot++;
             }
-    return cnt;
+    }
 }
 
 int cpu_bin_tiles(cpu_raster *r, sp_error *err)
@@ -76,33 +129,52 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     r->tiles_x = tx;
     r->tiles_y = ty;
 
-    /* sort scratch: 4 x m uint32 + tile cursors; pair_off lives here too ([n+1] size_t) */
-    size_t sort_bytes = 4 * n * sizeof(uint32_t) + (tiles + 1) * sizeof(uint32_t) +
+    /* chunks: enough for the pool's threads to share, few enough to keep the counters small */
+    sp_pool *pool = r->dev->pool;
+    size_t max_chunks = (size_t)4 * (pool ? (size_t)sp_pool_size(pool) : 1);
+    if (max_chunks > BIN_MAX_CHUNKS) max_chunks = BIN_MAX_CHUNKS;
+    if (max_chunks * tiles > BIN_MAX_COUNTS) max_chunks = BIN_MAX_COUNTS / tiles ? BIN_MAX_COUNTS / tiles : 1;
+
+    /* sort scratch: 4 x n uint32 + chunk x tile counters; pair_off lives here too ([n+1] size_t) */
+    size_t sort_bytes = 4 * n * sizeof(uint32_t) + max_chunks * tiles * sizeof(uint32_t) +
                         (n + 1) * sizeof(size_t) + 256;
     int rc = sp_scratch_reserve(r->dev, &r->sort_buf, &r->sort_cap, sort_bytes, err);
     if (rc) return rc;
     size_t *pair_off = r->sort_buf;
     uint32_t *key = (uint32_t *)(pair_off + n + 1);
     uint32_t *val = key + n, *key_tmp = val + n, *val_tmp = key_tmp + n;
-    uint32_t *cursor = val_tmp + n;
+    uint32_t *ccount = val_tmp + n;
     r->pair_off = pair_off;
 
-    /* pairs per Gaussian (index order), per tile (into cursor) and the visible list */
-    size_t m = 0, pairs = 0;
-    memset(cursor, 0, (tiles + 1) * sizeof(uint32_t));
+    /* the visible list, front to back */
+    size_t m = 0;
     for (size_t i = 0; i < n; i++) {
-        pair_off[i] = pairs;
+        pair_off[i] = 0;
         if (r->radii[i] <= 0) continue;
-        pairs += count_tiles(r, i, cursor);
         key[m] = float_key(r->depth[i]);
         val[m] = (uint32_t)i;
         m++;
+    }
+    if (m > 0) radix_sort(key, val, key_tmp, val_tmp, m);
+
+    size_t chunk = (m + max_chunks - 1) / max_chunks;
+    if (chunk < BIN_CHUNK) chunk = BIN_CHUNK;
+    size_t n_chunks = m ? (m + chunk - 1) / chunk : 0;
+    memset(ccount, 0, n_chunks * tiles * sizeof(uint32_t));
+    bin_job job = {r, val, m, chunk, pair_off, ccount};
+    sp_pool_for(pool, (long)n_chunks, bin_count_chunk, &job);
+
+    /* first slots (index order) and the pair count */
+    size_t pairs = 0;
+    for (size_t i = 0; i < n; i++) {
+        size_t c = pair_off[i];
+        pair_off[i] = pairs;
+        pairs += c;
     }
     pair_off[n] = pairs;
     if (pairs > UINT32_MAX)
         return sp_error_set(err, SP_E_ARG, "rasterizer: %zu Gaussian-tile pairs exceed 2^32", pairs);
     r->pairs = pairs;
-    if (m > 0) radix_sort(key, val, key_tmp, val_tmp, m);
 
     size_t tile_bytes = pairs * sizeof(cpu_gauss) + (tiles + 1) * sizeof(uint32_t) +
                         pairs * sizeof(uint32_t) + 64;
@@ -112,32 +184,17 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     r->tile_start = (uint32_t *)(r->tile_rec + pairs);
     r->tile_slot = r->tile_start + tiles + 1;
 
-    /* counting sort by tile (the counts came with the pair counts) */
-    memcpy(r->tile_start, cursor, (tiles + 1) * sizeof(uint32_t));
-    for (size_t t = 0; t < tiles; t++) r->tile_start[t + 1] += r->tile_start[t];
-    memcpy(cursor, r->tile_start, tiles * sizeof(uint32_t));
-    for (size_t k = 0; k < m; k++) {
-        uint32_t g = val[k];
-        const int32_t *b = r->pix_box + 4 * g;
-        uint32_t slot = (uint32_t)pair_off[g];
-        cpu_gauss rec;
-        rec.mx = r->mean2d[2 * g];
-        rec.my = r->mean2d[2 * g + 1];
-        for (int k = 0; k < 3; k++) rec.con[k] = r->conic[3 * g + k];
-        rec.op = r->opacity[g];
-        rec.z = r->depth[g];
-        rec.det_con = r->conic_det[g];
-        rec.cut = sp_gm_sigma_cut(rec.op);
-        rec.g = (int32_t)g;
-        for (int k = 0; k < 4; k++) rec.box[k] = b[k];
-        rec.pad[0] = rec.pad[1] = 0.f;
-        for (int y = b[2] / SP_TILE_SIZE; y <= b[3] / SP_TILE_SIZE; y++)
-            for (int x = b[0] / SP_TILE_SIZE; x <= b[1] / SP_TILE_SIZE; x++) {
-                if (!tile_kept(r, g, rec.cut, x, y)) continue;
-                uint32_t pos = cursor[(size_t)y * tx + x]++;
-                r->tile_rec[pos] = rec;
-                r->tile_slot[pos] = slot++;
-            }
+    /* tile starts, and each chunk's cursor into each tile */
+    uint32_t at = 0;
+    for (size_t t = 0; t < tiles; t++) {
+        r->tile_start[t] = at;
+        for (size_t c = 0; c < n_chunks; c++) {
+            uint32_t k = ccount[c * tiles + t];
+            ccount[c * tiles + t] = at;
+            at += k;
+        }
     }
+    r->tile_start[tiles] = at;
+    sp_pool_for(pool, (long)n_chunks, bin_deal_chunk, &job);
     return 0;
 }
