@@ -89,7 +89,9 @@ typedef struct sp_costmap_opts {
      * occupied_evidence, unless more than pass_veto x (1 + scans that hit it) scans saw through
      * it (a floater the cameras saw past); the splat's floor Gaussians count as floor seen */
     float footprint_sigmas;    /* footprints are evaluated out to this many std devs (3) */
-    float occupied_evidence;   /* (0.5) */
+    float occupied_evidence;   /* (0.9: against 0.5, known-cell agreement +4..+14 points and
+                                * false free down on every trained and ideal splat measured,
+                                * docs/DESIGN.md, issue 18's seventh round) */
     float pass_veto;           /* (1) */
     int veto_beside;           /* for a voxel some scan hit, a scan that saw through it but hit
                                 * one of the 8 beside it (same slice) does not count as seeing

@@ -28,7 +28,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.min_opacity = 0.15f;
     o.occupancy = SP_OCCUPANCY_FOOTPRINTS;
     o.footprint_sigmas = 3.0f;
-    o.occupied_evidence = 0.5f;
+    o.occupied_evidence = 0.9f;
     o.pass_veto = 1.0f;
     o.veto_beside = 1;
     o.lowest_needs_hit = 1;
