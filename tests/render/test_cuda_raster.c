@@ -517,6 +517,21 @@ static void test_bwd_px(void)
     g_bwd_px = 0;
 }
 
+/* A forward with cfg fails with SP_E_ARG, its message naming `what` (the option and value). */
+static void check_refused(const sp_raster_cfg *cfg, const char *what)
+{
+    sp_error err = {0};
+    sp_raster *rg = NULL;
+    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
+    sp_camera cam = make_cam(32, 32);
+    float dummy = 0;
+    sp_raster_in in = {0};
+    in.D = 3;
+    sp_raster_out out = {&dummy, NULL, NULL, NULL};
+    CHECK_FAILS(sp_raster_forward(rg, &cam, cfg, &in, &out, &err), SP_E_ARG, &err, what);
+    sp_raster_free(rg);
+}
+
 /* Image, depth and alpha of one CUDA forward (antialiased aa), and the pixels per thread its
  * widest chunk took. */
 static int gpu_render_px(const scene *s, const sp_camera *cam, const sp_raster_cfg *cfg, float *img,
@@ -589,56 +604,29 @@ static void test_fwd_px(void)
     compare_case(50, 70, 400, 8, 0, 1);
     g_fwd_px = 0;
 
-    sp_error err = {0};
-    sp_raster *rg = NULL;
-    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
-    sp_camera cam = make_cam(32, 32);
     sp_raster_cfg cfg = sp_raster_cfg_default();
-    float dummy = 0;
-    sp_raster_in in = {0};
-    in.D = 3;
-    sp_raster_out out = {&dummy, NULL, NULL, NULL};
     cfg.fwd_px = 3;
-    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fwd_px 3");
+    check_refused(&cfg, "fwd_px 3");
     cfg.fwd_px = 8;
-    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fwd_px 8");
-    sp_raster_free(rg);
+    check_refused(&cfg, "fwd_px 8");
 }
 
 /* bwd_px other than 0, 1, 2, 4 is refused. */
 static void test_bwd_px_range(void)
 {
-    sp_error err = {0};
-    sp_raster *rg = NULL;
-    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
-    sp_camera cam = make_cam(32, 32);
     sp_raster_cfg cfg = sp_raster_cfg_default();
-    float dummy = 0;
-    sp_raster_in in = {0};
-    in.D = 3;
-    sp_raster_out out = {&dummy, NULL, NULL, NULL};
     cfg.bwd_px = 3;
-    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_px 3");
+    check_refused(&cfg, "bwd_px 3");
     cfg.bwd_px = -1;
-    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_px -1");
-    sp_raster_free(rg);
+    check_refused(&cfg, "bwd_px -1");
 }
 
 /* bwd_gather outside -1..2 is refused. */
 static void test_bwd_gather_range(void)
 {
-    sp_error err = {0};
-    sp_raster *rg = NULL;
-    CHECK_OK(sp_raster_create(&rg, g_gpu, &err), &err);
-    sp_camera cam = make_cam(32, 32);
     sp_raster_cfg cfg = sp_raster_cfg_default();
     cfg.bwd_gather = 3;
-    float dummy = 0;
-    sp_raster_in in = {0};
-    in.D = 3;
-    sp_raster_out out = {&dummy, NULL, NULL, NULL};
-    CHECK_FAILS(sp_raster_forward(rg, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_gather 3");
-    sp_raster_free(rg);
+    check_refused(&cfg, "bwd_gather 3");
 }
 
 /* More than 65536 tiles: the tile sort's 32-bit keys (16-bit below). */

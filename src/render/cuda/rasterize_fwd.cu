@@ -30,6 +30,52 @@ typedef struct fwd_view {
     int32_t *last_idx; /* with t_final */
 } fwd_view;
 
+/* A tile's batch in shared memory: NT Gaussians' position, conic, opacity cut, depth, id and
+ * the chunk's CH colour values each, laid out from the dynamic shared memory. */
+typedef struct fwd_shared {
+    float4 *conic;
+    float2 *xy;
+    float *z, *cut;
+    int *id;
+    float *col; /* [NT][CH] */
+} fwd_shared;
+
+template <int NT>
+__device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
+{
+    fwd_shared s;
+    s.conic = base;
+    s.xy = (float2 *)(s.conic + NT);
+    s.z = (float *)(s.xy + NT);
+    s.cut = s.z + NT;
+    s.id = (int *)(s.cut + NT);
+    s.col = (float *)(s.id + NT);
+    return s;
+}
+
+/* Stages list entries b0 .. b0 + cnt (cnt <= NT threads: one Gaussian each, then the colours,
+ * neighbouring threads reading neighbouring channels of one Gaussian); ends on a barrier. */
+template <int CH, int NT>
+__device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s, int b0, int cnt,
+                                          int tid, const float *__restrict__ colors, int D, int c0)
+{
+    if (tid < cnt) {
+        int g = (int)v.ids[b0 + tid];
+        s.id[tid] = g;
+        s.xy[tid] = v.means2d[g];
+        const float4 co = v.conic_op[g];
+        s.conic[tid] = co;
+        s.cut[tid] = sp_cu_sigma_cut(co.w);
+        s.z[tid] = v.depths[g];
+    }
+    __syncthreads();
+    for (int k = tid; k < cnt * CH; k += NT) {
+        int j = k / CH, c = k - j * CH;
+        s.col[k] = (c0 + c < D) ? colors[(size_t)s.id[j] * D + c0 + c] : 0.f;
+    }
+    __syncthreads();
+}
+
 /* Composites tile (tx, ty) of view v, channels c0 .. c0 + CH; aux: also depth, alpha and the
  * per-pixel state for backward. */
 template <int CH>
@@ -38,12 +84,10 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
                                          const float *__restrict__ bg, bool aux)
 {
     extern __shared__ float4 smem_f4[];
-    float4 *s_conic = smem_f4;                        /* [BLOCK] */
-    float2 *s_xy = (float2 *)(s_conic + BLOCK);       /* [BLOCK] */
-    float *s_z = (float *)(s_xy + BLOCK);             /* [BLOCK] */
-    float *s_cut = s_z + BLOCK;                       /* [BLOCK] */
-    int *s_id = (int *)(s_cut + BLOCK);               /* [BLOCK] */
-    float *s_col = (float *)(s_id + BLOCK);           /* [BLOCK][CH] */
+    const fwd_shared sh = fwd_shared_at<BLOCK>(smem_f4);
+    const float4 *s_conic = sh.conic;
+    const float2 *s_xy = sh.xy;
+    const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
 
     const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
     const int px_i = tx * SP_TILE_SIZE + threadIdx.x;
@@ -62,22 +106,7 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
     for (int b0 = range.x; b0 < range.y; b0 += BLOCK) {
         if (__syncthreads_count(done) == BLOCK) break;
         const int cnt = min(BLOCK, range.y - b0);
-        if (tid < cnt) {
-            int g = (int)v.ids[b0 + tid];
-            s_id[tid] = g;
-            s_xy[tid] = v.means2d[g];
-            const float4 co = v.conic_op[g];
-            s_conic[tid] = co;
-            s_cut[tid] = sp_cu_sigma_cut(co.w);
-            s_z[tid] = v.depths[g];
-        }
-        __syncthreads();
-        /* colours: neighbouring threads read neighbouring channels of one Gaussian */
-        for (int k = tid; k < cnt * CH; k += BLOCK) {
-            int j = k / CH, c = k - j * CH;
-            s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
-        }
-        __syncthreads();
+        fwd_stage<CH, BLOCK>(v, sh, b0, cnt, tid, colors, D, c0);
         for (int j = 0; j < cnt && !done; j++) {
             const float4 co = s_conic[j];
             const float2 xy = s_xy[j];
@@ -125,12 +154,10 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     constexpr int NT = BLOCK / PX;        /* threads, and Gaussians per batch */
     constexpr int BX = SP_TILE_SIZE / PX; /* threads per tile row */
     extern __shared__ float4 smem_f4[];
-    float4 *s_conic = smem_f4;                  /* [NT] */
-    float2 *s_xy = (float2 *)(s_conic + NT);    /* [NT] */
-    float *s_z = (float *)(s_xy + NT);          /* [NT] */
-    float *s_cut = s_z + NT;                    /* [NT] */
-    int *s_id = (int *)(s_cut + NT);            /* [NT] */
-    float *s_col = (float *)(s_id + NT);        /* [NT][CH] */
+    const fwd_shared sh = fwd_shared_at<NT>(smem_f4);
+    const float4 *s_conic = sh.conic;
+    const float2 *s_xy = sh.xy;
+    const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
 
     const int tid = threadIdx.y * BX + threadIdx.x;
     const int py_i = ty * SP_TILE_SIZE + threadIdx.y;
@@ -154,21 +181,7 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     for (int b0 = range.x; b0 < range.y; b0 += NT) {
         if (__syncthreads_count(all_done) == NT) break;
         const int cnt = min(NT, range.y - b0);
-        if (tid < cnt) {
-            int g = (int)v.ids[b0 + tid];
-            s_id[tid] = g;
-            s_xy[tid] = v.means2d[g];
-            const float4 co = v.conic_op[g];
-            s_conic[tid] = co;
-            s_cut[tid] = sp_cu_sigma_cut(co.w);
-            s_z[tid] = v.depths[g];
-        }
-        __syncthreads();
-        for (int k = tid; k < cnt * CH; k += NT) {
-            int j = k / CH, c = k - j * CH;
-            s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
-        }
-        __syncthreads();
+        fwd_stage<CH, NT>(v, sh, b0, cnt, tid, colors, D, c0);
         for (int j = 0; j < cnt && !all_done; j++) {
             const float4 co = s_conic[j];
             const float2 xy = s_xy[j];
