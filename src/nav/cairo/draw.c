@@ -167,8 +167,9 @@ static void draw_grid(cairo_t *cr, const view *v)
 }
 
 /* Where an object's label goes: the first of four spots beside its box (above, below, right,
- * left) that overlaps no label already placed, else the spot overlapping them least; placed
- * records the boxes of labels drawn so far. */
+ * left) that overlaps no label already placed, else (a target's label, which is always drawn)
+ * the spot overlapping them least; another object's label that fits nowhere is left out, as
+ * map renderers drop colliding labels (its box stays). placed records the labels drawn so far. */
 typedef struct label_box {
     double x0, y0, x1, y1;
 } label_box;
@@ -179,8 +180,8 @@ static double overlap(const label_box *a, const label_box *b)
     return w > 0 && h > 0 ? w * h : 0;
 }
 
-static label_box place_label(cairo_t *cr, double a, double b, double c, double d, double size, const char *s,
-                             const label_box *placed, int n_placed)
+static int place_label(cairo_t *cr, double a, double b, double c, double d, double size, const char *s,
+                       int always, const label_box *placed, int n_placed, label_box *out)
 {
     cairo_text_extents_t e;
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
@@ -198,8 +199,10 @@ static label_box place_label(cairo_t *cr, double a, double b, double c, double d
         if (cost < best_cost) best = r, best_cost = cost;
         if (cost == 0) break;
     }
+    if (best_cost > 0 && !always) return 0;
     label(cr, best.x0 + 2, best.y1 - 3, size, s);
-    return best;
+    *out = best;
+    return 1;
 }
 
 static void draw_objects(cairo_t *cr, const view *v, const nav_map_layers *L)
@@ -226,8 +229,9 @@ static void draw_objects(cairo_t *cr, const view *v, const nav_map_layers *L)
             double a, b, c, d;
             to_px(v, L->boxes[i].min[0], L->boxes[i].max[1], &a, &b);
             to_px(v, L->boxes[i].max[0], L->boxes[i].min[1], &c, &d);
-            label_box r = place_label(cr, a, b, c, d, tgt ? 12 : 10, L->object_labels[i], placed, n_placed);
-            if (placed) placed[n_placed++] = r;
+            label_box r;
+            if (place_label(cr, a, b, c, d, tgt ? 12 : 10, L->object_labels[i], tgt, placed, n_placed, &r) && placed)
+                placed[n_placed++] = r;
         }
     free(placed);
     if (L->area) {
