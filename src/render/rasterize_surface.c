@@ -5,8 +5,8 @@
  * transmittance after each contribution is the forward's T * (1 - alpha), and "reaches" is
  * T <= 1 - threshold with that float T. A separate pass, so the forward's hot loop is unchanged.
  * Pixels end early here (at alpha 0.5, not 1 - 1e-4), so a tile's list is walked long after most
- * of its pixels are done: a bit per done pixel and row lets a Gaussian skip done rows and done
- * groups of four without computing their alpha (the same results: those lanes were masked). */
+ * of its pixels are done: a bit per done pixel and row (the only record of which are done) lets a
+ * Gaussian skip done rows and done groups of four without computing their alpha. */
 #include "render/gauss_math.h"
 #include "render/render_internal.h"
 
@@ -26,16 +26,14 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
 
     float *T = scratch;                         /* [TILE_STRIDE] */
     float *surf = T + TILE_STRIDE;              /* [TILE_STRIDE] */
-    int32_t *done = (int32_t *)(surf + TILE_STRIDE); /* [TILE_STRIDE] 0 or -1 */
     for (int p = 0; p < TILE_STRIDE; p++) T[p] = 1.f;
     memset(surf, 0, TILE_STRIDE * sizeof(float));
-    memset(done, 0, TILE_STRIDE * sizeof(int32_t));
 
     const uint32_t start = r->tile_start[tile], end = r->tile_start[tile + 1];
     const cpu_v4i lane = {0, 1, 2, 3};
     const cpu_v4f zero = cpu_v4_splat(0.f), one = cpu_v4_splat(1.f), v_stop = cpu_v4_splat(c->t_stop);
     int ndone = 0;
-    uint32_t row_done[SP_TILE_SIZE] = {0}; /* bit px - tx0: pixel done */
+    uint32_t row_done[SP_TILE_SIZE] = {0}; /* bit px - tx0 of row py - ty0: that pixel is done */
     const uint32_t row_full = (2u << (tx1 - tx0)) - 1u;
     for (uint32_t j = start; j < end && ndone < npix; j++) {
         const cpu_gauss *rec = r->tile_rec + j;
@@ -59,11 +57,12 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
             if ((*rd & span) == span) continue; /* every pixel of the row's range is done */
             for (int px = rx0; px <= rx1; px += 4) {
                 const int p = (py - ty0) * SP_TILE_SIZE + (px - tx0);
-                if (((*rd >> (px - tx0)) & 15u) == 15u) continue; /* four done pixels */
+                const unsigned done4 = (*rd >> (px - tx0)) & 15u;
+                if (done4 == 15u) continue; /* four done pixels */
                 cpu_v4f gv;
                 const cpu_v4f a = cpu_alpha4(v_half_a, v_by, v_hy, v_opac, v_cut, cpu_dx4(px, mx), &gv);
                 const cpu_v4i in_row = lane <= (cpu_v4i){rx1 - px, rx1 - px, rx1 - px, rx1 - px};
-                const cpu_v4i dn = load4i(done + p);
+                const cpu_v4i dn = cpu_v4_mask(done4);
                 const cpu_v4i valid = in_row & ~dn & (a > zero);
                 if (!cpu_v4_any(valid)) continue;
                 const cpu_v4f Tv = load4(T + p);
@@ -74,7 +73,6 @@ static void tile_surface(const surf_ctx *c, long tile, float *scratch)
                 const cpu_v4i ended = stop | hit;
                 ndone += cpu_v4_count(ended);
                 *rd |= cpu_v4_bits(ended) << (px - tx0);
-                store4i(done + p, dn | ended);
                 store4(surf + p, cpu_v4_select(hit, vz, load4(surf + p)));
                 store4(T + p, cpu_v4_select(use, next_T, Tv));
             }

@@ -233,6 +233,13 @@ static inline unsigned cpu_v4_bits(cpu_v4i m)
 #endif
 }
 
+/* The mask whose lane l is set where bit l of bits is (cpu_v4_bits' inverse). */
+static inline cpu_v4i cpu_v4_mask(unsigned bits)
+{
+    return (cpu_v4i){-(int32_t)(bits & 1u), -(int32_t)((bits >> 1) & 1u), -(int32_t)((bits >> 2) & 1u),
+                     -(int32_t)((bits >> 3) & 1u)};
+}
+
 /* Number of set lanes of a mask (a table: baseline x86-64 has no popcount instruction, and
  * __builtin_popcount became a library call in the hot loops). */
 static inline int cpu_v4_count(cpu_v4i m)

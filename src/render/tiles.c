@@ -69,13 +69,20 @@ typedef struct bin_job {
     uint32_t *ccount;      /* [chunks][tiles]: counts, then cursors */
 } bin_job;
 
+/* One past the last entry of chunk c of the sorted list. */
+static size_t chunk_end(const bin_job *b, long c)
+{
+    size_t e = (size_t)(c + 1) * b->chunk;
+    return e < b->m ? e : b->m;
+}
+
 static void bin_count_chunk(void *ctx, long c, int thread_id)
 {
     (void)thread_id;
     const bin_job *b = ctx;
     const cpu_raster *r = b->r;
     uint32_t *cnt = b->ccount + (size_t)c * r->tiles_x * r->tiles_y;
-    size_t k1 = (size_t)(c + 1) * b->chunk < b->m ? (size_t)(c + 1) * b->chunk : b->m;
+    const size_t k1 = chunk_end(b, c);
     for (size_t k = (size_t)c * b->chunk; k < k1; k++) {
         const uint32_t g = b->order[k];
         const int32_t *bx = r->pix_box + 4 * g;
@@ -95,7 +102,7 @@ static void bin_deal_chunk(void *ctx, long c, int thread_id)
     cpu_raster *r = b->r;
     const int tx = r->tiles_x;
     uint32_t *cursor = b->ccount + (size_t)c * r->tiles_x * r->tiles_y;
-    size_t k1 = (size_t)(c + 1) * b->chunk < b->m ? (size_t)(c + 1) * b->chunk : b->m;
+    const size_t k1 = chunk_end(b, c);
     for (size_t k = (size_t)c * b->chunk; k < k1; k++) {
         const uint32_t g = b->order[k];
         const int32_t *bx = r->pix_box + 4 * g;

@@ -295,7 +295,7 @@ typedef struct fwd_launch {
     const fwd_view *views;
     const int *tile_base;
     int nv, total_tiles;
-    int px; /* pixels per thread: 1, 2 or 4 (fwd_px_of) */
+    int px; /* pixels per thread for narrow chunks: 1, 2 or 4 (sp_cuda_fwd_px) */
 } fwd_launch;
 
 template <int CH, int PX>
@@ -326,12 +326,16 @@ static int launch_fwd(const sp_cuda_raster *r, const fwd_launch *L, int c_base, 
     return 0;
 }
 
-/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS) and L->px pixels
- * per thread (several only where ch <= 8: wider chunks take one). */
+/* Pixels per thread a chunk of width ch takes: px where ch <= 8 (fwd_tile_px's kernels exist
+ * only there), else one. */
+static int fwd_px_for(int ch, int px) { return ch <= 8 ? px : 1; }
+
+/* Launches the kernel specialised for width `ch` (one of SP_CHANNEL_WIDTHS) and
+ * fwd_px_for(ch, L->px) pixels per thread. */
 static int dispatch_fwd(int ch, const sp_cuda_raster *r, const fwd_launch *L, int c_base,
                         int n_chunks, int aux, sp_error *err)
 {
-    const int px = ch <= 8 ? L->px : 1;
+    const int px = fwd_px_for(ch, L->px);
     switch (ch) {
 #define SP_WIDTH_CASE(w)                                                                          \
     case w:                                                                                       \
@@ -346,12 +350,13 @@ static int dispatch_fwd(int ch, const sp_cuda_raster *r, const fwd_launch *L, in
 
 /* D channels as full chunks of max_ch plus one narrower launch for the rest; aux: write depth,
  * alpha and (single views) the final transmittance and the list ends, once, from the first
- * chunk. */
+ * chunk. Records the widest chunk's pixels per thread (sp_raster_stages.fwd_px). */
 static int rasterize_chunks(sp_cuda_raster *r, const fwd_launch *L, int max_ch, int aux,
                             sp_error *err)
 {
     int D = L->p->D, rc;
     int full = D / max_ch, rem = D % max_ch;
+    r->fwd_px = fwd_px_for(full > 0 ? max_ch : sp_channel_width(rem, max_ch), L->px);
     if (full > 0 && (rc = dispatch_fwd(max_ch, r, L, 0, full, aux, err))) return rc;
     if (rem > 0 && (rc = dispatch_fwd(sp_channel_width(rem, max_ch), r, L, full * max_ch, 1,
                                       aux && full == 0, err)))
@@ -446,8 +451,6 @@ int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cf
     sp_cu_mark(r, SP_EV_SORTED);
     sp_cuda_pass pass = {in->colors, in->D, r->bg_dev, out->image, out->depth, out->alpha};
     int max_ch = cfg->chunk_fwd ? cfg->chunk_fwd : SP_CHANNEL_CHUNK_MAX;
-    const int widest = in->D >= max_ch ? max_ch : sp_channel_width(in->D, max_ch);
-    r->fwd_px = widest <= 8 ? sp_cuda_fwd_px(cfg) : 1;
     if ((rc = sp_cuda_rasterize_fwd(r, v, &pass, max_ch, sp_cuda_fwd_px(cfg), 1, err))) return rc;
     sp_cu_mark(r, SP_EV_FWD_DONE);
     r->prof_fwd = r->profiling;
