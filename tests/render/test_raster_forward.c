@@ -202,6 +202,13 @@ static void test_bad_args(void)
     out.image = img;
     cam.fx = -1;
     CHECK_FAILS(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fx=-1");
+    scene_camera(&rng, 8, 8, &cam);
+    /* the CUDA tuning options are checked on every backend, naming the option and value */
+    cfg.fwd_px = 3;
+    CHECK_FAILS(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "fwd_px 3");
+    cfg = sp_raster_cfg_default();
+    cfg.bwd_px = -1;
+    CHECK_FAILS(sp_raster_forward(r, &cam, &cfg, &in, &out, &err), SP_E_ARG, &err, "bwd_px -1");
     sp_raster_free(r);
     sp_device *d2 = NULL;
     CHECK_FAILS(sp_device_create(&d2, (sp_device_kind)9, 1, &err), SP_E_ARG, &err, "kind 9");
