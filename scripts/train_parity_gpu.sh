@@ -1,12 +1,16 @@
 #!/bin/bash
-# Training parity (issue 23) on the GPU machine, in ONE device call: renders the house and
-# bookstore walk captures (150 views, 640x480), builds gsplat from shared/bench/anchors and trains
-# gsplat's recipe (scripts/gsplat_reference.py) and ours (`semsplat train --steps 7000 --device
-# cuda`) on both, printing held-out PSNR, Gaussians and seconds per run.
+# Training parity (issue 23) on the GPU machine, in ONE device call: renders walk captures (150
+# views, 640x480) of the house and the bookstore (and of any world PLAN names: office, ward, ...
+# from data/worlds/), builds gsplat from shared/bench/anchors and trains gsplat's recipe
+# (scripts/gsplat_reference.py) and ours (`semsplat train --steps 7000 --device cuda`) on them,
+# printing held-out PSNR, Gaussians and seconds per run.
 #   here:  scripts/pack_gpu_runtime.sh build   (semsplat with synth, built with CUDA, into .gl/rt.txz)
 #          tar -cf - .gpu-shared | xz > .gl/gs.txz   (.gpu-shared/anchors: a copy of shared/bench/anchors)
 #   there: scripts/train_parity_gpu.sh [-- EXTRA TRAIN FLAGS]   (carry .gl/rt.txz and .gl/gs.txz)
-# A time guard (LIM seconds, default 560) skips runs that would outlast one device call.
+# PLAN (optional): runs in order, separated by ';': "gs WORLD" (gsplat's recipe) or
+# "ours WORLD TAG [FLAGS...]"; default: gsplat and ours (with the EXTRA flags) on the bookstore,
+# then on the house. A time guard (LIM seconds, default 560) skips runs that would outlast one
+# device call.
 set -u
 cd "$(dirname "$0")/.."
 T0=$(date +%s); el() { echo $(( $(date +%s) - T0 )); }
@@ -18,16 +22,29 @@ tar -C /tmp -xJf .gl/rt.txz && export LD_LIBRARY_PATH=/tmp/rt/lib || exit 1
 S=/tmp/rt/bin/semsplat
 ldd $S | grep 'not found' && exit 1
 tar -xJf .gl/gs.txz && A=$PWD/.gpu-shared/anchors/vendor || exit 1
-( cd "$A/gsplat" && PATH="$A/bin:$PATH" MAX_JOBS=12 TORCH_CUDA_ARCH_LIST=9.0 \
-    python3 setup.py build_ext --inplace > /tmp/gsplat-build.log 2>&1; echo "gsplat built (rc $?) at $(el) s" ) &
-gb=$!
-$S synth --world data/worlds/bookstore/worlds/bookstore.world --model-path data/worlds/bookstore/models \
-  --out /tmp/book --views 150 --size 640x480 --walk-only --skip-missing --threads 8 --quiet &
-$S synth --world data/worlds/house.world --out /tmp/house --views 150 --size 640x480 --walk-only \
-  --threads 8 --quiet &
-wait %2 %3
-echo "captures at $(el) s: $(ls /tmp/book/images | wc -l) + $(ls /tmp/house/images | wc -l) views"
-wait $gb
+DEFAULT_PLAN="gs book; ours book book ${EXTRA[*]}; gs house; ours house house ${EXTRA[*]}"
+PLAN=${PLAN:-$DEFAULT_PLAN}
+gb=
+if echo "$PLAN" | grep -qE '(^|;) *gs '; then # gsplat is built only when a run needs it
+  ( cd "$A/gsplat" && PATH="$A/bin:$PATH" MAX_JOBS=12 TORCH_CUDA_ARCH_LIST=9.0 \
+      python3 setup.py build_ext --inplace > /tmp/gsplat-build.log 2>&1; echo "gsplat built (rc $?) at $(el) s" ) &
+  gb=$!
+fi
+worlds=$(echo "$PLAN" | tr ';' '\n' | awk 'NF >= 2 {print $2}' | sort -u)
+sp=()
+for w in $worlds; do
+  if [ "$w" = book ]; then
+    $S synth --world data/worlds/bookstore/worlds/bookstore.world --model-path data/worlds/bookstore/models \
+      --out /tmp/book --views 150 --size 640x480 --walk-only --skip-missing --threads 8 --quiet &
+  else
+    $S synth --world "data/worlds/$w.world" --out "/tmp/$w" --views 150 --size 640x480 --walk-only \
+      --threads 8 --quiet &
+  fi
+  sp+=($!)
+done
+wait "${sp[@]}"
+for w in $worlds; do echo "capture $w at $(el) s: $(ls /tmp/$w/images 2>/dev/null | wc -l) views"; done
+[ -n "$gb" ] && wait $gb
 python3 -c "import rich" 2>/dev/null || export PYTHONPATH="$A/shim"
 export PYTHONPATH="$A/gsplat${PYTHONPATH:+:$PYTHONPATH}"
 gs() { # capture tag estimated-seconds
@@ -41,10 +58,17 @@ ours() { # capture tag estimated-seconds [flags]
   echo "== ours $t ($*) at $(el) s"
   $S train --colmap "$c" --out "/tmp/m_$t" --steps 7000 --device cuda --quiet "$@" > "/tmp/tr_$t.log" 2>&1 ||
     { tail -5 "/tmp/tr_$t.log"; return; }
-  python3 -c "import json; d=json.load(open('/tmp/m_$t/train.json')); print('ours $t', {k: d.get(k) for k in ('psnr', 'gaussians', 'seconds')})"
+  python3 -c "import json; d=json.load(open('/tmp/m_$t/train.json')); print('ours $t', {k: d.get(k) for k in ('psnr', 'gaussians', 'seconds', 'seconds_steps')})"
 }
-gs /tmp/book book 60
-ours /tmp/book book 40 "${EXTRA[@]}"
-gs /tmp/house house 55
-ours /tmp/house house 30 "${EXTRA[@]}"
+est() { case $1 in gs) echo 60 ;; *) echo 45 ;; esac; }
+IFS=';' read -ra runs <<< "$PLAN"
+for r in "${runs[@]}"; do
+  read -ra a <<< "$r"
+  [ ${#a[@]} -ge 2 ] || continue
+  case ${a[0]} in
+    gs) gs "/tmp/${a[1]}" "${a[1]}" "$(est gs)" ;;
+    ours) ours "/tmp/${a[1]}" "${a[2]:-${a[1]}}" "$(est ours)" "${a[@]:3}" ;;
+    *) echo "PLAN: unknown run '${a[0]}' (gs or ours)" ;;
+  esac
+done
 echo "total $(el) s"

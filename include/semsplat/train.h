@@ -162,7 +162,8 @@ typedef struct sp_train_options {
 } sp_train_options;
 
 /* gsplat simple_trainer defaults for `steps` steps. Below 30000 steps the SH schedule and
- * refine_start scale by steps / 30000, densification stops at half the run, and refinement
+ * refine_start scale by steps / 30000, densification stops 2000 steps before the end (at least
+ * halfway, at most at 15000), and refinement
  * keeps gsplat's absolute cadence (every 100 steps, opacity reset every 3000), as
  * `simple_trainer --max_steps N` does. */
 sp_train_options sp_train_options_default(int steps);
@@ -171,6 +172,9 @@ typedef struct sp_train_result {
     int steps;             /* steps completed (including resumed ones) */
     size_t gaussians;
     double seconds;        /* wall time of this run */
+    double seconds_steps;  /* of its steps alone (first step to the final parameters on the host,
+                            * checkpoints included): the span gsplat's simple_trainer-style loop
+                            * times, without loading, set-up and the final evaluation */
     double psnr, ssim, l1; /* mean over held-out views (or training views when none held out) */
     int n_eval_views;
     int eval_on_train;     /* 1 when metrics are on training views (no held-out views) */

@@ -127,6 +127,7 @@ int sp_train_write_json(const char *path, const sp_train_options *o, const sp_tr
     cJSON_AddNumberToObject(j, "gaussians", (double)res->gaussians);
     cJSON_AddNumberToObject(j, "steps", res->steps);
     cJSON_AddNumberToObject(j, "seconds", res->seconds);
+    cJSON_AddNumberToObject(j, "seconds_steps", res->seconds_steps);
     cJSON_AddStringToObject(j, "device", res->device);
     cJSON_AddNumberToObject(j, "eval_views", res->n_eval_views);
     cJSON_AddStringToObject(j, "eval_split", res->eval_on_train ? "train (no held-out views)" : "held-out");
