@@ -33,13 +33,10 @@ fi
 worlds=$(echo "$PLAN" | tr ';' '\n' | awk 'NF >= 2 {print $2}' | sort -u)
 sp=()
 for w in $worlds; do
-  if [ "$w" = book ]; then
-    $S synth --world data/worlds/bookstore/worlds/bookstore.world --model-path data/worlds/bookstore/models \
-      --out /tmp/book --views 150 --size 640x480 --walk-only --skip-missing --threads 8 --quiet &
-  else
-    $S synth --world "data/worlds/$w.world" --out "/tmp/$w" --views 150 --size 640x480 --walk-only \
-      --threads 8 --quiet &
-  fi
+  src=(--world "data/worlds/$w.world") # "book": the bookstore, its models beside it, two missing
+  [ "$w" = book ] && src=(--world data/worlds/bookstore/worlds/bookstore.world
+                          --model-path data/worlds/bookstore/models --skip-missing)
+  $S synth "${src[@]}" --out "/tmp/$w" --views 150 --size 640x480 --walk-only --threads 8 --quiet &
   sp+=($!)
 done
 wait "${sp[@]}"
