@@ -157,6 +157,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--fill")) co.fill_max_area_m2 = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--slice")) co.slice_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--stop")) co.carve_stop_m = (float)atof(v), i++;
+        else if (!strcmp(argv[i], "--discretize")) co.carve_discretize = atoi(v), i++;
         else if (!strcmp(argv[i], "--floor-tol")) co.floor_tolerance_m = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--min-fresh")) co.carve_min_fresh = (float)atof(v), i++;
         else if (!strcmp(argv[i], "--measure-floor")) co.measure_floor_tolerance = atoi(v), i++;

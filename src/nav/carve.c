@@ -29,13 +29,15 @@ int nav_traverse(const sp_costmap *cm, const float a[2], const float b[2], nav_c
     return nav_traverse_inline(cm, a, b, fn, ctx);
 }
 
-enum { FLAG_MISS = 1, FLAG_HIT = 2 };
+enum { FLAG_MISS = 1, FLAG_HIT = 2, FLAG_END = 4 /* a traced ray of this scan ended in it */ };
 
 /* One thread's counters and the flags of the scan it is carving. */
 typedef struct carve_thread {
     uint8_t *flag;         /* [voxels + cells] this scan: FLAG_MISS / FLAG_HIT per voxel, then
                             * 1 per cell whose floor a ray ended on */
     int32_t *touched;      /* indices of flag set in this scan */
+    uint16_t *ends;        /* [voxels] parts of the voxel's cell where a traced ray of this scan
+                            * ended (carve_discretize) */
     long n_touched;
     float *pts;            /* [pixels][4] a view's surface points */
     size_t cap_pts;
@@ -75,17 +77,29 @@ typedef struct ray_ctx {
     const nav_slices *sl;
     float z0, dz;      /* z(t) = z0 + t dz along the traversed stretch */
     float band_lo, band_hi;
+    int discretize;    /* sp_costmap_opts.carve_discretize */
+    float t_prev;      /* the last stretch's end and the slice of its height: the next stretch */
+    int v_prev;        /* starts there (nav_traverse hands on t), so its slice is known */
 } ray_ctx;
 
-/* Marks every slice of the cell the ray's stretch inside it overlaps as missed. */
+/* Marks every slice of the cell the ray's stretch inside it overlaps as missed. The stretch's
+ * heights clipped to the band, [max(min(za, zb), lo), min(max(za, zb), hi)], are empty exactly
+ * when both ends lie beyond one side of the band, and nav_slice_of clamps to the band like the
+ * clipping, so the slices are those of the two ends (nav_slice_of is monotonic). */
 static inline int carve_cell(void *vctx, long cell, float t0, float t1)
 {
     ray_ctx *c = vctx;
     float za = c->z0 + t0 * c->dz, zb = c->z0 + t1 * c->dz;
-    float lo = MAXF(MINF(za, zb), c->band_lo), hi = MINF(MAXF(za, zb), c->band_hi);
-    if (hi < lo) return 0;
-    int v0 = nav_slice_of(c->sl, lo), v1 = nav_slice_of(c->sl, hi);
-    for (int v = v0; v <= v1; v++) set_flag(c->t, v * c->sl->cells + cell, FLAG_MISS);
+    if ((za > c->band_hi && zb > c->band_hi) || (za < c->band_lo && zb < c->band_lo)) return 0;
+    int va = t0 == c->t_prev ? c->v_prev : nav_slice_of(c->sl, za), vb = nav_slice_of(c->sl, zb);
+    c->t_prev = t1, c->v_prev = vb;
+    int v0 = va < vb ? va : vb, v1 = va < vb ? vb : va;
+    uint8_t *flag = c->t->flag + cell;
+    for (int v = v0; v <= v1; v++) {
+        long i = v * c->sl->cells;
+        if (!flag[i]) c->t->touched[c->t->n_touched++] = (int32_t)(i + cell);
+        flag[i] |= FLAG_MISS;
+    }
     return 0;
 }
 
@@ -103,7 +117,22 @@ static void carve_ray(const sp_costmap *cm, ray_ctx *rc, sp_vec3 C, sp_vec3 E, f
     if (!(s1 > s0)) return;
     float a[2] = {C.x + s0 * (E.x - C.x), C.y + s0 * (E.y - C.y)};
     float b[2] = {C.x + s1 * (E.x - C.x), C.y + s1 * (E.y - C.y)};
+    int ix, iy, k = rc->discretize;
+    if (k > 0 && !sp_costmap_cell(cm, b[0], b[1], &ix, &iy)) {
+        /* OctoMap's discretized scan insertion, finer: rays from one centre whose stretches end
+         * in one k x k part of a voxel's cell run within that part's width of each other near
+         * their end and closer before it, so the first one traced stands for the others */
+        long end = nav_slice_of(rc->sl, C.z + s1 * dz) * rc->sl->cells + nav_idx(cm, ix, iy);
+        int qx = (int)(((b[0] - cm->origin[0]) / cm->res - (float)ix) * (float)k);
+        int qy = (int)(((b[1] - cm->origin[1]) / cm->res - (float)iy) * (float)k);
+        qx = qx < 0 ? 0 : qx >= k ? k - 1 : qx, qy = qy < 0 ? 0 : qy >= k ? k - 1 : qy;
+        uint16_t bit = (uint16_t)(1u << (qy * k + qx));
+        if (rc->t->ends[end] & bit) return;
+        rc->t->ends[end] |= bit;
+        set_flag(rc->t, end, FLAG_END); /* listed in touched, so count_scan clears ends[] */
+    }
     rc->z0 = C.z + s0 * dz, rc->dz = (s1 - s0) * dz;
+    rc->t_prev = -1.0f; /* no stretch yet (t >= 0) */
     nav_traverse_inline(cm, a, b, carve_cell, rc); /* carve_cell inlined: the rays are most of the time */
 }
 
@@ -165,7 +194,7 @@ static void trace_view(const carve_job *j, const sp_camera *cam, const float *de
     const sp_costmap *cm = j->cm;
     const sp_costmap_opts *o = j->o;
     sp_vec3 C = sp_camera_center(cam);
-    ray_ctx rc = {t, j->sl, 0, 0, cm->band[0], cm->band[1]};
+    ray_ctx rc = {t, j->sl, 0, 0, cm->band[0], cm->band[1], o->carve_discretize, -1.0f, 0};
     float Rt[9];
     sp_mat3_transpose(cam->R, Rt);
     float *pts = t->pts; /* [H][W] x, y, z, depth (0: no surface point) */
@@ -220,12 +249,16 @@ static void count_scan(const sp_costmap *cm, const nav_slices *sl, carve_thread 
         long i = t->touched[k];
         if (i >= nv) bump(&t->floor_scans[i - nv]);
         else if (t->flag[i] & FLAG_HIT) bump(&t->hit_scans[i]);
-        else {
+        else if (t->flag[i] & FLAG_MISS) {
             bump(&t->miss_scans[i]);
             if (hit_beside(cm, sl, t->flag, i)) bump(&t->near_scans[i]);
         }
     }
-    for (long k = 0; k < t->n_touched; k++) t->flag[t->touched[k]] = 0;
+    for (long k = 0; k < t->n_touched; k++) {
+        long i = t->touched[k];
+        t->flag[i] = 0;
+        if (i < nv) t->ends[i] = 0;
+    }
     t->n_touched = 0;
 }
 
@@ -284,7 +317,7 @@ static inline void add_sat(uint16_t *dst, const uint16_t *src, size_t n)
 static void threads_free(carve_thread *th, int T)
 {
     for (int t = 0; th && t < T; t++) {
-        free(th[t].flag), free(th[t].touched), free(th[t].pts);
+        free(th[t].flag), free(th[t].touched), free(th[t].pts), free(th[t].ends);
         if (t == 0) continue; /* thread 0 counts into the outputs */
         free(th[t].hit_scans), free(th[t].miss_scans), free(th[t].near_scans), free(th[t].floor_scans);
         free(th[t].view_counts);
@@ -301,13 +334,14 @@ static carve_thread *threads_alloc(int T, const nav_carve_out *out, size_t n_gau
     for (int t = 0; t < T && ok; t++) {
         carve_thread *c = &th[t];
         c->flag = calloc(nv + nc, 1);
+        c->ends = calloc(nv, sizeof(uint16_t));
         c->touched = malloc(sizeof(int32_t) * (nv + nc));
         c->hit_scans = t ? calloc(nv, sizeof(uint16_t)) : out->hit_scans;
         c->miss_scans = t ? calloc(nv, sizeof(uint16_t)) : out->miss_scans;
         c->near_scans = t ? calloc(nv, sizeof(uint16_t)) : out->near_scans;
         c->floor_scans = t ? calloc(nc, sizeof(uint16_t)) : out->floor_scans;
         c->view_counts = !out->view_counts ? NULL : t ? calloc(n_gauss + 1, sizeof(uint16_t)) : out->view_counts;
-        ok = c->flag && c->touched && c->hit_scans && c->miss_scans && c->near_scans && c->floor_scans &&
+        ok = c->flag && c->ends && c->touched && c->hit_scans && c->miss_scans && c->near_scans && c->floor_scans &&
              (c->view_counts || !out->view_counts);
     }
     if (!ok) threads_free(th, T), th = NULL;
@@ -334,20 +368,28 @@ static int group_scans(const sp_camera *cams, size_t n, int *order, int *scan_of
     return n_scans;
 }
 
+/* Per carving-splat Gaussian, what the per-view culling reads: rows x, y, z (the mean) and
+ * sigma_max^2 (its largest variance), each of stride floats (padded for four-wide reads). */
+typedef struct cull_geo {
+    float *rows;
+    size_t stride;
+} cull_geo;
+
 /* The splat the views are rendered from for carving: geometry only (depth needs no colours),
  * without the Gaussians wholly above the highest camera and the band: a ray can meet those only
  * after it has risen out of the band (a rising ray with no surface carves the band). Also each
- * kept Gaussian's largest standard deviation (sigma_max, for the per-view culling). */
+ * kept Gaussian's cull geometry (cull_geo). */
 static int carving_splat(const sp_splat *s, const sp_camera *cams, size_t n, float band_hi, sp_splat *c,
-                         float **sigma_max, sp_error *err)
+                         cull_geo *geo, sp_error *err)
 {
     float z_cut = band_hi;
     for (size_t i = 0; i < n; i++) z_cut = MAXF(z_cut, sp_camera_center(&cams[i]).z);
     z_cut += CULL_MARGIN_M;
     int rc = sp_splat_alloc(c, s->n, 0, 0, err);
     if (rc) return rc;
-    *sigma_max = malloc(sizeof(float) * (s->n + 1));
-    if (!*sigma_max) {
+    size_t stride = geo->stride = s->n + 4;
+    float *rows = geo->rows = calloc(4 * stride, sizeof(float));
+    if (!rows) {
         sp_splat_free(c);
         return sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu Gaussians", s->n);
     }
@@ -363,7 +405,9 @@ static int carving_splat(const sp_splat *s, const sp_camera *cams, size_t n, flo
         memcpy(c->log_scales + 3 * m, ls, 3 * sizeof(float));
         c->opacity_logits[m] = s->opacity_logits[i];
         memcpy(c->sh + 3 * m, s->sh + (size_t)i * 3 * sp_sh_coeffs(s->sh_degree), 3 * sizeof(float));
-        (*sigma_max)[m] = expf(MAXF(ls[0], MAXF(ls[1], ls[2])));
+        float sg = expf(MAXF(ls[0], MAXF(ls[1], ls[2])));
+        for (int k = 0; k < 3; k++) rows[k * stride + m] = s->means[3 * i + k];
+        rows[3 * stride + m] = sg * sg;
         m++;
     }
     c->n = m;
@@ -383,7 +427,8 @@ static int carving_splat(const sp_splat *s, const sp_camera *cams, size_t n, flo
 #define CULL_CHUNKS 64    /* the culling's parallel chunks */
 typedef struct cull_job {
     const sp_splat *src;
-    const float *sigma_max;
+    const float *geo;             /* carving_splat's cull geometry: x, y, z, sigma_max^2 rows */
+    size_t stride;                /* of those rows */
     const sp_camera *cam;
     float eps;
     sp_splat *dst;
@@ -391,18 +436,45 @@ typedef struct cull_job {
     size_t count[CULL_CHUNKS];    /* kept per chunk */
 } cull_job;
 
-static inline int cull_keeps(const cull_job *c, size_t i)
+typedef float cull_v4 __attribute__((vector_size(16)));
+typedef int32_t cull_v4i __attribute__((vector_size(16)));
+
+static inline cull_v4 v4_load(const float *p)
+{
+    cull_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline cull_v4 v4_splat(float x) { return (cull_v4){x, x, x, x}; }
+
+/* Which of Gaussians i .. i + 3 the bound keeps (bit l: Gaussian i + l), four at a time. */
+static inline unsigned cull_keeps4(const cull_job *c, size_t i)
 {
     const sp_camera *cam = c->cam;
-    const float *R = cam->R, *t = cam->t, *p = c->src->means + 3 * i;
-    float z = R[6] * p[0] + R[7] * p[1] + R[8] * p[2] + t[2];
-    if (!(z >= CULL_NEAR)) return 0;
-    float x = R[0] * p[0] + R[1] * p[1] + R[2] * p[2] + t[0];
-    float y = R[3] * p[0] + R[4] * p[1] + R[5] * p[2] + t[1];
-    float fx = cam->fx, fy = cam->fy, iz = 1.0f / z, u = fx * x * iz + cam->cx, v = fy * y * iz + cam->cy;
-    float j2 = ((fx * fx + fy * fy) + (fx * fx * x * x + fy * fy * y * y) * iz * iz) * iz * iz;
-    float r = CULL_EXTENT * sqrtf(j2 * c->sigma_max[i] * c->sigma_max[i] + c->eps) + 2.0f;
-    return !(u + r <= 0.f || u - r >= (float)cam->width || v + r <= 0.f || v - r >= (float)cam->height);
+    const float *R = cam->R, *t = cam->t;
+    const cull_v4 px = v4_load(c->geo + i), py = v4_load(c->geo + c->stride + i), pz = v4_load(c->geo + 2 * c->stride + i);
+    const cull_v4 s2 = v4_load(c->geo + 3 * c->stride + i);
+    cull_v4 z = v4_splat(R[6]) * px + v4_splat(R[7]) * py + v4_splat(R[8]) * pz + v4_splat(t[2]);
+    cull_v4i front = z >= v4_splat(CULL_NEAR);
+    unsigned any = 0;
+    for (int l = 0; l < 4; l++) any |= front[l] ? 1u << l : 0u;
+    if (!any) return 0; /* most of a view's Gaussians lie behind it */
+    z = (cull_v4)((cull_v4i)z & front) + (cull_v4)((cull_v4i)v4_splat(1.0f) & ~front); /* no division by 0 */
+    cull_v4 x = v4_splat(R[0]) * px + v4_splat(R[1]) * py + v4_splat(R[2]) * pz + v4_splat(t[0]);
+    cull_v4 y = v4_splat(R[3]) * px + v4_splat(R[4]) * py + v4_splat(R[5]) * pz + v4_splat(t[1]);
+    const float fx = cam->fx, fy = cam->fy;
+    cull_v4 iz = v4_splat(1.0f) / z, u = v4_splat(fx) * x * iz + v4_splat(cam->cx), v = v4_splat(fy) * y * iz + v4_splat(cam->cy);
+    cull_v4 j2 = (v4_splat(fx * fx + fy * fy) + (v4_splat(fx * fx) * x * x + v4_splat(fy * fy) * y * y) * iz * iz) * iz * iz;
+    cull_v4 q = j2 * s2 + v4_splat(c->eps);
+    unsigned keep = 0;
+    for (int l = 0; l < 4; l++) {
+        if (!(any >> l & 1u)) continue;
+        float r = CULL_EXTENT * sqrtf(q[l]) + 2.0f;
+        keep |= !(u[l] + r <= 0.f || u[l] - r >= (float)cam->width || v[l] + r <= 0.f || v[l] - r >= (float)cam->height)
+                ? 1u << l : 0u;
+    }
+    return keep;
 }
 
 /* Chunk k's kept Gaussians to dst from the chunk's own start (so chunks never overlap). */
@@ -413,22 +485,25 @@ static void cull_chunk(void *ctx, long k, int thread_id)
     const sp_splat *src = c->src;
     sp_splat *dst = c->dst;
     size_t i0 = (size_t)k * c->chunk, i1 = i0 + c->chunk < src->n ? i0 + c->chunk : src->n, m = i0;
-    for (size_t i = i0; i < i1; i++) {
-        if (!cull_keeps(c, i)) continue;
-        memcpy(dst->means + 3 * m, src->means + 3 * i, 3 * sizeof(float));
-        memcpy(dst->quats + 4 * m, src->quats + 4 * i, 4 * sizeof(float));
-        memcpy(dst->log_scales + 3 * m, src->log_scales + 3 * i, 3 * sizeof(float));
-        dst->opacity_logits[m] = src->opacity_logits[i];
-        m++;
+    for (size_t i4 = i0; i4 < i1; i4 += 4) {
+        unsigned keep = cull_keeps4(c, i4); /* the rows are padded: i4 + 3 is readable */
+        for (size_t i = i4; keep && i < i4 + 4 && i < i1; i++, keep >>= 1) {
+            if (!(keep & 1u)) continue;
+            memcpy(dst->means + 3 * m, src->means + 3 * i, 3 * sizeof(float));
+            memcpy(dst->quats + 4 * m, src->quats + 4 * i, 4 * sizeof(float));
+            memcpy(dst->log_scales + 3 * m, src->log_scales + 3 * i, 3 * sizeof(float));
+            dst->opacity_logits[m] = src->opacity_logits[i];
+            m++;
+        }
     }
     c->count[k] = m - i0;
 }
 
 /* In parallel over chunks, each into its own stretch of dst (which holds all of src), then the
  * stretches moved together in order. */
-static size_t cull_view(sp_pool *pool, const sp_splat *src, const float *sigma_max, const sp_camera *cam, sp_splat *dst)
+static size_t cull_view(sp_pool *pool, const sp_splat *src, const cull_geo *geo, const sp_camera *cam, sp_splat *dst)
 {
-    cull_job c = {src, sigma_max, cam, sp_raster_cfg_default().eps2d, dst, (src->n + CULL_CHUNKS - 1) / CULL_CHUNKS, {0}};
+    cull_job c = {src, geo->rows, geo->stride, cam, sp_raster_cfg_default().eps2d, dst, (src->n + CULL_CHUNKS - 1) / CULL_CHUNKS, {0}};
     if (c.chunk == 0) return dst->n = 0;
     long n_chunks = (long)((src->n + c.chunk - 1) / c.chunk);
     sp_pool_for(pool, n_chunks, cull_chunk, &c);
@@ -636,29 +711,120 @@ static sp_camera carving_view(const sp_costmap *cm, const sp_costmap_opts *o, co
     return v;
 }
 
-/* Renders every view's first-surface depth, each from the Gaussians it can show. */
-static int render_views(const sp_splat *host, const float *sigma_max, sp_scene *scene, sp_splat *sub, sp_raster *r,
+/* One view's first-surface depth from the Gaussians it can show (culled into sub), through
+ * scene on raster r; pool runs the culling. Adds the Gaussians drawn to *drawn. */
+static int render_view(sp_pool *pool, const sp_splat *host, const cull_geo *geo, sp_scene *scene, sp_splat *sub,
+                       sp_raster *r, const sp_costmap_opts *o, const sp_camera *view, float *depth, size_t *drawn,
+                       sp_error *err)
+{
+    size_t m = cull_view(pool, host, geo, view, sub);
+    *drawn += m;
+    if (m == 0) { /* nothing in view: no surface anywhere */
+        memset(depth, 0, sizeof(float) * (size_t)view->width * (size_t)view->height);
+        return SP_OK;
+    }
+    /* first-surface depth where the accumulated alpha reaches carve_alpha: expected depth blends a
+     * surface's edge with what lies behind it */
+    sp_render_request q = {.depth = depth, .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = o->carve_alpha};
+    int rc = sp_scene_update(scene, sub, SP_SCENE_CHANGED_GEOMETRY, err);
+    if (!rc) rc = sp_render_views(r, scene, view, 1, &q, err);
+    return rc ? sp_error_prefix(err, "costmap: rendering training views for carving: ") : SP_OK;
+}
+
+/* A thread's own renderer (a one-thread CPU device, its raster and scene, its culled splat): on
+ * the CPU, carving views are small (160 x 120) and a view's stages split over the pool wait on
+ * each other and run their sort and scans serially, so whole views go to the threads instead.
+ * The CPU renderer's output does not depend on its thread count: the depth is the same. */
+typedef struct render_lane {
+    sp_device *dev;
+    sp_raster *r;
+    sp_scene *scene;
+    sp_splat sub;
+    size_t drawn;
+    int rc;
+    sp_error err;
+} render_lane;
+
+typedef struct lanes_job {
+    render_lane *lane;          /* [threads] */
+    const sp_splat *host;
+    const cull_geo *geo;
+    const sp_costmap_opts *o;
+    const sp_camera *views;
+    float *const *depth;
+    const long *todo;           /* [n_todo] the views to render */
+} lanes_job;
+
+static void lanes_view(void *ctx, long i, int thread_id)
+{
+    const lanes_job *j = ctx;
+    render_lane *l = &j->lane[thread_id];
+    long k = j->todo[i];
+    if (!l->rc)
+        l->rc = render_view(sp_device_pool(l->dev), j->host, j->geo, l->scene, &l->sub, l->r, j->o, &j->views[k],
+                            j->depth[k], &l->drawn, &l->err);
+}
+
+static void lanes_free(render_lane *lane, int T)
+{
+    for (int t = 0; lane && t < T; t++) {
+        sp_scene_free(lane[t].scene);
+        sp_raster_free(lane[t].r);
+        sp_device_free(lane[t].dev);
+        sp_splat_free(&lane[t].sub);
+    }
+    free(lane);
+}
+
+static int lanes_alloc(render_lane **out, int T, const sp_splat *host, sp_error *err)
+{
+    render_lane *lane = calloc((size_t)T, sizeof *lane);
+    int rc = lane ? SP_OK : sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d render lanes", T);
+    for (int t = 0; t < T && !rc; t++) {
+        if (!(rc = sp_device_create(&lane[t].dev, SP_DEVICE_CPU, 1, err)) && !(rc = sp_raster_create(&lane[t].r, lane[t].dev, err)) &&
+            !(rc = sp_splat_alloc(&lane[t].sub, host->n, 0, 0, err)))
+            rc = sp_scene_create(&lane[t].scene, lane[t].dev, host, 0, err);
+    }
+    if (rc) lanes_free(lane, T), lane = NULL;
+    *out = lane;
+    return rc;
+}
+
+/* Renders the views render[] asks for, side by side on the CPU (render lanes), one after the
+ * other on a GPU (whose passes fill the device). */
+static int render_views(const sp_splat *host, const cull_geo *geo, sp_scene *scene, sp_splat *sub, sp_raster *r,
                         const sp_costmap_opts *o, sp_camera *views, float *const *depth, const uint8_t *render,
                         size_t n, size_t *drawn, const sp_log *log, sp_error *err)
 {
+    sp_device *dev = sp_raster_device(r);
+    sp_pool *pool = sp_device_pool(dev);
+    int T = sp_pool_size(pool), rc = SP_OK;
     sp_progress pr;
-    int rc = 0;
     sp_progress_begin(&pr, log, "carve", (long)n, "views");
-    for (size_t k = 0; k < n && !rc; k++) {
-        if (!render[k]) continue;
-        size_t m = cull_view(sp_device_pool(sp_raster_device(r)), host, sigma_max, &views[k], sub);
-        *drawn += m;
-        if (m == 0) { /* nothing in view: no surface anywhere */
-            memset(depth[k], 0, sizeof(float) * (size_t)views[k].width * (size_t)views[k].height);
-        } else {
-            /* first-surface depth where the accumulated alpha reaches carve_alpha: expected depth
-             * blends a surface's edge with what lies behind it */
-            sp_render_request q = {.depth = depth[k], .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = o->carve_alpha};
-            if ((rc = sp_scene_update(scene, sub, SP_SCENE_CHANGED_GEOMETRY, err)) ||
-                (rc = sp_render_views(r, scene, &views[k], 1, &q, err)))
-                sp_error_prefix(err, "costmap: rendering training views for carving: ");
+    if (sp_device_kind_of(dev) == SP_DEVICE_CPU && T > 1) {
+        long *todo = malloc(sizeof(long) * (n ? n : 1)), n_todo = 0;
+        render_lane *lane = NULL;
+        if (!todo) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu carving views", n);
+        if (!rc) rc = lanes_alloc(&lane, T, host, err);
+        /* in batches, for the progress line */
+        for (size_t k0 = 0; k0 < n && !rc; k0 += 4 * CARVE_BATCH) {
+            n_todo = 0;
+            for (size_t k = k0; k < n && k < k0 + 4 * CARVE_BATCH; k++)
+                if (render[k]) todo[n_todo++] = (long)k;
+            lanes_job job = {lane, host, geo, o, views, depth, todo};
+            sp_pool_for(pool, n_todo, lanes_view, &job);
+            for (int t = 0; t < T && !rc; t++)
+                if (lane[t].rc) rc = lane[t].rc, *err = lane[t].err;
+            sp_progress_update(&pr, (long)(k0 + 4 * CARVE_BATCH < n ? k0 + 4 * CARVE_BATCH : n), NULL);
         }
-        if (k % CARVE_BATCH == CARVE_BATCH - 1 || k + 1 == n) sp_progress_update(&pr, (long)k + 1, NULL);
+        for (int t = 0; lane && t < T; t++) *drawn += lane[t].drawn;
+        lanes_free(lane, T);
+        free(todo);
+    } else {
+        for (size_t k = 0; k < n && !rc; k++) {
+            if (render[k]) rc = render_view(pool, host, geo, scene, sub, r, o, &views[k], depth[k], drawn, err);
+            if (k % CARVE_BATCH == CARVE_BATCH - 1 || k + 1 == n) sp_progress_update(&pr, (long)k + 1, NULL);
+        }
     }
     sp_progress_end(&pr, NULL);
     return rc;
@@ -722,14 +888,14 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     sp_device *dev = sp_raster_device(r);
     sp_scene *scene = NULL;
     sp_splat host, sub;
-    float *sigma_max = NULL;
+    cull_geo geo = {NULL, 0};
     memset(&sub, 0, sizeof sub);
-    int rc = carving_splat(s, cams, n_cams, cm->band[1], &host, &sigma_max, err);
+    int rc = carving_splat(s, cams, n_cams, cm->band[1], &host, &geo, err);
     if (rc) return sp_error_prefix(err, "costmap: ");
     size_t kept = host.n, drawn = 0;
     if (!(rc = sp_splat_alloc(&sub, kept, 0, 0, err))) rc = sp_scene_create(&scene, dev, &host, 0, err);
     if (rc) {
-        sp_splat_free(&host), sp_splat_free(&sub), free(sigma_max);
+        sp_splat_free(&host), sp_splat_free(&sub), free(geo.rows);
         return sp_error_prefix(err, "costmap: ");
     }
     sp_pool *pool = sp_device_pool(dev);
@@ -739,7 +905,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     if (!th) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
     if (!rc) rc = carving_alloc(&c, cm, o, cams, n_cams, out->view_counts != NULL, err);
     double t0 = nav_cpu_now(), w0 = sp_time_now();
-    if (!rc) rc = render_views(&host, sigma_max, scene, &sub, r, o, c.views, c.depth, c.render, n_cams, &drawn, log, err);
+    if (!rc) rc = render_views(&host, &geo, scene, &sub, r, o, c.views, c.depth, c.render, n_cams, &drawn, log, err);
     double t1 = nav_cpu_now(), w1 = sp_time_now();
     long excess = 0;
     out->floor_tol = rc ? o->floor_tolerance_m : floor_tolerance(cm, o, c.views, c.depth, c.keep, n_cams, &excess);
@@ -768,6 +934,6 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     threads_free(th, T);
     carving_free(&c);
     sp_scene_free(scene);
-    sp_splat_free(&host), sp_splat_free(&sub), free(sigma_max);
+    sp_splat_free(&host), sp_splat_free(&sub), free(geo.rows);
     return rc;
 }

@@ -52,6 +52,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.carve_alpha = 0.5f;
     o.carve_min_fresh = 0.0f;
     o.carve_stop_m = 0.03f;
+    o.carve_discretize = 1;
     o.floor_tolerance_m = 0.15f;
     o.measure_floor_tolerance = 1;
     o.max_range_m = 8.0f;
@@ -560,6 +561,9 @@ static int check_opts(const sp_costmap_opts *o, sp_error *err)
         return sp_error_set(err, SP_E_ARG, "costmap: hit_grow_tol %g and faint_grow_tol %g (in [0, 10]), "
                             "faint_blocks_free %g (in [0, 1)), hit_above_m %g (in [0, 1] m)", o->hit_grow_tol,
                             o->faint_grow_tol, o->faint_blocks_free, o->hit_above_m);
+    if (o->carve_discretize < 0 || o->carve_discretize > 4)
+        return sp_error_set(err, SP_E_ARG, "costmap: carve_discretize %d not in 0..4 (0: every ray traced)",
+                            o->carve_discretize);
     if (!(o->carve_min_fresh >= 0 && o->carve_min_fresh <= 1))
         return sp_error_set(err, SP_E_ARG, "costmap: carve_min_fresh %g not in [0, 1]", o->carve_min_fresh);
     if (!(o->floor_tolerance_m >= 0 && o->floor_tolerance_m <= 1))
@@ -643,9 +647,12 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
     double t1 = nav_cpu_now();
     if ((rc = nav_carve(cm, s, cams, n_cams, &o, r, &co, log, err))) goto done;
     o.floor_tolerance_m = cm->opts.floor_tolerance_m = co.floor_tol; /* the one the scans used */
-    double t2 = nav_cpu_now();
+    double t2 = nav_cpu_now(), w2 = sp_time_now();
     if (log_free) {
-        nav_footprints(cm, s, &o, &co.sl, log_free);
+        if (nav_footprints(sp_device_pool(sp_raster_device(r)), cm, s, &o, &co.sl, log_free)) {
+            rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for the footprints of %zu Gaussians", s->n);
+            goto done;
+        }
         nav_mark_floor(cm, s, &o, co.floor_scans);
     }
     if (stood) mark_stands(cm, cams, n_cams, o.robot_radius_m, stood);
@@ -666,8 +673,8 @@ int nav_costmap_build(sp_costmap *cm, const sp_splat *s, const sp_camera *cams, 
             "costmap: %dx%d cells at %.3f m, floor z %.3f, band %.2f..%.2f m: %ld occupied, %ld "
             "free, %ld unknown (%.0f ms)", cm->nx, cm->ny, cm->res, cm->floor_z, o.band_lo_m,
             o.band_hi_m, n_occ, n_free, (long)n - n_occ - n_free, 1e3 * (sp_time_now() - t0));
-    sp_logf(log, SP_LOG_DEBUG, "costmap: CPU time: carving %.0f ms, fusion and inflation %.0f ms",
-            1e3 * (t2 - t1), 1e3 * (nav_cpu_now() - t2));
+    sp_logf(log, SP_LOG_DEBUG, "costmap: CPU time: carving %.0f ms, fusion and inflation %.0f ms (wall %.0f ms)",
+            1e3 * (t2 - t1), 1e3 * (nav_cpu_now() - t2), 1e3 * (sp_time_now() - w2));
 done:
     free(co.hit_scans), free(co.miss_scans), free(co.near_scans), free(co.floor_scans), free(stood), free(log_free), free(surface);
     if (rc) sp_costmap_free(cm);

@@ -47,10 +47,10 @@ typedef struct nav_carve_out {
 #define NAV_FLOOR_MIN_OPACITY 0.5f /* floor Gaussians at least this opaque */
 
 /* Footprint evidence (footprints.c): adds log(1 - w) per voxel (log_free [slices][cells]) over
- * the band Gaussians' footprints; nav_mark_floor bumps floor_seen [cells] under the splat's own
+ * the band Gaussians' footprints, on the pool's threads (SP_E_NOMEM: out of memory); nav_mark_floor bumps floor_seen [cells] under the splat's own
  * floor Gaussians. */
-void nav_footprints(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, const nav_slices *sl,
-                    float *log_free);
+int nav_footprints(sp_pool *pool, const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o,
+                   const nav_slices *sl, float *log_free);
 void nav_mark_floor(const sp_costmap *cm, const sp_splat *s, const sp_costmap_opts *o, uint16_t *floor_seen);
 
 /* Process CPU time in seconds (all threads): what the build costs on a shared machine. */

@@ -66,8 +66,13 @@ typedef struct bin_job {
     const uint32_t *order; /* [m] visible Gaussians front to back */
     size_t m, chunk;
     size_t *pair_off;      /* [n + 1]: kept-tile counts, then first slots */
+    uint64_t *kept_mask;   /* [n] the kept tiles of a box of at most 64 (bit k: the box's k-th tile, row-major) */
     uint32_t *ccount;      /* [chunks][tiles]: counts, then cursors */
 } bin_job;
+
+/* A box of at most this many tiles has its kept tiles recorded by the counting loop as a mask,
+ * which the dealing loop reads instead of asking tile_kept again. */
+#define BIN_MASK_TILES 64
 
 /* One past the last entry of chunk c of the sorted list. */
 static size_t chunk_end(const bin_job *b, long c)
@@ -87,11 +92,15 @@ static void bin_count_chunk(void *ctx, long c, int thread_id)
         const uint32_t g = b->order[k];
         const int32_t *bx = r->pix_box + 4 * g;
         const float cut = sp_gm_sigma_cut(r->opacity[g]);
+        const int tx0 = bx[0] / SP_TILE_SIZE, tx1 = bx[1] / SP_TILE_SIZE, ty0 = bx[2] / SP_TILE_SIZE, ty1 = bx[3] / SP_TILE_SIZE;
+        const int masked = (tx1 - tx0 + 1) * (ty1 - ty0 + 1) <= BIN_MASK_TILES;
+        uint64_t mask = 0, bit = 1;
         size_t kept = 0;
-        for (int y = bx[2] / SP_TILE_SIZE; y <= bx[3] / SP_TILE_SIZE; y++)
-            for (int x = bx[0] / SP_TILE_SIZE; x <= bx[1] / SP_TILE_SIZE; x++)
-                if (tile_kept(r, g, cut, x, y)) kept++, cnt[(size_t)y * r->tiles_x + x]++;
+        for (int y = ty0; y <= ty1; y++)
+            for (int x = tx0; x <= tx1; x++, bit <<= 1)
+                if (tile_kept(r, g, cut, x, y)) kept++, cnt[(size_t)y * r->tiles_x + x]++, mask |= bit;
         b->pair_off[g] = kept;
+        if (masked) b->kept_mask[g] = mask;
     }
 }
 
@@ -118,9 +127,13 @@ static void bin_deal_chunk(void *ctx, long c, int thread_id)
         rec.g = (int32_t)g;
         for (int i = 0; i < 4; i++) rec.box[i] = bx[i];
         rec.pad[0] = rec.pad[1] = 0.f;
-        for (int y = bx[2] / SP_TILE_SIZE; y <= bx[3] / SP_TILE_SIZE; y++)
-            for (int x = bx[0] / SP_TILE_SIZE; x <= bx[1] / SP_TILE_SIZE; x++) {
-                if (!tile_kept(r, g, rec.cut, x, y)) continue;
+        const int tx0 = bx[0] / SP_TILE_SIZE, tx1 = bx[1] / SP_TILE_SIZE, ty0 = bx[2] / SP_TILE_SIZE, ty1 = bx[3] / SP_TILE_SIZE;
+        const int masked = (tx1 - tx0 + 1) * (ty1 - ty0 + 1) <= BIN_MASK_TILES;
+        const uint64_t mask = masked ? b->kept_mask[g] : 0;
+        uint64_t bit = 1;
+        for (int y = ty0; y <= ty1; y++)
+            for (int x = tx0; x <= tx1; x++, bit <<= 1) {
+                if (masked ? !(mask & bit) : !tile_kept(r, g, rec.cut, x, y)) continue;
                 uint32_t pos = cursor[(size_t)y * tx + x]++;
                 r->tile_rec[pos] = rec;
                 r->tile_slot[pos] = slot++;
@@ -142,13 +155,15 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     if (max_chunks > BIN_MAX_CHUNKS) max_chunks = BIN_MAX_CHUNKS;
     if (max_chunks * tiles > BIN_MAX_COUNTS) max_chunks = BIN_MAX_COUNTS / tiles ? BIN_MAX_COUNTS / tiles : 1;
 
-    /* sort scratch: 4 x n uint32 + chunk x tile counters; pair_off lives here too ([n+1] size_t) */
+    /* sort scratch: 4 x n uint32 + chunk x tile counters; pair_off ([n+1] size_t) and the kept
+     * masks ([n] uint64) live here too */
     size_t sort_bytes = 4 * n * sizeof(uint32_t) + max_chunks * tiles * sizeof(uint32_t) +
-                        (n + 1) * sizeof(size_t) + 256;
+                        (n + 1) * sizeof(size_t) + n * sizeof(uint64_t) + 256;
     int rc = sp_scratch_reserve(r->dev, &r->sort_buf, &r->sort_cap, sort_bytes, err);
     if (rc) return rc;
     size_t *pair_off = r->sort_buf;
-    uint32_t *key = (uint32_t *)(pair_off + n + 1);
+    uint64_t *kept_mask = (uint64_t *)(pair_off + n + 1);
+    uint32_t *key = (uint32_t *)(kept_mask + n);
     uint32_t *val = key + n, *key_tmp = val + n, *val_tmp = key_tmp + n;
     uint32_t *ccount = val_tmp + n;
     r->pair_off = pair_off;
@@ -168,7 +183,7 @@ int cpu_bin_tiles(cpu_raster *r, sp_error *err)
     if (chunk < BIN_CHUNK) chunk = BIN_CHUNK;
     size_t n_chunks = m ? (m + chunk - 1) / chunk : 0;
     memset(ccount, 0, n_chunks * tiles * sizeof(uint32_t));
-    bin_job job = {r, val, m, chunk, pair_off, ccount};
+    bin_job job = {r, val, m, chunk, pair_off, kept_mask, ccount};
     sp_pool_for(pool, (long)n_chunks, bin_count_chunk, &job);
 
     /* first slots (index order) and the pair count */
