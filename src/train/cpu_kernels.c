@@ -4,6 +4,8 @@
 #include "device/device_impl.h"
 #include "train/train_internal.h"
 
+#include <string.h>
+
 static int rgb_loss(sp_device *dev, const float *pred, int stride, const float *target, int H,
                     int W, int C, float lambda, float *scratch, float *v_pred, double stats[4],
                     sp_error *err)
@@ -51,6 +53,19 @@ static int copy_columns(sp_device *dev, float *dst, int ds, int doff, const floa
     return 0;
 }
 
+static int gather_rows(sp_device *dev, float *dst, const float *src, const int32_t *idx, size_t rows, int cols,
+                       sp_error *err)
+{
+    (void)dev;
+    if (rows == 0 || cols <= 0) return 0;
+    if (!dst || !src || !idx) return sp_error_set(err, SP_E_ARG, "gather rows: NULL buffer");
+    for (size_t i = 0; i < rows; i++) {
+        if (idx[i] >= 0) memcpy(dst + i * (size_t)cols, src + (size_t)idx[i] * (size_t)cols, sizeof(float) * (size_t)cols);
+        else memset(dst + i * (size_t)cols, 0, sizeof(float) * (size_t)cols);
+    }
+    return 0;
+}
+
 static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad, sp_error *err)
 {
     *out_bad = cpu_any_nonfinite(x, n);
@@ -59,7 +74,7 @@ static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad,
 
 const tr_kernels tr_cpu_kernels = {rgb_loss,     feature_mse,        depth_loss,
                                    adam_step,    densify_accumulate, copy_columns,
-                                   any_nonfinite};
+                                   gather_rows,  any_nonfinite};
 
 const tr_kernels *tr_kernels_of(const sp_device *dev)
 {

@@ -1,7 +1,10 @@
 /* Adaptive density control of 3DGS as gsplat's DefaultStrategy does it (grow: clone small /
  * split large Gaussians with a high mean screen-space gradient; prune: transparent or oversized;
- * periodic opacity reset), on host copies of the parameters and their Adam moments. The loop
- * downloads, calls this every refine_every steps, and uploads the result. */
+ * periodic opacity reset). The decisions are a plan made on the host from the geometry and the
+ * statistics (tr_densify_plan_make: which input row each output row copies, whether it keeps its
+ * Adam moments, and the means and log-scales that split children change); the loop applies it
+ * on the device, so only the geometry crosses, not the colours and moments; the host version
+ * (sp_train_densify_host) applies the same plan to host copies. */
 #include "train/train_internal.h"
 
 #include <stdlib.h>
@@ -49,13 +52,19 @@ static int cand_desc(const void *a, const void *b)
     return ia < ib ? -1 : ia > ib;
 }
 
-int sp_train_densify_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v,
-                          const float *grad2d_sum, const float *count,
-                          const sp_train_options *opt, float scene_scale, int step, uint64_t *rng,
-                          sp_densify_stats *st, sp_error *err)
+void tr_densify_plan_free(tr_densify_plan *p)
+{
+    free(p->src), free(p->keep_moments), free(p->means), free(p->log_scales);
+    memset(p, 0, sizeof *p);
+}
+
+int tr_densify_plan_make(const sp_splat *s, const float *grad2d_sum, const float *count,
+                         const sp_train_options *opt, float scene_scale, int step, uint64_t *rng,
+                         tr_densify_plan *plan, sp_densify_stats *st, sp_error *err)
 {
     size_t n = s->n;
     memset(st, 0, sizeof *st);
+    memset(plan, 0, sizeof *plan);
     /* 0 = keep, 1 = keep + clone, 2 = split (replaced by two children) */
     uint8_t *action = calloc(n ? n : 1, 1);
     cand *cands = malloc(sizeof(cand) * (n ? n : 1));
@@ -87,45 +96,34 @@ int sp_train_densify_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v,
     free(cands);
 
     size_t cap = n + st->n_cloned + st->n_split;
-    sp_splat o, om, ov;
-    memset(&om, 0, sizeof om);
-    memset(&ov, 0, sizeof ov);
-    int rc = sp_splat_alloc(&o, cap, s->sh_degree, s->feat_dim, err);
-    if (!rc && adam_m) rc = sp_splat_alloc(&om, cap, s->sh_degree, s->feat_dim, err);
-    if (!rc && adam_v) rc = sp_splat_alloc(&ov, cap, s->sh_degree, s->feat_dim, err);
-    if (rc) {
+    plan->src = malloc(sizeof(int32_t) * (cap ? cap : 1));
+    plan->keep_moments = malloc(cap ? cap : 1);
+    plan->means = malloc(sizeof(float) * 3 * (cap ? cap : 1));
+    plan->log_scales = malloc(sizeof(float) * 3 * (cap ? cap : 1));
+    if (!plan->src || !plan->keep_moments || !plan->means || !plan->log_scales || n > (size_t)INT32_MAX) {
         free(action);
-        sp_splat_free(&o);
-        sp_splat_free(&om);
-        sp_splat_free(&ov);
-        return rc;
+        tr_densify_plan_free(plan);
+        return sp_error_set(err, SP_E_NOMEM, "densify: out of memory for %zu Gaussians", cap);
     }
 
     float prune_logit = sp_logit(opt->prune_opacity);
     int prune_big = opt->reset_every > 0 && step > opt->reset_every;
     float big = opt->prune_scale3d * scene_scale;
     size_t w = 0;
-    /* Emission order follows gsplat: survivors in order, then clones, then split children. */
-#define EMIT_CHECK()                                                                               \
-    do {                                                                                           \
-        if (o.opacity_logits[w] < prune_logit || (prune_big && max_scale(&o, w) > big))           \
-            st->n_pruned++;                                                                        \
-        else                                                                                       \
-            w++;                                                                                   \
-    } while (0)
+    /* Emission order follows gsplat: survivors in order, then clones, then split children; an
+     * emitted row that the pruning drops is overwritten by the next. */
+#define EMIT(i, keep)                                                                                  do {                                                                                                   const float *ls_ = plan->log_scales + 3 * w, m_ = ls_[0] > ls_[1] ? ls_[0] : ls_[1];              plan->src[w] = (int32_t)(i), plan->keep_moments[w] = (keep);                                       if (s->opacity_logits[i] < prune_logit || (prune_big && expf(m_ > ls_[2] ? m_ : ls_[2]) > big))             st->n_pruned++;                                                                                else                                                                                                   w++;                                                                                       } while (0)
     for (size_t i = 0; i < n; i++) {
         if (action[i] == 2) continue;
-        copy_one(&o, w, s, i);
-        if (adam_m) copy_one(&om, w, adam_m, i);
-        if (adam_v) copy_one(&ov, w, adam_v, i);
-        EMIT_CHECK();
+        memcpy(plan->means + 3 * w, s->means + 3 * i, 3 * sizeof(float));
+        memcpy(plan->log_scales + 3 * w, s->log_scales + 3 * i, 3 * sizeof(float));
+        EMIT(i, 1);
     }
     for (size_t i = 0; i < n; i++) {
         if (action[i] != 1) continue;
-        copy_one(&o, w, s, i);
-        if (adam_m) zero_one(&om, w);
-        if (adam_v) zero_one(&ov, w);
-        EMIT_CHECK();
+        memcpy(plan->means + 3 * w, s->means + 3 * i, 3 * sizeof(float));
+        memcpy(plan->log_scales + 3 * w, s->log_scales + 3 * i, 3 * sizeof(float));
+        EMIT(i, 0);
     }
     for (size_t i = 0; i < n; i++) {
         if (action[i] != 2) continue;
@@ -133,30 +131,65 @@ int sp_train_densify_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v,
         sp_quat_to_mat3(s->quats + i * 4, R);
         for (int a = 0; a < 3; a++) sc[a] = expf(s->log_scales[i * 3 + a]);
         for (int child = 0; child < 2; child++) {
-            copy_one(&o, w, s, i);
             float z[3] = {(float)tr_normal(rng) * sc[0], (float)tr_normal(rng) * sc[1],
                           (float)tr_normal(rng) * sc[2]};
             for (int a = 0; a < 3; a++) {
-                o.means[w * 3 + a] += R[a * 3] * z[0] + R[a * 3 + 1] * z[1] + R[a * 3 + 2] * z[2];
-                o.log_scales[w * 3 + a] = logf(sc[a] / 1.6f);
+                plan->means[w * 3 + a] = s->means[i * 3 + a] + (R[a * 3] * z[0] + R[a * 3 + 1] * z[1] + R[a * 3 + 2] * z[2]);
+                plan->log_scales[w * 3 + a] = logf(sc[a] / 1.6f);
             }
-            if (adam_m) zero_one(&om, w);
-            if (adam_v) zero_one(&ov, w);
-            EMIT_CHECK();
+            EMIT(i, 0);
         }
     }
-#undef EMIT_CHECK
+#undef EMIT
     free(action);
-    o.n = w;
+    plan->n_out = w;
+    return SP_OK;
+}
+
+/* Row i of the plan from the host splats: the source's parameters with the plan's means and
+ * log-scales, its moments or zeros. */
+static void apply_row(const tr_densify_plan *p, size_t i, const sp_splat *s, sp_splat *o, const sp_splat *m,
+                      sp_splat *om, const sp_splat *v, sp_splat *ov)
+{
+    size_t j = (size_t)p->src[i];
+    copy_one(o, i, s, j);
+    memcpy(o->means + 3 * i, p->means + 3 * i, 3 * sizeof(float));
+    memcpy(o->log_scales + 3 * i, p->log_scales + 3 * i, 3 * sizeof(float));
+    if (m) p->keep_moments[i] ? copy_one(om, i, m, j) : zero_one(om, i);
+    if (v) p->keep_moments[i] ? copy_one(ov, i, v, j) : zero_one(ov, i);
+}
+
+int sp_train_densify_host(sp_splat *s, sp_splat *adam_m, sp_splat *adam_v,
+                          const float *grad2d_sum, const float *count,
+                          const sp_train_options *opt, float scene_scale, int step, uint64_t *rng,
+                          sp_densify_stats *st, sp_error *err)
+{
+    tr_densify_plan plan;
+    int rc = tr_densify_plan_make(s, grad2d_sum, count, opt, scene_scale, step, rng, &plan, st, err);
+    if (rc) return rc;
+    size_t w = plan.n_out;
+    sp_splat o, om, ov;
+    memset(&om, 0, sizeof om);
+    memset(&ov, 0, sizeof ov);
+    rc = sp_splat_alloc(&o, w, s->sh_degree, s->feat_dim, err);
+    if (!rc && adam_m) rc = sp_splat_alloc(&om, w, s->sh_degree, s->feat_dim, err);
+    if (!rc && adam_v) rc = sp_splat_alloc(&ov, w, s->sh_degree, s->feat_dim, err);
+    if (rc) {
+        tr_densify_plan_free(&plan);
+        sp_splat_free(&o);
+        sp_splat_free(&om);
+        sp_splat_free(&ov);
+        return rc;
+    }
+    for (size_t i = 0; i < w; i++) apply_row(&plan, i, s, &o, adam_m, &om, adam_v, &ov);
+    tr_densify_plan_free(&plan);
     sp_splat_free(s);
     *s = o;
     if (adam_m) {
-        om.n = w;
         sp_splat_free(adam_m);
         *adam_m = om;
     }
     if (adam_v) {
-        ov.n = w;
         sp_splat_free(adam_v);
         *adam_v = ov;
     }

@@ -612,6 +612,113 @@ static int conform_splat(sp_splat *sp, int sh_degree, int F, sp_error *err)
     return SP_OK;
 }
 
+/* The scratch buffers sized by the Gaussian count, for n Gaussians (statistics zeroed). */
+static int scratch_realloc(tr_state *s, size_t n, sp_error *err)
+{
+    float **bufs[] = {&s->sh, &s->v_sh, &s->colors, &s->v_colors, &s->v_means2d, &s->grad2d, &s->count};
+    for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) {
+        sp_device_release(s->dev, *bufs[i]);
+        *bufs[i] = NULL;
+    }
+    size_t K3 = (size_t)s->K * 3;
+    if (!(s->sh = dalloc(s, n * K3, err)) || !(s->v_sh = dalloc(s, n * K3, err)) ||
+        !(s->colors = dalloc(s, n * s->D, err)) || !(s->v_colors = dalloc(s, n * s->D, err)) ||
+        !(s->v_means2d = dalloc(s, n * 2, err)) || !(s->grad2d = dalloc(s, n, err)) ||
+        !(s->count = dalloc(s, n, err)))
+        return err ? err->code : SP_E_NOMEM;
+    int rc = sp_device_zero(s->dev, s->grad2d, (n ? n : 1) * sizeof(float), err);
+    return rc ? rc : sp_device_zero(s->dev, s->count, (n ? n : 1) * sizeof(float), err);
+}
+
+/* Applies a density-control plan on the device: every group's parameters and moments gathered
+ * into buffers of the new size (moments zero where the plan says), the means and log-scales
+ * the plan computed uploaded over the gathered ones. */
+static int apply_plan(tr_state *s, const tr_densify_plan *pl, sp_error *err)
+{
+    size_t n = pl->n_out;
+    int32_t *idx_h = malloc(sizeof(int32_t) * 2 * (n ? n : 1)), *idx = NULL;
+    if (!idx_h) return sp_error_set(err, SP_E_NOMEM, "densify: out of host memory for %zu Gaussians", n);
+    for (size_t i = 0; i < n; i++) idx_h[i] = pl->src[i], idx_h[n + i] = pl->keep_moments[i] ? pl->src[i] : -1;
+    int rc = SP_OK;
+    if (!(idx = sp_device_alloc(s->dev, sizeof(int32_t) * 2 * (n ? n : 1), err))) rc = err ? err->code : SP_E_NOMEM;
+    if (!rc && n) rc = sp_device_upload(s->dev, idx, idx_h, sizeof(int32_t) * 2 * n, err);
+    free(idx_h);
+    for (int g = 0; g < N_GROUPS && !rc; g++) {
+        size_t w = group_width(s, g);
+        if (w == 0) continue;
+        float *np = dalloc(s, n * w, err), *nm = dalloc(s, n * w, err), *nv = dalloc(s, n * w, err), *ng = dalloc(s, n * w, err);
+        if (!np || !nm || !nv || !ng) rc = err ? err->code : SP_E_NOMEM;
+        if (!rc) rc = s->k->gather_rows(s->dev, np, s->p[g], idx, n, (int)w, err);
+        if (!rc) rc = s->k->gather_rows(s->dev, nm, s->m[g], idx + n, n, (int)w, err);
+        if (!rc) rc = s->k->gather_rows(s->dev, nv, s->v[g], idx + n, n, (int)w, err);
+        float **old[4] = {&s->p[g], &s->m[g], &s->v[g], &s->g[g]}, *fresh[4] = {np, nm, nv, ng};
+        for (int k = 0; k < 4; k++) {
+            float *drop = rc ? fresh[k] : *old[k];
+            if (!rc) *old[k] = fresh[k];
+            sp_device_release(s->dev, drop);
+        }
+    }
+    sp_device_release(s->dev, idx);
+    if (!rc) s->n = n;
+    if (!rc && n) rc = sp_device_upload(s->dev, s->p[G_MEANS], pl->means, sizeof(float) * 3 * n, err);
+    if (!rc && n) rc = sp_device_upload(s->dev, s->p[G_SCALES], pl->log_scales, sizeof(float) * 3 * n, err);
+    return rc ? rc : scratch_realloc(s, n, err);
+}
+
+/* gsplat's density control on the device state: the plan is made from the geometry and the
+ * statistics alone (downloaded: 13 floats a Gaussian, against 3 x 59 for parameters and moments
+ * with SH degree 3), then applied where the state lives; then the opacity reset (logits clamped,
+ * their moments zeroed). Either way the statistics restart from zero. The result is the same as
+ * sp_train_densify_host and sp_train_reset_opacity_host on downloaded copies. */
+static int refine_state(tr_state *s, const sp_train_options *o, float scene_scale, int step, uint64_t *rng,
+                        int do_refine, int do_reset, sp_densify_stats *ds, sp_error *err)
+{
+    size_t n = s->n;
+    int rc = SP_OK;
+    if (do_refine) {
+        sp_splat geo;
+        float *g2 = malloc(sizeof(float) * 2 * (n ? n : 1));
+        if (!g2) return sp_error_set(err, SP_E_NOMEM, "densify: out of memory");
+        if ((rc = sp_splat_alloc(&geo, n, 0, 0, err))) {
+            free(g2);
+            return rc;
+        }
+        if (n) {
+            rc = sp_device_download(s->dev, geo.means, s->p[G_MEANS], n * 3 * sizeof(float), err);
+            if (!rc) rc = sp_device_download(s->dev, geo.quats, s->p[G_QUATS], n * 4 * sizeof(float), err);
+            if (!rc) rc = sp_device_download(s->dev, geo.log_scales, s->p[G_SCALES], n * 3 * sizeof(float), err);
+            if (!rc) rc = sp_device_download(s->dev, geo.opacity_logits, s->p[G_OPAC], n * sizeof(float), err);
+            if (!rc) rc = sp_device_download(s->dev, g2, s->grad2d, n * sizeof(float), err);
+            if (!rc) rc = sp_device_download(s->dev, g2 + n, s->count, n * sizeof(float), err);
+        }
+        tr_densify_plan pl;
+        if (!rc && !(rc = tr_densify_plan_make(&geo, g2, g2 + n, o, scene_scale, step, rng, &pl, ds, err))) {
+            rc = apply_plan(s, &pl, err);
+            tr_densify_plan_free(&pl);
+        }
+        sp_splat_free(&geo);
+        free(g2);
+        if (rc) return rc;
+        n = s->n;
+    }
+    if (do_reset && n) {
+        float *op = malloc(sizeof(float) * n), cap = sp_logit(2.0f * o->prune_opacity);
+        if (!op) return sp_error_set(err, SP_E_NOMEM, "opacity reset: out of memory");
+        rc = sp_device_download(s->dev, op, s->p[G_OPAC], n * sizeof(float), err);
+        for (size_t i = 0; !rc && i < n; i++)
+            if (op[i] > cap) op[i] = cap;
+        if (!rc) rc = sp_device_upload(s->dev, s->p[G_OPAC], op, n * sizeof(float), err);
+        if (!rc) rc = sp_device_zero(s->dev, s->m[G_OPAC], n * sizeof(float), err);
+        if (!rc) rc = sp_device_zero(s->dev, s->v[G_OPAC], n * sizeof(float), err);
+        free(op);
+        if (!rc && !do_refine) { /* the statistics restart, as after a refinement */
+            rc = sp_device_zero(s->dev, s->grad2d, n * sizeof(float), err);
+            if (!rc) rc = sp_device_zero(s->dev, s->count, n * sizeof(float), err);
+        }
+    }
+    return rc;
+}
+
 static void shuffle(size_t *a, size_t n, uint64_t *rng)
 {
     for (size_t i = n; i > 1; i--) {
@@ -856,26 +963,8 @@ int sp_train_run(sp_device *dev, const sp_train_data *d, const sp_train_options 
                        step % o->reset_every == 0;
         if (do_refine || do_reset) {
             double t_ref = sp_time_now();
-            sp_splat P, M, V;
-            float *g2 = NULL, *cnt = NULL;
-            if ((rc = state_download(&s, o->sh_degree, &P, &M, &V, err))) break;
             sp_densify_stats ds = {0, 0, 0};
-            if (do_refine) {
-                g2 = malloc(s.n * sizeof(float));
-                cnt = malloc(s.n * sizeof(float));
-                if (!g2 || !cnt) rc = sp_error_set(err, SP_E_NOMEM, "densify: out of memory");
-                if (!rc) rc = sp_device_download(dev, g2, s.grad2d, s.n * sizeof(float), err);
-                if (!rc) rc = sp_device_download(dev, cnt, s.count, s.n * sizeof(float), err);
-                if (!rc) rc = sp_train_densify_host(&P, &M, &V, g2, cnt, o, scene_scale, step, &rng, &ds, err);
-            }
-            if (!rc && do_reset) sp_train_reset_opacity_host(&P, &M, &V, o->prune_opacity);
-            free(g2);
-            free(cnt);
-            if (!rc) rc = state_upload(&s, &P, &M, &V, err); /* zeroes grad2d / count */
-            sp_splat_free(&P);
-            sp_splat_free(&M);
-            sp_splat_free(&V);
-            if (rc) break;
+            if ((rc = refine_state(&s, o, scene_scale, step, &rng, do_refine, do_reset, &ds, err))) break;
             if (do_refine)
                 sp_logf(log, SP_LOG_DEBUG,
                         "step %d: %zu cloned, %zu split, %zu pruned -> %zu Gaussians (%.0f ms)",

@@ -58,4 +58,21 @@ int tr_checkpoint_write(const char *path, int step, uint64_t rng, const sp_splat
 int tr_checkpoint_read(const char *path, tr_checkpoint *ck, sp_error *err);
 void tr_checkpoint_free(tr_checkpoint *ck);
 
+/* densify.c: a density-control step as a plan (tr_densify_plan_make reads s's means, quats,
+ * log-scales and opacities and the statistics, draws the split samples from rng, and decides
+ * exactly as sp_train_densify_host, which applies the same plan on the host). Output row i copies
+ * input row src[i], with Adam moments kept when keep_moments[i] (else zero) and its own means
+ * and log-scales [i][3] (moved and shrunk for split children, the input's otherwise). */
+typedef struct tr_densify_plan {
+    size_t n_out;
+    int32_t *src;
+    uint8_t *keep_moments;
+    float *means, *log_scales;
+} tr_densify_plan;
+
+int tr_densify_plan_make(const sp_splat *s, const float *grad2d_sum, const float *count,
+                         const sp_train_options *opt, float scene_scale, int step, uint64_t *rng,
+                         tr_densify_plan *plan, sp_densify_stats *st, sp_error *err);
+void tr_densify_plan_free(tr_densify_plan *p);
+
 #endif

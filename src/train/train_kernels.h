@@ -102,6 +102,12 @@ typedef struct tr_kernels {
                         const float *src, int src_stride, int src_offset, size_t rows, int cols,
                         sp_error *err);
 
+    /* Row gather for density control: for i < rows, c < cols:
+     *   dst[i * cols + c] = idx[i] >= 0 ? src[idx[i] * cols + c] : 0
+     * (idx a device array; dst and src do not overlap). */
+    int (*gather_rows)(sp_device *dev, float *dst, const float *src, const int32_t *idx, size_t rows,
+                       int cols, sp_error *err);
+
     /* 1 when any of the n values is NaN or Inf (out_bad HOST int), for the NaN guard. */
     int (*any_nonfinite)(sp_device *dev, const float *x, size_t n, int *out_bad, sp_error *err);
 } tr_kernels;

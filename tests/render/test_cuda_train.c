@@ -1,6 +1,7 @@
 /* The trainer's GPU kernels (src/train/cuda/, the CUDA table of train_kernels.h) against their CPU
  * references in src/train/loss.c (which have their own finite-difference tests): L1+SSIM loss and
- * gradient, feature MSE, the depth loss, Adam, densification statistics, column copy, the NaN guard, bad sizes.
+ * gradient, feature MSE, the depth loss, Adam, densification statistics, column copy, the row
+ * gather of density control, the NaN guard, bad sizes.
  * Skips (77) without a GPU or without the CUDA build. */
 #include "test.h"
 
@@ -178,6 +179,28 @@ static void test_adam_and_stats(void)
     free(cnt), free(gsg), free(cg);
 }
 
+/* The density-control row gather against the CPU table's: rows copied by index, -1 zeroed. */
+static void test_gather_rows(void)
+{
+    sp_error err = {0};
+    const size_t rows_in = 300, rows = 500;
+    const int cols = 45;
+    float *src = malloc(rows_in * cols * 4), *want = malloc(rows * cols * 4), *got = malloc(rows * cols * 4);
+    int32_t *idx = malloc(rows * 4);
+    for (size_t i = 0; i < rows_in * cols; i++) src[i] = frand() - 0.5f;
+    for (size_t i = 0; i < rows; i++) idx[i] = frand() < 0.2f ? -1 : (int32_t)(frand() * (float)(rows_in - 1));
+    float *dsrc = up(src, rows_in * cols, &err), *ddst = up(NULL, rows * cols, &err);
+    int32_t *didx = sp_device_alloc(g_gpu, rows * 4, &err);
+    sp_device_upload(g_gpu, didx, idx, rows * 4, &err);
+    CHECK_OK(K->gather_rows(g_gpu, ddst, dsrc, didx, rows, cols, &err), &err);
+    CHECK_OK(tr_cpu_kernels.gather_rows(NULL, want, src, idx, rows, cols, &err), &err);
+    down(got, ddst, rows * cols, &err);
+    CHECK(memcmp(got, want, rows * cols * 4) == 0);
+    CHECK_FAILS(K->gather_rows(g_gpu, ddst, NULL, didx, rows, cols, &err), SP_E_ARG, &err, "NULL");
+    dfree(dsrc), dfree(ddst), dfree(didx);
+    free(src), free(want), free(got), free(idx);
+}
+
 int main(void)
 {
     sp_error err = {0};
@@ -191,6 +214,7 @@ int main(void)
     RUN(test_feature_mse);
     RUN(test_depth_loss);
     RUN(test_adam_and_stats);
+    RUN(test_gather_rows);
     sp_device_free(g_gpu);
     return TEST_EXIT();
 }

@@ -401,6 +401,27 @@ static int copy_columns(sp_device *dev, float *dst, int dst_stride, int dst_offs
     return 0;
 }
 
+__global__ void k_gather_rows(float *dst, const float *src, const int32_t *idx, size_t rows, int cols)
+{
+    size_t k = (size_t)blockIdx.x * TPB + threadIdx.x;
+    if (k >= rows * cols) return;
+    size_t r = k / cols;
+    int c = (int)(k - r * cols);
+    int32_t j = idx[r];
+    dst[k] = j >= 0 ? src[(size_t)j * cols + c] : 0.f;
+}
+
+static int gather_rows(sp_device *dev, float *dst, const float *src, const int32_t *idx, size_t rows, int cols,
+                       sp_error *err)
+{
+    cudaStream_t st = sp_cuda_stream(dev);
+    if (rows == 0 || cols <= 0) return 0;
+    if (!dst || !src || !idx) return sp_error_set(err, SP_E_ARG, "gather rows: NULL buffer");
+    k_gather_rows<<<nblk(rows * (size_t)cols), TPB, 0, st>>>(dst, src, idx, rows, cols);
+    CK(cudaGetLastError(), "row gather");
+    return 0;
+}
+
 __global__ void k_nonfinite(const float *x, size_t n, int *flag)
 {
     size_t i = (size_t)blockIdx.x * TPB + threadIdx.x;
@@ -432,6 +453,6 @@ static int any_nonfinite(sp_device *dev, const float *x, size_t n, int *out_bad,
 
 static const tr_kernels cuda_kernels = {rgb_loss,     feature_mse,        depth_loss,
                                         adam_step,    densify_accumulate, copy_columns,
-                                        any_nonfinite};
+                                        gather_rows,  any_nonfinite};
 
 extern "C" const tr_kernels *tr_cuda_kernels(void) { return &cuda_kernels; }
