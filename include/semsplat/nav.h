@@ -159,8 +159,9 @@ typedef struct sp_costmap_opts {
     float carve_alpha;         /* first-surface depth: where the accumulated alpha reaches this
                                 * (0.5); rays that never reach it end on nothing */
     float carve_stop_m;        /* carving stops this short of the surface hit (0.03) */
-    int carve_discretize;      /* rays of one scan whose carved stretch ends in one voxel are
-                                * traced once (OctoMap's discretized scan insertion; 1) */
+    int carve_discretize;      /* k: rays of one scan whose carved stretches end in one k x k
+                                * part of a voxel's cell are traced once (OctoMap's discretized
+                                * scan insertion, finer; 2; 0 = every ray, at most 4) */
     float floor_tolerance_m;   /* a rendered surface this close to the floor is the floor (at
                                 * most 0.15: rendered depth is that of Gaussian centres, several
                                 * cm off on a hazy trained floor seen at a slant) ... */

@@ -52,7 +52,7 @@ sp_costmap_opts sp_costmap_opts_default(void)
     o.carve_alpha = 0.5f;
     o.carve_min_fresh = 0.0f;
     o.carve_stop_m = 0.03f;
-    o.carve_discretize = 1;
+    o.carve_discretize = 2;
     o.floor_tolerance_m = 0.15f;
     o.measure_floor_tolerance = 1;
     o.max_range_m = 8.0f;
