@@ -223,6 +223,53 @@ static int kind_prepare(const lex_db *lx, lex_class *c, sp_error *err)
     return rc;
 }
 
+/* 1 when w is an -ing form of a verb that WordNet has neither as a noun nor as an adjective. */
+static int gerund(const lex_db *lx, const char *w, sp_error *err)
+{
+    size_t n = strlen(w);
+    if (n < 5 || strcmp(w + n - 3, "ing")) return 0;
+    int adj = lex_is_pos(lx, WN_ADJ, w, err);
+    if (adj) return adj < 0 ? adj : 0;
+    return lex_is_pos(lx, WN_VERB, w, err);
+}
+
+/* 1 when the noun synset is a named individual (an instance hypernym, "@i"). */
+static int is_instance(const lex_db *lx, uint32_t off, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &s, err);
+    if (rc) return rc < 0 ? rc : -rc;
+    int inst = 0;
+    for (int p = 0; p < s.n_pointers; p++) inst |= !strcmp(s.pointers[p].symbol, "@i");
+    wn_synset_free(&s);
+    return inst;
+}
+
+/* The words of a name before its last, by their commonest noun sense when the tagged corpora
+ * attest it, one weak step (DELTA) in the class's definitions: what the thing is for, holds or
+ * serves ("mop bucket": mop, "a cleaning implement ... for cleaning floors"; "barber chair":
+ * barber, "a hairdresser who cuts hair and shaves beards"; "laundry basket": laundry, wash,
+ * washing). A word WordNet's order alone puts first says nothing (change 23). */
+static int bag_modifiers(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i + 1 < c->n_tok && !rc; i++) {
+        uint32_t off[8];
+        int tagged = 0;
+        int n = wn_lookup(lx->db, WN_NOUN, c->tok[i], off, 8, &tagged, err);
+        if (n < 0) return n;
+        int kinds = 0, first = -1; /* senses that are kinds, not named individuals ("Barber") */
+        for (int k = 0; k < n && !rc; k++) {
+            int inst = is_instance(lx, off[k], err);
+            if (inst < 0) return inst;
+            if (!inst && kinds++ == 0) first = k;
+        }
+        if (first >= 0 && (tagged || kinds == 1))
+            rc = lex_bag_synset(lx, &c->bag, (wn_id){off[first], WN_NOUN}, LEX_DELTA, 0, err);
+    }
+    return rc;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -246,6 +293,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
     if (!rc) rc = kind_prepare(lx, c, err);
+    if (!rc) rc = bag_modifiers(lx, c, err);
     /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
      * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
      * so the class is one level below its head and another kind of the head is its sibling.
@@ -258,6 +306,12 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             known = is;
             if (is && p == WN_NOUN) c->spec = 1;
         }
+        /* a gerund names the kind by its purpose ("drying rack", "styling chair": a chair for
+         * styling), as a noun modifier does; a participle adjective WordNet lists ("folding")
+         * is known as an adjective and was handled above */
+        int ger = gerund(lx, c->np.mods[i], err);
+        if (ger < 0) return ger;
+        if (ger) c->spec = 1;
         if (known) continue;
         c->spec = 1;
         /* its parts, when it is a closed compound ("overbed" = over + bed), agree with a query
