@@ -230,6 +230,19 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     return rc;
 }
 
+/* The description's first word, when a verb, is what the thing is for ("to WASH hair", "that
+ * KEEPS food cold"): it weighs at least as much as any of its objects, which a definition names
+ * by a more general word or not at all (hair, shirt, samples), however many senses the verb has. */
+static int purpose_weight(const lex_db *lx, lex_np *np, sp_error *err)
+{
+    if (np->n_desc < 2) return 0;
+    int verb = lex_is_pos(lx, WN_VERB, np->desc[0], err);
+    if (verb <= 0) return verb;
+    for (int i = 1; i < np->n_desc; i++)
+        if (np->desc_w[i] > np->desc_w[0]) np->desc_w[0] = np->desc_w[i];
+    return 0;
+}
+
 int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
                  lex_np *np, sp_error *err)
 {
@@ -304,5 +317,5 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
     }
     for (int i = 0; i < np->n_desc; i++)
         if ((rc = lex_word_weight(lx, np->desc[i], &np->desc_w[i], err))) return rc;
-    return 0;
+    return purpose_weight(lx, np, err);
 }
