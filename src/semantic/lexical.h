@@ -64,6 +64,8 @@ int lex_relation_at(const lex_tokens *t, int i, const char **name);
 /* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
  * and no description of an object ("something that lights the room"). */
 int lex_is_generic_region(const char *w);
+/* Category words of artifacts by use ("equipment", "appliance", "fitting"; base forms). */
+int lex_is_category(const char *w);
 /* Words that introduce what an area contains or resembles ("with", "like", "looks", ...). */
 int lex_is_region_link(const char *w);
 
