@@ -270,6 +270,62 @@ static int bag_modifiers(const lex_db *lx, lex_class *c, sp_error *err)
     return rc;
 }
 
+/* 1 when a base form of one of the class name's modifiers is a word of synset off's lemmas or
+ * definition. */
+static int names_modifier(const lex_db *lx, const lex_class *c, uint32_t off, sp_error *err)
+{
+    lex_bag bag = {0};
+    int rc = lex_bag_synset(lx, &bag, (wn_id){off, WN_NOUN}, 1.0f, 0, err), hit = 0;
+    for (int i = 0; !rc && i < c->np.n_mods && !hit; i++) {
+        /* a word that also describes ("back" counter: an adjective, an adverb) names no purpose */
+        int adj = lex_is_pos(lx, WN_ADJ, c->np.mods[i], err), adv = adj ? 0 : lex_is_pos(lx, WN_ADV, c->np.mods[i], err);
+        if (adj || adv) {
+            if (adj < 0 || adv < 0) rc = adj < 0 ? adj : adv;
+            continue;
+        }
+        for (int p = 0; p < 3 && !rc && !hit; p++) {
+            char b[WN_MAX_BASES][WN_LEMMA_MAX];
+            int nb = lex_bases(lx, (wn_pos)p, c->np.mods[i], b, err);
+            if (nb < 0) rc = nb;
+            else hit = nb > 0 && lex_bag_find(&bag, b, nb, 0.0f, 1.0f, 1.0f, 0, NULL) > 0;
+        }
+    }
+    lex_bag_free(&bag);
+    return rc ? rc : hit;
+}
+
+/* The modifier of a name WordNet lacks chooses among its head's senses (Lesk 1986): the physical
+ * senses of the head whose lemmas or definition say the modifier ("weighing scale": scale, "a
+ * measuring instrument for WEIGHING", not the indicator of graduated marks the corpora attest)
+ * replace the attested ones; the alias table's stay. Nothing changes when no sense says it. */
+static int modifier_senses(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    lex_np *np = &c->np;
+    if (!np->n_mods || np->split || !np->head[0] || !np->senses) return 0;
+    uint32_t offs[LEX_MAX_SENSES];
+    int n = wn_lookup(lx->db, WN_NOUN, np->head, offs, LEX_MAX_SENSES, NULL, err);
+    if (n <= 0) return n;
+    lex_sense *keep = malloc(sizeof *keep * LEX_MAX_SENSES);
+    if (!keep) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int nk = 0, rc = 0;
+    for (int k = 0; k < n && !rc; k++) {
+        int hit = names_modifier(lx, c, offs[k], err);
+        if (hit < 0) rc = hit;
+        else if (hit && !(rc = lex_sense_load(lx, offs[k], k + 1, &keep[nk], err)) &&
+                 lex_sense_physical(&keep[nk]) && !lex_sense_person(&keep[nk]))
+            nk++;
+    }
+    if (!rc && nk) {
+        int own = np->n_senses - np->n_alias;
+        for (int i = own; i < np->n_senses && nk < LEX_MAX_SENSES; i++) keep[nk++] = np->senses[i];
+        memcpy(np->senses, keep, sizeof *keep * (size_t)nk);
+        np->n_senses = nk;
+        np->fallback = 0;
+    }
+    free(keep);
+    return rc;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -285,6 +341,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     int aliased = rc ? 0 : lex_alias_class(v, &t, &read, err);
     if (aliased < 0) return aliased;
     if (aliased) rc = add_alias_senses(lx, &c->np, &read, err);
+    if (!rc) rc = modifier_senses(lx, c, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
         char b[WN_MAX_BASES][WN_LEMMA_MAX];
