@@ -275,6 +275,8 @@ typedef struct {
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
     lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
+    lex_np desc_np[16];    /* description nouns read alone (not the purpose verb): what a holder
+                            * class may hold ("where do I put my SUITCASE") */
     /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
      * of illumination"): the sense, and its definition's words with their weights */
     int n_any, any_sense[2], any_n[2];
@@ -400,7 +402,16 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             qp->mod_kind[i] = k;
         }
     }
-    for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+    for (int i = 0; i < np->n_desc && !rc; i++) {
+        rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+        int verb = !rc && i == 0 && np->n_desc > 1 ? lex_is_pos(lx, WN_VERB, np->desc[i], err) : 0;
+        if (verb < 0) return verb;
+        if (!rc && !verb) {
+            lex_tokens one = {1, {{0}}};
+            snprintf(one.w[0], LEX_WORD, "%s", np->desc[i]);
+            rc = lex_np_parse(lx, &one, 0, 1, 1, &qp->desc_np[i], err);
+        }
+    }
     if (!rc) rc = agent_verbs(lx, np, qp, err);
     if (!rc && !np->placeholder) rc = prepare_any(lx, np, qp, err);
     if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
@@ -540,6 +551,41 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
     if (lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0) return 0;
     return 1;
+}
+
+/* A description naming what a holder class holds ("where do I put my suitcase": the luggage
+ * rack; "where are the plasters", "somewhere to hang my jacket" -> the coat rack): a description
+ * noun that is the class's modifier's sense, a kind of it or a hypernym of it scores as the
+ * holder reading of that noun alone (LEX_HOLDS times the taxonomy), the rest of the description
+ * then weighing as a description beside a head (1 - GAMMA + GAMMA * its overlap). */
+static float holder_desc(const lex_class *c, const lex_np *np, const query_prep *qp, float pf, float af, int *word)
+{
+    float best = 0;
+    *word = -1;
+    /* what it holds: the modifier of a name WordNet lacks, or of one it joins ("luggage rack") */
+    const lex_np *held = c->mod_head.n_senses ? &c->mod_head : c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1] : NULL;
+    for (int d = 0; d < np->n_desc && held; d++) {
+        const lex_np *q = &qp->desc_np[d];
+        float t = 0;
+        for (int i = 0; i < q->n_senses; i++)
+            for (int j = 0; j < held->n_senses; j++) {
+                if (!lex_sense_physical(&held->senses[j])) continue;
+                lex_tax x = lex_compare(&q->senses[i], &held->senses[j]);
+                if ((x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM) && x.score > t) t = x.score;
+            }
+        if (t <= 0) continue;
+        expansion rest[16];
+        float w[16];
+        char words[16][LEX_WORD];
+        int n = 0;
+        for (int k = 0; k < np->n_desc; k++) /* its other objects and attributes, not the verb */
+            if (k != d && qp->desc_np[k].n_words)
+                rest[n] = qp->desc_exp[k], w[n] = np->desc_w[k], snprintf(words[n++], LEX_WORD, "%s", np->desc[k]);
+        float g = n ? gloss_overlap(c, rest, w, n, (const char (*)[LEX_WORD])words, pf, af, NULL, 0) : 1.0f;
+        float s = LEX_HOLDS * t * (1.0f - LEX_GAMMA + LEX_GAMMA * g);
+        if (s > best) best = s, *word = d;
+    }
+    return best;
 }
 
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
@@ -715,6 +761,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+        int hw = -1;
+        float h = np->n_mods ? 0 : holder_desc(c, np, qp, pf, af, &hw);
+        if (h > m->score) {
+            m->score = h;
+            m->kind = SP_LEX_MODIFIER;
+            snprintf(m->path, sizeof m->path, "'%s' is what the %s holds", np->desc[hw], c->name);
+        }
     }
     /* A compound whose modifier names this class: T(modifier, c) * WuP(head, c). */
     for (int r = 0; r < qp->n_ref && c->np.n_senses; r++) {
@@ -764,6 +817,7 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
     }
     for (int r = 0; r < qp->n_ref; r++) lex_np_free(&qp->ref[r]);
     for (int i = 0; i < 8; i++) lex_np_free(&qp->mod_np[i]), lex_bag_free(&qp->mod_bag[i]);
+    for (int i = 0; i < 16; i++) lex_np_free(&qp->desc_np[i]);
     free(qp);
     free(uses);
     return rc;

@@ -381,6 +381,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
     }
+    c->holder = holder_sense(&c->np);
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, 0, "the class name", err);

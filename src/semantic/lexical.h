@@ -222,6 +222,7 @@ typedef struct lex_class {
                        * it (its washer is home appliance, not machine); no senses otherwise */
     lex_np mod_head; /* the noun modifier next to the head of a name WordNet lacks, read alone
                       * ("dumbbell" of "dumbbell rack"): what the thing is for or holds */
+    int holder;      /* its head is a container or a support in WordNet (rack, shelf, bin, case) */
     int n_kind;
     lex_np kind_np[3]; /* the name's words before its last, read alone with all their noun senses
                         * ("checkout" of "checkout counter"): the kind its modifier names */
