@@ -197,10 +197,20 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
 {
     /* furniture is the one category of the list that is no equipment: "office equipment" is no
      * desk, "office furniture" no printer */
-    int furniture = !strcmp(np->head, "furniture") || !strcmp(np->head, "furnishing");
-    if (np->placeholder || !np->n_mods || np->n_desc || !lex_is_category(np->head)) return 0;
+    /* the category of a collocation WordNet joins ("office_furniture") is its last word */
+    const char *last = strrchr(np->head, '_');
+    const char *cat = last ? last + 1 : np->head;
+    int furniture = !strcmp(cat, "furniture") || !strcmp(cat, "furnishing");
+    if (np->placeholder || (!np->n_mods && !last) || np->n_desc || !lex_is_category(cat)) return 0;
+    /* a category WordNet names has kinds of its own: its taxonomy stands where it finds one
+     * ("kitchen appliance" -> the coffee maker, not the kitchen's sink) */
+    if (last && !np->n_mods && best_of(ph) >= SP_LEX_THRESHOLD) return 0;
     lex_tokens ct = {0, {{0}}};
     for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+    char lead[WN_LEMMA_MAX];
+    snprintf(lead, sizeof lead, "%.*s", last ? (int)(last - np->head) : 0, np->head);
+    for (char *save = NULL, *w = strtok_r(lead, "_", &save); w && ct.n + 1 < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &save))
+        snprintf(ct.w[ct.n++], LEX_WORD, "%s", w);
     snprintf(ct.w[ct.n++], LEX_WORD, "area");
     sp_lex_phrase *sub = malloc(sizeof *sub);
     if (!sub) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
@@ -212,7 +222,7 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
             if (ph->matches[j].class_index == m->class_index && m->score > ph->matches[j].score) {
                 ph->matches[j] = *m;
                 ph->matches[j].kind = SP_LEX_HYPERNYM; /* the category names its members, not one class */
-                snprintf(ph->matches[j].path, sizeof ph->matches[j].path, "%s: what the %s area holds", np->head,
+                snprintf(ph->matches[j].path, sizeof ph->matches[j].path, "%s: what the %s area holds", cat,
                          sub->region);
                 any = 1;
             }

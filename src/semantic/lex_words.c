@@ -187,10 +187,11 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
 }
 
 /* Words for a category of artifacts by use ("equipment", "appliances", "fittings"): with a modifier
- * they name what belongs to a place or an activity ("kitchen equipment", "safety equipment"). */
+ * they name what belongs to a place or an activity ("kitchen equipment", "safety equipment").
+ * Not "fixture": WordNet's lighting fixture is a lamp, no lighting area's contents. */
 int lex_is_category(const char *w)
 {
-    static const char *const words[] = {"equipment", "gear", "apparatus", "appliance", "device", "fixture",
+    static const char *const words[] = {"equipment", "gear", "apparatus", "appliance", "device",
                                         "fitting", "furniture", "furnishing", "supply", "supplies", "ware", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(w, words[i])) return 1;
