@@ -235,7 +235,12 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
  * by a more general word or not at all (hair, shirt, samples), however many senses the verb has. */
 static int purpose_weight(const lex_db *lx, lex_np *np, sp_error *err)
 {
+    /* a light verb says little of what the thing is for ("to PUT books on", "to KEEP food cold"):
+     * the object carries it (Jespersen's light verbs, those that are not already function words) */
+    static const char *const light[] = {"put", "keep", "make", "have", "give", "use", "place", "leave", NULL};
     if (np->n_desc < 2) return 0;
+    for (int i = 0; light[i]; i++)
+        if (!strcmp(np->desc[0], light[i])) return 0;
     int verb = lex_is_pos(lx, WN_VERB, np->desc[0], err);
     if (verb <= 0) return verb;
     for (int i = 1; i < np->n_desc; i++)

@@ -584,6 +584,44 @@ static void test_phase9_rules(const sp_lexicon *lx)
     free(res);
 }
 
+/* Phase 10 (issue 17, l12-lexical; docs/DESIGN.md changes 63-68), on general vocabularies. */
+static void test_phase10_rules(const sp_lexicon *lx)
+{
+    const char *salon[] = {"styling chair", "drying rack", "barber chair", "mop bucket", "ironing board",
+                           "weighing scale", "luggage rack", "coat rack", "walls", "floor"};
+    sp_lex_vocab *v = NULL;
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, salon, 10, &v, &res)) return;
+    /* a gerund modifier names a kind: another kind of chair is a sibling, the head finds it */
+    CHECK_MSG(!strcmp(found_class(v, "armchair", res), ""), "armchair -> '%s'", found_class(v, "armchair", res));
+    CHECK(!strcmp(found_class(v, "rack", res), "drying rack") || !strcmp(found_class(v, "rack", res), "luggage rack") ||
+          !strcmp(found_class(v, "rack", res), "coat rack"));
+    /* a name's modifier by its commonest sense: barber, "who cuts hair and shaves beards" */
+    CHECK_MSG(!strcmp(found_class(v, "where do I get a shave", res), "barber chair"), "shave -> '%s'",
+              found_class(v, "where do I get a shave", res));
+    /* the purpose verb weighs as much as its object (a shirt; the board is "for ironing clothes") */
+    CHECK(!strcmp(found_class(v, "something to iron a shirt on", res), "ironing board"));
+    /* the modifier chooses the head's sense: the scale for weighing, a measuring instrument */
+    CHECK(!strcmp(found_class(v, "a measuring instrument", res), "weighing scale"));
+    /* a description naming what a holder holds: a suitcase is luggage, a jacket a coat */
+    CHECK(!strcmp(found_class(v, "where do I put my suitcase", res), "luggage rack"));
+    CHECK(!strcmp(found_class(v, "somewhere to hang my jacket", res), "coat rack"));
+    free(res);
+    sp_lex_vocab_free(v);
+    /* a category word with a modifier: what the modifier's area holds, furniture apart */
+    const char *flat[] = {"microwave", "dishwasher", "kitchen counter", "sofa", "desk", "printer", "toilet",
+                          "bathtub", "walls", "floor"};
+    if (rules_vocab(lx, flat, 10, &v, &res)) return;
+    const char *k = found_class(v, "kitchen equipment", res);
+    CHECK_MSG(!strcmp(k, "microwave") || !strcmp(k, "dishwasher"), "kitchen equipment -> '%s'", k);
+    k = found_class(v, "bathroom fittings", res);
+    CHECK_MSG(!strcmp(k, "toilet") || !strcmp(k, "bathtub"), "bathroom fittings -> '%s'", k);
+    CHECK(!strcmp(found_class(v, "office equipment", res), "printer"));
+    CHECK(!strcmp(found_class(v, "office furniture", res), "desk"));
+    free(res);
+    sp_lex_vocab_free(v);
+}
+
 static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
 {
     return ph->n_matches ? sp_lex_vocab_class(v, ph->matches[0].class_index) : "";
@@ -696,6 +734,7 @@ int main(int argc, char **argv)
     test_phase7_rules(lx);
     test_phase8_rules(lx);
     test_phase9_rules(lx);
+    test_phase10_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom", "hotel",
                             "grocery", "chemlab", "pharmacy", "salon"};
     const int n_worlds = (int)(sizeof worlds / sizeof worlds[0]);
