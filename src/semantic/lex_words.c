@@ -192,7 +192,8 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
 int lex_is_category(const char *w)
 {
     static const char *const words[] = {"equipment", "gear", "apparatus", "appliance", "device",
-                                        "fitting", "furniture", "furnishing", "supply", "supplies", "ware", NULL};
+                                        "fitting", "furniture", "furnishing", "supply", "supplies", "ware", "machinery",
+                                        "electronics", NULL};
     for (int i = 0; words[i]; i++)
         if (!strcmp(w, words[i])) return 1;
     return 0;
