@@ -620,6 +620,14 @@ static void test_phase10_rules(const sp_lexicon *lx)
     CHECK(!strcmp(found_class(v, "office furniture", res), "desk"));
     free(res);
     sp_lex_vocab_free(v);
+    /* a place's definition names what it is by its genus ("shower stall: a BOOTH for taking a
+     * shower"), no member; a class named after the place is of it, alone too */
+    const char *bath[] = {"shower", "nightstand", "bed", "walls", "floor", "door"};
+    if (rules_vocab(lx, bath, 6, &v, &res)) return;
+    CHECK_MSG(!strcmp(found_class(v, "the shower stall", res), "shower"), "shower stall -> '%s'",
+              found_class(v, "the shower stall", res));
+    free(res);
+    sp_lex_vocab_free(v);
 }
 
 static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
