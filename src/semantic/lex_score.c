@@ -553,12 +553,25 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     return 1;
 }
 
+/* 1 when w (a base form, '_' between words) is the whole name of a class of v. */
+static int names_class(const sp_lex_vocab *v, const char *w)
+{
+    for (int i = 0; i < v->n; i++) {
+        const char *a = v->classes[i].name, *b = w;
+        while (*a && *b && (*a == *b || (*a == ' ' && *b == '_'))) a++, b++;
+        if (!*a && !*b) return 1;
+        if (!strcmp(v->classes[i].np.head, w) && v->classes[i].np.n_mods == 0) return 1;
+    }
+    return 0;
+}
+
 /* A description naming what a holder class holds ("where do I put my suitcase": the luggage
  * rack; "where are the plasters", "somewhere to hang my jacket" -> the coat rack): a description
  * noun that is the class's modifier's sense, a kind of it or a hypernym of it scores as the
  * holder reading of that noun alone (LEX_HOLDS times the taxonomy), the rest of the description
  * then weighing as a description beside a head (1 - GAMMA + GAMMA * its overlap). */
-static float holder_desc(const lex_class *c, const lex_np *np, const query_prep *qp, float pf, float af, int *word)
+static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp, float pf,
+                         float af, int *word)
 {
     float best = 0;
     *word = -1;
@@ -566,6 +579,9 @@ static float holder_desc(const lex_class *c, const lex_np *np, const query_prep 
     const lex_np *held = c->mod_head.n_senses ? &c->mod_head : c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1] : NULL;
     for (int d = 0; d < np->n_desc && held; d++) {
         const lex_np *q = &qp->desc_np[d];
+        /* a thing the scene has by name is what the description is about ("something to watch
+         * TV on" is the tv, not the tv stand that holds it) */
+        if (q->head[0] && names_class(v, q->head)) continue;
         float t = 0;
         for (int i = 0; i < q->n_senses; i++)
             for (int j = 0; j < held->n_senses; j++) {
@@ -762,7 +778,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
         int hw = -1;
-        float h = np->n_mods ? 0 : holder_desc(c, np, qp, pf, af, &hw);
+        float h = np->n_mods ? 0 : holder_desc(v, c, np, qp, pf, af, &hw);
         if (h > m->score) {
             m->score = h;
             m->kind = SP_LEX_MODIFIER;
