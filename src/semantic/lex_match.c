@@ -175,12 +175,6 @@ static int act_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *p
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
 
-/* A category of artifacts named by a place or an activity ("kitchen equipment", "bathroom
- * fittings", "safety equipment", "refrigeration equipment"): WordNet's category word is narrower
- * than its everyday use (its equipment is no device, appliance or machine), and the modifier says
- * which things are meant: what "the M area" holds (a table region, an activity, the classes
- * named after M), raised in ph where that is more than the object reading found. Returns 1 when
- * the area brought in a class at the threshold. */
 #define FURNITURE 3405725u /* furniture.n.01 */
 
 /* 1 when a sense of class ci is furniture. */
@@ -192,12 +186,18 @@ static int is_furniture(const sp_lex_vocab *v, int ci)
     return 0;
 }
 
+/* A category of artifacts named by a place or an activity ("kitchen equipment", "bathroom
+ * fittings", "safety equipment", "refrigeration equipment"): WordNet's category word is narrower
+ * than its everyday use (its equipment is no device, appliance or machine), and the modifier says
+ * which things are meant: what "the M area" holds (a table region, an activity, the classes
+ * named after M), raised in ph where that is more than the object reading found. Returns 1 when
+ * the area brought in a class at the threshold. */
 static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_lex_result *res,
                             sp_error *err)
 {
-    /* furniture is the one category of the list that is no equipment: "office equipment" is no
+    /* the category of a collocation WordNet joins ("office_furniture") is its last word;
+     * furniture is the one category of the list that is no equipment: "office equipment" is no
      * desk, "office furniture" no printer */
-    /* the category of a collocation WordNet joins ("office_furniture") is its last word */
     const char *last = strrchr(np->head, '_');
     const char *cat = last ? last + 1 : np->head;
     int furniture = !strcmp(cat, "furniture") || !strcmp(cat, "furnishing");
@@ -209,7 +209,7 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
     char lead[WN_LEMMA_MAX];
     snprintf(lead, sizeof lead, "%.*s", last ? (int)(last - np->head) : 0, np->head);
-    for (char *save = NULL, *w = strtok_r(lead, "_", &save); w && ct.n + 1 < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &save))
+    for (char *sv = NULL, *w = strtok_r(lead, "_", &sv); w && ct.n + 1 < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &sv))
         snprintf(ct.w[ct.n++], LEX_WORD, "%s", w);
     snprintf(ct.w[ct.n++], LEX_WORD, "area");
     sp_lex_phrase *sub = malloc(sizeof *sub);

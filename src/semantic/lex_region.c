@@ -49,8 +49,6 @@ int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *ph, const char
 }
 
 
-/* Members of a named region: the table's phrases and the nouns of its WordNet definition;
- * *support counts the phrases that found a class. */
 /* The genus of a definition into *genus: the last noun of its first run of content words ("a
  * BOOTH for taking a shower", "a small STOREROOM for storing foods"), what the place is, not what
  * stands in it (-1 when none). Returns 0 or a negative SP_E_* code. */
@@ -69,6 +67,8 @@ static int definition_genus(const lex_db *lx, const lex_tokens *t, int *genus, s
     return 0;
 }
 
+/* Members of a named region: the table's phrases and the nouns of its WordNet definition;
+ * *support counts the phrases that found a class. */
 static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
                           sp_lex_phrase *out, int *support, sp_error *err)
 {

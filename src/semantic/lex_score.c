@@ -576,7 +576,9 @@ static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np
     float best = 0;
     *word = -1;
     /* what it holds: the modifier of a name WordNet lacks, or of one it joins ("luggage rack") */
-    const lex_np *held = c->mod_head.n_senses ? &c->mod_head : c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1] : NULL;
+    const lex_np *held = c->mod_head.n_senses              ? &c->mod_head
+                         : c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1]
+                                                  : NULL;
     for (int d = 0; d < np->n_desc && held; d++) {
         const lex_np *q = &qp->desc_np[d];
         /* a thing the scene has by name is what the description is about ("something to watch
@@ -587,7 +589,8 @@ static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np
             for (int j = 0; j < held->n_senses; j++) {
                 if (!lex_sense_physical(&held->senses[j])) continue;
                 lex_tax x = lex_compare(&q->senses[i], &held->senses[j]);
-                if ((x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM) && x.score > t) t = x.score;
+                int related = x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM;
+                if (related && x.score > t) t = x.score;
             }
         if (t <= 0) continue;
         expansion rest[16];

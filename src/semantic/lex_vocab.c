@@ -278,7 +278,8 @@ static int names_modifier(const lex_db *lx, const lex_class *c, uint32_t off, sp
     int rc = lex_bag_synset(lx, &bag, (wn_id){off, WN_NOUN}, 1.0f, 0, err), hit = 0;
     for (int i = 0; !rc && i < c->np.n_mods && !hit; i++) {
         /* a word that also describes ("back" counter: an adjective, an adverb) names no purpose */
-        int adj = lex_is_pos(lx, WN_ADJ, c->np.mods[i], err), adv = adj ? 0 : lex_is_pos(lx, WN_ADV, c->np.mods[i], err);
+        int adj = lex_is_pos(lx, WN_ADJ, c->np.mods[i], err);
+        int adv = adj ? 0 : lex_is_pos(lx, WN_ADV, c->np.mods[i], err);
         if (adj || adv) {
             if (adj < 0 || adv < 0) rc = adj < 0 ? adj : adv;
             continue;
