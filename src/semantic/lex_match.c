@@ -175,15 +175,29 @@ static int act_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *p
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
 
-#define FURNITURE 3405725u /* furniture.n.01 */
+#define FURNITURE 3405725u        /* furniture.n.01 */
+#define INSTRUMENTALITY 3575240u  /* instrumentality.n.03: devices, equipment, containers, ... */
+#define COMMODITY 3076708u        /* commodity.n.01: WordNet files home appliances as durables */
 
-/* 1 when a sense of class ci is furniture. */
-static int is_furniture(const sp_lex_vocab *v, int ci)
+/* 1 when a sense of class ci is a kind of synset off. */
+static int class_under(const sp_lex_vocab *v, int ci, uint32_t off)
 {
     const lex_np *np = &v->classes[ci].np;
     for (int s = 0; s < np->n_senses; s++)
-        if (lex_anc_find(&np->senses[s], FURNITURE) >= 0) return 1;
+        if (lex_anc_find(&np->senses[s], off) >= 0) return 1;
     return 0;
+}
+
+/* 1 when class ci is of the category cat: furniture for "furniture", any artifact for the
+ * fittings and wares of a place, and otherwise a thing made to be used, an instrumentality or a
+ * durable good (WordNet's appliances), that is no furniture ("office equipment" is no desk; no
+ * floor, wall or door: "camping gear" is no floor). */
+static int in_category(const sp_lex_vocab *v, int ci, const char *cat)
+{
+    int furniture = class_under(v, ci, FURNITURE);
+    if (!strcmp(cat, "furniture") || !strcmp(cat, "furnishing")) return furniture;
+    if (!strcmp(cat, "fitting") || !strcmp(cat, "ware")) return !furniture;
+    return !furniture && (class_under(v, ci, INSTRUMENTALITY) || class_under(v, ci, COMMODITY));
 }
 
 /* A category of artifacts named by a place or an activity ("kitchen equipment", "bathroom
@@ -195,12 +209,9 @@ static int is_furniture(const sp_lex_vocab *v, int ci)
 static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_lex_result *res,
                             sp_error *err)
 {
-    /* the category of a collocation WordNet joins ("office_furniture") is its last word;
-     * furniture is the one category of the list that is no equipment: "office equipment" is no
-     * desk, "office furniture" no printer */
+    /* the category of a collocation WordNet joins ("office_furniture") is its last word */
     const char *last = strrchr(np->head, '_');
     const char *cat = last ? last + 1 : np->head;
-    int furniture = !strcmp(cat, "furniture") || !strcmp(cat, "furnishing");
     if (np->placeholder || (!np->n_mods && !last) || np->n_desc || !lex_is_category(cat)) return 0;
     /* a category WordNet names has kinds of its own: its taxonomy stands where it finds one
      * ("kitchen appliance" -> the coffee maker, not the kitchen's sink) */
@@ -217,7 +228,7 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     int rc = resolve(v, &ct, 0, ct.n, sub, res, 0, err), any = 0;
     for (int i = 0; !rc && sub->is_region && i < sub->n_matches; i++) {
         const sp_lex_class_match *m = &sub->matches[i];
-        if (m->score < SP_LEX_THRESHOLD || is_furniture(v, m->class_index) != furniture) continue;
+        if (m->score < SP_LEX_THRESHOLD || !in_category(v, m->class_index, cat)) continue;
         for (int j = 0; j < ph->n_matches; j++)
             if (ph->matches[j].class_index == m->class_index && m->score > ph->matches[j].score) {
                 ph->matches[j] = *m;
