@@ -628,6 +628,15 @@ static void test_phase10_rules(const sp_lexicon *lx)
               found_class(v, "the shower stall", res));
     free(res);
     sp_lex_vocab_free(v);
+    /* a name that names an artifact has no animal sense (jack, the fish); a category's members
+     * are of the category ("camping gear" is no floor) */
+    const char *store[] = {"pallet jack", "forklift", "first aid kit", "walls", "floor", "door"};
+    if (rules_vocab(lx, store, 6, &v, &res)) return;
+    for (int s = 0; s < v->classes[0].np.n_senses; s++) CHECK(!lex_sense_animal(&v->classes[0].np.senses[s]));
+    CHECK(!strcmp(found_class(v, "fishing gear", res), ""));
+    CHECK(!strcmp(found_class(v, "camping gear", res), "") || strcmp(found_class(v, "camping gear", res), "floor"));
+    free(res);
+    sp_lex_vocab_free(v);
 }
 
 static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
