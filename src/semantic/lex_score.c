@@ -275,6 +275,7 @@ typedef struct {
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
     lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
+    int holder;            /* the query's head is a support that holds things (lex_np_support) */
     lex_np desc_np[16];    /* description nouns read alone (not the purpose verb): what a holder
                             * class may hold ("where do I put my SUITCASE") */
     /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
@@ -412,6 +413,7 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             rc = lex_np_parse(lx, &one, 0, 1, 1, &qp->desc_np[i], err);
         }
     }
+    qp->holder = np->head[0] && !np->placeholder && lex_np_support(np);
     if (!rc) rc = agent_verbs(lx, np, qp, err);
     if (!rc && !np->placeholder) rc = prepare_any(lx, np, qp, err);
     if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
@@ -553,6 +555,29 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     return 1;
 }
 
+/* What a holder class holds: the modifier of a name WordNet lacks, or of one it joins ("luggage
+ * rack"); NULL for a class that is no holder. */
+static const lex_np *held_by(const lex_class *c)
+{
+    if (c->mod_head.n_senses) return &c->mod_head;
+    return c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1] : NULL;
+}
+
+/* The taxonomy's score of q against what a holder holds: the same sense, a kind of it or a
+ * hypernym of it (0 otherwise). */
+static float held_score(const lex_np *q, const lex_np *held)
+{
+    float t = 0;
+    for (int i = 0; i < q->n_senses; i++)
+        for (int j = 0; j < held->n_senses; j++) {
+            if (!lex_sense_physical(&held->senses[j])) continue;
+            lex_tax x = lex_compare(&q->senses[i], &held->senses[j]);
+            int related = x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM;
+            if (related && x.score > t) t = x.score;
+        }
+    return t;
+}
+
 /* 1 when w (a base form, '_' between words) is the whole name of a class of v. */
 static int names_class(const sp_lex_vocab *v, const char *w)
 {
@@ -575,23 +600,13 @@ static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np
 {
     float best = 0;
     *word = -1;
-    /* what it holds: the modifier of a name WordNet lacks, or of one it joins ("luggage rack") */
-    const lex_np *held = c->mod_head.n_senses              ? &c->mod_head
-                         : c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1]
-                                                  : NULL;
+    const lex_np *held = held_by(c);
     for (int d = 0; d < np->n_desc && held; d++) {
         const lex_np *q = &qp->desc_np[d];
         /* a thing the scene has by name is what the description is about ("something to watch
          * TV on" is the tv, not the tv stand that holds it) */
         if (q->head[0] && names_class(v, q->head)) continue;
-        float t = 0;
-        for (int i = 0; i < q->n_senses; i++)
-            for (int j = 0; j < held->n_senses; j++) {
-                if (!lex_sense_physical(&held->senses[j])) continue;
-                lex_tax x = lex_compare(&q->senses[i], &held->senses[j]);
-                int related = x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM;
-                if (related && x.score > t) t = x.score;
-            }
+        float t = held_score(q, held);
         if (t <= 0) continue;
         expansion rest[16];
         float w[16];
@@ -677,6 +692,23 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                     snprintf(m->path, sizeof m->path, "'%s' is what the %s holds", np->head, c->name);
                 }
             }
+    /* A holder of the same things: a query naming a holder and what it holds ("shoe rack",
+     * "luggage stand") against a holder class whose modifier names that, a kind of it or a
+     * hypernym of it (the shoe cabinet, the luggage rack): another name of the place those
+     * things are kept, one weak step (DELTA times the taxonomy of the thing held). */
+    int held_mod = -1;
+    const lex_np *held = has_head && np->n_mods > np->split && m->kind != SP_LEX_EXACT && qp->holder ? held_by(c) : NULL;
+    int last = np->n_mods - 1 - np->split;
+    if (held && last >= 0 && qp->mod_np[last].n_senses) {
+        float t = LEX_DELTA * held_score(&qp->mod_np[last], held);
+        if (t > base) {
+            base = t, held_mod = last;
+            m->kind = SP_LEX_MODIFIER;
+            snprintf(m->query_sense, sizeof m->query_sense, "%s", np->head);
+            snprintf(m->class_sense, sizeof m->class_sense, "%s", c->name);
+            snprintf(m->path, sizeof m->path, "both hold %s", np->mods[last]);
+        }
+    }
     /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
      * and the car, a wheeled vehicle), those whose own definition names the query's word come
      * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */
@@ -715,6 +747,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             if (mod_use) mod_use[i] = LEX_MOD_USED;
             continue;
         }
+        if (i == held_mod) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)

@@ -163,13 +163,9 @@ static int name_head_prepare(const lex_db *lx, lex_class *c, const lex_tokens *r
     return 0;
 }
 
-/* The noun modifier next to the head of a name WordNet lacks ("dumbbell" of "dumbbell rack",
- * "storage" of "storage shelf"), its physical senses that are no person, when the head is a
- * holder (a container or a support in WordNet: rack, shelf, bin, case): a query naming it alone
- * is what the class holds ("dumbbells" -> the dumbbell rack). */
-static int holder_sense(const lex_np *np)
+/* 1 when a sense of np's head has an ancestor of one of these names. */
+static int has_ancestor_named(const lex_np *np, const char *const *holders)
 {
-    static const char *const holders[] = {"container", "support", "supporting structure", NULL};
     for (int s = 0; s < np->n_senses; s++)
         for (int a = 0; a < np->senses[s].n_anc; a++)
             for (int h = 0; holders[h]; h++)
@@ -177,9 +173,25 @@ static int holder_sense(const lex_np *np)
     return 0;
 }
 
+int lex_np_holder(const lex_np *np)
+{
+    static const char *const holders[] = {"container", "support", "supporting structure", NULL};
+    return has_ancestor_named(np, holders);
+}
+
+int lex_np_support(const lex_np *np)
+{
+    static const char *const supports[] = {"support", "supporting structure", NULL};
+    return has_ancestor_named(np, supports);
+}
+
+/* The noun modifier next to the head of a name WordNet lacks ("dumbbell" of "dumbbell rack",
+ * "storage" of "storage shelf"), its physical senses that are no person, when the head is a
+ * holder (a container or a support in WordNet: rack, shelf, bin, case): a query naming it alone
+ * is what the class holds ("dumbbells" -> the dumbbell rack). */
 static int mod_head_prepare(const lex_db *lx, lex_class *c, sp_error *err)
 {
-    if (!holder_sense(&c->np)) return 0; /* a screen is not what holds its projector */
+    if (!lex_np_holder(&c->np)) return 0; /* a screen is not what holds its projector */
     lex_tokens one;
     one.n = 1;
     snprintf(one.w[0], LEX_WORD, "%s", c->np.mods[c->np.n_mods - 1]);
@@ -382,7 +394,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
     }
-    c->holder = holder_sense(&c->np);
+    c->holder = lex_np_holder(&c->np);
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, 0, "the class name", err);

@@ -206,6 +206,11 @@ typedef struct lex_np {
 } lex_np;
 
 void lex_np_free(lex_np *np);
+/* 1 when a sense of np's head is a holder: a container or a support in WordNet (rack, shelf, bin,
+ * case). */
+int lex_np_holder(const lex_np *np);
+/* 1 when a sense of np's head is a support in WordNet (rack, shelf, stand): it holds things up. */
+int lex_np_support(const lex_np *np);
 /* Parses tokens [from, to) into np; physical_only keeps physical senses (class names). */
 int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
                  lex_np *np, sp_error *err);

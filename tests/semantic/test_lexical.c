@@ -606,6 +606,9 @@ static void test_phase10_rules(const sp_lexicon *lx)
     /* a description naming what a holder holds: a suitcase is luggage, a jacket a coat */
     CHECK(!strcmp(found_class(v, "where do I put my suitcase", res), "luggage rack"));
     CHECK(!strcmp(found_class(v, "somewhere to hang my jacket", res), "coat rack"));
+    /* a support and what it holds name the holder of the same things ("luggage stand") */
+    CHECK_MSG(!strcmp(found_class(v, "a luggage stand", res), "luggage rack"), "luggage stand -> '%s'",
+              found_class(v, "a luggage stand", res));
     free(res);
     sp_lex_vocab_free(v);
     /* a category word with a modifier: what the modifier's area holds, furniture apart */
