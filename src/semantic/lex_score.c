@@ -622,6 +622,23 @@ static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np
     return best;
 }
 
+/* 1 when class c is a kind WordNet names with one word or collocation of its own (no modifier of
+ * the scene's, no split compound), found as a proper kind of the query's head ("atm", a machine),
+ * and the kind-naming query modifier i names none of its senses' words or kinds ("COFFEE
+ * machine"): the query names another kind of the head, a sibling. */
+static int another_named_kind(const lex_class *c, const lex_np *np, const query_prep *qp, int i,
+                              const sp_lex_class_match *m)
+{
+    if (c->np.n_mods || c->np.split || c->n_tok > 1 || m->kind != SP_LEX_HYPERNYM || !np->n_senses) return 0;
+    const lex_np *mq = &qp->mod_np[i];
+    for (int a = 0; a < mq->n_senses; a++)
+        for (int b = 0; b < c->np.n_senses; b++)
+            if (same_kind(&mq->senses[a], &c->np.senses[b], 0)) return 0;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
+    return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -755,7 +772,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
-        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] && another_kind(c, np, qp, i, &named)) {
+        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] &&
+            (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) {
             use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
             fmod *= LEX_MU;
             size_t o = strlen(m->path);

@@ -633,8 +633,13 @@ static void test_phase10_rules(const sp_lexicon *lx)
     sp_lex_vocab_free(v);
     /* a name that names an artifact has no animal sense (jack, the fish); a category's members
      * are of the category ("camping gear" is no floor) */
-    const char *store[] = {"pallet jack", "forklift", "first aid kit", "walls", "floor", "door"};
-    if (rules_vocab(lx, store, 6, &v, &res)) return;
+    const char *store[] = {"pallet jack", "forklift", "first aid kit", "walls", "floor", "door", "atm", "computer"};
+    if (rules_vocab(lx, store, 8, &v, &res)) return;
+    /* a kind WordNet names with its own word is no other kind of its hypernym: a coffee machine
+     * is no atm (a machine), a cash machine is */
+    CHECK_MSG(!strcmp(found_class(v, "a coffee machine", res), ""), "coffee machine -> '%s'",
+              found_class(v, "a coffee machine", res));
+    CHECK(!strcmp(found_class(v, "a cash machine", res), "atm"));
     for (int s = 0; s < v->classes[0].np.n_senses; s++) CHECK(!lex_sense_animal(&v->classes[0].np.senses[s]));
     CHECK(!strcmp(found_class(v, "fishing gear", res), ""));
     CHECK(!strcmp(found_class(v, "camping gear", res), "") || strcmp(found_class(v, "camping gear", res), "floor"));
@@ -776,9 +781,9 @@ int main(int argc, char **argv)
     /* phase 10 (l12-lexical) read all thirteen tables' misses: the pharmacy and the salon are
      * development data too and get floors (147/190 and 32/35, 155/188 and 36/40 when set); the
      * others rise to just under their figures (garage 123/139, cafe 154/187, basement 172/195
-     * and 27/34, classroom 154/178, hotel 144/170, grocery 169/200 and 33/36, chemlab 146/197) */
+     * and 27/34, classroom 154/178, hotel 144/170, grocery 169/200 and 34/36, chemlab 146/197) */
     const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.88, 0.82, 0.88, 0.86, 0.84, 0.84, 0.74, 0.77, 0.82},
-                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.79, 0.96, 0.85, 0.91, 0.94, 0.91, 0.89};
+                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.79, 0.96, 0.85, 0.94, 0.94, 0.91, 0.89};
     const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
