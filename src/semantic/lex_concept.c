@@ -12,6 +12,7 @@
 #define PROCESS 29677u /* process.n.06, physical process: radiation, waves, flows */
 #define ACT_N02 30358u /* act.n.02: something that people do */
 #define LIVING_THING 4258u /* living_thing.n.01: organisms, plants, animals */
+#define ANIMAL 15388u      /* animal.n.01 */
 #define ROOM_N01 4105893u /* room.n.01: an area within a building enclosed by walls and floor and ceiling */
 #define MAX_HYPER 8
 
@@ -99,6 +100,7 @@ int lex_sense_artifact(const lex_sense *s) { return lex_anc_find(s, ARTIFACT) >=
 int lex_sense_process(const lex_sense *s) { return lex_anc_find(s, PROCESS) >= 0; }
 int lex_sense_room(const lex_sense *s) { return lex_anc_find(s, ROOM_N01) >= 0; }
 int lex_sense_living(const lex_sense *s) { return lex_anc_find(s, LIVING_THING) >= 0; }
+int lex_sense_animal(const lex_sense *s) { return lex_anc_find(s, ANIMAL) >= 0; }
 int lex_sense_act(const lex_sense *s) { return lex_anc_find(s, ACT_N02) >= 0; }
 
 void lex_path(const lex_sense *s, int a, char *out, size_t cap)

@@ -173,6 +173,78 @@ static int act_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *p
 }
 
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
+                   sp_lex_result *res, int depth, sp_error *err);
+
+#define FURNITURE 3405725u        /* furniture.n.01 */
+#define INSTRUMENTALITY 3575240u  /* instrumentality.n.03: devices, equipment, containers, ... */
+#define COMMODITY 3076708u        /* commodity.n.01: WordNet files home appliances as durables */
+
+/* 1 when a sense of class ci is a kind of synset off. */
+static int class_under(const sp_lex_vocab *v, int ci, uint32_t off)
+{
+    const lex_np *np = &v->classes[ci].np;
+    for (int s = 0; s < np->n_senses; s++)
+        if (lex_anc_find(&np->senses[s], off) >= 0) return 1;
+    return 0;
+}
+
+/* 1 when class ci is of the category cat: furniture for "furniture", any artifact for the
+ * fittings and wares of a place, and otherwise a thing made to be used, an instrumentality or a
+ * durable good (WordNet's appliances), that is no furniture ("office equipment" is no desk; no
+ * floor, wall or door: "camping gear" is no floor). */
+static int in_category(const sp_lex_vocab *v, int ci, const char *cat)
+{
+    int furniture = class_under(v, ci, FURNITURE);
+    if (!strcmp(cat, "furniture") || !strcmp(cat, "furnishing")) return furniture;
+    if (!strcmp(cat, "fitting") || !strcmp(cat, "ware")) return !furniture;
+    return !furniture && (class_under(v, ci, INSTRUMENTALITY) || class_under(v, ci, COMMODITY));
+}
+
+/* A category of artifacts named by a place or an activity ("kitchen equipment", "bathroom
+ * fittings", "safety equipment", "refrigeration equipment"): WordNet's category word is narrower
+ * than its everyday use (its equipment is no device, appliance or machine), and the modifier says
+ * which things are meant: what "the M area" holds (a table region, an activity, the classes
+ * named after M), raised in ph where that is more than the object reading found. Returns 1 when
+ * the area brought in a class at the threshold. */
+static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, sp_lex_result *res,
+                            sp_error *err)
+{
+    /* the category of a collocation WordNet joins ("office_furniture") is its last word */
+    const char *last = strrchr(np->head, '_');
+    const char *cat = last ? last + 1 : np->head;
+    if (np->placeholder || (!np->n_mods && !last) || np->n_desc || !lex_is_category(cat)) return 0;
+    /* a category WordNet names has kinds of its own: its taxonomy stands where it finds one
+     * ("kitchen appliance" -> the coffee maker, not the kitchen's sink) */
+    if (last && !np->n_mods && best_of(ph) >= SP_LEX_THRESHOLD) return 0;
+    lex_tokens ct = {0, {{0}}};
+    for (int i = 0; i < np->n_mods; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+    char lead[WN_LEMMA_MAX];
+    snprintf(lead, sizeof lead, "%.*s", last ? (int)(last - np->head) : 0, np->head);
+    for (char *sv = NULL, *w = strtok_r(lead, "_", &sv); w && ct.n + 1 < LEX_MAX_TOKENS; w = strtok_r(NULL, "_", &sv))
+        snprintf(ct.w[ct.n++], LEX_WORD, "%s", w);
+    snprintf(ct.w[ct.n++], LEX_WORD, "area");
+    sp_lex_phrase *sub = malloc(sizeof *sub);
+    if (!sub) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = resolve(v, &ct, 0, ct.n, sub, res, 0, err), any = 0;
+    for (int i = 0; !rc && sub->is_region && i < sub->n_matches; i++) {
+        const sp_lex_class_match *m = &sub->matches[i];
+        if (m->score < SP_LEX_THRESHOLD || !in_category(v, m->class_index, cat)) continue;
+        for (int j = 0; j < ph->n_matches; j++)
+            if (ph->matches[j].class_index == m->class_index && m->score > ph->matches[j].score) {
+                ph->matches[j] = *m;
+                ph->matches[j].kind = SP_LEX_HYPERNYM; /* the category names its members, not one class */
+                snprintf(ph->matches[j].path, sizeof ph->matches[j].path, "%s: what the %s area holds", cat,
+                         sub->region);
+                any = 1;
+            }
+    }
+    free(sub);
+    if (rc) return rc;
+    if (any) qsort(ph->matches, (size_t)ph->n_matches, sizeof ph->matches[0], lex_match_cmp);
+    return any;
+}
+
+static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err)
 {
     memset(ph, 0, sizeof *ph);
@@ -198,6 +270,10 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
         }
     }
     if (!rc && !ph->is_region) rc = act_reading(v, &np, ph, res, depth, err);
+    if (!rc && !ph->is_region && !named && depth == 0 && (rc = category_reading(v, &np, ph, res, err)) > 0) {
+        for (int i = 0; i < np.n_mods; i++) use[i] = LEX_MOD_USED;
+        rc = 0;
+    }
     /* A bare area word ("the room", "the area", "a corner") names no object: WordNet's "area"
      * is a hypernym of lockers and cabinets (a compartment is a room), which no one means. */
     if (!rc && !ph->is_region && np.n_mods == 0 && !np.placeholder && lex_is_generic_region(np.head) &&

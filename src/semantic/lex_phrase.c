@@ -106,7 +106,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             tmp->attested = i == 0 || i < tagged;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
-            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp))) continue;
+            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp) || lex_sense_animal(tmp))) continue;
             if ((no_person & 2) && lex_sense_room(tmp)) continue;
             if ((no_person & 4) && !lex_sense_artifact(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
@@ -192,8 +192,9 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
-     * "printer" the tradesman) and no physical process ("microwave" the radiation, its only
-     * attested sense) when the name also names an artifact ("person" keeps its own), and no
+     * "printer" the tradesman), no animal ("jack" the fish, "crane" the bird) and no physical
+     * process ("microwave" the radiation, its only attested sense) when the name also names an
+     * artifact ("person" keeps its own, a plant its organism), and no
      * room when it also names an artifact that is none ("toilet" the fixture, not the room
      * WordNet's commonest sense calls a bathroom; a "kitchen" keeps its room). */
     int no_person = 0;
@@ -228,6 +229,24 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
     if (np->split) snprintf(np->head, sizeof np->head, "%s", w);
     else snprintf(np->head, sizeof np->head, "%s", nb > 0 ? b[0] : w);
     return rc;
+}
+
+/* The description's first word, when a verb, is what the thing is for ("to WASH hair", "that
+ * KEEPS food cold"): it weighs at least as much as any of its objects, which a definition names
+ * by a more general word or not at all (hair, shirt, samples), however many senses the verb has. */
+static int purpose_weight(const lex_db *lx, lex_np *np, sp_error *err)
+{
+    /* a light verb says little of what the thing is for ("to PUT books on", "to KEEP food cold"):
+     * the object carries it (Jespersen's light verbs, those that are not already function words) */
+    static const char *const light[] = {"put", "keep", "make", "have", "give", "use", "place", "leave", NULL};
+    if (np->n_desc < 2) return 0;
+    for (int i = 0; light[i]; i++)
+        if (!strcmp(np->desc[0], light[i])) return 0;
+    int verb = lex_is_pos(lx, WN_VERB, np->desc[0], err);
+    if (verb <= 0) return verb;
+    for (int i = 1; i < np->n_desc; i++)
+        if (np->desc_w[i] > np->desc_w[0]) np->desc_w[0] = np->desc_w[i];
+    return 0;
 }
 
 int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
@@ -304,5 +323,5 @@ int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int ph
     }
     for (int i = 0; i < np->n_desc; i++)
         if ((rc = lex_word_weight(lx, np->desc[i], &np->desc_w[i], err))) return rc;
-    return 0;
+    return purpose_weight(lx, np, err);
 }

@@ -49,6 +49,24 @@ int lex_region_absorb(sp_lex_phrase *region, const sp_lex_phrase *ph, const char
 }
 
 
+/* The genus of a definition into *genus: the last noun of its first run of content words ("a
+ * BOOTH for taking a shower", "a small STOREROOM for storing foods"), what the place is, not what
+ * stands in it (-1 when none). Returns 0 or a negative SP_E_* code. */
+static int definition_genus(const lex_db *lx, const lex_tokens *t, int *genus, sp_error *err)
+{
+    *genus = -1;
+    for (int i = 0; i < t->n; i++) {
+        int cls = lex_word_class_of(t->w[i]);
+        if (cls == LW_FUNCTION && *genus < 0) continue; /* "a", "an" before it */
+        if (cls != LW_CONTENT) break;
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(lx, WN_NOUN, t->w[i], b, err);
+        if (nb < 0) return nb;
+        if (nb > 0) *genus = i;
+    }
+    return 0;
+}
+
 /* Members of a named region: the table's phrases and the nouns of its WordNet definition;
  * *support counts the phrases that found a class. */
 static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
@@ -73,7 +91,10 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
      * "containing" are in thousands of definitions. */
     lex_tokens t = {0, {{0}}};
     if (definition) lex_tokenize(definition, &t);
+    int genus = -1;
+    rc = definition_genus(v->lx, &t, &genus, err);
     for (int i = 0; i < t.n && !rc; i++) {
+        if (i == genus) continue;
         const char *w = t.w[i];
         char base[WN_MAX_BASES][WN_LEMMA_MAX];
         int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
@@ -311,11 +332,14 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
         if ((rc = lex_region_activity(v, &t, ph, err)) < 0) return rc;
     }
     lex_region_named_after(v, ph->region, ph);
-    /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom. */
+    /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom; a
+     * class named after the place says by its name that it is of it ("the shower stall" ->
+     * the shower, "a booth for taking a shower") and stays. */
     int kinds = 0;
     for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
     if (kinds < 2)
         for (int i = 0; i < v->n; i++) {
+            if (ph->matches[i].kind == SP_LEX_REGION) continue;
             ph->matches[i].score *= LEX_MU;
             if (ph->matches[i].score > 0)
                 snprintf(ph->matches[i].gloss_words, sizeof ph->matches[i].gloss_words,

@@ -275,6 +275,9 @@ typedef struct {
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
     lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
+    int holder;            /* the query's head is a support that holds things (lex_np_support) */
+    lex_np desc_np[16];    /* description nouns read alone (not the purpose verb): what a holder
+                            * class may hold ("where do I put my SUITCASE") */
     /* query senses defined as "any <kind> <condition>" ("light: any device serving as a source
      * of illumination"): the sense, and its definition's words with their weights */
     int n_any, any_sense[2], any_n[2];
@@ -400,7 +403,17 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             qp->mod_kind[i] = k;
         }
     }
-    for (int i = 0; i < np->n_desc && !rc; i++) rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+    for (int i = 0; i < np->n_desc && !rc; i++) {
+        rc = expand(lx, np->desc[i], &qp->desc_exp[i], err);
+        int verb = !rc && i == 0 && np->n_desc > 1 ? lex_is_pos(lx, WN_VERB, np->desc[i], err) : 0;
+        if (verb < 0) return verb;
+        if (!rc && !verb) {
+            lex_tokens one = {1, {{0}}};
+            snprintf(one.w[0], LEX_WORD, "%s", np->desc[i]);
+            rc = lex_np_parse(lx, &one, 0, 1, 1, &qp->desc_np[i], err);
+        }
+    }
+    qp->holder = np->head[0] && !np->placeholder && lex_np_support(np);
     if (!rc) rc = agent_verbs(lx, np, qp, err);
     if (!rc && !np->placeholder) rc = prepare_any(lx, np, qp, err);
     if (!rc && qp->n_agent) rc = lex_word_weight(lx, np->head, &qp->agent_w, err);
@@ -542,6 +555,90 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     return 1;
 }
 
+/* What a holder class holds: the modifier of a name WordNet lacks, or of one it joins ("luggage
+ * rack"); NULL for a class that is no holder. */
+static const lex_np *held_by(const lex_class *c)
+{
+    if (c->mod_head.n_senses) return &c->mod_head;
+    return c->holder && c->n_kind ? &c->kind_np[c->n_kind - 1] : NULL;
+}
+
+/* The taxonomy's score of q against what a holder holds: the same sense, a kind of it or a
+ * hypernym of it (0 otherwise). */
+static float held_score(const lex_np *q, const lex_np *held)
+{
+    float t = 0;
+    for (int i = 0; i < q->n_senses; i++)
+        for (int j = 0; j < held->n_senses; j++) {
+            if (!lex_sense_physical(&held->senses[j])) continue;
+            lex_tax x = lex_compare(&q->senses[i], &held->senses[j]);
+            int related = x.kind == SP_LEX_SYNONYM || x.kind == SP_LEX_HYPERNYM || x.kind == SP_LEX_HYPONYM;
+            if (related && x.score > t) t = x.score;
+        }
+    return t;
+}
+
+/* 1 when w (a base form, '_' between words) is the whole name of a class of v. */
+static int names_class(const sp_lex_vocab *v, const char *w)
+{
+    for (int i = 0; i < v->n; i++) {
+        const char *a = v->classes[i].name, *b = w;
+        while (*a && *b && (*a == *b || (*a == ' ' && *b == '_'))) a++, b++;
+        if (!*a && !*b) return 1;
+        if (!strcmp(v->classes[i].np.head, w) && v->classes[i].np.n_mods == 0) return 1;
+    }
+    return 0;
+}
+
+/* A description naming what a holder class holds ("where do I put my suitcase": the luggage
+ * rack; "where are the plasters", "somewhere to hang my jacket" -> the coat rack): a description
+ * noun that is the class's modifier's sense, a kind of it or a hypernym of it scores as the
+ * holder reading of that noun alone (LEX_HOLDS times the taxonomy), the rest of the description
+ * then weighing as a description beside a head (1 - GAMMA + GAMMA * its overlap). */
+static float holder_desc(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp, float pf,
+                         float af, int *word)
+{
+    float best = 0;
+    *word = -1;
+    const lex_np *held = held_by(c);
+    for (int d = 0; d < np->n_desc && held; d++) {
+        const lex_np *q = &qp->desc_np[d];
+        /* a thing the scene has by name is what the description is about ("something to watch
+         * TV on" is the tv, not the tv stand that holds it) */
+        if (q->head[0] && names_class(v, q->head)) continue;
+        float t = held_score(q, held);
+        if (t <= 0) continue;
+        expansion rest[16];
+        float w[16];
+        char words[16][LEX_WORD];
+        int n = 0;
+        for (int k = 0; k < np->n_desc; k++) /* its other objects and attributes, not the verb */
+            if (k != d && qp->desc_np[k].n_words)
+                rest[n] = qp->desc_exp[k], w[n] = np->desc_w[k], snprintf(words[n++], LEX_WORD, "%s", np->desc[k]);
+        float g = n ? gloss_overlap(c, rest, w, n, (const char (*)[LEX_WORD])words, pf, af, NULL, 0) : 1.0f;
+        float s = LEX_HOLDS * t * (1.0f - LEX_GAMMA + LEX_GAMMA * g);
+        if (s > best) best = s, *word = d;
+    }
+    return best;
+}
+
+/* 1 when class c is a kind WordNet names with one word or collocation of its own (no modifier of
+ * the scene's, no split compound), found as a proper kind of the query's head ("atm", a machine),
+ * and the kind-naming query modifier i names none of its senses' words or kinds ("COFFEE
+ * machine"): the query names another kind of the head, a sibling. */
+static int another_named_kind(const lex_class *c, const lex_np *np, const query_prep *qp, int i,
+                              const sp_lex_class_match *m)
+{
+    if (c->np.n_mods || c->np.split || c->n_tok > 1 || m->kind != SP_LEX_HYPERNYM || !np->n_senses) return 0;
+    const lex_np *mq = &qp->mod_np[i];
+    for (int a = 0; a < mq->n_senses; a++)
+        for (int b = 0; b < c->np.n_senses; b++)
+            if (same_kind(&mq->senses[a], &c->np.senses[b], 0)) return 0;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
+    return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -612,6 +709,23 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                     snprintf(m->path, sizeof m->path, "'%s' is what the %s holds", np->head, c->name);
                 }
             }
+    /* A holder of the same things: a query naming a holder and what it holds ("shoe rack",
+     * "luggage stand") against a holder class whose modifier names that, a kind of it or a
+     * hypernym of it (the shoe cabinet, the luggage rack): another name of the place those
+     * things are kept, one weak step (DELTA times the taxonomy of the thing held). */
+    int held_mod = -1;
+    const lex_np *held = has_head && np->n_mods > np->split && m->kind != SP_LEX_EXACT && qp->holder ? held_by(c) : NULL;
+    int last = np->n_mods - 1 - np->split;
+    if (held && last >= 0 && qp->mod_np[last].n_senses) {
+        float t = LEX_DELTA * held_score(&qp->mod_np[last], held);
+        if (t > base) {
+            base = t, held_mod = last;
+            m->kind = SP_LEX_MODIFIER;
+            snprintf(m->query_sense, sizeof m->query_sense, "%s", np->head);
+            snprintf(m->class_sense, sizeof m->class_sense, "%s", c->name);
+            snprintf(m->path, sizeof m->path, "both hold %s", np->mods[last]);
+        }
+    }
     /* Among classes the taxonomy puts equally far below the query ("container": the bin, the can
      * and the car, a wheeled vehicle), those whose own definition names the query's word come
      * first ("bin: a container; usually has a lid"): an order among equals, not evidence. */
@@ -650,6 +764,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             if (mod_use) mod_use[i] = LEX_MOD_USED;
             continue;
         }
+        if (i == held_mod) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
@@ -657,7 +772,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
-        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] && another_kind(c, np, qp, i, &named)) {
+        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] &&
+            (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) {
             use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
             fmod *= LEX_MU;
             size_t o = strlen(m->path);
@@ -715,6 +831,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         m->kind = g > 0 ? SP_LEX_GLOSS : SP_LEX_NONE;
         snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         if (c->np.n_senses) snprintf(m->definition, sizeof m->definition, "%s", c->np.senses[0].definition);
+        int hw = -1;
+        float h = np->n_mods ? 0 : holder_desc(v, c, np, qp, pf, af, &hw);
+        if (h > m->score) {
+            m->score = h;
+            m->kind = SP_LEX_MODIFIER;
+            snprintf(m->path, sizeof m->path, "'%s' is what the %s holds", np->desc[hw], c->name);
+        }
     }
     /* A compound whose modifier names this class: T(modifier, c) * WuP(head, c). */
     for (int r = 0; r < qp->n_ref && c->np.n_senses; r++) {
@@ -764,6 +887,7 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
     }
     for (int r = 0; r < qp->n_ref; r++) lex_np_free(&qp->ref[r]);
     for (int i = 0; i < 8; i++) lex_np_free(&qp->mod_np[i]), lex_bag_free(&qp->mod_bag[i]);
+    for (int i = 0; i < 16; i++) lex_np_free(&qp->desc_np[i]);
     free(qp);
     free(uses);
     return rc;

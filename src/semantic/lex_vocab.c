@@ -163,13 +163,9 @@ static int name_head_prepare(const lex_db *lx, lex_class *c, const lex_tokens *r
     return 0;
 }
 
-/* The noun modifier next to the head of a name WordNet lacks ("dumbbell" of "dumbbell rack",
- * "storage" of "storage shelf"), its physical senses that are no person, when the head is a
- * holder (a container or a support in WordNet: rack, shelf, bin, case): a query naming it alone
- * is what the class holds ("dumbbells" -> the dumbbell rack). */
-static int holder_sense(const lex_np *np)
+/* 1 when a sense of np's head has an ancestor of one of these names. */
+static int has_ancestor_named(const lex_np *np, const char *const *holders)
 {
-    static const char *const holders[] = {"container", "support", "supporting structure", NULL};
     for (int s = 0; s < np->n_senses; s++)
         for (int a = 0; a < np->senses[s].n_anc; a++)
             for (int h = 0; holders[h]; h++)
@@ -177,9 +173,25 @@ static int holder_sense(const lex_np *np)
     return 0;
 }
 
+int lex_np_holder(const lex_np *np)
+{
+    static const char *const holders[] = {"container", "support", "supporting structure", NULL};
+    return has_ancestor_named(np, holders);
+}
+
+int lex_np_support(const lex_np *np)
+{
+    static const char *const supports[] = {"support", "supporting structure", NULL};
+    return has_ancestor_named(np, supports);
+}
+
+/* The noun modifier next to the head of a name WordNet lacks ("dumbbell" of "dumbbell rack",
+ * "storage" of "storage shelf"), its physical senses that are no person, when the head is a
+ * holder (a container or a support in WordNet: rack, shelf, bin, case): a query naming it alone
+ * is what the class holds ("dumbbells" -> the dumbbell rack). */
 static int mod_head_prepare(const lex_db *lx, lex_class *c, sp_error *err)
 {
-    if (!holder_sense(&c->np)) return 0; /* a screen is not what holds its projector */
+    if (!lex_np_holder(&c->np)) return 0; /* a screen is not what holds its projector */
     lex_tokens one;
     one.n = 1;
     snprintf(one.w[0], LEX_WORD, "%s", c->np.mods[c->np.n_mods - 1]);
@@ -223,6 +235,110 @@ static int kind_prepare(const lex_db *lx, lex_class *c, sp_error *err)
     return rc;
 }
 
+/* 1 when w is an -ing form of a verb that WordNet has neither as a noun nor as an adjective. */
+static int gerund(const lex_db *lx, const char *w, sp_error *err)
+{
+    size_t n = strlen(w);
+    if (n < 5 || strcmp(w + n - 3, "ing")) return 0;
+    int adj = lex_is_pos(lx, WN_ADJ, w, err);
+    if (adj) return adj < 0 ? adj : 0;
+    return lex_is_pos(lx, WN_VERB, w, err);
+}
+
+/* 1 when the noun synset is a named individual (an instance hypernym, "@i"). */
+static int is_instance(const lex_db *lx, uint32_t off, sp_error *err)
+{
+    wn_synset s;
+    int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &s, err);
+    if (rc) return rc < 0 ? rc : -rc;
+    int inst = 0;
+    for (int p = 0; p < s.n_pointers; p++) inst |= !strcmp(s.pointers[p].symbol, "@i");
+    wn_synset_free(&s);
+    return inst;
+}
+
+/* The words of a name before its last, by their commonest noun sense when the tagged corpora
+ * attest it, one weak step (DELTA) in the class's definitions: what the thing is for, holds or
+ * serves ("mop bucket": mop, "a cleaning implement ... for cleaning floors"; "barber chair":
+ * barber, "a hairdresser who cuts hair and shaves beards"; "laundry basket": laundry, wash,
+ * washing). A word WordNet's order alone puts first says nothing (change 23). */
+static int bag_modifiers(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    int rc = 0;
+    for (int i = 0; i + 1 < c->n_tok && !rc; i++) {
+        uint32_t off[8];
+        int tagged = 0;
+        int n = wn_lookup(lx->db, WN_NOUN, c->tok[i], off, 8, &tagged, err);
+        if (n < 0) return n;
+        int kinds = 0, first = -1; /* senses that are kinds, not named individuals ("Barber") */
+        for (int k = 0; k < n && !rc; k++) {
+            int inst = is_instance(lx, off[k], err);
+            if (inst < 0) return inst;
+            if (!inst && kinds++ == 0) first = k;
+        }
+        if (first >= 0 && (tagged || kinds == 1))
+            rc = lex_bag_synset(lx, &c->bag, (wn_id){off[first], WN_NOUN}, LEX_DELTA, 0, err);
+    }
+    return rc;
+}
+
+/* 1 when a base form of one of the class name's modifiers is a word of synset off's lemmas or
+ * definition. */
+static int names_modifier(const lex_db *lx, const lex_class *c, uint32_t off, sp_error *err)
+{
+    lex_bag bag = {0};
+    int rc = lex_bag_synset(lx, &bag, (wn_id){off, WN_NOUN}, 1.0f, 0, err), hit = 0;
+    for (int i = 0; !rc && i < c->np.n_mods && !hit; i++) {
+        /* a word that also describes ("back" counter: an adjective, an adverb) names no purpose */
+        int adj = lex_is_pos(lx, WN_ADJ, c->np.mods[i], err);
+        int adv = adj ? 0 : lex_is_pos(lx, WN_ADV, c->np.mods[i], err);
+        if (adj || adv) {
+            if (adj < 0 || adv < 0) rc = adj < 0 ? adj : adv;
+            continue;
+        }
+        for (int p = 0; p < 3 && !rc && !hit; p++) {
+            char b[WN_MAX_BASES][WN_LEMMA_MAX];
+            int nb = lex_bases(lx, (wn_pos)p, c->np.mods[i], b, err);
+            if (nb < 0) rc = nb;
+            else hit = nb > 0 && lex_bag_find(&bag, b, nb, 0.0f, 1.0f, 1.0f, 0, NULL) > 0;
+        }
+    }
+    lex_bag_free(&bag);
+    return rc ? rc : hit;
+}
+
+/* The modifier of a name WordNet lacks chooses among its head's senses (Lesk 1986): the physical
+ * senses of the head whose lemmas or definition say the modifier ("weighing scale": scale, "a
+ * measuring instrument for WEIGHING", not the indicator of graduated marks the corpora attest)
+ * replace the attested ones; the alias table's stay. Nothing changes when no sense says it. */
+static int modifier_senses(const lex_db *lx, lex_class *c, sp_error *err)
+{
+    lex_np *np = &c->np;
+    if (!np->n_mods || np->split || !np->head[0] || !np->senses) return 0;
+    uint32_t offs[LEX_MAX_SENSES];
+    int n = wn_lookup(lx->db, WN_NOUN, np->head, offs, LEX_MAX_SENSES, NULL, err);
+    if (n <= 0) return n;
+    lex_sense *keep = malloc(sizeof *keep * LEX_MAX_SENSES);
+    if (!keep) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int nk = 0, rc = 0;
+    for (int k = 0; k < n && !rc; k++) {
+        int hit = names_modifier(lx, c, offs[k], err);
+        if (hit < 0) rc = hit;
+        else if (hit && !(rc = lex_sense_load(lx, offs[k], k + 1, &keep[nk], err)) &&
+                 lex_sense_physical(&keep[nk]) && !lex_sense_person(&keep[nk]))
+            nk++;
+    }
+    if (!rc && nk) {
+        int own = np->n_senses - np->n_alias;
+        for (int i = own; i < np->n_senses && nk < LEX_MAX_SENSES; i++) keep[nk++] = np->senses[i];
+        memcpy(np->senses, keep, sizeof *keep * (size_t)nk);
+        np->n_senses = nk;
+        np->fallback = 0;
+    }
+    free(keep);
+    return rc;
+}
+
 static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -238,6 +354,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     int aliased = rc ? 0 : lex_alias_class(v, &t, &read, err);
     if (aliased < 0) return aliased;
     if (aliased) rc = add_alias_senses(lx, &c->np, &read, err);
+    if (!rc) rc = modifier_senses(lx, c, err);
     /* The words of the name in base form ("walls" -> "wall"), for exact matches and modifiers. */
     for (int i = 0; i < raw.n && !rc && c->n_tok < 8; i++) {
         char b[WN_MAX_BASES][WN_LEMMA_MAX];
@@ -246,6 +363,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
     if (!rc) rc = kind_prepare(lx, c, err);
+    if (!rc) rc = bag_modifiers(lx, c, err);
     /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
      * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
      * so the class is one level below its head and another kind of the head is its sibling.
@@ -258,6 +376,12 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             known = is;
             if (is && p == WN_NOUN) c->spec = 1;
         }
+        /* a gerund names the kind by its purpose ("drying rack", "styling chair": a chair for
+         * styling), as a noun modifier does; a participle adjective WordNet lists ("folding")
+         * is known as an adjective and was handled above */
+        int ger = gerund(lx, c->np.mods[i], err);
+        if (ger < 0) return ger;
+        if (ger) c->spec = 1;
         if (known) continue;
         c->spec = 1;
         /* its parts, when it is a closed compound ("overbed" = over + bed), agree with a query
@@ -270,6 +394,7 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
     }
+    c->holder = lex_np_holder(&c->np);
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
     if (!rc) rc = lex_bag_add_text(lx, &c->bag, name, 1.0f, 0, "the class name", err);

@@ -186,6 +186,19 @@ int lex_word_weight(const lex_db *lx, const char *w, float *weight, sp_error *er
     return 0;
 }
 
+/* Words for a category of artifacts by use ("equipment", "appliances", "fittings"): with a modifier
+ * they name what belongs to a place or an activity ("kitchen equipment", "safety equipment").
+ * Not "fixture": WordNet's lighting fixture is a lamp, no lighting area's contents. */
+int lex_is_category(const char *w)
+{
+    static const char *const words[] = {"equipment", "gear", "apparatus", "appliance", "device",
+                                        "fitting", "furniture", "furnishing", "supply", "supplies", "ware", "machinery",
+                                        "electronics", NULL};
+    for (int i = 0; words[i]; i++)
+        if (!strcmp(w, words[i])) return 1;
+    return 0;
+}
+
 /* Words that stand for "some area" and take their meaning from what follows ("area with
  * appliances") or precedes ("the kitchen area"). */
 int lex_is_generic_region(const char *w)

@@ -64,6 +64,8 @@ int lex_relation_at(const lex_tokens *t, int i, const char **name);
 /* Words that stand for "some area" ("area", "room", "corner", ...): regions by their complement,
  * and no description of an object ("something that lights the room"). */
 int lex_is_generic_region(const char *w);
+/* Category words of artifacts by use ("equipment", "appliance", "fitting"; base forms). */
+int lex_is_category(const char *w);
 /* Words that introduce what an area contains or resembles ("with", "like", "looks", ...). */
 int lex_is_region_link(const char *w);
 
@@ -111,6 +113,8 @@ int lex_sense_person(const lex_sense *s);
 int lex_sense_room(const lex_sense *s);
 /* 1 when the sense is a living thing (a plant, an animal, a person). */
 int lex_sense_living(const lex_sense *s);
+/* 1 when the sense is an animal ("jack" the fish, "crane" the bird). */
+int lex_sense_animal(const lex_sense *s);
 /* 1 when the sense is an act (act.n.02: "storage", the act of storing). */
 int lex_sense_act(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
@@ -202,6 +206,11 @@ typedef struct lex_np {
 } lex_np;
 
 void lex_np_free(lex_np *np);
+/* 1 when a sense of np's head is a holder: a container or a support in WordNet (rack, shelf, bin,
+ * case). */
+int lex_np_holder(const lex_np *np);
+/* 1 when a sense of np's head is a support in WordNet (rack, shelf, stand): it holds things up. */
+int lex_np_support(const lex_np *np);
 /* Parses tokens [from, to) into np; physical_only keeps physical senses (class names). */
 int lex_np_parse(const lex_db *lx, const lex_tokens *t, int from, int to, int physical_only,
                  lex_np *np, sp_error *err);
@@ -220,6 +229,7 @@ typedef struct lex_class {
                        * it (its washer is home appliance, not machine); no senses otherwise */
     lex_np mod_head; /* the noun modifier next to the head of a name WordNet lacks, read alone
                       * ("dumbbell" of "dumbbell rack"): what the thing is for or holds */
+    int holder;      /* its head is a container or a support in WordNet (rack, shelf, bin, case) */
     int n_kind;
     lex_np kind_np[3]; /* the name's words before its last, read alone with all their noun senses
                         * ("checkout" of "checkout counter"): the kind its modifier names */

@@ -584,6 +584,69 @@ static void test_phase9_rules(const sp_lexicon *lx)
     free(res);
 }
 
+/* Phase 10 (issue 17, l12-lexical; docs/DESIGN.md changes 63-68), on general vocabularies. */
+static void test_phase10_rules(const sp_lexicon *lx)
+{
+    const char *salon[] = {"styling chair", "drying rack", "barber chair", "mop bucket", "ironing board",
+                           "weighing scale", "luggage rack", "coat rack", "walls", "floor"};
+    sp_lex_vocab *v = NULL;
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, salon, 10, &v, &res)) return;
+    /* a gerund modifier names a kind: another kind of chair is a sibling, the head finds it */
+    CHECK_MSG(!strcmp(found_class(v, "armchair", res), ""), "armchair -> '%s'", found_class(v, "armchair", res));
+    CHECK(!strcmp(found_class(v, "rack", res), "drying rack") || !strcmp(found_class(v, "rack", res), "luggage rack") ||
+          !strcmp(found_class(v, "rack", res), "coat rack"));
+    /* a name's modifier by its commonest sense: barber, "who cuts hair and shaves beards" */
+    CHECK_MSG(!strcmp(found_class(v, "where do I get a shave", res), "barber chair"), "shave -> '%s'",
+              found_class(v, "where do I get a shave", res));
+    /* the purpose verb weighs as much as its object (a shirt; the board is "for ironing clothes") */
+    CHECK(!strcmp(found_class(v, "something to iron a shirt on", res), "ironing board"));
+    /* the modifier chooses the head's sense: the scale for weighing, a measuring instrument */
+    CHECK(!strcmp(found_class(v, "a measuring instrument", res), "weighing scale"));
+    /* a description naming what a holder holds: a suitcase is luggage, a jacket a coat */
+    CHECK(!strcmp(found_class(v, "where do I put my suitcase", res), "luggage rack"));
+    CHECK(!strcmp(found_class(v, "somewhere to hang my jacket", res), "coat rack"));
+    /* a support and what it holds name the holder of the same things ("luggage stand") */
+    CHECK_MSG(!strcmp(found_class(v, "a luggage stand", res), "luggage rack"), "luggage stand -> '%s'",
+              found_class(v, "a luggage stand", res));
+    free(res);
+    sp_lex_vocab_free(v);
+    /* a category word with a modifier: what the modifier's area holds, furniture apart */
+    const char *flat[] = {"microwave", "dishwasher", "kitchen counter", "sofa", "desk", "printer", "toilet",
+                          "bathtub", "walls", "floor"};
+    if (rules_vocab(lx, flat, 10, &v, &res)) return;
+    const char *k = found_class(v, "kitchen equipment", res);
+    CHECK_MSG(!strcmp(k, "microwave") || !strcmp(k, "dishwasher"), "kitchen equipment -> '%s'", k);
+    k = found_class(v, "bathroom fittings", res);
+    CHECK_MSG(!strcmp(k, "toilet") || !strcmp(k, "bathtub"), "bathroom fittings -> '%s'", k);
+    CHECK(!strcmp(found_class(v, "office equipment", res), "printer"));
+    CHECK(!strcmp(found_class(v, "office furniture", res), "desk"));
+    free(res);
+    sp_lex_vocab_free(v);
+    /* a place's definition names what it is by its genus ("shower stall: a BOOTH for taking a
+     * shower"), no member; a class named after the place is of it, alone too */
+    const char *bath[] = {"shower", "nightstand", "bed", "walls", "floor", "door"};
+    if (rules_vocab(lx, bath, 6, &v, &res)) return;
+    CHECK_MSG(!strcmp(found_class(v, "the shower stall", res), "shower"), "shower stall -> '%s'",
+              found_class(v, "the shower stall", res));
+    free(res);
+    sp_lex_vocab_free(v);
+    /* a name that names an artifact has no animal sense (jack, the fish); a category's members
+     * are of the category ("camping gear" is no floor) */
+    const char *store[] = {"pallet jack", "forklift", "first aid kit", "walls", "floor", "door", "atm", "computer"};
+    if (rules_vocab(lx, store, 8, &v, &res)) return;
+    /* a kind WordNet names with its own word is no other kind of its hypernym: a coffee machine
+     * is no atm (a machine), a cash machine is */
+    CHECK_MSG(!strcmp(found_class(v, "a coffee machine", res), ""), "coffee machine -> '%s'",
+              found_class(v, "a coffee machine", res));
+    CHECK(!strcmp(found_class(v, "a cash machine", res), "atm"));
+    for (int s = 0; s < v->classes[0].np.n_senses; s++) CHECK(!lex_sense_animal(&v->classes[0].np.senses[s]));
+    CHECK(!strcmp(found_class(v, "fishing gear", res), ""));
+    CHECK(!strcmp(found_class(v, "camping gear", res), "") || strcmp(found_class(v, "camping gear", res), "floor"));
+    free(res);
+    sp_lex_vocab_free(v);
+}
+
 static const char *top_class(const sp_lex_vocab *v, const sp_lex_phrase *ph)
 {
     return ph->n_matches ? sp_lex_vocab_class(v, ph->matches[0].class_index) : "";
@@ -696,6 +759,7 @@ int main(int argc, char **argv)
     test_phase7_rules(lx);
     test_phase8_rules(lx);
     test_phase9_rules(lx);
+    test_phase10_rules(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom", "hotel",
                             "grocery", "chemlab", "pharmacy", "salon"};
     const int n_worlds = (int)(sizeof worlds / sizeof worlds[0]);
@@ -714,12 +778,16 @@ int main(int argc, char **argv)
     /* phase 9 (l11-lexical): the grocery and the chemlab are development data too and get
      * regression floors (163/200 and 32/36, 138/197 and 32/34 when set); a table added after
      * them is printed without a bar */
-    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.87, 0.8, 0.85, 0.84, 0.79, 0.81, 0.70},
-                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.75, 0.96, 0.85, 0.88, 0.94};
+    /* phase 10 (l12-lexical) read all thirteen tables' misses: the pharmacy and the salon are
+     * development data too and get floors (147/190 and 32/35, 155/188 and 36/40 when set); the
+     * others rise to just under their figures (garage 123/139, cafe 154/187, basement 172/195
+     * and 27/34, classroom 154/178, hotel 144/170, grocery 169/200 and 34/36, chemlab 146/197) */
+    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.88, 0.82, 0.88, 0.86, 0.84, 0.84, 0.74, 0.77, 0.82},
+                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.79, 0.96, 0.85, 0.94, 0.94, 0.91, 0.89};
     const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= n_floors) continue; /* a blind table (pharmacy, salon): printed, no bar */
+        if (w >= n_floors) continue; /* a table added later: printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
