@@ -712,8 +712,9 @@ static sp_camera carving_view(const sp_costmap *cm, const sp_costmap_opts *o, co
 }
 
 /* One view's first-surface depth from the Gaussians it can show (culled into sub), through
- * scene on raster r; pool runs the culling. Adds the Gaussians drawn to *drawn. */
-static int render_view(sp_pool *pool, const sp_splat *host, const cull_geo *geo, sp_scene *scene, sp_splat *sub,
+ * *scene (made here the first time) on raster r; pool runs the culling. Adds the Gaussians drawn
+ * to *drawn. */
+static int render_view(sp_pool *pool, const sp_splat *host, const cull_geo *geo, sp_scene **scene, sp_splat *sub,
                        sp_raster *r, const sp_costmap_opts *o, const sp_camera *view, float *depth, size_t *drawn,
                        sp_error *err)
 {
@@ -726,8 +727,9 @@ static int render_view(sp_pool *pool, const sp_splat *host, const cull_geo *geo,
     /* first-surface depth where the accumulated alpha reaches carve_alpha: expected depth blends a
      * surface's edge with what lies behind it */
     sp_render_request q = {.depth = depth, .depth_mode = SP_DEPTH_SURFACE, .depth_alpha = o->carve_alpha};
-    int rc = sp_scene_update(scene, sub, SP_SCENE_CHANGED_GEOMETRY, err);
-    if (!rc) rc = sp_render_views(r, scene, view, 1, &q, err);
+    int rc = *scene ? sp_scene_update(*scene, sub, SP_SCENE_CHANGED_GEOMETRY, err)
+                    : sp_scene_create(scene, sp_raster_device(r), sub, 0, err); /* made on first use */
+    if (!rc) rc = sp_render_views(r, *scene, view, 1, &q, err);
     return rc ? sp_error_prefix(err, "costmap: rendering training views for carving: ") : SP_OK;
 }
 
@@ -735,6 +737,11 @@ static int render_view(sp_pool *pool, const sp_splat *host, const cull_geo *geo,
  * the CPU, carving views are small (160 x 120) and a view's stages split over the pool wait on
  * each other and run their sort and scans serially, so whole views go to the threads instead.
  * The CPU renderer's output does not depend on its thread count: the depth is the same. */
+static int use_lanes(sp_device *dev)
+{
+    return sp_device_kind_of(dev) == SP_DEVICE_CPU && sp_pool_size(sp_device_pool(dev)) > 1;
+}
+
 typedef struct render_lane {
     sp_device *dev;
     sp_raster *r;
@@ -761,7 +768,7 @@ static void lanes_view(void *ctx, long i, int thread_id)
     render_lane *l = &j->lane[thread_id];
     long k = j->todo[i];
     if (!l->rc)
-        l->rc = render_view(sp_device_pool(l->dev), j->host, j->geo, l->scene, &l->sub, l->r, j->o, &j->views[k],
+        l->rc = render_view(sp_device_pool(l->dev), j->host, j->geo, &l->scene, &l->sub, l->r, j->o, &j->views[k],
                             j->depth[k], &l->drawn, &l->err);
 }
 
@@ -781,9 +788,8 @@ static int lanes_alloc(render_lane **out, int T, const sp_splat *host, sp_error 
     render_lane *lane = calloc((size_t)T, sizeof *lane);
     int rc = lane ? SP_OK : sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d render lanes", T);
     for (int t = 0; t < T && !rc; t++) {
-        if (!(rc = sp_device_create(&lane[t].dev, SP_DEVICE_CPU, 1, err)) && !(rc = sp_raster_create(&lane[t].r, lane[t].dev, err)) &&
-            !(rc = sp_splat_alloc(&lane[t].sub, host->n, 0, 0, err)))
-            rc = sp_scene_create(&lane[t].scene, lane[t].dev, host, 0, err);
+        if (!(rc = sp_device_create(&lane[t].dev, SP_DEVICE_CPU, 1, err)) && !(rc = sp_raster_create(&lane[t].r, lane[t].dev, err)))
+            rc = sp_splat_alloc(&lane[t].sub, host->n, 0, 0, err);
     }
     if (rc) lanes_free(lane, T), lane = NULL;
     *out = lane;
@@ -791,8 +797,8 @@ static int lanes_alloc(render_lane **out, int T, const sp_splat *host, sp_error 
 }
 
 /* Renders the views render[] asks for, side by side on the CPU (render lanes), one after the
- * other on a GPU (whose passes fill the device). */
-static int render_views(const sp_splat *host, const cull_geo *geo, sp_scene *scene, sp_splat *sub, sp_raster *r,
+ * other on a GPU (whose passes fill the device) through *scene and sub. */
+static int render_views(const sp_splat *host, const cull_geo *geo, sp_scene **scene, sp_splat *sub, sp_raster *r,
                         const sp_costmap_opts *o, sp_camera *views, float *const *depth, const uint8_t *render,
                         size_t n, size_t *drawn, const sp_log *log, sp_error *err)
 {
@@ -801,7 +807,7 @@ static int render_views(const sp_splat *host, const cull_geo *geo, sp_scene *sce
     int T = sp_pool_size(pool), rc = SP_OK;
     sp_progress pr;
     sp_progress_begin(&pr, log, "carve", (long)n, "views");
-    if (sp_device_kind_of(dev) == SP_DEVICE_CPU && T > 1) {
+    if (use_lanes(dev)) {
         long *todo = malloc(sizeof(long) * (n ? n : 1)), n_todo = 0;
         render_lane *lane = NULL;
         if (!todo) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %zu carving views", n);
@@ -893,7 +899,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     int rc = carving_splat(s, cams, n_cams, cm->band[1], &host, &geo, err);
     if (rc) return sp_error_prefix(err, "costmap: ");
     size_t kept = host.n, drawn = 0;
-    if (!(rc = sp_splat_alloc(&sub, kept, 0, 0, err))) rc = sp_scene_create(&scene, dev, &host, 0, err);
+    if (!use_lanes(dev)) rc = sp_splat_alloc(&sub, kept, 0, 0, err); /* the lanes have their own */
     if (rc) {
         sp_splat_free(&host), sp_splat_free(&sub), free(geo.rows);
         return sp_error_prefix(err, "costmap: ");
@@ -905,7 +911,7 @@ int nav_carve(const sp_costmap *cm, const sp_splat *s, const sp_camera *cams, si
     if (!th) rc = sp_error_set(err, SP_E_NOMEM, "costmap: out of memory for %d carving threads", T);
     if (!rc) rc = carving_alloc(&c, cm, o, cams, n_cams, out->view_counts != NULL, err);
     double t0 = nav_cpu_now(), w0 = sp_time_now();
-    if (!rc) rc = render_views(&host, &geo, scene, &sub, r, o, c.views, c.depth, c.render, n_cams, &drawn, log, err);
+    if (!rc) rc = render_views(&host, &geo, &scene, &sub, r, o, c.views, c.depth, c.render, n_cams, &drawn, log, err);
     double t1 = nav_cpu_now(), w1 = sp_time_now();
     long excess = 0;
     out->floor_tol = rc ? o->floor_tolerance_m : floor_tolerance(cm, o, c.views, c.depth, c.keep, n_cams, &excess);
