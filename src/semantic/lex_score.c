@@ -171,12 +171,13 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++) {
         char mod[WN_LEMMA_MAX];
         snprintf(mod, sizeof mod, "%s", mod_base[i]);
-        for (char *save = NULL, *t = strtok_r(mod, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+        /* and a hyphenated modifier is its words ("roll-up door" is the roll up door) */
+        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
             snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     }
     char head[WN_LEMMA_MAX];
     snprintf(head, sizeof head, "%s", np->head);
-    for (char *save = NULL, *t = strtok_r(head, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+    for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
         snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     if (n != c->n_tok) {
         /* one-word spellings of two-word names and back ("bookshelf", "book shelf") */
@@ -188,6 +189,21 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     for (int i = 0; i < n; i++)
         if (strcmp(seq[i], c->tok[i])) return 0;
     return 1;
+}
+
+/* 1 when a hyphenated word's parts are all words of class c's name ("roll-up" of "roll up door"). */
+static int parts_in_name(const char *w, const lex_class *c)
+{
+    if (!strchr(w, '-')) return 0;
+    char buf[WN_LEMMA_MAX];
+    snprintf(buf, sizeof buf, "%s", w);
+    int all = 1;
+    for (char *save = NULL, *t = strtok_r(buf, "-", &save); t && all; t = strtok_r(NULL, "-", &save)) {
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], t);
+        all = in;
+    }
+    return all;
 }
 
 static float wup3(int depth_lcs, int dq, int dc)
@@ -751,7 +767,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     float fmod = 1.0f;
     int named = 0; /* a query modifier is a word of the class's name ("swivel BAR stool") */
     for (int i = 0; i < np->n_mods - np->split; i++)
-        for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c);
     if (strchr(np->head, '_')) { /* "cabinet TABLE saw": the head is the class's own name */
         char h[WN_LEMMA_MAX];
         snprintf(h, sizeof h, "%s", np->head);
@@ -767,6 +783,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (i == held_mod) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
+        if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
