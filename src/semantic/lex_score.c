@@ -289,6 +289,8 @@ typedef struct {
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
+    int mod_noun[8];       /* modifier i is a noun or a word WordNet lacks, no adjective: it
+                            * makes the query a particular kind of its head (noun_modifier) */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
     lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
     int holder;            /* the query's head is a support that holds things (lex_np_support) */
@@ -403,6 +405,32 @@ static int kind_modifier(const lex_db *lx, const char *word, const char *base, l
     return np->n_senses > 0;
 }
 
+/* 1 when a query modifier is a noun without an adjective reading, or no word WordNet has at all
+ * ("DOCK door", "LOADING bay door"): as for a class name (class_prepare), it names a particular
+ * kind of the head, where an adjective ("red", "front") describes it, and so does a noun whose
+ * commonest sense is a material, a quality or a shape ("steel", "leather": phase 9's rule). */
+static int noun_modifier(const lex_db *lx, const char *word, const char *base, sp_error *err)
+{
+    int adj = lex_is_pos(lx, WN_ADJ, word, err);
+    if (adj) return adj < 0 ? adj : 0;
+    uint32_t off;
+    int k = wn_lookup(lx->db, WN_NOUN, base, &off, 1, NULL, err);
+    if (k < 0) return k;
+    if (k > 0) {
+        wn_synset syn;
+        int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &syn, err);
+        if (rc) return rc < 0 ? rc : -rc;
+        int f = syn.lexfile;
+        wn_synset_free(&syn);
+        return f != WN_LEX_SUBSTANCE && f != WN_LEX_ATTRIBUTE && f != WN_LEX_SHAPE;
+    }
+    for (int p = 0; p < WN_NPOS; p++) {
+        int is = lex_is_pos(lx, (wn_pos)p, word, err);
+        if (is) return is < 0 ? is : 0;
+    }
+    return 1;
+}
+
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -417,6 +445,9 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             int k = kind_modifier(lx, np->mods[i], qp->mod_base[i], &qp->mod_np[i], &qp->mod_bag[i], err);
             if (k < 0) return k;
             qp->mod_kind[i] = k;
+            int nm = noun_modifier(lx, np->mods[i], qp->mod_base[i], err);
+            if (nm < 0) return nm;
+            qp->mod_noun[i] = nm;
         }
     }
     for (int i = 0; i < np->n_desc && !rc; i++) {
@@ -655,6 +686,62 @@ static int another_named_kind(const lex_class *c, const lex_np *np, const query_
     return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
 }
 
+/* 1 when the query has a noun modifier (noun_modifier) that class c's name does not say, that
+ * names no class of the scene and that c's definitions do not mention: the query is then one
+ * level below its head, as a class named so is. */
+static int query_level(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp)
+{
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        if (!qp->mod_noun[i] || lex_vocab_has_word(v, qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c)) continue;
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k < c->n_part && !in; k++) in = !strcmp(c->part[k], qp->mod_base[i]);
+        if (!in && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) <= 0) return 1;
+    }
+    return 0;
+}
+
+/* 1 when a class of the scene named below the query's head (c->spec) is at the query's level
+ * (query_level) with the same head word and sense: only then does the bare head class give way to it;
+ * alone, it stays the query's synonym ("bistro chair" is the chair, not a WordNet kind of one). */
+static int level_candidate(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp)
+{
+    for (int j = 0; j < v->n; j++) {
+        const lex_class *o = &v->classes[j];
+        if (!o->spec || !o->np.n_senses || strcmp(o->np.head, np->head) || !query_level(v, o, np, qp)) continue;
+        int bq, bc;
+        lex_tax t = best_tax(np->senses, np->n_senses, o->np.senses, o->np.n_senses, 0, 0, &bq, &bc);
+        if (t.kind == SP_LEX_SYNONYM) return 1;
+    }
+    return 0;
+}
+
+/* The query and the class at their levels (query_level, c->spec) when both name the same head
+ * sense: a query "M H" is a kind of H, so a class "H" is its hypernym (WuP one step), and a class
+ * "M2 H" WordNet lacks may be the same kind under another name ("dock door" / roll up door), the
+ * modifier M then an attribute not shown (EPSILON) unless it names another kind (another_kind:
+ * the sibling's MU). Before, the bare class won as a synonym and the specific one lost a step. */
+static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp,
+                      float *base, sp_lex_class_match *m)
+{
+    if (!np->n_senses || !c->np.n_senses || np->split || !query_level(v, c, np, qp)) return;
+    int bq, bc;
+    lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 0, 0, &bq, &bc);
+    if (t.kind != SP_LEX_SYNONYM) return;
+    if (c->spec && !strcmp(c->np.head, np->head) && *base < t.score) { /* the same head word */
+        *base = t.score;
+        describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+        /* still a hypernym match: the query does not name the class, so a region reading
+         * ("the nail station") is still tried (lex_match.c, resolve) */
+        m->kind = SP_LEX_HYPERNYM;
+        snprintf(m->path, sizeof m->path, "both are kinds of %s named by a modifier", np->head);
+    } else if (!c->spec && m->kind == SP_LEX_SYNONYM && level_candidate(v, np, qp)) {
+        const lex_sense *cs = &c->np.senses[bc];
+        *base = wup3(cs->anc[0].depth, 1, 0);
+        m->kind = SP_LEX_HYPONYM;
+    }
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -707,6 +794,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * which WordNet files under home appliance): the query against that word's senses, the
      * class one level below them, as for a name WordNet lacks. */
     if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
+    if (has_head && m->kind != SP_LEX_EXACT) level_tax(v, c, np, qp, &base, m);
     /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
      * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
      * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
