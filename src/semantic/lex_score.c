@@ -578,6 +578,9 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     int kind = 0; /* the class's modifier names a kind too ("magazine" rack), not a purpose, a
                    * quality or a material ("storage" shelf, "privacy" curtain, "cardboard" box) */
     for (int k = 0; k < c->n_kind; k++) kind |= c->kind_np[k].n_senses > 0 && wn_lexfile_names_kind(c->kind_lexfile[k]);
+    /* a name WordNet joins is a kind of its head by WordNet's own word, whatever its modifier
+     * names ("vending machine", "washing machine", "double bed") */
+    kind |= c->np.n_mods == 0 && strchr(c->np.head, '_') != NULL;
     if (!kind) return 0;
     const lex_np *m = &qp->mod_np[i];
     char parts[WN_LEMMA_MAX], one[1][WN_LEMMA_MAX];
