@@ -394,6 +394,13 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
     }
+    /* a closed compound WordNet lacks, split ("nightstand" = night + stand): its first part is a
+     * word of its name too, so a query modifier saying it agrees ("NIGHT table") */
+    if (!rc && c->np.split && c->np.n_mods > 0 && c->n_part < 4) {
+        char left[LEX_WORD];
+        snprintf(left, sizeof left, "%s", c->np.mods[c->np.n_mods - 1]);
+        memcpy(c->part[c->n_part++], left, sizeof left);
+    }
     c->holder = lex_np_holder(&c->np);
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);
     if (!rc && c->spec && c->np.n_mods > 0) rc = mod_head_prepare(lx, c, err);
