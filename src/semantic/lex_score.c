@@ -974,8 +974,67 @@ int lex_match_cmp(const void *a, const void *b)
     return x->class_index - y->class_index;
 }
 
+static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                        sp_error *err);
+
+/* 1 when query sense q is what class c's name means by its last word: one of c's senses or a
+ * hypernym of one ("stool" of "bar stool": the seat, not WordNet's fourth stool, the toilet). */
+static int named_sense(const lex_class *c, const lex_sense *q)
+{
+    for (int j = 0; j < c->np.n_senses; j++)
+        if (lex_anc_find(&c->np.senses[j], q->off) >= 0) return 1;
+    return 0;
+}
+
+/* The scene's senses of the query's head word: when classes of the scene end in that word, the
+ * physical senses their names use are what the word means here, and its others are dropped
+ * (keep[i] = 0; alias senses stay; a "periodic table", a tabular array, says nothing of tables). Returns how many are kept, 0 when the scene says nothing. */
+static int scene_senses(const sp_lex_vocab *v, const lex_np *np, int *keep)
+{
+    if (!np->head[0] || np->placeholder || np->split || np->n_senses < 2) return 0;
+    int n = 0, own = np->n_senses - np->n_alias;
+    for (int i = 0; i < np->n_senses; i++) keep[i] = i >= own;
+    for (int ci = 0; ci < v->n; ci++) {
+        const lex_class *c = &v->classes[ci];
+        if (!c->n_tok || strcmp(c->tok[c->n_tok - 1], np->head)) continue;
+        for (int i = 0; i < own; i++)
+            if (!keep[i] && lex_sense_physical(&np->senses[i]) && named_sense(c, &np->senses[i])) keep[i] = 1, n++;
+    }
+    return n;
+}
+
+/* np with only the senses keep[] marks (a shallow copy; its senses array is the caller's). */
+static lex_np keep_senses(const lex_np *np, const int *keep, lex_sense *buf)
+{
+    lex_np r = *np;
+    r.n_senses = 0;
+    r.n_alias = 0;
+    int own = np->n_senses - np->n_alias;
+    for (int i = 0; i < np->n_senses; i++)
+        if (keep[i]) buf[r.n_senses++] = np->senses[i], r.n_alias += i >= own;
+    r.senses = buf;
+    return r;
+}
+
 int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
                  sp_error *err)
+{
+    int keep[LEX_MAX_SENSES * 2];
+    lex_sense *buf = NULL;
+    lex_np scene;
+    if (np->n_senses <= (int)(sizeof keep / sizeof keep[0]) && scene_senses(v, np, keep)) {
+        buf = malloc(sizeof *buf * (size_t)np->n_senses);
+        if (!buf) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        scene = keep_senses(np, keep, buf);
+        np = &scene;
+    }
+    int rc = score_senses(v, np, ph, mod_use, err);
+    free(buf);
+    return rc;
+}
+
+static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                        sp_error *err)
 {
     query_prep *qp = calloc(1, sizeof *qp);
     int *uses = calloc((size_t)(v->n ? v->n : 1) * 8, sizeof *uses);
