@@ -289,6 +289,7 @@ typedef struct {
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
+    char mod_act[8][WN_LEMMA_MAX]; /* the verb of modifier i when an -ing form ("rowing") */
     int mod_noun[8];       /* modifier i is a noun or a word WordNet lacks, no adjective: it
                             * makes the query a particular kind of its head (noun_modifier) */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
@@ -445,6 +446,8 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             int k = kind_modifier(lx, np->mods[i], qp->mod_base[i], &qp->mod_np[i], &qp->mod_bag[i], err);
             if (k < 0) return k;
             qp->mod_kind[i] = k;
+            int ing = lex_ing_verb(lx, np->mods[i], qp->mod_act[i], err);
+            if (ing < 0) return ing;
             int nm = noun_modifier(lx, np->mods[i], qp->mod_base[i], err);
             if (nm < 0) return nm;
             qp->mod_noun[i] = nm;
@@ -603,6 +606,21 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
     if (lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0) return 0;
     return 1;
+}
+
+/* 1 when query modifier i names the thing by another activity than class c's name ("ROWING
+ * machine" / "WASHING machine", "sewing" / "washing"): two purposes, two kinds of the head, a
+ * sibling as in another_kind, unless the verbs are one family or c's definitions name the
+ * query's verb. */
+static int another_activity(const lex_class *c, const query_prep *qp, int i)
+{
+    const char *a = c->act, *b = qp->mod_act[i];
+    if (!a[0] || !b[0]) return 0;
+    /* one verb the other's stem: one family ("pack" / "package") */
+    if (!strncmp(a, b, strlen(a)) || !strncmp(a, b, strlen(b))) return 0;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_act[i]);
+    return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
 }
 
 /* What a holder class holds: the modifier of a name WordNet lacks, or of one it joins ("luggage
@@ -880,8 +898,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
-        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] &&
-            (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) {
+        if (use == LEX_MOD_IGNORED && has_head &&
+            ((qp->mod_kind[i] && (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) ||
+             another_activity(c, qp, i))) {
             use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
             fmod *= LEX_MU;
             size_t o = strlen(m->path);

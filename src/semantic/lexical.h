@@ -235,7 +235,11 @@ typedef struct lex_class {
                         * ("checkout" of "checkout counter"): the kind its modifier names */
     int kind_lexfile[3]; /* the lexicographer file of each one's commonest sense (-1 none) */
     lex_bag kind_bag;  /* those senses' lemmas and definitions */
+    char act[WN_LEMMA_MAX]; /* the verb of an -ing word before its last ("wash" of "washing
+                             * machine"): the activity the thing is for; "" none */
 } lex_class;
+/* The verb an -ing word is a form of ("rowing" -> "row"); 1 when it is one, 0 when not. */
+int lex_ing_verb(const lex_db *lx, const char *w, char *verb, sp_error *err);
 
 typedef struct lex_region {
     char name[64];
