@@ -115,6 +115,8 @@ int lex_sense_room(const lex_sense *s);
 int lex_sense_living(const lex_sense *s);
 /* 1 when the sense is an animal ("jack" the fish, "crane" the bird). */
 int lex_sense_animal(const lex_sense *s);
+/* 1 when the sense is a food ("jack" the jackfruit, "grinder" the sandwich, "rack" of lamb). */
+int lex_sense_food(const lex_sense *s);
 /* 1 when the sense is an act (act.n.02: "storage", the act of storing). */
 int lex_sense_act(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
