@@ -451,6 +451,11 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             int nm = noun_modifier(lx, np->mods[i], qp->mod_base[i], err);
             if (nm < 0) return nm;
             qp->mod_noun[i] = nm;
+            if (nm && !k) { /* its senses, to tell a related modifier (modifier_related) */
+                lex_tokens one = {1, {{0}}};
+                snprintf(one.w[0], LEX_WORD, "%s", qp->mod_base[i]);
+                if ((rc = lex_np_parse(lx, &one, 0, 1, 0, &qp->mod_np[i], err))) return rc;
+            }
         }
     }
     for (int i = 0; i < np->n_desc && !rc; i++) {
@@ -737,6 +742,36 @@ static int level_candidate(const sp_lex_vocab *v, const lex_np *np, const query_
     return 0;
 }
 
+/* 1 when query modifier i and a modifier of class c's name are one kind or siblings by their
+ * commonest senses ("newspaper" / "magazine", both press; "drug" / "medicine"), or the class's
+ * modifier's senses name it: the query then is no cousin of the class. */
+static int modifier_related(const lex_class *c, const query_prep *qp, int i)
+{
+    const lex_np *m = &qp->mod_np[i];
+    for (int k = 0; k < c->n_kind; k++)
+        for (int a = 0; a < m->n_senses; a++)
+            for (int b = 0; b < c->kind_np[k].n_senses; b++)
+                if (same_kind(&m->senses[a], &c->kind_np[k].senses[b], a == 0 && b == 0)) return 1;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
+    return lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0;
+}
+
+/* 1 when some query modifier is at the query's level for c (query_level) and unrelated to c's
+ * own modifiers (modifier_related). */
+static int cousin_modifier(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp)
+{
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        if (!qp->mod_noun[i] || lex_vocab_has_word(v, qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c)) continue;
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k < c->n_part && !in; k++) in = !strcmp(c->part[k], qp->mod_base[i]);
+        if (in || bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0) continue;
+        if (!modifier_related(c, qp, i)) return 1;
+    }
+    return 0;
+}
+
 /* The query and the class at their levels (query_level, c->spec) when both name the same head
  * sense: a query "M H" is a kind of H, so a class "H" is its hypernym (WuP one step), and a class
  * "M2 H" WordNet lacks may be the same kind under another name ("dock door" / roll up door), the
@@ -748,6 +783,14 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
     if (!np->n_senses || !c->np.n_senses || np->split || !query_level(v, c, np, qp)) return;
     int bq, bc;
     lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 0, 0, &bq, &bc);
+    if (t.kind == SP_LEX_HYPERNYM && m->kind == SP_LEX_HYPERNYM && cousin_modifier(v, c, np, qp)) {
+        /* a kind of H the modifier names, against a class that is another kind of H (its own
+         * modifier, or WordNet's own word) the modifier has nothing to do with: cousins, MU
+         * ("massage table" / coffee table, "deli counter" / checkout counter) */
+        lex_tax r = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 1, c->spec, &bq, &bc);
+        if (r.score < *base) *base = r.score, m->kind = r.kind;
+        return;
+    }
     if (t.kind != SP_LEX_SYNONYM) return;
     if (c->spec && !strcmp(c->np.head, np->head) && *base < t.score) { /* the same head word */
         *base = t.score;
