@@ -762,7 +762,7 @@ static int modifier_related(const lex_class *c, const query_prep *qp, int i)
 static int cousin_modifier(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp)
 {
     for (int i = 0; i < np->n_mods - np->split; i++) {
-        if (!qp->mod_noun[i] || lex_vocab_has_word(v, qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c)) continue;
+        if (!qp->mod_noun[i] || parts_in_name(qp->mod_base[i], c)) continue;
         int in = 0;
         for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], qp->mod_base[i]);
         for (int k = 0; k < c->n_part && !in; k++) in = !strcmp(c->part[k], qp->mod_base[i]);
@@ -780,7 +780,7 @@ static int cousin_modifier(const sp_lex_vocab *v, const lex_class *c, const lex_
 static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp,
                       float *base, sp_lex_class_match *m)
 {
-    if (!np->n_senses || !c->np.n_senses || np->split || !query_level(v, c, np, qp)) return;
+    if (!np->n_senses || !c->np.n_senses || np->split) return;
     int bq, bc;
     lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 0, 0, &bq, &bc);
     if (t.kind == SP_LEX_HYPERNYM && m->kind == SP_LEX_HYPERNYM && cousin_modifier(v, c, np, qp)) {
@@ -791,7 +791,7 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
         if (r.score < *base) *base = r.score, m->kind = r.kind;
         return;
     }
-    if (t.kind != SP_LEX_SYNONYM) return;
+    if (t.kind != SP_LEX_SYNONYM || !query_level(v, c, np, qp)) return;
     if (c->spec && !strcmp(c->np.head, np->head) && *base < t.score) { /* the same head word */
         *base = t.score;
         describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
