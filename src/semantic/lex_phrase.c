@@ -194,11 +194,12 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
-     * "printer" the tradesman), no animal ("jack" the fish, "crane" the bird) and no physical
+     * "printer" the tradesman), no animal ("jack" the fish, "crane" the bird), no physical
      * process ("microwave" the radiation, its only attested sense) and no food ("jack" the
-     * jackfruit, "grinder" the sandwich) when the name also names an artifact ("person" keeps its own, a plant its organism), and no
-     * room when it also names an artifact that is none ("toilet" the fixture, not the room
-     * WordNet's commonest sense calls a bathroom; a "kitchen" keeps its room). */
+     * jackfruit, "grinder" the sandwich) when the name also names an artifact ("person" keeps
+     * its own, a plant its organism), and no room when it also names an artifact that is none
+     * ("toilet" the fixture, not the room WordNet's commonest sense calls a bathroom; a
+     * "kitchen" keeps its room). */
     int no_person = 0;
     rc = 0;
     if (physical_only) {

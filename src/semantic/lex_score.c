@@ -172,12 +172,14 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
         char mod[WN_LEMMA_MAX];
         snprintf(mod, sizeof mod, "%s", mod_base[i]);
         /* and a hyphenated modifier is its words ("roll-up door" is the roll up door) */
-        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS;
+             t = strtok_r(NULL, "_-", &save))
             snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     }
     char head[WN_LEMMA_MAX];
     snprintf(head, sizeof head, "%s", np->head);
-    for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+    for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS;
+         t = strtok_r(NULL, "_-", &save))
         snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     if (n != c->n_tok) {
         /* one-word spellings of two-word names and back ("bookshelf", "book shelf") */
@@ -919,7 +921,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     float fmod = 1.0f;
     int named = 0; /* a query modifier is a word of the class's name ("swivel BAR stool") */
     for (int i = 0; i < np->n_mods - np->split; i++)
-        for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c);
+        for (int k = 0; k + 1 < c->n_tok; k++)
+            named |= !strcmp(c->tok[k], qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c);
     if (strchr(np->head, '_')) { /* "cabinet TABLE saw": the head is the class's own name */
         char h[WN_LEMMA_MAX];
         snprintf(h, sizeof h, "%s", np->head);
@@ -1050,7 +1053,8 @@ static int named_sense(const lex_class *c, const lex_sense *q)
 
 /* The scene's senses of the query's head word: when classes of the scene end in that word, the
  * physical senses their names use are what the word means here, and its others are dropped
- * (keep[i] = 0; alias senses stay; a "periodic table", a tabular array, says nothing of tables). Returns how many are kept, 0 when the scene says nothing. */
+ * (keep[i] = 0; alias senses stay; a "periodic table", a tabular array, says nothing of
+ * tables). Returns how many are kept, 0 when the scene says nothing. */
 static int scene_senses(const sp_lex_vocab *v, const lex_np *np, int *keep)
 {
     if (!np->head[0] || np->placeholder || np->split || np->n_senses < 2) return 0;
