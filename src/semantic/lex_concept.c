@@ -13,6 +13,8 @@
 #define ACT_N02 30358u /* act.n.02: something that people do */
 #define LIVING_THING 4258u /* living_thing.n.01: organisms, plants, animals */
 #define ANIMAL 15388u      /* animal.n.01 */
+#define FOOD_N01 21265u    /* food.n.01, nutrient: dishes, drinks, nutriment */
+#define FOOD_N02 7555863u  /* food.n.02, solid food: produce, edible fruit, bread */
 #define ROOM_N01 4105893u /* room.n.01: an area within a building enclosed by walls and floor and ceiling */
 #define MAX_HYPER 8
 
@@ -102,6 +104,7 @@ int lex_sense_room(const lex_sense *s) { return lex_anc_find(s, ROOM_N01) >= 0; 
 int lex_sense_living(const lex_sense *s) { return lex_anc_find(s, LIVING_THING) >= 0; }
 int lex_sense_animal(const lex_sense *s) { return lex_anc_find(s, ANIMAL) >= 0; }
 int lex_sense_act(const lex_sense *s) { return lex_anc_find(s, ACT_N02) >= 0; }
+int lex_sense_food(const lex_sense *s) { return lex_anc_find(s, FOOD_N01) >= 0 || lex_anc_find(s, FOOD_N02) >= 0; }
 
 void lex_path(const lex_sense *s, int a, char *out, size_t cap)
 {

@@ -200,6 +200,25 @@ static int in_category(const sp_lex_vocab *v, int ci, const char *cat)
     return !furniture && (class_under(v, ci, INSTRUMENTALITY) || class_under(v, ci, COMMODITY));
 }
 
+/* A bare category word the taxonomy finds nothing for ("equipment", "machinery": WordNet's are
+ * narrow) names every class of the scene in the category (in_category), at the threshold, the
+ * least certain find, ordered among themselves by what the taxonomy had. Returns 1 when any. */
+static int bare_category(const sp_lex_vocab *v, const char *cat, sp_lex_phrase *ph)
+{
+    if (best_of(ph) >= SP_LEX_THRESHOLD) return 0;
+    int any = 0;
+    for (int j = 0; j < ph->n_matches; j++) {
+        sp_lex_class_match *m = &ph->matches[j];
+        if (!in_category(v, m->class_index, cat)) continue;
+        m->score = SP_LEX_THRESHOLD + 0.1f * m->score;
+        m->kind = SP_LEX_HYPERNYM;
+        snprintf(m->path, sizeof m->path, "%s: a thing of that category", cat);
+        any = 1;
+    }
+    if (any) qsort(ph->matches, (size_t)ph->n_matches, sizeof ph->matches[0], lex_match_cmp);
+    return any;
+}
+
 /* A category of artifacts named by a place or an activity ("kitchen equipment", "bathroom
  * fittings", "safety equipment", "refrigeration equipment"): WordNet's category word is narrower
  * than its everyday use (its equipment is no device, appliance or machine), and the modifier says
@@ -212,7 +231,8 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     /* the category of a collocation WordNet joins ("office_furniture") is its last word */
     const char *last = strrchr(np->head, '_');
     const char *cat = last ? last + 1 : np->head;
-    if (np->placeholder || (!np->n_mods && !last) || np->n_desc || !lex_is_category(cat)) return 0;
+    if (np->placeholder || np->n_desc || !lex_is_category(cat)) return 0;
+    if (!np->n_mods && !last) return bare_category(v, cat, ph);
     /* a category WordNet names has kinds of its own: its taxonomy stands where it finds one
      * ("kitchen appliance" -> the coffee maker, not the kitchen's sink) */
     if (last && !np->n_mods && best_of(ph) >= SP_LEX_THRESHOLD) return 0;

@@ -106,7 +106,9 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             tmp->attested = i == 0 || i < tagged;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
-            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp) || lex_sense_animal(tmp))) continue;
+            if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp) || lex_sense_animal(tmp) ||
+                                    lex_sense_food(tmp)))
+                continue;
             if ((no_person & 2) && lex_sense_room(tmp)) continue;
             if ((no_person & 4) && !lex_sense_artifact(tmp)) continue;
             np->senses[np->n_senses++] = *tmp;
@@ -192,11 +194,12 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
         }
     }
     /* A class is a thing standing in the scene: no person sense ("monitor" the supervisor,
-     * "printer" the tradesman), no animal ("jack" the fish, "crane" the bird) and no physical
-     * process ("microwave" the radiation, its only attested sense) when the name also names an
-     * artifact ("person" keeps its own, a plant its organism), and no
-     * room when it also names an artifact that is none ("toilet" the fixture, not the room
-     * WordNet's commonest sense calls a bathroom; a "kitchen" keeps its room). */
+     * "printer" the tradesman), no animal ("jack" the fish, "crane" the bird), no physical
+     * process ("microwave" the radiation, its only attested sense) and no food ("jack" the
+     * jackfruit, "grinder" the sandwich) when the name also names an artifact ("person" keeps
+     * its own, a plant its organism), and no room when it also names an artifact that is none
+     * ("toilet" the fixture, not the room WordNet's commonest sense calls a bathroom; a
+     * "kitchen" keeps its room). */
     int no_person = 0;
     rc = 0;
     if (physical_only) {

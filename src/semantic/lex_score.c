@@ -171,12 +171,15 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++) {
         char mod[WN_LEMMA_MAX];
         snprintf(mod, sizeof mod, "%s", mod_base[i]);
-        for (char *save = NULL, *t = strtok_r(mod, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+        /* and a hyphenated modifier is its words ("roll-up door" is the roll up door) */
+        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS;
+             t = strtok_r(NULL, "_-", &save))
             snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     }
     char head[WN_LEMMA_MAX];
     snprintf(head, sizeof head, "%s", np->head);
-    for (char *save = NULL, *t = strtok_r(head, "_", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_", &save))
+    for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS;
+         t = strtok_r(NULL, "_-", &save))
         snprintf(seq[n++], WN_LEMMA_MAX, "%s", t);
     if (n != c->n_tok) {
         /* one-word spellings of two-word names and back ("bookshelf", "book shelf") */
@@ -188,6 +191,21 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     for (int i = 0; i < n; i++)
         if (strcmp(seq[i], c->tok[i])) return 0;
     return 1;
+}
+
+/* 1 when a hyphenated word's parts are all words of class c's name ("roll-up" of "roll up door"). */
+static int parts_in_name(const char *w, const lex_class *c)
+{
+    if (!strchr(w, '-')) return 0;
+    char buf[WN_LEMMA_MAX];
+    snprintf(buf, sizeof buf, "%s", w);
+    int all = 1;
+    for (char *save = NULL, *t = strtok_r(buf, "-", &save); t && all; t = strtok_r(NULL, "-", &save)) {
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], t);
+        all = in;
+    }
+    return all;
 }
 
 static float wup3(int depth_lcs, int dq, int dc)
@@ -273,6 +291,9 @@ typedef struct {
     char agent[4][WN_LEMMA_MAX];
     float agent_w, mod_w[8]; /* informativeness of the head and of each modifier */
     int mod_kind[8];       /* modifier i names a kind of thing (kind_modifier) ... */
+    char mod_act[8][WN_LEMMA_MAX]; /* the verb of modifier i when an -ing form ("rowing") */
+    int mod_noun[8];       /* modifier i is a noun or a word WordNet lacks, no adjective: it
+                            * makes the query a particular kind of its head (noun_modifier) */
     lex_np mod_np[8];      /* ... read alone, every noun sense */
     lex_bag mod_bag[8];    /* ... and its commonest sense's lemmas and definition */
     int holder;            /* the query's head is a support that holds things (lex_np_support) */
@@ -387,6 +408,32 @@ static int kind_modifier(const lex_db *lx, const char *word, const char *base, l
     return np->n_senses > 0;
 }
 
+/* 1 when a query modifier is a noun without an adjective reading, or no word WordNet has at all
+ * ("DOCK door", "LOADING bay door"): as for a class name (class_prepare), it names a particular
+ * kind of the head, where an adjective ("red", "front") describes it, and so does a noun whose
+ * commonest sense is a material, a quality or a shape ("steel", "leather": phase 9's rule). */
+static int noun_modifier(const lex_db *lx, const char *word, const char *base, sp_error *err)
+{
+    int adj = lex_is_pos(lx, WN_ADJ, word, err);
+    if (adj) return adj < 0 ? adj : 0;
+    uint32_t off;
+    int k = wn_lookup(lx->db, WN_NOUN, base, &off, 1, NULL, err);
+    if (k < 0) return k;
+    if (k > 0) {
+        wn_synset syn;
+        int rc = wn_read(lx->db, (wn_id){off, WN_NOUN}, &syn, err);
+        if (rc) return rc < 0 ? rc : -rc;
+        int f = syn.lexfile;
+        wn_synset_free(&syn);
+        return f != WN_LEX_SUBSTANCE && f != WN_LEX_ATTRIBUTE && f != WN_LEX_SHAPE;
+    }
+    for (int p = 0; p < WN_NPOS; p++) {
+        int is = lex_is_pos(lx, (wn_pos)p, word, err);
+        if (is) return is < 0 ? is : 0;
+    }
+    return 1;
+}
+
 static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_error *err)
 {
     const lex_db *lx = v->lx;
@@ -401,6 +448,16 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
             int k = kind_modifier(lx, np->mods[i], qp->mod_base[i], &qp->mod_np[i], &qp->mod_bag[i], err);
             if (k < 0) return k;
             qp->mod_kind[i] = k;
+            int ing = lex_ing_verb(lx, np->mods[i], qp->mod_act[i], err);
+            if (ing < 0) return ing;
+            int nm = noun_modifier(lx, np->mods[i], qp->mod_base[i], err);
+            if (nm < 0) return nm;
+            qp->mod_noun[i] = nm;
+            if (nm && !k) { /* its senses, to tell a related modifier (modifier_related) */
+                lex_tokens one = {1, {{0}}};
+                snprintf(one.w[0], LEX_WORD, "%s", qp->mod_base[i]);
+                if ((rc = lex_np_parse(lx, &one, 0, 1, 0, &qp->mod_np[i], err))) return rc;
+            }
         }
     }
     for (int i = 0; i < np->n_desc && !rc; i++) {
@@ -531,6 +588,9 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     int kind = 0; /* the class's modifier names a kind too ("magazine" rack), not a purpose, a
                    * quality or a material ("storage" shelf, "privacy" curtain, "cardboard" box) */
     for (int k = 0; k < c->n_kind; k++) kind |= c->kind_np[k].n_senses > 0 && wn_lexfile_names_kind(c->kind_lexfile[k]);
+    /* a name WordNet joins is a kind of its head by WordNet's own word, whatever its modifier
+     * names ("vending machine", "washing machine", "double bed") */
+    kind |= c->np.n_mods == 0 && strchr(c->np.head, '_') != NULL;
     if (!kind) return 0;
     const lex_np *m = &qp->mod_np[i];
     char parts[WN_LEMMA_MAX], one[1][WN_LEMMA_MAX];
@@ -553,6 +613,21 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
     if (lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0) return 0;
     return 1;
+}
+
+/* 1 when query modifier i names the thing by another activity than class c's name ("ROWING
+ * machine" / "WASHING machine", "sewing" / "washing"): two purposes, two kinds of the head, a
+ * sibling as in another_kind, unless the verbs are one family or c's definitions name the
+ * query's verb. */
+static int another_activity(const lex_class *c, const query_prep *qp, int i)
+{
+    const char *a = c->act, *b = qp->mod_act[i];
+    if (!a[0] || !b[0]) return 0;
+    /* one verb the other's stem: one family ("pack" / "package") */
+    if (!strncmp(a, b, strlen(a)) || !strncmp(a, b, strlen(b))) return 0;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_act[i]);
+    return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
 }
 
 /* What a holder class holds: the modifier of a name WordNet lacks, or of one it joins ("luggage
@@ -639,6 +714,100 @@ static int another_named_kind(const lex_class *c, const lex_np *np, const query_
     return lex_bag_find(&c->bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) <= 0;
 }
 
+/* 1 when the query has a noun modifier (noun_modifier) that class c's name does not say, that
+ * names no class of the scene and that c's definitions do not mention: the query is then one
+ * level below its head, as a class named so is. */
+static int query_level(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp)
+{
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        if (!qp->mod_noun[i] || lex_vocab_has_word(v, qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c)) continue;
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k < c->n_part && !in; k++) in = !strcmp(c->part[k], qp->mod_base[i]);
+        if (!in && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) <= 0) return 1;
+    }
+    return 0;
+}
+
+/* 1 when a class of the scene named below the query's head (c->spec) is at the query's level
+ * (query_level) with the same head word and sense: only then does the bare head class give way to it;
+ * alone, it stays the query's synonym ("bistro chair" is the chair, not a WordNet kind of one). */
+static int level_candidate(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp)
+{
+    for (int j = 0; j < v->n; j++) {
+        const lex_class *o = &v->classes[j];
+        if (!o->spec || !o->np.n_senses || strcmp(o->np.head, np->head) || !query_level(v, o, np, qp)) continue;
+        int bq, bc;
+        lex_tax t = best_tax(np->senses, np->n_senses, o->np.senses, o->np.n_senses, 0, 0, &bq, &bc);
+        if (t.kind == SP_LEX_SYNONYM) return 1;
+    }
+    return 0;
+}
+
+/* 1 when query modifier i and a modifier of class c's name are one kind or siblings by their
+ * commonest senses ("newspaper" / "magazine", both press; "drug" / "medicine"), or the class's
+ * modifier's senses name it: the query then is no cousin of the class. */
+static int modifier_related(const lex_class *c, const query_prep *qp, int i)
+{
+    const lex_np *m = &qp->mod_np[i];
+    for (int k = 0; k < c->n_kind; k++)
+        for (int a = 0; a < m->n_senses; a++)
+            for (int b = 0; b < c->kind_np[k].n_senses; b++)
+                if (same_kind(&m->senses[a], &c->kind_np[k].senses[b], a == 0 && b == 0)) return 1;
+    char one[1][WN_LEMMA_MAX];
+    snprintf(one[0], WN_LEMMA_MAX, "%s", qp->mod_base[i]);
+    return lex_bag_find(&c->kind_bag, one, 1, 0.0f, 1.0f, 1.0f, 0, NULL) > 0;
+}
+
+/* 1 when some query modifier is at the query's level for c (query_level) and unrelated to c's
+ * own modifiers (modifier_related). */
+static int cousin_modifier(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp)
+{
+    for (int i = 0; i < np->n_mods - np->split; i++) {
+        if (!qp->mod_noun[i] || parts_in_name(qp->mod_base[i], c)) continue;
+        int in = 0;
+        for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k < c->n_part && !in; k++) in = !strcmp(c->part[k], qp->mod_base[i]);
+        if (in || bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0) continue;
+        if (!modifier_related(c, qp, i)) return 1;
+    }
+    return 0;
+}
+
+/* The query and the class at their levels (query_level, c->spec) when both name the same head
+ * sense: a query "M H" is a kind of H, so a class "H" is its hypernym (WuP one step), and a class
+ * "M2 H" WordNet lacks may be the same kind under another name ("dock door" / roll up door), the
+ * modifier M then an attribute not shown (EPSILON) unless it names another kind (another_kind:
+ * the sibling's MU). Before, the bare class won as a synonym and the specific one lost a step. */
+static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *np, const query_prep *qp,
+                      float *base, sp_lex_class_match *m)
+{
+    if (!np->n_senses || !c->np.n_senses || np->split) return;
+    int bq, bc;
+    lex_tax t = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 0, 0, &bq, &bc);
+    if (t.kind == SP_LEX_HYPERNYM && m->kind == SP_LEX_HYPERNYM && cousin_modifier(v, c, np, qp)) {
+        /* a kind of H the modifier names, against a class that is another kind of H (its own
+         * modifier, or WordNet's own word) the modifier has nothing to do with: cousins, MU
+         * ("massage table" / coffee table, "deli counter" / checkout counter) */
+        lex_tax r = best_tax(np->senses, np->n_senses, c->np.senses, c->np.n_senses, 1, c->spec, &bq, &bc);
+        if (r.score < *base) *base = r.score, m->kind = r.kind;
+        return;
+    }
+    if (t.kind != SP_LEX_SYNONYM || !query_level(v, c, np, qp)) return;
+    if (c->spec && !strcmp(c->np.head, np->head) && *base < t.score) { /* the same head word */
+        *base = t.score;
+        describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+        /* still a hypernym match: the query does not name the class, so a region reading
+         * ("the nail station") is still tried (lex_match.c, resolve) */
+        m->kind = SP_LEX_HYPERNYM;
+        snprintf(m->path, sizeof m->path, "both are kinds of %s named by a modifier", np->head);
+    } else if (!c->spec && m->kind == SP_LEX_SYNONYM && level_candidate(v, np, qp)) {
+        const lex_sense *cs = &c->np.senses[bc];
+        *base = wup3(cs->anc[0].depth, 1, 0);
+        m->kind = SP_LEX_HYPONYM;
+    }
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -691,6 +860,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * which WordNet files under home appliance): the query against that word's senses, the
      * class one level below them, as for a name WordNet lacks. */
     if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
+    if (has_head && m->kind != SP_LEX_EXACT) level_tax(v, c, np, qp, &base, m);
     /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
      * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
      * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
@@ -751,7 +921,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     float fmod = 1.0f;
     int named = 0; /* a query modifier is a word of the class's name ("swivel BAR stool") */
     for (int i = 0; i < np->n_mods - np->split; i++)
-        for (int k = 0; k + 1 < c->n_tok; k++) named |= !strcmp(c->tok[k], qp->mod_base[i]);
+        for (int k = 0; k + 1 < c->n_tok; k++)
+            named |= !strcmp(c->tok[k], qp->mod_base[i]) || parts_in_name(qp->mod_base[i], c);
     if (strchr(np->head, '_')) { /* "cabinet TABLE saw": the head is the class's own name */
         char h[WN_LEMMA_MAX];
         snprintf(h, sizeof h, "%s", np->head);
@@ -767,13 +938,15 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         if (i == held_mod) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
+        if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
         if (use == LEX_MOD_IGNORED && bag_match(c, &qp->mod_exp[i], np->mods[i], 1.0f, 1.0f, 1, NULL, 0) > 0)
             use = LEX_MOD_USED;
-        if (use == LEX_MOD_IGNORED && has_head && qp->mod_kind[i] &&
-            (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) {
+        if (use == LEX_MOD_IGNORED && has_head &&
+            ((qp->mod_kind[i] && (another_kind(c, np, qp, i, &named) || another_named_kind(c, np, qp, i, m))) ||
+             another_activity(c, qp, i))) {
             use = LEX_MOD_CONTRARY; /* a sibling: "wine rack" is no drying rack */
             fmod *= LEX_MU;
             size_t o = strlen(m->path);
@@ -866,8 +1039,68 @@ int lex_match_cmp(const void *a, const void *b)
     return x->class_index - y->class_index;
 }
 
+static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                        sp_error *err);
+
+/* 1 when query sense q is what class c's name means by its last word: one of c's senses or a
+ * hypernym of one ("stool" of "bar stool": the seat, not WordNet's fourth stool, the toilet). */
+static int named_sense(const lex_class *c, const lex_sense *q)
+{
+    for (int j = 0; j < c->np.n_senses; j++)
+        if (lex_anc_find(&c->np.senses[j], q->off) >= 0) return 1;
+    return 0;
+}
+
+/* The scene's senses of the query's head word: when classes of the scene end in that word, the
+ * physical senses their names use are what the word means here, and its others are dropped
+ * (keep[i] = 0; alias senses stay; a "periodic table", a tabular array, says nothing of
+ * tables). Returns how many are kept, 0 when the scene says nothing. */
+static int scene_senses(const sp_lex_vocab *v, const lex_np *np, int *keep)
+{
+    if (!np->head[0] || np->placeholder || np->split || np->n_senses < 2) return 0;
+    int n = 0, own = np->n_senses - np->n_alias;
+    for (int i = 0; i < np->n_senses; i++) keep[i] = i >= own;
+    for (int ci = 0; ci < v->n; ci++) {
+        const lex_class *c = &v->classes[ci];
+        if (!c->n_tok || strcmp(c->tok[c->n_tok - 1], np->head)) continue;
+        for (int i = 0; i < own; i++)
+            if (!keep[i] && lex_sense_physical(&np->senses[i]) && named_sense(c, &np->senses[i])) keep[i] = 1, n++;
+    }
+    return n;
+}
+
+/* np with only the senses keep[] marks (a shallow copy; its senses array is the caller's). */
+static lex_np keep_senses(const lex_np *np, const int *keep, lex_sense *buf)
+{
+    lex_np r = *np;
+    r.n_senses = 0;
+    r.n_alias = 0;
+    int own = np->n_senses - np->n_alias;
+    for (int i = 0; i < np->n_senses; i++)
+        if (keep[i]) buf[r.n_senses++] = np->senses[i], r.n_alias += i >= own;
+    r.senses = buf;
+    return r;
+}
+
 int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
                  sp_error *err)
+{
+    int keep[LEX_MAX_SENSES * 2];
+    lex_sense *buf = NULL;
+    lex_np scene;
+    if (np->n_senses <= (int)(sizeof keep / sizeof keep[0]) && scene_senses(v, np, keep)) {
+        buf = malloc(sizeof *buf * (size_t)np->n_senses);
+        if (!buf) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        scene = keep_senses(np, keep, buf);
+        np = &scene;
+    }
+    int rc = score_senses(v, np, ph, mod_use, err);
+    free(buf);
+    return rc;
+}
+
+static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
+                        sp_error *err)
 {
     query_prep *qp = calloc(1, sizeof *qp);
     int *uses = calloc((size_t)(v->n ? v->n : 1) * 8, sizeof *uses);

@@ -245,6 +245,17 @@ static int gerund(const lex_db *lx, const char *w, sp_error *err)
     return lex_is_pos(lx, WN_VERB, w, err);
 }
 
+int lex_ing_verb(const lex_db *lx, const char *w, char *verb, sp_error *err)
+{
+    size_t n = strlen(w);
+    if (n < 5 || strcmp(w + n - 3, "ing")) return 0;
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(lx, WN_VERB, w, b, err);
+    if (nb <= 0) return nb;
+    snprintf(verb, WN_LEMMA_MAX, "%s", b[0]);
+    return 1;
+}
+
 /* 1 when the noun synset is a named individual (an instance hypernym, "@i"). */
 static int is_instance(const lex_db *lx, uint32_t off, sp_error *err)
 {
@@ -363,6 +374,10 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
         snprintf(c->tok[c->n_tok++], LEX_WORD, "%s", nb > 0 ? b[0] : raw.w[i]);
     }
     if (!rc) rc = kind_prepare(lx, c, err);
+    for (int i = 0; i + 1 < c->n_tok && !rc && !c->act[0]; i++) {
+        int ing = lex_ing_verb(lx, c->tok[i], c->act, err);
+        if (ing < 0) return ing;
+    }
     if (!rc) rc = bag_modifiers(lx, c, err);
     /* A noun modifier names a particular kind of the head ("shoe cabinet"), and so does a word
      * WordNet does not know at all ("overbed table"): it cannot be an attribute we could ignore,
@@ -393,6 +408,13 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", l);
             snprintf(c->part[c->n_part++], LEX_WORD, "%s", r);
         }
+    }
+    /* a closed compound WordNet lacks, split ("nightstand" = night + stand): its first part is a
+     * word of its name too, so a query modifier saying it agrees ("NIGHT table") */
+    if (!rc && c->np.split && c->np.n_mods > 0 && c->n_part < 4) {
+        char left[LEX_WORD];
+        snprintf(left, sizeof left, "%s", c->np.mods[c->np.n_mods - 1]);
+        memcpy(c->part[c->n_part++], left, sizeof left);
     }
     c->holder = lex_np_holder(&c->np);
     if (!rc) rc = name_head_prepare(lx, c, &raw, err);

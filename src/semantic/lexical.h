@@ -115,6 +115,8 @@ int lex_sense_room(const lex_sense *s);
 int lex_sense_living(const lex_sense *s);
 /* 1 when the sense is an animal ("jack" the fish, "crane" the bird). */
 int lex_sense_animal(const lex_sense *s);
+/* 1 when the sense is a food ("jack" the jackfruit, "grinder" the sandwich, "rack" of lamb). */
+int lex_sense_food(const lex_sense *s);
 /* 1 when the sense is an act (act.n.02: "storage", the act of storing). */
 int lex_sense_act(const lex_sense *s);
 /* 1 when s is a physical process ("microwave" the radiation, "current" the flow). */
@@ -235,7 +237,11 @@ typedef struct lex_class {
                         * ("checkout" of "checkout counter"): the kind its modifier names */
     int kind_lexfile[3]; /* the lexicographer file of each one's commonest sense (-1 none) */
     lex_bag kind_bag;  /* those senses' lemmas and definitions */
+    char act[WN_LEMMA_MAX]; /* the verb of an -ing word before its last ("wash" of "washing
+                             * machine"): the activity the thing is for; "" none */
 } lex_class;
+/* The verb an -ing word is a form of ("rowing" -> "row"); 1 when it is one, 0 when not. */
+int lex_ing_verb(const lex_db *lx, const char *w, char *verb, sp_error *err);
 
 typedef struct lex_region {
     char name[64];

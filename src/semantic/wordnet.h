@@ -58,6 +58,8 @@ typedef struct wn_pointer {
 
 /* Lexicographer files of nouns (WordNet's lexnames) that name kinds of things. */
 enum { WN_LEX_ANIMAL = 5, WN_LEX_ARTIFACT = 6, WN_LEX_COMMUNICATION = 10, WN_LEX_FOOD = 13, WN_LEX_PLANT = 20 };
+/* ... and those whose nouns describe a thing rather than say which kind it is */
+enum { WN_LEX_ATTRIBUTE = 7, WN_LEX_SHAPE = 25, WN_LEX_SUBSTANCE = 27 };
 /* 1 when a noun of lexicographer file f names a kind of thing one can point at: an animal, an
  * artifact, a food, a plant, or a communication (a magazine, a menu, a sign), not an act,
  * attribute, state, substance or material, person, group, place or time. */
