@@ -131,7 +131,8 @@ typedef struct sp_train_options {
     /* Density control (gsplat DefaultStrategy); step fields in optimisation steps. */
     int densify;             /* default 1 */
     int refine_start, refine_stop, refine_every, reset_every; /* 500, 15000, 100, 3000 */
-    float grow_grad2d;       /* 0.0002 (NDC-normalised gradient norm) */
+    float grow_grad2d;       /* NDC-normalised gradient norm; 0 (default) = auto,
+                              * sp_train_grow_grad2d */
     float grow_scale3d;      /* 0.01 (x scene scale): clone below, split above */
     float prune_opacity;     /* 0.005 */
     float prune_scale3d;     /* 0.1 (x scene scale), applied after the first opacity reset */
@@ -256,6 +257,10 @@ int sp_train_rgb_loss(sp_pool *pool, const float *pred, int pred_stride, const f
 /* One Adam step on host arrays (step is 1-based). */
 void sp_train_adam_host(float *param, const float *grad, float *m, float *v, size_t n, float lr,
                         float beta1, float beta2, float eps, int step);
+
+/* The densification threshold a run uses: grow_grad2d when set, else 0.00015 for runs under
+ * 30000 steps without depth supervision and gsplat's 0.0002 otherwise (loop.c says why). */
+float sp_train_grow_grad2d(const sp_train_options *o);
 
 /* Density control on a host splat (gsplat DefaultStrategy grow + prune, in that order) with
  * per-Gaussian statistics accumulated since the last refinement (grad2d_sum, count [n]):

@@ -163,7 +163,7 @@ int sp_train_write_json(const char *path, const sp_train_options *o, const sp_tr
     cJSON_AddNumberToObject(dn, "refine_stop", o->refine_stop);
     cJSON_AddNumberToObject(dn, "refine_every", o->refine_every);
     cJSON_AddNumberToObject(dn, "reset_every", o->reset_every);
-    cJSON_AddNumberToObject(dn, "grow_grad2d", o->grow_grad2d);
+    cJSON_AddNumberToObject(dn, "grow_grad2d", sp_train_grow_grad2d(o)); /* the one used */
     cJSON_AddNumberToObject(dn, "grow_scale3d", o->grow_scale3d);
     cJSON_AddNumberToObject(dn, "prune_opacity", o->prune_opacity);
     cJSON_AddNumberToObject(dn, "prune_scale3d", o->prune_scale3d);

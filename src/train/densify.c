@@ -74,9 +74,10 @@ int tr_densify_plan_make(const sp_splat *s, const float *grad2d_sum, const float
         return sp_error_set(err, SP_E_NOMEM, "densify: out of memory for %zu Gaussians", n);
     }
     size_t nc = 0;
+    const float grow = sp_train_grow_grad2d(opt);
     for (size_t i = 0; i < n; i++) {
         float g = grad2d_sum[i] / (count[i] > 1.0f ? count[i] : 1.0f);
-        if (g > opt->grow_grad2d) cands[nc++] = (cand){g, i};
+        if (g > grow) cands[nc++] = (cand){g, i};
     }
     /* Each clone or split adds one Gaussian; at the cap, keep the highest gradients. */
     if (opt->max_gaussians > 0) {

@@ -47,7 +47,7 @@ static const float_range floats[] = {
     {"adam_beta1", OFF(adam_beta1), 0, 0.999999, 0},
     {"adam_beta2", OFF(adam_beta2), 0, 0.999999999, 0},
     {"adam_eps", OFF(adam_eps), 0, 1, 1},
-    {"grow_grad2d", OFF(grow_grad2d), 0, 1e3, 1},
+    {"grow_grad2d", OFF(grow_grad2d), 0, 1e3, 0}, /* 0: auto (sp_train_grow_grad2d) */
     {"grow_scale3d", OFF(grow_scale3d), 0, 1e3, 1},
     {"prune_opacity", OFF(prune_opacity), 0, 1, 0},
     {"prune_scale3d", OFF(prune_scale3d), 0, 1e6, 1},

@@ -141,11 +141,41 @@ static void test_reset_opacity(void)
     sp_splat_free(&m);
 }
 
+/* The densification threshold: explicit when set; auto 0.00015 for RGB runs under 30000 steps,
+ * gsplat's 0.0002 at 30000 or with depth supervision; the default densify step uses it. */
+static void test_grow_threshold(void)
+{
+    sp_train_options o = sp_train_options_default(7000);
+    CHECK(o.grow_grad2d == 0);
+    CHECK(sp_train_grow_grad2d(&o) == 1.5e-4f);
+    o.depth_lambda = 0.5f;
+    CHECK(sp_train_grow_grad2d(&o) == 2e-4f);
+    sp_train_options l = sp_train_options_default(30000);
+    CHECK(sp_train_grow_grad2d(&l) == 2e-4f);
+    l.grow_grad2d = 3e-4f;
+    CHECK(sp_train_grow_grad2d(&l) == 3e-4f);
+    /* a mean gradient of 0.00018 grows under the short-run default, not under gsplat's */
+    sp_error err = {0};
+    for (int k = 0; k < 2; k++) {
+        sp_splat s;
+        CHECK_OK(sp_splat_alloc(&s, 1, 0, 0, &err), &err);
+        set_g(&s, 0, 1, 0.005f, 0.5f);
+        float sum = 0.00018f, cnt = 1;
+        sp_train_options q = sp_train_options_default(k ? 30000 : 7000);
+        uint64_t rng = 7;
+        sp_densify_stats st;
+        CHECK_OK(sp_train_densify_host(&s, NULL, NULL, &sum, &cnt, &q, 1.0f, 1000, &rng, &st, &err), &err);
+        CHECK(st.n_cloned == (k ? 0u : 1u));
+        sp_splat_free(&s);
+    }
+}
+
 int main(void)
 {
     RUN(test_clone_split_prune);
     RUN(test_split_placement);
     RUN(test_cap_and_big_prune);
     RUN(test_reset_opacity);
+    RUN(test_grow_threshold);
     return TEST_EXIT();
 }
