@@ -123,6 +123,24 @@ static float *host_field(const sp_splat *h, int g, size_t *stride, size_t *off, 
     }
 }
 
+/* The scratch buffers sized by the Gaussian count, for n Gaussians (statistics zeroed). */
+static int scratch_realloc(tr_state *s, size_t n, sp_error *err)
+{
+    float **bufs[] = {&s->sh, &s->v_sh, &s->colors, &s->v_colors, &s->v_means2d, &s->grad2d, &s->count};
+    for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) {
+        sp_device_release(s->dev, *bufs[i]);
+        *bufs[i] = NULL;
+    }
+    size_t K3 = (size_t)s->K * 3;
+    if (!(s->sh = dalloc(s, n * K3, err)) || !(s->v_sh = dalloc(s, n * K3, err)) ||
+        !(s->colors = dalloc(s, n * s->D, err)) || !(s->v_colors = dalloc(s, n * s->D, err)) ||
+        !(s->v_means2d = dalloc(s, n * 2, err)) || !(s->grad2d = dalloc(s, n, err)) ||
+        !(s->count = dalloc(s, n, err)))
+        return err ? err->code : SP_E_NOMEM;
+    int rc = sp_device_zero(s->dev, s->grad2d, (n ? n : 1) * sizeof(float), err);
+    return rc ? rc : sp_device_zero(s->dev, s->count, (n ? n : 1) * sizeof(float), err);
+}
+
 /* Uploads host params (and moments, NULL = zero) into freshly allocated device buffers. */
 static int state_upload(tr_state *s, const sp_splat *P, const sp_splat *M, const sp_splat *V,
                         sp_error *err)
@@ -155,14 +173,7 @@ static int state_upload(tr_state *s, const sp_splat *P, const sp_splat *M, const
         }
     }
     free(tmp);
-    if (rc) return rc;
-    size_t K3 = (size_t)s->K * 3;
-    if (!(s->sh = dalloc(s, n * K3, err)) || !(s->v_sh = dalloc(s, n * K3, err)) ||
-        !(s->colors = dalloc(s, n * s->D, err)) || !(s->v_colors = dalloc(s, n * s->D, err)) ||
-        !(s->v_means2d = dalloc(s, n * 2, err)) || !(s->grad2d = dalloc(s, n, err)) ||
-        !(s->count = dalloc(s, n, err)))
-        return err ? err->code : SP_E_NOMEM;
-    return SP_OK;
+    return rc ? rc : scratch_realloc(s, n, err);
 }
 
 /* Downloads params (and moments when M/V are given) into host splats allocated here. */
@@ -624,24 +635,6 @@ static int conform_splat(sp_splat *sp, int sh_degree, int F, sp_error *err)
     sp_splat_free(sp);
     *sp = t;
     return SP_OK;
-}
-
-/* The scratch buffers sized by the Gaussian count, for n Gaussians (statistics zeroed). */
-static int scratch_realloc(tr_state *s, size_t n, sp_error *err)
-{
-    float **bufs[] = {&s->sh, &s->v_sh, &s->colors, &s->v_colors, &s->v_means2d, &s->grad2d, &s->count};
-    for (size_t i = 0; i < sizeof bufs / sizeof bufs[0]; i++) {
-        sp_device_release(s->dev, *bufs[i]);
-        *bufs[i] = NULL;
-    }
-    size_t K3 = (size_t)s->K * 3;
-    if (!(s->sh = dalloc(s, n * K3, err)) || !(s->v_sh = dalloc(s, n * K3, err)) ||
-        !(s->colors = dalloc(s, n * s->D, err)) || !(s->v_colors = dalloc(s, n * s->D, err)) ||
-        !(s->v_means2d = dalloc(s, n * 2, err)) || !(s->grad2d = dalloc(s, n, err)) ||
-        !(s->count = dalloc(s, n, err)))
-        return err ? err->code : SP_E_NOMEM;
-    int rc = sp_device_zero(s->dev, s->grad2d, (n ? n : 1) * sizeof(float), err);
-    return rc ? rc : sp_device_zero(s->dev, s->count, (n ? n : 1) * sizeof(float), err);
 }
 
 /* Applies a density-control plan on the device: every group's parameters and moments gathered

@@ -248,6 +248,9 @@ static void test_bad_build(void)
     o.prob_miss = 0.6f;
     CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "prob_miss");
     o = sp_costmap_opts_default();
+    o.carve_discretize = 5;
+    CHECK_FAILS(sp_costmap_build(&cm, &g_splat, &cam, 1, &o, NULL, NULL, &err), SP_E_ARG, &err, "carve_discretize");
+    o = sp_costmap_opts_default();
     o.robot_radius_m = 2.0f;
     CHECK_FAILS(sp_costmap_inflate(&g_cm, &o, &err), SP_E_ARG, &err, "radius");
     /* a NaN in the splat, a camera with a broken pose */
