@@ -24,11 +24,12 @@
  * "extra" excludes the Gaussian parameters, as gsplat's anchor does.
  *
  * Usage: bench_render_gpu                 all cases (each in a child process)
- *        bench_render_gpu raster N W H D [B [P [F]]]  one rasterizer case (B: cfg.bwd_gather, 0;
+ *        bench_render_gpu raster N W H D [B [P [F [C]]]]  one rasterizer case (B: cfg.bwd_gather, 0;
  *                                          -1 reduce-scatter, 1 gather, 2 tensor cores; P:
  *                                          cfg.bwd_px, 0; 2 two pixels per thread for chunks
  *                                          up to 8 channels; F: cfg.fwd_px, 0, the same for the
- *                                          forward; the lines say which backward kernel ran,
+ *                                          forward; C: cfg.warp_cull, 0, -1 off;
+ *                                          the lines say which backward kernel ran,
  *                                          bwd=..., and the forward's pixels per thread, fpx=...)
  *        bench_render_gpu step F          one training step case with F feature channels
  *        bench_render_gpu views N W H V   one inference-batch case */
@@ -175,7 +176,7 @@ static void run_fwd_bwd(void *p)
     OK(sp_raster_backward(c->r, &c->gin, &c->g, &g_err));
 }
 
-static void case_raster(size_t n, int W, int H, int D, int block_sums, int bwd_px, int fwd_px,
+static void case_raster(size_t n, int W, int H, int D, int block_sums, int bwd_px, int fwd_px, int cull,
                         const char *gpu)
 {
     bscene s = make_scene(n, W, H, D);
@@ -188,6 +189,7 @@ static void case_raster(size_t n, int W, int H, int D, int block_sums, int bwd_p
     c.cfg.bwd_gather = block_sums;
     c.cfg.bwd_px = bwd_px;
     c.cfg.fwd_px = fwd_px;
+    c.cfg.warp_cull = cull;
     c.in = (sp_raster_in){n, s.means, s.quats, s.log_scales, s.opac, s.colors, D, NULL};
     size_t npix = (size_t)W * H;
     c.out.image = dalloc(npix * D * 4);
@@ -211,8 +213,9 @@ static void case_raster(size_t n, int W, int H, int D, int block_sums, int bwd_p
     OK(sp_raster_last_stages(c.r, &st, &g_err));
     c.cfg.profile = 0;
     char set[384], mode[64] = "";
-    if (block_sums || bwd_px || fwd_px)
-        snprintf(mode, sizeof mode, " bwd_gather=%d bwd_px=%d fwd_px=%d", block_sums, bwd_px, fwd_px);
+    if (block_sums || bwd_px || fwd_px || cull)
+        snprintf(mode, sizeof mode, " bwd_gather=%d bwd_px=%d fwd_px=%d warp_cull=%d", block_sums,
+                 bwd_px, fwd_px, cull);
     /* the kernel that ran (a mode falls back where its kernel does not fit the GPU or width) */
     snprintf(set, sizeof set, "(n=%zu %dx%d D=%d pairs=%zu%s bwd=%s fpx=%d, %s)", n, W, H, D, pairs, mode,
              st.bwd_kernel ? st.bwd_kernel : "?", st.fwd_px, gpu);
@@ -443,7 +446,7 @@ int main(int argc, char **argv)
         return 0;
     }
     /* each case in its own process with its own device, so peak memory does not mix */
-    int is_raster = argc >= 6 && argc <= 9 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
+    int is_raster = argc >= 6 && argc <= 10 && !strcmp(argv[1], "raster"), is_step = argc == 3 && !strcmp(argv[1], "step");
     int is_views = argc == 6 && !strcmp(argv[1], "views");
     if (is_raster || is_step || is_views) {
         OK(sp_device_create(&g_dev, SP_DEVICE_CUDA, 0, &g_err));
@@ -452,7 +455,7 @@ int main(int argc, char **argv)
         if (is_raster)
             case_raster((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]),
                         argc >= 7 ? atoi(argv[6]) : 0, argc >= 8 ? atoi(argv[7]) : 0,
-                        argc == 9 ? atoi(argv[8]) : 0, gpu);
+                        argc >= 9 ? atoi(argv[8]) : 0, argc == 10 ? atoi(argv[9]) : 0, gpu);
         else if (is_views) case_views((size_t)atol(argv[2]), atoi(argv[3]), atoi(argv[4]), atoi(argv[5]), gpu);
         else case_step(atoi(argv[2]), gpu);
         sp_device_free(g_dev);

@@ -85,6 +85,12 @@ typedef struct sp_raster_cfg {
      * shared-memory loads, row terms and loop overhead serve two pixels; 1: one pixel per thread;
      * 4: four. The results are the same bit for bit. Other values fail with SP_E_ARG. */
     int fwd_px;
+    /* CUDA only, for tuning: warp culling. 0 (default) and 1: each warp of a compositing kernel
+     * (forward and backward) skips the Gaussians that no pixel of its band of the tile can keep
+     * (the binning's exact ellipse test on the warp's rows instead of the whole tile, made once
+     * per staged batch); -1: off, every warp tests every pixel. The results are the same bit
+     * for bit. Other values fail with SP_E_ARG. */
+    int warp_cull;
 } sp_raster_cfg;
 
 sp_raster_cfg sp_raster_cfg_default(void);

@@ -87,6 +87,9 @@ int sp_raster_check_view(const char *what, const sp_camera *cam, const sp_raster
         return sp_error_set(err, SP_E_ARG, "%s: bwd_px %d is not one of 0, 1, 2, 4", what, cfg->bwd_px);
     if (cfg->fwd_px < 0 || cfg->fwd_px > 4 || cfg->fwd_px == 3)
         return sp_error_set(err, SP_E_ARG, "%s: fwd_px %d is not one of 0, 1, 2, 4", what, cfg->fwd_px);
+    if (cfg->warp_cull < -1 || cfg->warp_cull > 1)
+        return sp_error_set(err, SP_E_ARG, "%s: warp_cull %d is not one of -1, 0, 1", what,
+                            cfg->warp_cull);
     if ((cfg->chunk_fwd && !is_width(cfg->chunk_fwd)) || (cfg->chunk_bwd && !is_width(cfg->chunk_bwd)))
         return sp_error_set(err, SP_E_ARG, "%s: chunk widths %d / %d: each must be 0 or one of the "
                             "specialised widths (SP_CHANNEL_WIDTHS)", what, cfg->chunk_fwd,

@@ -128,6 +128,7 @@ static const char *g_expect_bwd; /* when set: the backward kernel compare_case's
 static int g_bwd_px = 0;  /* cfg.bwd_px of compare_case's renders */
 static int g_fwd_px = 0;  /* cfg.fwd_px of compare_case's renders */
 static int g_no_aux = 0;  /* 1: compare_case's backward without depth and alpha gradients */
+static int g_warp_cull = 0; /* cfg.warp_cull of compare_case's renders */
 
 static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
 {
@@ -139,6 +140,7 @@ static void compare_case(int W, int H, size_t n, int D, int with_bg, int aa)
     cfg.bwd_gather = g_block_sums;
     cfg.bwd_px = g_bwd_px;
     cfg.fwd_px = g_fwd_px;
+    cfg.warp_cull = g_warp_cull;
     float *bg = NULL;
     if (with_bg) {
         bg = malloc(sizeof(float) * D);
@@ -611,6 +613,54 @@ static void test_fwd_px(void)
     check_refused(&cfg, "fwd_px 8");
 }
 
+/* Warp culling (cfg.warp_cull) only skips Gaussians no pixel of a warp keeps: with it off the
+ * forward's image, depth and alpha have the same bits at one, two and four pixels per thread and
+ * at widths taking every forward kernel (97x63 and 50x70 leave bands outside the image; 320x240
+ * x 20000 saturates pixels); the backward with it off still matches the CPU through each kernel
+ * (two pixels per thread at D=3, one at D=12, the product at D=32; the default, on, is what every
+ * other case runs); values other than -1, 0, 1 are refused. */
+static void test_warp_cull(void)
+{
+    static const struct { int W, H, n, D, aa; } cases[] = {
+        {97, 63, 600, 3, 0}, {50, 70, 400, 4, 1}, {320, 240, 20000, 3, 0}, {40, 36, 150, 12, 0},
+        {72, 40, 400, 35, 0}, {64, 48, 300, 64, 1}};
+    static const int pxs[] = {1, 2, 4};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        sp_camera cam = make_cam(cases[k].W, cases[k].H);
+        scene s = make_scene((size_t)cases[k].n, cases[k].D, &cam);
+        size_t npix = (size_t)cam.width * cam.height, ni = npix * cases[k].D;
+        float *a = malloc(ni * 4), *ad = malloc(npix * 4), *aa = malloc(npix * 4);
+        float *b = malloc(ni * 4), *bd = malloc(npix * 4), *ba = malloc(npix * 4);
+        for (int q = 0; q < 3; q++) {
+            sp_raster_cfg cfg = sp_raster_cfg_default();
+            cfg.antialiased = cases[k].aa;
+            cfg.fwd_px = pxs[q];
+            cfg.warp_cull = -1;
+            gpu_render_px(&s, &cam, &cfg, a, ad, aa);
+            cfg.warp_cull = 0;
+            gpu_render_px(&s, &cam, &cfg, b, bd, ba);
+            CHECK_MSG(!memcmp(a, b, ni * 4) && !memcmp(ad, bd, npix * 4) && !memcmp(aa, ba, npix * 4),
+                      "%dx%d D=%d fwd_px %d: warp culling changed the forward", cases[k].W,
+                      cases[k].H, cases[k].D, pxs[q]);
+        }
+        fprintf(stderr, "  warp_cull %dx%d n=%d D=%d aa=%d: on and off match bit for bit\n",
+                cases[k].W, cases[k].H, cases[k].n, cases[k].D, cases[k].aa);
+        free(a), free(ad), free(aa), free(b), free(bd), free(ba);
+        scene_free(&s);
+    }
+    g_warp_cull = -1;
+    compare_case(97, 63, 600, 3, 1, 0);
+    compare_case(50, 70, 400, 12, 0, 1);
+    compare_case(64, 48, 300, 32, 1, 0);
+    g_warp_cull = 0;
+
+    sp_raster_cfg cfg = sp_raster_cfg_default();
+    cfg.warp_cull = 2;
+    check_refused(&cfg, "warp_cull 2");
+    cfg.warp_cull = -2;
+    check_refused(&cfg, "warp_cull -2");
+}
+
 /* bwd_px other than 0, 1, 2, 4 is refused. */
 static void test_bwd_px_range(void)
 {
@@ -831,6 +881,7 @@ int main(void)
     RUN(test_bwd_px);
     RUN(test_bwd_px_range);
     RUN(test_fwd_px);
+    RUN(test_warp_cull);
     RUN(test_many_tiles);
     RUN(test_surface_depth);
     RUN(test_views_batch);

@@ -201,13 +201,15 @@ struct walk_px {
     float T, G, Gd; /* transmittance and the carried colour / depth terms */
 };
 
-/* One stage's walk at this thread's pixel, back to front: alpha, transmittance, dL/dalpha (its
+/* One stage's walk at this thread's pixel, back to front, over the Gaussians t whose bit is set
+ * in bits (warp-uniform; bit t clear where t >= the stage's count or the warp's band cannot keep
+ * t: sp_cu_band_bits): alpha, transmittance, dL/dalpha (its
  * colour term p = colour_t . v_out from dot(t)) and the geometry sums (warp reduce-scatter, one
  * atomic per value and warp); fac of Gaussian t (0 where not kept) goes to fac_out[t * ldf + tid]
  * and the warp's flag byte to s.flag[t]. dot(t) is called only where the pixel keeps t, before
  * fac_out[t * ldf + tid] is written (so it may read that slot). */
 template <class Dot>
-__device__ __forceinline__ void stage_walk(const stage_smem &s, walk_px &q, int b_end, int cnt,
+__device__ __forceinline__ void stage_walk(const stage_smem &s, walk_px &q, int b_end, unsigned bits,
                                            float *fac_out, int ldf, Dot dot,
                                            float *__restrict__ vgeo, int tid)
 {
@@ -218,7 +220,7 @@ __device__ __forceinline__ void stage_walk(const stage_smem &s, walk_px &q, int 
         bool valid = false;
 #pragma unroll
         for (int k = 0; k < 7; k++) geo[k] = 0.f;
-        if (t < cnt && idx < q.warp_last) { /* warp-uniform */
+        if (((bits >> t) & 1u) && idx < q.warp_last) { /* warp-uniform */
             const float4 co = s.conic[t];
             const float2 xy = s.xy[t];
             const float dx = q.px - xy.x, dy = q.py - xy.y;

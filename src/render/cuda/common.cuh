@@ -28,6 +28,7 @@ typedef struct sp_cuda_view {
     sp_camera cam;
     int tiles_x, tiles_y;
     int box_tiles; /* sp_raster_cfg.box_tiles: bin into every box tile, no ellipse test */
+    int warp_cull; /* sp_raster_cfg.warp_cull resolved: 1 on, 0 off (sp_cu_band_bits) */
     sp_cuda_proj proj;
     size_t n_pairs;
     const uint32_t *sorted_ids; /* [n_pairs] Gaussian index per sorted pair */
@@ -178,6 +179,33 @@ __device__ __forceinline__ float sp_cu_alpha(float4 co, float cut, float dx, flo
 {
     const float conic[3] = {co.x, co.y, co.z};
     return sp_gm_alpha_g(conic, co.w, cut, dx, dy, vis);
+}
+
+/* Warp culling. Every compositing kernel's warp w owns band w of its 16x16 tile, rows
+ * rh w .. rh w + rh - 1 (rh = 16 / warps per block), so a Gaussian that no
+ * pixel of the band can keep costs that warp nothing if it is skipped before its alpha test.
+ * Whether a pixel of the band (clipped to the image) can keep it is sp_gm_tile_hit on the band:
+ * the binning's exact ellipse test, conservative against the alpha rule (its margin is far
+ * above float rounding), so skipping changes no bit of any image or gradient. Returns this
+ * warp's bits for the staged Gaussians base .. base + 31 of a batch of cnt (bit l: slot
+ * base + l may be kept), all set where culling is off; lanes test one Gaussian each, so the
+ * whole warp must call it, converged. */
+__device__ __forceinline__ unsigned sp_cu_band_bits(const float4 *s_conic, const float2 *s_xy,
+                                                    const float *s_cut, int base, int cnt,
+                                                    int cull, int tx, int ty, int band, int rh,
+                                                    int W, int H, int lane)
+{
+    const int j = base + lane;
+    bool hit = j < cnt;
+    if (hit && cull) {
+        const int x0 = tx * SP_TILE_SIZE, x1 = min(x0 + SP_TILE_SIZE - 1, W - 1);
+        const int y0 = ty * SP_TILE_SIZE + band * rh, y1 = min(y0 + rh - 1, H - 1);
+        const float4 co = s_conic[j];
+        const float2 xy = s_xy[j];
+        const float con[3] = {co.x, co.y, co.z};
+        hit = y0 <= y1 && x0 <= x1 && sp_gm_tile_hit(con, s_cut[j], xy.x, xy.y, x0, x1, y0, y1);
+    }
+    return __ballot_sync(0xffffffffu, hit);
 }
 
 static inline unsigned sp_div_up(size_t a, size_t b) { return (unsigned)((a + b - 1) / b); }

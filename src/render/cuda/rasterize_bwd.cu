@@ -38,7 +38,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
              const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
              const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
              const float *__restrict__ v_image, const float *__restrict__ v_depth,
-             const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+             const float *__restrict__ v_alpha_out, int aux, int cull, float *__restrict__ v_colors,
              float *__restrict__ vgeo)
 {
     extern __shared__ float4 smem_f4[];
@@ -109,7 +109,14 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
         __syncthreads();
-        for (int t = max(0, b_end - warp_last); t < cnt; t++) {
+        /* warp culling (sp_cu_band_bits): the warp's 2 rows */
+        const int t_first = max(0, b_end - warp_last);
+        for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
+        unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
+                                     blockIdx.y, tid >> 5, 2, W, H, lane);
+        if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+        for (; m; m &= m - 1) {
+            const int t = 32 * wd + __ffs(m) - 1;
             const int idx = b_end - 1 - t;
             const float4 co = s_conic[t];
             const float2 xy = s_xy[t];
@@ -202,6 +209,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
                 atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
         }
+        }
     }
 }
 
@@ -225,7 +233,7 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                 const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
                 const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
                 const float *__restrict__ v_image, const float *__restrict__ v_depth,
-                const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+                const float *__restrict__ v_alpha_out, int aux, int cull, float *__restrict__ v_colors,
                 float *__restrict__ vgeo)
 {
     static_assert(CH <= 8, "several pixels per thread: narrow chunks only");
@@ -303,7 +311,14 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
         __syncthreads();
-        for (int t = max(0, b_end - warp_last); t < cnt; t++) {
+        /* warp culling (sp_cu_band_bits): the warp's 2 PX rows */
+        const int t_first = max(0, b_end - warp_last);
+        for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
+        unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
+                                     blockIdx.y, tid >> 5, 2 * PX, W, H, lane);
+        if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+        for (; m; m &= m - 1) {
+            const int t = 32 * wd + __ffs(m) - 1;
             const int idx = b_end - 1 - t;
             const float4 co = s_conic[t];
             const float2 xy = s_xy[t];
@@ -365,6 +380,7 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                 }
             }
         }
+        }
     }
 }
 
@@ -384,7 +400,7 @@ static int launch_bwd_px(const sp_cuda_raster *r, const sp_raster_grad_in *gin, 
     k_raster_bwd_px<CH, PX><<<grid, block, smem, r->stream>>>(
         v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
         v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
-        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v->warp_cull, v_colors, vgeo);
     SP_CUDA_LAUNCHED(err, "backward rasterization (several pixels per thread)");
     return 0;
 }
@@ -421,7 +437,7 @@ static int launch_bwd_as(const sp_cuda_raster *r, const sp_raster_grad_in *gin, 
     k_raster_bwd<CH, GV><<<grid, block, smem, r->stream>>>(
         v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
         v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
-        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v->warp_cull, v_colors, vgeo);
     SP_CUDA_LAUNCHED(err, "backward rasterization");
     return 0;
 }

@@ -31,7 +31,7 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                 const float *__restrict__ colors, int D, int c_base, const float *__restrict__ bg,
                 const float *__restrict__ t_final, const int32_t *__restrict__ last_idx,
                 const float *__restrict__ v_image, const float *__restrict__ v_depth,
-                const float *__restrict__ v_alpha_out, int aux, float *__restrict__ v_colors,
+                const float *__restrict__ v_alpha_out, int aux, int cull, float *__restrict__ v_colors,
                 float *__restrict__ vgeo)
 {
     constexpr int NPL = (CH + 31) / 32; /* channels per lane in the product */
@@ -97,7 +97,10 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, b_end - NB,
                                 min(NB, b_end - NB - range.x), tid);
         __syncthreads();
-        stage_walk(st, q, b_end, cnt, s_fac, BLOCK,
+        /* warp culling (sp_cu_band_bits): the warp's 2 rows */
+        const unsigned bits = sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x,
+                                              blockIdx.y, warp, 2, W, H, lane);
+        stage_walk(st, q, b_end, bits, s_fac, BLOCK,
                    [&](int t) {
                        const float *col = st.col + t * CH;
                        float p = 0.f;
@@ -180,7 +183,7 @@ static int launch_mm(const sp_cuda_raster *r, const sp_raster_grad_in *gin, floa
     k_raster_bwd_mm<CH><<<grid, block, smem, r->stream>>>(
         v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids, v->proj.means2d,
         v->proj.conic_op, v->proj.depths, r->in.colors, r->in.D, c_base, r->bg_dev, v->t_final,
-        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v_colors, vgeo);
+        v->last_idx, gin->v_image, gin->v_depth, gin->v_alpha, aux, v->warp_cull, v_colors, vgeo);
     SP_CUDA_LAUNCHED(err, "backward rasterization");
     return 0;
 }

@@ -28,6 +28,7 @@ typedef struct fwd_view {
     float *image, *depth_out, *alpha_out;
     float *t_final;    /* NULL: not kept (batches have no backward) */
     int32_t *last_idx; /* with t_final */
+    int cull;          /* warp culling (sp_cu_band_bits) */
 } fwd_view;
 
 /* A tile's batch in shared memory: NT Gaussians' position, conic, opacity cut, depth, id and
@@ -37,10 +38,11 @@ typedef struct fwd_shared {
     float2 *xy;
     float *z, *cut;
     int *id;
-    float *col; /* [NT][CH] */
+    float *col;     /* [NT][CH] */
+    unsigned *bits; /* [NT / 32 warps][NT / 32 words]: each warp's band bits (fwd_band_bits) */
 } fwd_shared;
 
-template <int NT>
+template <int NT, int CH>
 __device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
 {
     fwd_shared s;
@@ -50,6 +52,7 @@ __device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
     s.cut = s.z + NT;
     s.id = (int *)(s.cut + NT);
     s.col = (float *)(s.id + NT);
+    s.bits = (unsigned *)(s.col + NT * CH);
     return s;
 }
 
@@ -76,6 +79,25 @@ __device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s
     __syncthreads();
 }
 
+/* After fwd_stage: this warp's band bits for the batch (sp_cu_band_bits; a warp of a block of NT
+ * threads covers 32 / (NT / 16) rows), word c for Gaussians 32 c .. 32 c + 31, read back only by
+ * the warp itself. */
+template <int NT>
+__device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, const fwd_shared &s,
+                                                         int cnt, int tid, int tx, int ty)
+{
+    constexpr int NW = NT / 32, RH = SP_TILE_SIZE / NW;
+    const int warp = tid >> 5, lane = tid & 31;
+    unsigned *bits = s.bits + warp * NW;
+    for (int c = 0; c < NW; c++) {
+        const unsigned b = sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty, warp,
+                                           RH, v.W, v.H, lane);
+        if (lane == 0) bits[c] = b;
+    }
+    __syncwarp();
+    return bits;
+}
+
 /* Composites tile (tx, ty) of view v, channels c0 .. c0 + CH; aux: also depth, alpha and the
  * per-pixel state for backward. */
 template <int CH>
@@ -84,7 +106,7 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
                                          const float *__restrict__ bg, bool aux)
 {
     extern __shared__ float4 smem_f4[];
-    const fwd_shared sh = fwd_shared_at<BLOCK>(smem_f4);
+    const fwd_shared sh = fwd_shared_at<BLOCK, CH>(smem_f4);
     const float4 *s_conic = sh.conic;
     const float2 *s_xy = sh.xy;
     const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
@@ -107,7 +129,10 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
         if (__syncthreads_count(done) == BLOCK) break;
         const int cnt = min(BLOCK, range.y - b0);
         fwd_stage<CH, BLOCK>(v, sh, b0, cnt, tid, colors, D, c0);
-        for (int j = 0; j < cnt && !done; j++) {
+        const unsigned *bits = fwd_band_bits<BLOCK>(v, sh, cnt, tid, tx, ty);
+        for (int wd = 0; wd < BLOCK / 32 && !done; wd++)
+        for (unsigned m = bits[wd]; m && !done; m &= m - 1) {
+            const int j = 32 * wd + __ffs(m) - 1;
             const float4 co = s_conic[j];
             const float2 xy = s_xy[j];
             const float dx = px - xy.x, dy = py - xy.y;
@@ -154,7 +179,7 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     constexpr int NT = BLOCK / PX;        /* threads, and Gaussians per batch */
     constexpr int BX = SP_TILE_SIZE / PX; /* threads per tile row */
     extern __shared__ float4 smem_f4[];
-    const fwd_shared sh = fwd_shared_at<NT>(smem_f4);
+    const fwd_shared sh = fwd_shared_at<NT, CH>(smem_f4);
     const float4 *s_conic = sh.conic;
     const float2 *s_xy = sh.xy;
     const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
@@ -182,7 +207,10 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
         if (__syncthreads_count(all_done) == NT) break;
         const int cnt = min(NT, range.y - b0);
         fwd_stage<CH, NT>(v, sh, b0, cnt, tid, colors, D, c0);
-        for (int j = 0; j < cnt && !all_done; j++) {
+        const unsigned *bits = fwd_band_bits<NT>(v, sh, cnt, tid, tx, ty);
+        for (int wd = 0; wd < NT / 32 && !all_done; wd++)
+        for (unsigned m = bits[wd]; m && !all_done; m &= m - 1) {
+            const int j = 32 * wd + __ffs(m) - 1;
             const float4 co = s_conic[j];
             const float2 xy = s_xy[j];
             const float cut = s_cut[j];
@@ -277,14 +305,16 @@ static fwd_view fwd_view_of(const sp_cuda_view *v, const sp_cuda_pass *p, int st
 {
     fwd_view f = {v->cam.width, v->cam.height, v->tiles_x, v->tile_ranges, v->sorted_ids,
                   v->proj.means2d, v->proj.conic_op, v->proj.depths, p->image, p->depth, p->alpha,
-                  state ? v->t_final : NULL, state ? v->last_idx : NULL};
+                  state ? v->t_final : NULL, state ? v->last_idx : NULL, v->warp_cull};
     return f;
 }
 
 static size_t fwd_smem(int ch, int px)
 {
-    return (size_t)(BLOCK / px) * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) +
-                                   sizeof(int) + sizeof(float) * ch);
+    const size_t nt = BLOCK / px;
+    return nt * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
+                 sizeof(float) * ch) +
+           (nt / 32) * (nt / 32) * sizeof(unsigned);
 }
 
 /* One launch of width CH: a single view (views NULL: v) or a batch of nv views (views and
@@ -432,6 +462,7 @@ int sp_cuda_raster_forward(void *state, const sp_camera *cam, const sp_raster_cf
     v->tiles_x = (cam->width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
     v->tiles_y = (cam->height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
     v->box_tiles = cfg->box_tiles;
+    v->warp_cull = cfg->warp_cull >= 0;
     size_t npix = (size_t)cam->width * cam->height;
 
     if ((rc = sp_cuda_upload_background(r, in->background, in->D, &r->bg_dev, err))) return rc;

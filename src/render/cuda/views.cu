@@ -238,6 +238,7 @@ int sp_cuda_views(void *state, const sp_raster_cfg *cfg, const sp_raster_in *geo
         v->tiles_x = (v->cam.width + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
         v->tiles_y = (v->cam.height + SP_TILE_SIZE - 1) / SP_TILE_SIZE;
         v->box_tiles = cfg->box_tiles;
+        v->warp_cull = cfg->warp_cull >= 0;
         bv[i].tile_base = total_tiles;
         total_tiles += (size_t)v->tiles_x * v->tiles_y;
         size_t np = (size_t)v->cam.width * v->cam.height;
