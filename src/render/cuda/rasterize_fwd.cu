@@ -81,17 +81,23 @@ __device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s
 
 /* After fwd_stage: this warp's band bits for the batch (sp_cu_band_bits; a warp of a block of NT
  * threads covers 32 / (NT / 16) rows), word c for Gaussians 32 c .. 32 c + 31, read back only by
- * the warp itself. */
-template <int NT>
+ * the warp itself. TEST false: every staged Gaussian's bit, no test. Chunks wider than 8
+ * channels take that: the test's temporaries beside their CH accumulators cost a block per SM
+ * (H200, D=32: 78 registers against 64, 3 blocks instead of 4; forward 2.96 ms culled against
+ * 2.81 unculled), while what it saves, the skipped pairs' alpha tests, is a small part of
+ * their per-pair work. */
+template <int NT, bool TEST>
 __device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, const fwd_shared &s,
                                                          int cnt, int tid, int tx, int ty)
 {
     constexpr int NW = NT / 32, RH = SP_TILE_SIZE / NW;
     const int warp = tid >> 5, lane = tid & 31;
     unsigned *bits = s.bits + warp * NW;
+#pragma unroll 1
     for (int c = 0; c < NW; c++) {
-        const unsigned b = sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty, warp,
-                                           RH, v.W, v.H, lane);
+        const unsigned b = TEST ? sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty,
+                                                  warp, RH, v.W, v.H, lane)
+                                : __ballot_sync(0xffffffffu, 32 * c + lane < cnt);
         if (lane == 0) bits[c] = b;
     }
     __syncwarp();
@@ -129,7 +135,8 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
         if (__syncthreads_count(done) == BLOCK) break;
         const int cnt = min(BLOCK, range.y - b0);
         fwd_stage<CH, BLOCK>(v, sh, b0, cnt, tid, colors, D, c0);
-        const unsigned *bits = fwd_band_bits<BLOCK>(v, sh, cnt, tid, tx, ty);
+        const unsigned *bits = fwd_band_bits<BLOCK, (CH <= 8)>(v, sh, cnt, tid, tx, ty);
+#pragma unroll 1
         for (int wd = 0; wd < BLOCK / 32 && !done; wd++)
         for (unsigned m = bits[wd]; m && !done; m &= m - 1) {
             const int j = 32 * wd + __ffs(m) - 1;
@@ -207,7 +214,8 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
         if (__syncthreads_count(all_done) == NT) break;
         const int cnt = min(NT, range.y - b0);
         fwd_stage<CH, NT>(v, sh, b0, cnt, tid, colors, D, c0);
-        const unsigned *bits = fwd_band_bits<NT>(v, sh, cnt, tid, tx, ty);
+        const unsigned *bits = fwd_band_bits<NT, true>(v, sh, cnt, tid, tx, ty);
+#pragma unroll 1
         for (int wd = 0; wd < NT / 32 && !all_done; wd++)
         for (unsigned m = bits[wd]; m && !all_done; m &= m - 1) {
             const int j = 32 * wd + __ffs(m) - 1;
