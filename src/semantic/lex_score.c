@@ -857,6 +857,19 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             }
         }
     }
+    /* A query sense that is another sense of the class's own word ("hand basin": WordNet's
+     * washbasin for washing hands, the class its bathroom sink) names the thing by the world's
+     * word: one weak step (DELTA), the sense choice not being certain. */
+    for (int i = 0; has_head && base < LEX_DELTA && m->kind != SP_LEX_EXACT && i < np->n_senses; i++)
+        for (int k = 0; k < c->n_other; k++) {
+            if (np->senses[i].off != c->other[k]) continue;
+            base = LEX_DELTA;
+            m->kind = SP_LEX_SYNONYM;
+            snprintf(m->query_sense, sizeof m->query_sense, "%s", np->senses[i].anc[0].name);
+            snprintf(m->class_sense, sizeof m->class_sense, "%s", c->name);
+            snprintf(m->definition, sizeof m->definition, "%s", np->senses[i].definition);
+            snprintf(m->path, sizeof m->path, "another sense of '%s', the class's word", c->name);
+        }
     /* A name WordNet joins is also a kind of its last word ("machine" -> the washing machine,
      * which WordNet files under home appliance): the query against that word's senses, the
      * class one level below them, as for a name WordNet lacks. */
