@@ -30,17 +30,27 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
+/* 1 when synset s is the commonest sense of lemma w: a synonym stands in for the word only
+ * where it would be read so ("pee" -> "water" of the urine synset: a definition's "water" is
+ * the liquid, not urine). */
+static int commonest_of(const lex_db *lx, const char *w, const wn_synset *s)
+{
+    uint32_t off;
+    sp_error err = {0};
+    return lx && wn_lookup(lx->db, (wn_pos)s->id.pos, w, &off, 1, NULL, &err) == 1 && off == s->id.offset;
+}
+
 /* Adds the single-word lemmas of synset s at f (lower case); heads: and the last word of the
- * others ("low_temperature" -> temperature). */
-static void exp_add_words(expansion *e, const wn_synset *s, float f, int heads)
+ * others ("low_temperature" -> temperature); lx: only lemmas whose commonest sense s is. */
+static void exp_add_words(const lex_db *lx, expansion *e, const wn_synset *s, float f, int heads)
 {
     for (int k = 0; k < s->n_words; k++) {
         char w[WN_LEMMA_MAX];
         snprintf(w, sizeof w, "%s", s->words[k]);
         for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
         const char *last = strrchr(w, '_');
-        if (!last) exp_add(e, w, f);
-        else if (heads) exp_add(e, last + 1, f);
+        if (!last && (!lx || commonest_of(lx, w, s))) exp_add(e, w, f);
+        else if (last && heads) exp_add(e, last + 1, f);
     }
 }
 
@@ -50,7 +60,7 @@ static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_
     wn_synset s;
     int rc = wn_read(lx->db, id, &s, err);
     if (rc) return rc;
-    exp_add_words(e, &s, f, 1);
+    exp_add_words(NULL, e, &s, f, 1);
     wn_synset_free(&s);
     return 0;
 }
@@ -96,7 +106,7 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         wn_id id = {off, (uint8_t)p};
         int rc = wn_read(lx->db, id, &s, err);
         if (rc) return rc;
-        exp_add_words(e, &s, LEX_SYN, 0);
+        exp_add_words(lx, e, &s, LEX_SYN, 0);
         /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
          * typewriter, store -> storage), the same one weak step */
         for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
@@ -104,7 +114,8 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
             if (strcmp(pt->symbol, "+") || pt->target.pos != WN_NOUN || !pt->target_word) continue;
             wn_synset ns;
             if ((rc = wn_read(lx->db, pt->target, &ns, err))) break;
-            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_')) {
+            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_') &&
+                commonest_of(lx, ns.words[pt->target_word - 1], &ns)) {
                 char w[WN_LEMMA_MAX];
                 snprintf(w, sizeof w, "%s", ns.words[pt->target_word - 1]);
                 for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
