@@ -152,20 +152,70 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
     return best;
 }
 
-/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
+/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT).
+ * A kind's definition (one level down, change 46) is evidence of one kind: words found in two
+ * kinds' definitions describe two different things ("what heats the house": the double
+ * glazing's "heat" and the bay window's "house" make no window that heats a house), so m_d is
+ * the best of the class's own entries and those of the one kind that explains the most. */
+typedef struct {
+    short src, word;
+    float v;
+} kind_hit;
+
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
                            const char (*words)[LEX_WORD], float pf, float af, char *why, size_t cap)
 {
-    float num = 0, den = 0;
-    size_t o = 0;
-    if (why && cap) why[0] = 0;
+    float own[24] = {0}, den = 0;
+    int own_src[24];
+    kind_hit kh[256];
+    int nk = 0;
+    if (n > 24) n = 24;
     for (int i = 0; i < n; i++) {
-        char one[256];
-        float m = bag_match(c, &exps[i], words[i], pf, af, 0, one, sizeof one);
-        num += w[i] * m;
+        own_src[i] = -1;
         den += w[i];
-        if (m > 0 && why && o + 1 < cap) {
-            int k = snprintf(why + o, cap - o, "%s%s", o ? "; " : "", one);
+        for (int k = 0; k < exps[i].n; k++)
+            for (int b = 0; b < c->bag.n; b++) {
+                const lex_bag_word *e = &c->bag.words[b];
+                /* one indirection at most: a synonym counts in the class's own definition only */
+                if ((exps[i].f[k] < 1.0f && e->weight < 1.0f) || strcmp(e->w, exps[i].w[k])) continue;
+                float f = e->patient == LEX_BAG_PATIENT ? pf : e->patient == LEX_BAG_AGENT ? af : 1.0f;
+                float v = e->weight * f * exps[i].f[k];
+                if (!e->kind) {
+                    if (v > own[i]) own[i] = v, own_src[i] = e->src;
+                    continue;
+                }
+                int j = 0;
+                while (j < nk && (kh[j].src != e->src || kh[j].word != i)) j++;
+                if (j == nk && nk < 256) kh[nk++] = (kind_hit){e->src, (short)i, 0};
+                if (j < nk && v > kh[j].v) kh[j].v = v;
+            }
+    }
+    float num = 0;
+    for (int i = 0; i < n; i++) num += w[i] * own[i];
+    int best_src = -1;
+    for (int j = 0; j < nk; j++) { /* each kind that some word was found in */
+        int seen = 0;
+        for (int q = 0; q < j; q++) seen |= kh[q].src == kh[j].src;
+        if (seen) continue;
+        float t = 0;
+        for (int i = 0; i < n; i++) {
+            float m = own[i];
+            for (int q = j; q < nk; q++)
+                if (kh[q].src == kh[j].src && kh[q].word == i && kh[q].v > m) m = kh[q].v;
+            t += w[i] * m;
+        }
+        if (t > num) num = t, best_src = kh[j].src;
+    }
+    if (why && cap) {
+        size_t o = 0;
+        why[0] = 0;
+        for (int i = 0; i < n && o + 1 < cap; i++) {
+            int src = own_src[i];
+            float m = own[i];
+            for (int q = 0; q < nk; q++)
+                if (kh[q].src == best_src && kh[q].word == i && kh[q].v > m) m = kh[q].v, src = best_src;
+            if (m <= 0 || src < 0) continue;
+            int k = snprintf(why + o, cap - o, "%s%s (%s)", o ? "; " : "", words[i], c->bag.src[src]);
             if (k > 0) o += (size_t)k;
         }
     }
