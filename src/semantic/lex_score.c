@@ -566,6 +566,22 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
  * verb (base or -ing form, not the past participle: "pictures can be PROJECTED" is no projector)
  * is one weak step (DELTA) away, times the share of the query's modifiers its definitions name.
  * Returns the score; why gets the evidence, used[i] whether modifier i was found. */
+/* 1 when the class's own definitions say the thing does verb: not as what it is acted on (a
+ * participle) nor as what its users do ("a wheelchair: ... for those who cannot WALK" is no
+ * walker). */
+static int agent_entry(const lex_bag *b, const char *verb, int *src)
+{
+    for (int i = 0; i < b->n; i++) {
+        const lex_bag_word *e = &b->words[i];
+        if (e->weight >= 1.0f && e->patient != LEX_BAG_PATIENT && e->patient != LEX_BAG_PERSON &&
+            !strcmp(e->w, verb)) {
+            *src = e->src;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static float agent_score(const lex_class *c, const lex_np *np, const query_prep *qp, int *used, char *why,
                          size_t cap)
 {
@@ -573,7 +589,7 @@ static float agent_score(const lex_class *c, const lex_np *np, const query_prep 
     for (int a = 0; a < qp->n_agent && src < 0; a++) {
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, 1.0f, 0, &src) <= 0) src = -1;
+        if (!agent_entry(&c->bag, qp->agent[a], &src)) src = -1;
         else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
     }
     if (src < 0) return 0;
