@@ -475,63 +475,6 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     np->n_senses = kept;
 }
 
-/* How many content words of text (by base form) the bag holds: WordNet's finer senses of one
- * thing say the same words ("washbasin": "a bathroom sink ... where you can wash your hands",
- * "a basin for washing the hands"), a homonym does not (the stool, a seat, and the toilet). */
-static int shared_words(const lex_db *lx, const lex_bag *bag, const char *text, sp_error *err)
-{
-    lex_tokens t;
-    lex_tokenize(text, &t);
-    int n = 0;
-    for (int i = 0; i < t.n; i++) {
-        if (strlen(t.w[i]) < 3 || lex_word_class_of(t.w[i]) != LW_CONTENT) continue;
-        char b[1 + WN_MAX_BASES][WN_LEMMA_MAX];
-        snprintf(b[0], WN_LEMMA_MAX, "%s", t.w[i]);
-        int nb = 1;
-        for (int p = 0; p < 2; p++) {
-            int k = lex_bases(lx, (wn_pos)p, t.w[i], b + nb, err);
-            if (k < 0) return k;
-            if (k > 0) nb++; /* the first base of each part of speech */
-        }
-        n += lex_bag_find(bag, b, nb, 0.0f, 1.0f, 1.0f, 0, NULL) > 0;
-    }
-    return n;
-}
-
-/* The artifact senses of a one-word (or WordNet-joined) name that its chosen senses leave out:
- * a query meaning one of them used the world's own word for the thing, under another sense,
- * when it is a finer sense of the same thing (shared_words), not a homonym. */
-static int other_senses(const sp_lex_vocab *v, lex_class *c, sp_error *err)
-{
-    const lex_np *np = &c->np;
-    if (!np->head[0] || np->n_mods || np->split || np->n_senses == 0) return 0;
-    uint32_t offs[WN_MAX_SENSES];
-    int tagged = 0;
-    int n = wn_lookup(v->lx->db, WN_NOUN, np->head, offs, WN_MAX_SENSES, &tagged, err);
-    if (n < 0) return n;
-    lex_bag chosen = {0};
-    int rc = 0;
-    for (int j = 0; j < np->n_senses && !rc; j++)
-        rc = lex_bag_add_text(v->lx, &chosen, np->senses[j].definition, 1.0f, 0, "chosen", err);
-    lex_sense *tmp = rc ? NULL : malloc(sizeof *tmp);
-    if (!tmp) {
-        lex_bag_free(&chosen);
-        return rc ? rc : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-    }
-    for (int i = 0; i < n && !rc && c->n_other < 8; i++) {
-        int kept = 0;
-        for (int j = 0; j < np->n_senses; j++) kept |= np->senses[j].off == offs[i];
-        if (kept || (rc = lex_sense_load(v->lx, offs[i], i + 1, tmp, err))) continue;
-        if (!lex_sense_artifact(tmp) || lex_sense_room(tmp) || tmp->instance) continue;
-        int shared = rc ? 0 : shared_words(v->lx, &chosen, tmp->definition, err);
-        if (shared < 0) rc = shared;
-        else if (shared >= 2) c->other[c->n_other++] = offs[i];
-    }
-    free(tmp);
-    lex_bag_free(&chosen);
-    return rc;
-}
-
 /* The alias table (data/semantic/aliases.json), and a user's aliases.json beside a region table
  * given by path, when there is one. */
 static int load_aliases(sp_lex_vocab *v, const char *regions_path, sp_error *err)
@@ -576,7 +519,6 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
     }
     for (int i = 0; i < v->n && !rc; i++)
         if (v->classes[i].np.fallback) choose_by_context(v, i);
-    for (int i = 0; i < v->n && !rc; i++) rc = other_senses(v, &v->classes[i], err);
     if (!rc) {
         char path[2048];
         if (!regions_path) sp_path_join(path, sizeof path, sp_data_dir(), "semantic/regions.json");

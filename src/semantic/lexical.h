@@ -153,7 +153,6 @@ typedef struct lex_bag_word {
 } lex_bag_word;
 #define LEX_BAG_PATIENT 1
 #define LEX_BAG_AGENT 2
-#define LEX_BAG_PERSON 3 /* a verb of a person's clause ("for those who cannot WALK"): what people do */
 
 typedef struct lex_bag {
     int n, cap;
@@ -240,9 +239,6 @@ typedef struct lex_class {
     lex_bag kind_bag;  /* those senses' lemmas and definitions */
     char act[WN_LEMMA_MAX]; /* the verb of an -ing word before its last ("wash" of "washing
                              * machine"): the activity the thing is for; "" none */
-    int n_other;
-    uint32_t other[8]; /* artifact senses of the name's own word that the class did not choose
-                        * (washbasin: the hand basin, while the class is the bathroom sink) */
 } lex_class;
 /* The verb an -ing word is a form of ("rowing" -> "row"); 1 when it is one, 0 when not. */
 int lex_ing_verb(const lex_db *lx, const char *w, char *verb, sp_error *err);
