@@ -18,37 +18,52 @@ static int noun_base(const lex_db *lx, const char *w, char *out, sp_error *err)
     return n > 0;
 }
 
+/* The collocation of k words starting at i, when WordNet has one: 1 and its base form. */
+static int collocation_at(const lex_db *lx, const lex_tokens *in, int i, int k, char *base, sp_error *err)
+{
+    if (i < 0 || i + k > in->n || lex_word_class_of(in->w[i]) != LW_CONTENT) return 0;
+    int last = lex_word_class_of(in->w[i + k - 1]);
+    /* a collocation may end in a partitive ("tv set") or in a function word that is also a noun
+     * ("trash can", "watering can"): WordNet's entry decides */
+    if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) return 0;
+    /* "clean up" is a verb and its particle, not the noun "cleanup" */
+    if (lex_is_particle(in->w[i + k - 1])) return 0;
+    char joined[4 * LEX_WORD];
+    size_t o = 0;
+    for (int j = 0; j < k; j++) o += (size_t)snprintf(joined + o, sizeof joined - o, "%s%s", j ? "_" : "", in->w[i + j]);
+    int rc = strlen(joined) < WN_LEMMA_MAX ? noun_base(lx, joined, base, err) : 0;
+    if (rc < 0) return rc;
+    if (!rc && k == 2) { /* "book shelf" -> "bookshelf" */
+        snprintf(joined, sizeof joined, "%s%s", in->w[i], in->w[i + 1]);
+        if ((rc = noun_base(lx, joined, base, err)) < 0) return rc;
+    }
+    return rc;
+}
+
 int lex_merge_collocations(const lex_db *lx, const lex_tokens *in, lex_tokens *out, sp_error *err)
 {
+    /* English compounds are right-headed: the collocation that ends a run binds first, so "red
+     * fire extinguisher" is red + fire_extinguisher, not red_fire + extinguisher, and "metal
+     * filing cabinet" metal + filing_cabinet; spans are chosen from the right, longest first */
+    int span[LEX_MAX_TOKENS] = {0};
+    char bases[LEX_MAX_TOKENS][WN_LEMMA_MAX];
+    for (int j = in->n - 1; j >= 0;) {
+        int took = 0;
+        for (int k = 4; k >= 2 && !took; k--) {
+            if (j - k + 1 < 0) continue;
+            int rc = collocation_at(lx, in, j - k + 1, k, bases[j - k + 1], err);
+            if (rc < 0) return rc;
+            if (rc) took = k;
+        }
+        if (took) span[j - took + 1] = took, j -= took;
+        else j--;
+    }
     out->n = 0;
     for (int i = 0; i < in->n;) {
-        int took = 0;
-        char base[WN_LEMMA_MAX];
-        if (lex_word_class_of(in->w[i]) == LW_CONTENT) {
-            for (int k = 4; k >= 2 && !took; k--) {
-                int last = i + k <= in->n ? lex_word_class_of(in->w[i + k - 1]) : -1;
-                /* a collocation may end in a partitive ("tv set") or in a function word that is
-                 * also a noun ("trash can", "watering can"): WordNet's entry decides */
-                if (last != LW_CONTENT && last != LW_PARTITIVE && last != LW_FUNCTION) continue;
-                /* "clean up" is a verb and its particle, not the noun "cleanup" */
-                if (lex_is_particle(in->w[i + k - 1])) continue;
-                char joined[4 * LEX_WORD];
-                size_t o = 0;
-                for (int j = 0; j < k; j++)
-                    o += (size_t)snprintf(joined + o, sizeof joined - o, "%s%s", j ? "_" : "", in->w[i + j]);
-                int rc = strlen(joined) < WN_LEMMA_MAX ? noun_base(lx, joined, base, err) : 0;
-                if (rc < 0) return rc;
-                if (!rc && k == 2) { /* "book shelf" -> "bookshelf" */
-                    snprintf(joined, sizeof joined, "%s%s", in->w[i], in->w[i + 1]);
-                    if ((rc = noun_base(lx, joined, base, err)) < 0) return rc;
-                }
-                if (rc) took = k;
-            }
-        }
         if (out->n == LEX_MAX_TOKENS) break;
-        if (took) {
-            snprintf(out->w[out->n++], LEX_WORD, "%s", base);
-            i += took;
+        if (span[i]) {
+            snprintf(out->w[out->n++], LEX_WORD, "%s", bases[i]);
+            i += span[i];
         } else if (out->n > 0 && (!strcmp(in->w[i], "unit") || !strcmp(in->w[i], "units"))) {
             /* "unit" after a word WordNet has no noun for names that thing as one piece: a
              * "shelving unit" is shelving (WordNet's unit: "an assemblage of parts that is

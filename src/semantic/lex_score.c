@@ -193,14 +193,15 @@ static int is_exact(const lex_np *np, const lex_class *c, const char (*mod_base)
     return 1;
 }
 
-/* 1 when a hyphenated word's parts are all words of class c's name ("roll-up" of "roll up door"). */
+/* 1 when a hyphenated word's parts, or a WordNet collocation's words, are all words of class c's
+ * name ("roll-up" of "roll up door", "first_aid" of "first aid kit"), as is_exact reads them. */
 static int parts_in_name(const char *w, const lex_class *c)
 {
-    if (!strchr(w, '-')) return 0;
+    if (!strchr(w, '-') && !strchr(w, '_')) return 0;
     char buf[WN_LEMMA_MAX];
     snprintf(buf, sizeof buf, "%s", w);
     int all = 1;
-    for (char *save = NULL, *t = strtok_r(buf, "-", &save); t && all; t = strtok_r(NULL, "-", &save)) {
+    for (char *save = NULL, *t = strtok_r(buf, "-_", &save); t && all; t = strtok_r(NULL, "-_", &save)) {
         int in = 0;
         for (int k = 0; k < c->n_tok && !in; k++) in = !strcmp(c->tok[k], t);
         all = in;
