@@ -41,11 +41,13 @@
  * (phrases_hospital.json, data/worlds/hospital.world: reception, waiting area, corridor, nurses'
  * station, patient rooms, an examination room and a supply room, by w14-blind) and the small
  * house (phrases_smallhouse.json, data/worlds/smallhouse.world: a single-storey family house, by
- * w15-blind), written by helpers who had not read or run the encoder; their first runs (on
- * phase 10 and on phase 11, neither of which saw them) are in docs/DESIGN.md and
- * phrases_*_first_run.txt. Run with an argument (house | bookstore | office | ward | garage |
- * cafe | basement | classroom | hotel | grocery | chemlab | pharmacy | salon | warehouse |
- * apartment | hospital | smallhouse) to
+ * w15-blind), the gym (phrases_gym.json, data/worlds/gym.world: lobby, cardio and weights areas,
+ * a stretching corner and changing rooms, by w16-blind) and the museum (phrases_museum.json,
+ * data/worlds/museum.world: entrance hall, galleries, gift shop, cafe, by w17-blind), written by
+ * helpers who had not read or run the encoder; their first runs (on phases 10 to 12, none of
+ * which saw them) are in docs/DESIGN.md and phrases_*_first_run.txt. Run with an argument
+ * (house | bookstore | office | ward | garage | cafe | basement | classroom | hotel | grocery |
+ * chemlab | pharmacy | salon | warehouse | apartment | hospital | smallhouse | gym | museum) to
  * print every phrase of one table, and a query after it to print its explanation. */
 #include <cjson/cJSON.h>
 #include <unistd.h>
