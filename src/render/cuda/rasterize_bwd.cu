@@ -112,103 +112,103 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         /* warp culling (sp_cu_band_bits): the warp's 2 rows */
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-        unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
-                                     blockIdx.y, tid >> 5, 2, W, H, lane);
-        if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
-        for (; m; m &= m - 1) {
-            const int t = 32 * wd + __ffs(m) - 1;
-            const int idx = b_end - 1 - t;
-            const float4 co = s_conic[t];
-            const float2 xy = s_xy[t];
-            const float dx = px - xy.x, dy = py - xy.y;
-            float vis = 0.f, alpha = 0.f;
-            if (inside && idx < last) alpha = sp_cu_alpha(co, s_cut[t], dx, dy, &vis);
-            const bool valid = alpha > 0.f;
-            if (!__any_sync(FULL_MASK, valid)) continue;
+            unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
+                                         blockIdx.y, tid >> 5, 2, W, H, lane);
+            if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+            for (; m; m &= m - 1) {
+                const int t = 32 * wd + __ffs(m) - 1;
+                const int idx = b_end - 1 - t;
+                const float4 co = s_conic[t];
+                const float2 xy = s_xy[t];
+                const float dx = px - xy.x, dy = py - xy.y;
+                float vis = 0.f, alpha = 0.f;
+                if (inside && idx < last) alpha = sp_cu_alpha(co, s_cut[t], dx, dy, &vis);
+                const bool valid = alpha > 0.f;
+                if (!__any_sync(FULL_MASK, valid)) continue;
 
-            constexpr int VC = GV ? 1 : CH; /* the reduce-scatter's values (unused with GV) */
-            float vcol[VC];
-            float geo[7], fac = 0.f;
-#pragma unroll
-            for (int c = 0; c < VC; c++) vcol[c] = 0.f;
-#pragma unroll
-            for (int k = 0; k < 7; k++) geo[k] = 0.f;
-            if (valid) {
-                /* IEEE 1/x (fast math would approximate it), as the CPU's division: the T recovered
-                 * front to back then matches the CPU's bit for bit */
-                const float ra = __frcp_rn(1.f - alpha);
-                T *= ra;
-                fac = alpha * T;
-                const float *col = s_col + t * CH;
-                float p = 0.f;
-#pragma unroll
-                for (int c = 0; c < CH; c++) {
-                    p += col[c] * vout[c];
-                    if (!GV) vcol[c < VC ? c : 0] = fac * vout[c];
+                constexpr int VC = GV ? 1 : CH; /* the reduce-scatter's values (unused with GV) */
+                float vcol[VC];
+                float geo[7], fac = 0.f;
+    #pragma unroll
+                for (int c = 0; c < VC; c++) vcol[c] = 0.f;
+    #pragma unroll
+                for (int k = 0; k < 7; k++) geo[k] = 0.f;
+                if (valid) {
+                    /* IEEE 1/x (fast math would approximate it), as the CPU's division: the T recovered
+                     * front to back then matches the CPU's bit for bit */
+                    const float ra = __frcp_rn(1.f - alpha);
+                    T *= ra;
+                    fac = alpha * T;
+                    const float *col = s_col + t * CH;
+                    float p = 0.f;
+    #pragma unroll
+                    for (int c = 0; c < CH; c++) {
+                        p += col[c] * vout[c];
+                        if (!GV) vcol[c < VC ? c : 0] = fac * vout[c];
+                    }
+                    const float v_alpha = sp_cu_bwd_alpha_grad(p, T, ra, fac, do_aux, s_z + t, vd, va, Tf, &G,
+                                                               &Gd, geo);
+                    sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
                 }
-                const float v_alpha = sp_cu_bwd_alpha_grad(p, T, ra, fac, do_aux, s_z + t, vd, va, Tf, &G,
-                                                           &Gd, geo);
-                sp_cu_bwd_geo(co, s_frame[t], vis, v_alpha, dx, dy, geo);
-            }
-            const int g = s_id[t];
-            if (v_colors && GV) {
-                /* sum over the lanes that kept the Gaussian of fac * v_image: lane l gathers
-                 * channels l, l + 32, .. from the warp's staged v_image rows */
-                constexpr int NPL = (CH + 31) / 32;
-                float acc[NPL];
-#pragma unroll
-                for (int i = 0; i < NPL; i++) acc[i] = 0.f;
-                const float *sv = s_vout + (tid & ~31) * CH;
-                for (unsigned m = __ballot_sync(FULL_MASK, valid); m; m &= m - 1) {
-                    const int l = __ffs(m) - 1;
-                    const float f = __shfl_sync(FULL_MASK, fac, l);
-#pragma unroll
-                    for (int i = 0; i < NPL; i++)
-                        if (lane + 32 * i < CH) acc[i] += f * sv[l * CH + lane + 32 * i];
-                }
-#pragma unroll
-                for (int i = 0; i < NPL; i++) {
-                    const int c = lane + 32 * i;
-                    if (c < CH && c0 + c < D && acc[i] != 0.f)
-                        atomicAdd(v_colors + (size_t)g * D + c0 + c, acc[i]);
-                }
-            } else if (v_colors && CH <= 8) {
-                /* narrow chunks: geometry and colours in ONE reduce-scatter (fewer shuffle
-                 * rounds than two); slot k < 7 is geometry, 7 + c colour c */
-                constexpr int NV = 7 + VC;
-                float all[NV];
-#pragma unroll
-                for (int k = 0; k < 7; k++) all[k] = geo[k];
-#pragma unroll
-                for (int c = 0; c < VC; c++) all[7 + c] = vcol[c];
-                const int base = warp_reduce_scatter<NV>(all, lane);
-                if (lane % RS_GROUP(NV) == 0) {
-#pragma unroll
-                    for (int i = 0; i < RS_LIVE(NV); i++) {
-                        const int k = base + i;
-                        if (k >= NV || all[i] == 0.f) continue;
-                        if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
-                        else if (k - 7 < CH && c0 + k - 7 < D)
-                            atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                const int g = s_id[t];
+                if (v_colors && GV) {
+                    /* sum over the lanes that kept the Gaussian of fac * v_image: lane l gathers
+                     * channels l, l + 32, .. from the warp's staged v_image rows */
+                    constexpr int NPL = (CH + 31) / 32;
+                    float acc[NPL];
+    #pragma unroll
+                    for (int i = 0; i < NPL; i++) acc[i] = 0.f;
+                    const float *sv = s_vout + (tid & ~31) * CH;
+                    for (unsigned m = __ballot_sync(FULL_MASK, valid); m; m &= m - 1) {
+                        const int l = __ffs(m) - 1;
+                        const float f = __shfl_sync(FULL_MASK, fac, l);
+    #pragma unroll
+                        for (int i = 0; i < NPL; i++)
+                            if (lane + 32 * i < CH) acc[i] += f * sv[l * CH + lane + 32 * i];
+                    }
+    #pragma unroll
+                    for (int i = 0; i < NPL; i++) {
+                        const int c = lane + 32 * i;
+                        if (c < CH && c0 + c < D && acc[i] != 0.f)
+                            atomicAdd(v_colors + (size_t)g * D + c0 + c, acc[i]);
+                    }
+                } else if (v_colors && CH <= 8) {
+                    /* narrow chunks: geometry and colours in ONE reduce-scatter (fewer shuffle
+                     * rounds than two); slot k < 7 is geometry, 7 + c colour c */
+                    constexpr int NV = 7 + VC;
+                    float all[NV];
+    #pragma unroll
+                    for (int k = 0; k < 7; k++) all[k] = geo[k];
+    #pragma unroll
+                    for (int c = 0; c < VC; c++) all[7 + c] = vcol[c];
+                    const int base = warp_reduce_scatter<NV>(all, lane);
+                    if (lane % RS_GROUP(NV) == 0) {
+    #pragma unroll
+                        for (int i = 0; i < RS_LIVE(NV); i++) {
+                            const int k = base + i;
+                            if (k >= NV || all[i] == 0.f) continue;
+                            if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
+                            else if (k - 7 < CH && c0 + k - 7 < D)
+                                atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                        }
+                    }
+                    continue;
+                } else if (v_colors) {
+                    const int cb = warp_reduce_scatter<VC>(vcol, lane);
+                    constexpr int LIVE = RS_LIVE(VC), GROUP = RS_GROUP(VC);
+                    if (lane % GROUP == 0) {
+    #pragma unroll
+                        for (int i = 0; i < LIVE; i++) {
+                            const int c = cb + i;
+                            if (c < CH && c0 + c < D && vcol[i] != 0.f)
+                                atomicAdd(v_colors + (size_t)g * D + c0 + c, vcol[i]);
+                        }
                     }
                 }
-                continue;
-            } else if (v_colors) {
-                const int cb = warp_reduce_scatter<VC>(vcol, lane);
-                constexpr int LIVE = RS_LIVE(VC), GROUP = RS_GROUP(VC);
-                if (lane % GROUP == 0) {
-#pragma unroll
-                    for (int i = 0; i < LIVE; i++) {
-                        const int c = cb + i;
-                        if (c < CH && c0 + c < D && vcol[i] != 0.f)
-                            atomicAdd(v_colors + (size_t)g * D + c0 + c, vcol[i]);
-                    }
-                }
+                const int slot = warp_reduce_scatter<7>(geo, lane);
+                if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
+                    atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
             }
-            const int slot = warp_reduce_scatter<7>(geo, lane);
-            if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
-                atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + slot, geo[0]);
-        }
         }
     }
 }
@@ -317,72 +317,74 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         /* warp culling (sp_cu_band_bits): the warp's 2 PX rows */
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-        unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
-                                     blockIdx.y, tid >> 5, 2 * PX, W, H, lane);
-        if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
-        for (; m; m &= m - 1) {
-            const int t = 32 * wd + __ffs(m) - 1;
-            const int idx = b_end - 1 - t;
-            const float4 co = s_conic[t];
-            const float2 xy = s_xy[t];
-            const float cut = s_cut[t];
-            const float dy = py - xy.y;
-            float by, hy;
-            const float con[3] = {co.x, co.y, co.z};
-            sp_gm_row_terms(con, dy, &by, &hy);
-            const float half_a = 0.5f * co.x;
-            float dx[PX], vis[PX], alpha[PX];
-            bool any = false;
-#pragma unroll
-            for (int q = 0; q < PX; q++) {
-                dx[q] = px[q] - xy.x;
-                vis[q] = 0.f;
-                alpha[q] = idx < last[q] ? sp_gm_alpha_row(half_a, by, hy, co.w, cut, dx[q], &vis[q]) : 0.f;
-                any = any || alpha[q] > 0.f;
-            }
-            if (!__any_sync(FULL_MASK, any)) continue;
+            unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
+                                         blockIdx.y, tid >> 5, 2 * PX, W, H, lane);
+            if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+            for (; m; m &= m - 1) {
+                const int t = 32 * wd + __ffs(m) - 1;
+                const int idx = b_end - 1 - t;
+                const float4 co = s_conic[t];
+                const float2 xy = s_xy[t];
+                const float cut = s_cut[t];
+                const float dy = py - xy.y;
+                float by, hy;
+                const float con[3] = {co.x, co.y, co.z};
+                sp_gm_row_terms(con, dy, &by, &hy);
+                const float half_a = 0.5f * co.x;
+                float dx[PX], vis[PX], alpha[PX];
+                bool any = false;
+    #pragma unroll
+                for (int q = 0; q < PX; q++) {
+                    dx[q] = px[q] - xy.x;
+                    vis[q] = 0.f;
+                    alpha[q] = idx < last[q]
+                                   ? sp_gm_alpha_row(half_a, by, hy, co.w, cut, dx[q], &vis[q])
+                                   : 0.f;
+                    any = any || alpha[q] > 0.f;
+                }
+                if (!__any_sync(FULL_MASK, any)) continue;
 
-            /* the Gaussian's terms every pixel's block reads, loaded once */
-            float col[CH];
-#pragma unroll
-            for (int c = 0; c < CH; c++) col[c] = s_col[t * CH + c];
-            const float2 fr = s_frame[t];
-            const float z = s_z[t];
-            /* slot k < 7 geometry, 7 + c colour c, summed over the thread's pixels */
-            constexpr int NV = 7 + CH;
-            float all[NV];
-#pragma unroll
-            for (int k = 0; k < NV; k++) all[k] = 0.f;
-#pragma unroll
-            for (int q = 0; q < PX; q++) {
-                if (!(alpha[q] > 0.f)) continue;
-                /* IEEE 1/x, as the CPU's division (see k_raster_bwd) */
-                const float ra = __frcp_rn(1.f - alpha[q]);
-                T[q] *= ra;
-                const float fac = alpha[q] * T[q];
-                float p = 0.f;
-#pragma unroll
-                for (int c = 0; c < CH; c++) {
-                    p += col[c] * vout[q][c];
-                    all[7 + c] += fac * vout[q][c];
+                /* the Gaussian's terms every pixel's block reads, loaded once */
+                float col[CH];
+    #pragma unroll
+                for (int c = 0; c < CH; c++) col[c] = s_col[t * CH + c];
+                const float2 fr = s_frame[t];
+                const float z = s_z[t];
+                /* slot k < 7 geometry, 7 + c colour c, summed over the thread's pixels */
+                constexpr int NV = 7 + CH;
+                float all[NV];
+    #pragma unroll
+                for (int k = 0; k < NV; k++) all[k] = 0.f;
+    #pragma unroll
+                for (int q = 0; q < PX; q++) {
+                    if (!(alpha[q] > 0.f)) continue;
+                    /* IEEE 1/x, as the CPU's division (see k_raster_bwd) */
+                    const float ra = __frcp_rn(1.f - alpha[q]);
+                    T[q] *= ra;
+                    const float fac = alpha[q] * T[q];
+                    float p = 0.f;
+    #pragma unroll
+                    for (int c = 0; c < CH; c++) {
+                        p += col[c] * vout[q][c];
+                        all[7 + c] += fac * vout[q][c];
+                    }
+                    const float v_alpha = sp_cu_bwd_alpha_grad<true>(
+                        p, T[q], ra, fac, do_aux, &z, vd[q], va[q], Tf[q], &G[q], &Gd[q], all);
+                    sp_cu_bwd_geo<true>(co, fr, vis[q], v_alpha, dx[q], dy, all);
                 }
-                const float v_alpha = sp_cu_bwd_alpha_grad<true>(p, T[q], ra, fac, do_aux, &z, vd[q], va[q],
-                                                                 Tf[q], &G[q], &Gd[q], all);
-                sp_cu_bwd_geo<true>(co, fr, vis[q], v_alpha, dx[q], dy, all);
-            }
-            const int g = s_id[t];
-            const int base = warp_reduce_scatter<NV>(all, lane);
-            if (lane % RS_GROUP(NV) == 0) {
-#pragma unroll
-                for (int i = 0; i < RS_LIVE(NV); i++) {
-                    const int k = base + i;
-                    if (k >= NV || all[i] == 0.f) continue;
-                    if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
-                    else if (v_colors && c0 + k - 7 < D)
-                        atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                const int g = s_id[t];
+                const int base = warp_reduce_scatter<NV>(all, lane);
+                if (lane % RS_GROUP(NV) == 0) {
+    #pragma unroll
+                    for (int i = 0; i < RS_LIVE(NV); i++) {
+                        const int k = base + i;
+                        if (k >= NV || all[i] == 0.f) continue;
+                        if (k < 7) atomicAdd(vgeo + (size_t)g * SP_VGEO_STRIDE + k, all[i]);
+                        else if (v_colors && c0 + k - 7 < D)
+                            atomicAdd(v_colors + (size_t)g * D + c0 + k - 7, all[i]);
+                    }
                 }
             }
-        }
         }
     }
 }
