@@ -30,6 +30,18 @@
  * per-Gaussian scratch that project.cu turns into parameter gradients. */
 #include "bwd_common.cuh"
 
+/* The staged Gaussians 32 wd .. 32 wd + 31 this warp walks (the warp owns rows rh warp ..
+ * rh warp + rh - 1 of its tile: sp_cu_band_bits), from slot t_first on (the ones behind every
+ * pixel of the warp's list ends are skipped). */
+__device__ __forceinline__ unsigned walk_bits(const float4 *s_conic, const float2 *s_xy,
+                                              const float *s_cut, int wd, int t_first, int cnt,
+                                              int cull, int rh, int W, int H, int tid)
+{
+    unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x, blockIdx.y,
+                                 tid >> 5, rh, W, H, tid & 31);
+    return wd == t_first >> 5 ? m & (~0u << (t_first & 31)) : m;
+}
+
 template <int CH, bool GV>
 __global__ void __launch_bounds__(BLOCK)
 k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
@@ -109,12 +121,9 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
         __syncthreads();
-        /* warp culling (sp_cu_band_bits): the warp's 2 rows */
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-            unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
-                                         blockIdx.y, tid >> 5, 2, W, H, lane);
-            if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+            unsigned m = walk_bits(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2, W, H, tid);
             for (; m; m &= m - 1) {
                 const int t = 32 * wd + __ffs(m) - 1;
                 const int idx = b_end - 1 - t;
@@ -314,12 +323,9 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
             s_col[k] = (c0 + c < D) ? colors[(size_t)s_id[j] * D + c0 + c] : 0.f;
         }
         __syncthreads();
-        /* warp culling (sp_cu_band_bits): the warp's 2 PX rows */
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-            unsigned m = sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x,
-                                         blockIdx.y, tid >> 5, 2 * PX, W, H, lane);
-            if (wd == t_first >> 5) m &= ~0u << (t_first & 31);
+            unsigned m = walk_bits(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2 * PX, W, H, tid);
             for (; m; m &= m - 1) {
                 const int t = 32 * wd + __ffs(m) - 1;
                 const int idx = b_end - 1 - t;
