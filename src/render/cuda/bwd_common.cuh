@@ -203,49 +203,129 @@ struct walk_px {
 
 /* One stage's walk at this thread's pixel, back to front, over the Gaussians t whose bit is set
  * in bits (warp-uniform; bit t clear where t >= the stage's count or the warp's band cannot keep
- * t: sp_cu_band_bits): alpha, transmittance, dL/dalpha (its
- * colour term p = colour_t . v_out from dot(t)) and the geometry sums (warp reduce-scatter, one
- * atomic per value and warp); fac of Gaussian t (0 where not kept) goes to fac_out[t * ldf + tid]
- * and the warp's flag byte to s.flag[t]. dot(t) is called only where the pixel keeps t, before
+ * t: sp_cu_band_bits) and that lie before the warp's last (idx < warp_last): alpha,
+ * transmittance, dL/dalpha (its colour term p = colour_t . v_out from dot(t)) and the geometry
+ * sums (warp reduce-scatter, one atomic per value and warp). Only those Gaussians are visited
+ * (set-bit order is back-to-front order), so a Gaussian the warp cannot keep costs it nothing
+ * but its zero: fac of every t (0 where not kept) ends up in fac_out[t * ldf + tid] and the
+ * warp's flag byte (did any of its pixels keep t) in s.flag[t]. ZERO_ALL: the 32 fac slots are
+ * zeroed up front, unrolled (cheapest when nothing else lives there); otherwise only the slots
+ * not visited are zeroed, after the walk (the tensor-core kernel keeps its scores there until
+ * the walk reads them). dot(t) is called only where the pixel keeps t, before
  * fac_out[t * ldf + tid] is written (so it may read that slot). */
-template <class Dot>
+template <bool ZERO_ALL, class Dot>
 __device__ __forceinline__ void stage_walk(const stage_smem &s, walk_px &q, int b_end, unsigned bits,
                                            float *fac_out, int ldf, Dot dot,
                                            float *__restrict__ vgeo, int tid)
 {
     const int lane = tid & 31, warp = tid >> 5;
-    for (int t = 0; t < NB; t++) {
-        const int idx = b_end - 1 - t;
+    /* idx = b_end - 1 - t < warp_last  <=>  t >= b_end - warp_last */
+    const int t_lo = b_end - q.warp_last;
+    const unsigned live = t_lo <= 0 ? ~0u : (t_lo >= NB ? 0u : ~0u << t_lo);
+    const unsigned walk = bits & live;
+    if (ZERO_ALL) {
+#pragma unroll
+        for (int t = 0; t < NB; t++) fac_out[t * ldf + tid] = 0.f;
+    }
+    unsigned kept_bits = 0;
+    for (unsigned rest = walk; rest; rest &= rest - 1) { /* warp-uniform */
+        const int t = __ffs(rest) - 1;
         float fac = 0.f, geo[7];
         bool valid = false;
 #pragma unroll
         for (int k = 0; k < 7; k++) geo[k] = 0.f;
-        if (((bits >> t) & 1u) && idx < q.warp_last) { /* warp-uniform */
-            const float4 co = s.conic[t];
-            const float2 xy = s.xy[t];
-            const float dx = q.px - xy.x, dy = q.py - xy.y;
-            float vis = 0.f, alpha = 0.f;
-            if (q.inside && idx < q.last) alpha = sp_cu_alpha(co, s.cut[t], dx, dy, &vis);
-            valid = alpha > 0.f;
-            if (valid) {
-                /* IEEE 1/x, as the CPU's division (see rasterize_bwd.cu) */
-                const float ra = __frcp_rn(1.f - alpha);
-                q.T *= ra;
-                fac = alpha * q.T;
-                const float p = dot(t);
-                const float v_alpha = sp_cu_bwd_alpha_grad(p, q.T, ra, fac, q.aux, s.z + t, q.vd,
-                                                           q.va, q.Tf, &q.G, &q.Gd, geo);
-                sp_cu_bwd_geo(co, s.frame[t], vis, v_alpha, dx, dy, geo);
-            }
+        const float4 co = s.conic[t];
+        const float2 xy = s.xy[t];
+        const float dx = q.px - xy.x, dy = q.py - xy.y;
+        float vis = 0.f, alpha = 0.f;
+        if (q.inside && b_end - 1 - t < q.last) alpha = sp_cu_alpha(co, s.cut[t], dx, dy, &vis);
+        valid = alpha > 0.f;
+        if (valid) {
+            /* IEEE 1/x, as the CPU's division (see rasterize_bwd.cu) */
+            const float ra = __frcp_rn(1.f - alpha);
+            q.T *= ra;
+            fac = alpha * q.T;
+            const float p = dot(t);
+            const float v_alpha = sp_cu_bwd_alpha_grad(p, q.T, ra, fac, q.aux, s.z + t, q.vd, q.va,
+                                                       q.Tf, &q.G, &q.Gd, geo);
+            sp_cu_bwd_geo(co, s.frame[t], vis, v_alpha, dx, dy, geo);
         }
-        fac_out[t * ldf + tid] = fac;
+        if (ZERO_ALL) {
+            if (valid) fac_out[t * ldf + tid] = fac;
+        } else {
+            fac_out[t * ldf + tid] = fac;
+        }
         const unsigned kept = __ballot_sync(FULL_MASK, valid);
-        if (lane == 0) ((unsigned char *)(s.flag + t))[warp] = kept != 0;
         if (!kept) continue;
+        kept_bits |= 1u << t;
         const int slot = warp_reduce_scatter<7>(geo, lane);
         if (lane % RS_GROUP(7) == 0 && slot < 7 && geo[0] != 0.f)
             atomicAdd(vgeo + (size_t)s.id[t] * SP_VGEO_STRIDE + slot, geo[0]);
     }
+    if (!ZERO_ALL)
+        for (unsigned rest = ~walk; rest; rest &= rest - 1) fac_out[(__ffs(rest) - 1) * ldf + tid] = 0.f;
+    /* lane t: this warp's byte of Gaussian t's flag */
+    ((unsigned char *)(s.flag + lane))[warp] = (kept_bits >> lane) & 1u;
+}
+
+/* stage_walk (ZERO_ALL, with MASKS false) two Gaussians at a time: the pair's alphas are
+ * computed first, branch-free (sp_cu_alpha_flat), so their exps interleave, then the pixel's
+ * recursion runs through both in order, and one reduce-scatter of 14 values (two per lane
+ * fewer rounds than two of 7) carries both Gaussians' geometry sums. The same values, order
+ * and atomics as stage_walk, up to which lane adds which sum. */
+template <class Dot>
+__device__ __forceinline__ void stage_walk_pairs(const stage_smem &s, walk_px &q, int b_end,
+                                                 unsigned bits, float *fac_out, int ldf, Dot dot,
+                                                 float *__restrict__ vgeo, int tid)
+{
+    const int lane = tid & 31, warp = tid >> 5;
+    const int t_lo = b_end - q.warp_last;
+    const unsigned live = t_lo <= 0 ? ~0u : (t_lo >= NB ? 0u : ~0u << t_lo);
+#pragma unroll
+    for (int t = 0; t < NB; t++) fac_out[t * ldf + tid] = 0.f;
+    unsigned kept_bits = 0;
+    for (unsigned rest = bits & live; rest;) { /* warp-uniform */
+        const int ta = __ffs(rest) - 1;
+        rest &= rest - 1;
+        const bool two = rest != 0;
+        const int tb = two ? __ffs(rest) - 1 : ta;
+        rest &= rest - 1;
+        float4 co[2] = {s.conic[ta], s.conic[tb]};
+        const float2 xa = s.xy[ta], xb = s.xy[tb];
+        const float dx[2] = {q.px - xa.x, q.px - xb.x}, dy[2] = {q.py - xa.y, q.py - xb.y};
+        float vis[2], alpha[2];
+        alpha[0] = sp_cu_alpha_flat(co[0], s.cut[ta], dx[0], dy[0], &vis[0]);
+        alpha[1] = sp_cu_alpha_flat(co[1], s.cut[tb], dx[1], dy[1], &vis[1]);
+        if (!(q.inside && b_end - 1 - ta < q.last)) alpha[0] = 0.f;
+        if (!(two && q.inside && b_end - 1 - tb < q.last)) alpha[1] = 0.f;
+        float geo[14];
+#pragma unroll
+        for (int k = 0; k < 14; k++) geo[k] = 0.f;
+#pragma unroll
+        for (int h = 0; h < 2; h++) {
+            const int t = h ? tb : ta;
+            if (alpha[h] > 0.f) {
+                const float ra = __frcp_rn(1.f - alpha[h]);
+                q.T *= ra;
+                const float fac = alpha[h] * q.T;
+                const float p = dot(t);
+                const float v_alpha = sp_cu_bwd_alpha_grad(p, q.T, ra, fac, q.aux, s.z + t, q.vd,
+                                                           q.va, q.Tf, &q.G, &q.Gd, geo + 7 * h);
+                sp_cu_bwd_geo(co[h], s.frame[t], vis[h], v_alpha, dx[h], dy[h], geo + 7 * h);
+                fac_out[t * ldf + tid] = fac;
+            }
+        }
+        const unsigned ka = __ballot_sync(FULL_MASK, alpha[0] > 0.f);
+        const unsigned kb = __ballot_sync(FULL_MASK, alpha[1] > 0.f);
+        if (ka) kept_bits |= 1u << ta;
+        if (kb) kept_bits |= 1u << tb;
+        if (!(ka | kb)) continue;
+        const int slot = warp_reduce_scatter<14>(geo, lane);
+        if (lane % RS_GROUP(14) == 0 && slot < 14 && geo[0] != 0.f)
+            atomicAdd(vgeo + (size_t)s.id[slot < 7 ? ta : tb] * SP_VGEO_STRIDE + (slot < 7 ? slot : slot - 7),
+                      geo[0]);
+    }
+    ((unsigned char *)(s.flag + lane))[warp] = (kept_bits >> lane) & 1u;
 }
 
 /* rasterize_bwd_mm.cu: the shared-memory product kernel for chunks of 32 channels and more */

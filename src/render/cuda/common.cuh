@@ -181,6 +181,23 @@ __device__ __forceinline__ float sp_cu_alpha(float4 co, float cut, float dx, flo
     return sp_gm_alpha_g(conic, co.w, cut, dx, dy, vis);
 }
 
+/* sp_cu_alpha without its branch: the exp is evaluated whether or not the pixel is inside the
+ * cut, so two Gaussians' alphas are straight-line code the compiler can interleave (the pair
+ * walk of the backward). The same operations on the same values, so the same bits and the same
+ * decisions as sp_cu_alpha wherever that keeps the pixel, and 0 wherever it does not. */
+__device__ __forceinline__ float sp_cu_alpha_flat(float4 co, float cut, float dx, float dy, float *vis)
+{
+    const float conic[3] = {co.x, co.y, co.z};
+    float by, hy;
+    sp_gm_row_terms(conic, dy, &by, &hy);
+    const float sigma = sp_gm_sigma(0.5f * conic[0], by, hy, dx);
+    const float g = sp_gm_expf(-sigma);
+    float a = SP_FMUL(co.w, g);
+    a = a < SP_ALPHA_MAX ? a : SP_ALPHA_MAX;
+    *vis = g;
+    return (sigma < 0.f || sigma > cut || a < SP_ALPHA_MIN) ? 0.f : a;
+}
+
 /* Warp culling. Every compositing kernel's warp w owns band w of its 16x16 tile, rows
  * rh w .. rh w + rh - 1 (rh = 16 / warps per block), so a Gaussian that no
  * pixel of the band can keep costs that warp nothing if it is skipped before its alpha test.
@@ -206,6 +223,24 @@ __device__ __forceinline__ unsigned sp_cu_band_bits(const float4 *s_conic, const
         hit = y0 <= y1 && x0 <= x1 && sp_gm_tile_hit(con, s_cut[j], xy.x, xy.y, x0, x1, y0, y1);
     }
     return __ballot_sync(0xffffffffu, hit);
+}
+
+/* The rows a Gaussian can touch, for the cheap band test of wide forward chunks: [lo, hi] with
+ * every pixel centre y that keeps it (sigma <= cut, sp_gm_alpha_g) inside. Over dx, sigma at a
+ * given dy is least at dx = -b dy / a, where it is dy^2 det / (2 a), so |dy| <= sqrt(2 a cut /
+ * det). Conservative against float rounding: the cut is widened by 1e-5 a c / det (the
+ * cancellation between sigma's terms grows with that ratio) and the half-extent by 0.01 px; an
+ * ellipse too thin for that (a c / det > 1e4) or degenerate gets every row, one whose cut is
+ * negative (nothing is kept) none. */
+__device__ __forceinline__ float2 sp_cu_y_extent(float4 co, float cut, float my)
+{
+    const float a = co.x, b = co.y, c = co.z, det = a * c - b * b;
+    if (!(a > 0.f && c > 0.f && det > 0.f) || a * c > 1e4f * det)
+        return make_float2(-INFINITY, INFINITY);
+    if (!(cut >= 0.f)) return make_float2(INFINITY, -INFINITY);
+    const float cm = cut * (1.f + 1e-5f * (a * c / det)) + 1e-4f;
+    const float ry = sqrtf(2.f * a * cm / det) * 1.0001f + 0.01f;
+    return make_float2(my - ry, my + ry);
 }
 
 static inline unsigned sp_div_up(size_t a, size_t b) { return (unsigned)((a + b - 1) / b); }

@@ -100,13 +100,14 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         /* warp culling (sp_cu_band_bits): the warp's 2 rows */
         const unsigned bits = sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x,
                                               blockIdx.y, warp, 2, W, H, lane);
-        stage_walk(st, q, b_end, bits, s_fac, BLOCK,
+        stage_walk_pairs(st, q, b_end, bits, s_fac, BLOCK,
                    [&](int t) {
+                       /* four independent chains, so the sum waits on 8 multiply-adds, not 32 */
                        const float *col = st.col + t * CH;
-                       float p = 0.f;
+                       float p[4] = {0.f, 0.f, 0.f, 0.f};
 #pragma unroll
-                       for (int c = 0; c < CH; c++) p += col[c] * vout[c];
-                       return p;
+                       for (int c = 0; c < CH; c++) p[c & 3] = fmaf(col[c], vout[c], p[c & 3]);
+                       return (p[0] + p[1]) + (p[2] + p[3]);
                    },
                    vgeo, tid);
         __syncthreads();
@@ -132,9 +133,14 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                     if (CH % 32 != 0 && c >= CH) continue;
                     const float *sv = s_vout + (size_t)p * CH + c;
                     const float v0 = sv[0], v1 = sv[CH], v2 = sv[2 * CH], v3 = sv[3 * CH];
+                    /* one chain of fused multiply-adds per accumulator */
 #pragma unroll
-                    for (int j = 0; j < GPW; j++)
-                        acc[j][i] += f[j].x * v0 + f[j].y * v1 + f[j].z * v2 + f[j].w * v3;
+                    for (int j = 0; j < GPW; j++) {
+                        acc[j][i] = fmaf(f[j].x, v0, acc[j][i]);
+                        acc[j][i] = fmaf(f[j].y, v1, acc[j][i]);
+                        acc[j][i] = fmaf(f[j].z, v2, acc[j][i]);
+                        acc[j][i] = fmaf(f[j].w, v3, acc[j][i]);
+                    }
                 }
             }
         }

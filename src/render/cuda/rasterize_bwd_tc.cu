@@ -222,7 +222,7 @@ k_raster_bwd_tc(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         tc_scores<CH>(st.col, s_vout, s_fac, t_lo / 16, min(2, (cnt + 15) / 16), warp);
         __syncwarp();
         /* no warp culling here (an option kernel): every Gaussian of the stage */
-        stage_walk(st, q, b_end, cnt >= 32 ? ~0u : (1u << cnt) - 1u, s_fac, LDF, [&](int t) { return s_fac[t * LDF + tid]; }, vgeo,
+        stage_walk<false>(st, q, b_end, cnt >= 32 ? ~0u : (1u << cnt) - 1u, s_fac, LDF, [&](int t) { return s_fac[t * LDF + tid]; }, vgeo,
                    tid);
         __syncthreads();
         if (!v_colors) continue; /* block-uniform */

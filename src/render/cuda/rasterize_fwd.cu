@@ -36,6 +36,7 @@ typedef struct fwd_view {
 typedef struct fwd_shared {
     float4 *conic;
     float2 *xy;
+    float2 *yr; /* rows it can touch (sp_cu_y_extent), for the wide chunks' band test */
     float *z, *cut;
     int *id;
     float *col;     /* [NT][CH] */
@@ -48,7 +49,8 @@ __device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
     fwd_shared s;
     s.conic = base;
     s.xy = (float2 *)(s.conic + NT);
-    s.z = (float *)(s.xy + NT);
+    s.yr = s.xy + NT;
+    s.z = (float *)(s.yr + NT);
     s.cut = s.z + NT;
     s.id = (int *)(s.cut + NT);
     s.col = (float *)(s.id + NT);
@@ -58,18 +60,21 @@ __device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
 
 /* Stages list entries b0 .. b0 + cnt (cnt <= NT threads: one Gaussian each, then the colours,
  * neighbouring threads reading neighbouring channels of one Gaussian); ends on a barrier. */
-template <int CH, int NT>
+template <int CH, int NT, bool YR>
 __device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s, int b0, int cnt,
                                           int tid, const float *__restrict__ colors, int D, int c0)
 {
     if (tid < cnt) {
         int g = (int)v.ids[b0 + tid];
         s.id[tid] = g;
-        s.xy[tid] = v.means2d[g];
+        const float2 xy = v.means2d[g];
+        s.xy[tid] = xy;
         const float4 co = v.conic_op[g];
         s.conic[tid] = co;
-        s.cut[tid] = sp_cu_sigma_cut(co.w);
+        const float cut = sp_cu_sigma_cut(co.w);
+        s.cut[tid] = cut;
         s.z[tid] = v.depths[g];
+        if (YR) s.yr[tid] = sp_cu_y_extent(co, cut, xy.y);
     }
     __syncthreads();
     for (int k = tid; k < cnt * CH; k += NT) {
@@ -79,25 +84,35 @@ __device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s
     __syncthreads();
 }
 
-/* After fwd_stage: this warp's band bits for the batch (sp_cu_band_bits; a warp of a block of NT
- * threads covers 32 / (NT / 16) rows), word c for Gaussians 32 c .. 32 c + 31, read back only by
- * the warp itself. TEST false: every staged Gaussian's bit, no test. Chunks wider than 8
- * channels take that: the test's temporaries beside their CH accumulators cost a block per SM
- * (H200, D=32: 78 registers against 64, 3 blocks instead of 4; forward 2.96 ms culled against
- * 2.81 unculled), while what it saves, the skipped pairs' alpha tests, is a small part of
- * their per-pair work. */
-template <int NT, bool TEST>
+/* After fwd_stage: this warp's band bits for the batch (a warp of a block of NT threads covers
+ * 32 / (NT / 16) rows), word c for Gaussians 32 c .. 32 c + 31, read back only by the warp
+ * itself. TEST 1: the exact test, sp_cu_band_bits. TEST 2, for chunks wider than 8 channels:
+ * only the rows the Gaussian can touch (sp_cu_y_extent, staged by fwd_stage), a few
+ * instructions and registers, where the exact test's temporaries beside CH accumulators cost a
+ * block per SM (H200, D=32: 78 registers against 64, 3 blocks instead of 4; forward 2.96 ms
+ * culled against 2.81 unculled). Both are conservative: a cleared bit is a Gaussian no pixel of
+ * the band keeps, so images stay the same bits. TEST 0: every staged Gaussian's bit. */
+template <int NT, int TEST>
 __device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, const fwd_shared &s,
                                                          int cnt, int tid, int tx, int ty)
 {
     constexpr int NW = NT / 32, RH = SP_TILE_SIZE / NW;
     const int warp = tid >> 5, lane = tid & 31;
     unsigned *bits = s.bits + warp * NW;
+    /* the band's first and last pixel-centre rows, clipped to the image */
+    const int y0 = ty * SP_TILE_SIZE + warp * RH, y1 = min(y0 + RH - 1, v.H - 1);
+    const float cy0 = y0 + 0.5f, cy1 = y1 + 0.5f;
 #pragma unroll 1
     for (int c = 0; c < NW; c++) {
-        const unsigned b = TEST ? sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty,
-                                                  warp, RH, v.W, v.H, lane)
-                                : __ballot_sync(0xffffffffu, 32 * c + lane < cnt);
+        const int j = 32 * c + lane;
+        bool hit = j < cnt;
+        if (TEST == 2 && hit && v.cull) {
+            const float2 yr = s.yr[j];
+            hit = y0 <= y1 && yr.x <= cy1 && yr.y >= cy0;
+        }
+        const unsigned b = TEST == 1 ? sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty,
+                                                       warp, RH, v.W, v.H, lane)
+                                     : __ballot_sync(0xffffffffu, hit);
         if (lane == 0) bits[c] = b;
     }
     __syncwarp();
@@ -134,8 +149,8 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
     for (int b0 = range.x; b0 < range.y; b0 += BLOCK) {
         if (__syncthreads_count(done) == BLOCK) break;
         const int cnt = min(BLOCK, range.y - b0);
-        fwd_stage<CH, BLOCK>(v, sh, b0, cnt, tid, colors, D, c0);
-        const unsigned *bits = fwd_band_bits<BLOCK, (CH <= 8)>(v, sh, cnt, tid, tx, ty);
+        fwd_stage<CH, BLOCK, (CH > 8)>(v, sh, b0, cnt, tid, colors, D, c0);
+        const unsigned *bits = fwd_band_bits<BLOCK, (CH <= 8 ? 1 : 2)>(v, sh, cnt, tid, tx, ty);
 #pragma unroll 1
         for (int wd = 0; wd < BLOCK / 32 && !done; wd++)
         for (unsigned m = bits[wd]; m && !done; m &= m - 1) {
@@ -213,8 +228,8 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     for (int b0 = range.x; b0 < range.y; b0 += NT) {
         if (__syncthreads_count(all_done) == NT) break;
         const int cnt = min(NT, range.y - b0);
-        fwd_stage<CH, NT>(v, sh, b0, cnt, tid, colors, D, c0);
-        const unsigned *bits = fwd_band_bits<NT, true>(v, sh, cnt, tid, tx, ty);
+        fwd_stage<CH, NT, false>(v, sh, b0, cnt, tid, colors, D, c0);
+        const unsigned *bits = fwd_band_bits<NT, 1>(v, sh, cnt, tid, tx, ty);
 #pragma unroll 1
         for (int wd = 0; wd < NT / 32 && !all_done; wd++)
         for (unsigned m = bits[wd]; m && !all_done; m &= m - 1) {
@@ -277,8 +292,13 @@ __device__ __forceinline__ void fwd_tile_as(const fwd_view &v, int tx, int ty,
     else fwd_tile_px<CH, PX>(v, tx, ty, colors, D, c0, bg, aux);
 }
 
+/* blocks per SM the one-pixel kernel's registers are bounded for above 8 channels: 4 (64
+ * registers) up to 32 channels, else 2 (128); the band test's few temporaries would otherwise
+ * take a 32-channel chunk to 73 registers (3 blocks) and a 64-channel one to 142 (1 block) */
+#define FWD_MIN_BLOCKS(CH, PX) ((PX) != 1 || (CH) <= 8 ? 1 : (CH) <= 32 ? 4 : 2)
+
 template <int CH, int PX>
-__global__ void __launch_bounds__(BLOCK / PX)
+__global__ void __launch_bounds__(BLOCK / PX, FWD_MIN_BLOCKS(CH, PX))
 k_raster_fwd(fwd_view v, const float *__restrict__ colors, int D, int c_base,
              const float *__restrict__ bg, int aux)
 {
@@ -320,7 +340,7 @@ static fwd_view fwd_view_of(const sp_cuda_view *v, const sp_cuda_pass *p, int st
 static size_t fwd_smem(int ch, int px)
 {
     const size_t nt = BLOCK / px;
-    return nt * (sizeof(float4) + sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
+    return nt * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
                  sizeof(float) * ch) +
            (nt / 32) * (nt / 32) * sizeof(unsigned);
 }
