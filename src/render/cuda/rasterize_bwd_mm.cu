@@ -7,9 +7,10 @@
  * Gaussian and adds each warp's share atomically; Nsight Compute on an H200 (1M Gaussians, 1080p,
  * D=32) showed that kernel issue-bound, two thirds of its instructions in those shuffles and
  * selects, at 25 % occupancy (116 registers). Here the block walks its list in stages of NB = 32
- * Gaussians: each pixel stores its fac for the stage's Gaussians in shared memory (one store
- * each, zero where it did not keep one) and keeps the geometry sums by warp reduce-scatter as
- * before; then every warp forms the product for GPW = 4 of the stage's Gaussians, lane l for
+ * Gaussians: each pixel stores its fac for the stage's Gaussians in shared memory (zero where
+ * it did not keep one) and keeps the geometry sums by warp reduce-scatter as before, walking
+ * only the Gaussians its warp's band can keep, two at a time (stage_walk_pairs, bwd_common.cuh);
+ * then every warp forms the product for GPW = 4 of the stage's Gaussians, lane l for
  * channels l, l + 32 (four pixels per step: four broadcast float4 reads of fac, one read of
  * v_image per pixel and channel, 16 multiply-adds), over only the 32-pixel rows of the warps
  * that kept one of its Gaussians, and adds one atomic per Gaussian, channel and tile (not one
@@ -47,6 +48,10 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     st.z = (float *)(st.frame + NB);                             /* [NB] */
     st.cut = st.z + NB;                                          /* [NB] */
     st.id = (int *)(st.cut + NB);                                /* [NB] */
+    /* ids and flags (the only stage data the product reads) alternate between two buffers, so
+     * the next stage is stored while this one's product runs */
+    int *const id_buf[2] = {st.id, st.id + NB};                                      /* [NB] */
+    unsigned long long *const flag_buf[2] = {st.flag, (unsigned long long *)(st.id + 2 * NB)}; /* [NB] */
     __shared__ int s_block_last;
 
     const int c0 = c_base + blockIdx.z * CH;
@@ -83,20 +88,23 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     const int block_last = s_block_last;
 
     /* Stages are double-buffered through registers: the next stage's geometry and colours are
-     * loaded while this one is composited, so the barrier that starts a stage waits on no
-     * global load. */
+     * loaded while this one is composited, and stored while this one's product runs (after the
+     * barrier that ends the walk: only the walk reads the geometry and colours, and the product
+     * reads the ids and flags, which alternate between two buffers). Two barriers a stage. */
     constexpr int CPT = (NB * CH + BLOCK - 1) / BLOCK; /* colour values per thread and stage */
     stage_regs<CPT> nx;
-    stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, block_last,
-                        min(NB, block_last - range.x), tid);
-    for (int b_end = block_last; b_end > range.x; b_end -= NB) {
+    if (block_last > range.x) {
+        stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, block_last,
+                            min(NB, block_last - range.x), tid);
+        stage_store<CH, CH, CPT>(st, nx, min(NB, block_last - range.x), tid); /* buffer 0 */
+        if (block_last - NB > range.x)
+            stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, block_last - NB,
+                                min(NB, block_last - NB - range.x), tid);
+    }
+    __syncthreads();
+    for (int b_end = block_last, cb = 0; b_end > range.x; b_end -= NB, cb ^= 1) {
         const int cnt = min(NB, b_end - range.x);
-        __syncthreads(); /* the previous stage's product is done with s_fac, s_col, s_id */
-        stage_store<CH, CH, CPT>(st, nx, cnt, tid);
-        if (b_end - NB > range.x)
-            stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, b_end - NB,
-                                min(NB, b_end - NB - range.x), tid);
-        __syncthreads();
+        st.id = id_buf[cb], st.flag = flag_buf[cb];
         /* warp culling (sp_cu_band_bits): the warp's 2 rows */
         const unsigned bits = sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x,
                                               blockIdx.y, warp, 2, W, H, lane);
@@ -110,57 +118,69 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
                        return (p[0] + p[1]) + (p[2] + p[3]);
                    },
                    vgeo, tid);
-        __syncthreads();
+        __syncthreads(); /* every warp's walk is done: s_fac is complete, the geometry free */
+        if (b_end - NB > range.x) { /* the next stage, into the other buffer */
+            stage_smem sn = st;
+            sn.id = id_buf[cb ^ 1], sn.flag = flag_buf[cb ^ 1];
+            stage_store<CH, CH, CPT>(sn, nx, min(NB, b_end - NB - range.x), tid);
+            if (b_end - 2 * NB > range.x)
+                stage_load<CH, CPT>(&nx, ids, means2d, conic_op, depths, colors, D, c0, b_end - 2 * NB,
+                                    min(NB, b_end - 2 * NB - range.x), tid);
+        }
         const int t0 = warp * GPW;
-        if (!v_colors || t0 >= cnt) continue; /* warp-uniform */
-        unsigned long long rows = 0;
+        if (v_colors && t0 < cnt) { /* warp-uniform */
+            unsigned long long rows = 0;
 #pragma unroll
-        for (int j = 0; j < GPW; j++) rows |= st.flag[t0 + j];
-        float acc[GPW][NPL];
+            for (int j = 0; j < GPW; j++) rows |= st.flag[t0 + j];
+            float acc[GPW][NPL];
 #pragma unroll
-        for (int j = 0; j < GPW; j++)
+            for (int j = 0; j < GPW; j++)
 #pragma unroll
-            for (int i = 0; i < NPL; i++) acc[j][i] = 0.f;
-        for (int w = 0; w < NWARPS; w++) {
-            if (!((rows >> (8 * w)) & 0xffu)) continue; /* no pixel of warp w kept any of them */
-            for (int p = 32 * w; p < 32 * w + 32; p += 4) {
-                float4 f[GPW];
+                for (int i = 0; i < NPL; i++) acc[j][i] = 0.f;
+            for (int w = 0; w < NWARPS; w++) {
+                if (!((rows >> (8 * w)) & 0xffu)) continue; /* no pixel of warp w kept any of them */
+                for (int p = 32 * w; p < 32 * w + 32; p += 4) {
+                    float4 f[GPW];
 #pragma unroll
-                for (int j = 0; j < GPW; j++) f[j] = *(const float4 *)(s_fac + (t0 + j) * BLOCK + p);
+                    for (int j = 0; j < GPW; j++) f[j] = *(const float4 *)(s_fac + (t0 + j) * BLOCK + p);
 #pragma unroll
-                for (int i = 0; i < NPL; i++) {
-                    const int c = lane + 32 * i;
-                    if (CH % 32 != 0 && c >= CH) continue;
-                    const float *sv = s_vout + (size_t)p * CH + c;
-                    const float v0 = sv[0], v1 = sv[CH], v2 = sv[2 * CH], v3 = sv[3 * CH];
-                    /* one chain of fused multiply-adds per accumulator */
+                    for (int i = 0; i < NPL; i++) {
+                        const int c = lane + 32 * i;
+                        if (CH % 32 != 0 && c >= CH) continue;
+                        const float *sv = s_vout + (size_t)p * CH + c;
+                        const float v0 = sv[0], v1 = sv[CH], v2 = sv[2 * CH], v3 = sv[3 * CH];
+                        /* one chain of fused multiply-adds per accumulator */
 #pragma unroll
-                    for (int j = 0; j < GPW; j++) {
-                        acc[j][i] = fmaf(f[j].x, v0, acc[j][i]);
-                        acc[j][i] = fmaf(f[j].y, v1, acc[j][i]);
-                        acc[j][i] = fmaf(f[j].z, v2, acc[j][i]);
-                        acc[j][i] = fmaf(f[j].w, v3, acc[j][i]);
+                        for (int j = 0; j < GPW; j++) {
+                            acc[j][i] = fmaf(f[j].x, v0, acc[j][i]);
+                            acc[j][i] = fmaf(f[j].y, v1, acc[j][i]);
+                            acc[j][i] = fmaf(f[j].z, v2, acc[j][i]);
+                            acc[j][i] = fmaf(f[j].w, v3, acc[j][i]);
+                        }
                     }
                 }
             }
-        }
 #pragma unroll
-        for (int j = 0; j < GPW; j++) {
-            if (t0 + j >= cnt) break;
-            const size_t g = (size_t)st.id[t0 + j];
+            for (int j = 0; j < GPW; j++) {
+                if (t0 + j >= cnt) break;
+                const size_t g = (size_t)st.id[t0 + j];
 #pragma unroll
-            for (int i = 0; i < NPL; i++) {
-                const int c = lane + 32 * i;
-                if (c < CH && c0 + c < D && acc[j][i] != 0.f) atomicAdd(v_colors + g * D + c0 + c, acc[j][i]);
+                for (int i = 0; i < NPL; i++) {
+                    const int c = lane + 32 * i;
+                    if (c < CH && c0 + c < D && acc[j][i] != 0.f)
+                        atomicAdd(v_colors + g * D + c0 + c, acc[j][i]);
+                }
             }
         }
+        __syncthreads(); /* the product is done with s_fac; the next stage is stored */
     }
 }
 
 static size_t mm_smem(int ch)
 {
     return (size_t)NB * (sizeof(float4) + sizeof(unsigned long long) + BLOCK * sizeof(float) +
-                         ch * sizeof(float) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int)) +
+                         ch * sizeof(float) + 2 * sizeof(float2) + 2 * sizeof(float) + 2 * sizeof(int) +
+                         sizeof(unsigned long long)) +
            (size_t)BLOCK * ch * sizeof(float);
 }
 
