@@ -306,20 +306,37 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
 }
 
 
+/* How strongly class ci belongs to the region ph (its membership score; 0 when none). */
+static float membership(const sp_lex_phrase *region, int ci)
+{
+    for (int k = 0; k < region->n_matches; k++)
+        if (region->matches[k].class_index == ci) return region->matches[k].score;
+    return 0;
+}
+
 /* "the table in the dining room": among the target's matches, the classes that define the
- * anchor region come first (stable otherwise). */
+ * anchor region come first; among members the target ties (the taxonomy finds "chair" in the
+ * dining chair and the office chair alike), the one the region holds more strongly first ("the
+ * chair in the office": the office chair, a member by name, 1.0, before the dining chair, a
+ * member only as a kind of chair, 0.67); stable otherwise. */
 static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
 {
     sp_lex_class_match in[SP_LEX_MAX_CLASSES], out[SP_LEX_MAX_CLASSES];
+    float ms[SP_LEX_MAX_CLASSES];
     int ni = 0, no = 0;
     for (int i = 0; i < target->n_matches; i++) {
         const sp_lex_class_match *m = &target->matches[i];
-        int member = 0;
-        for (int k = 0; k < region->n_matches && !member; k++)
-            member = region->matches[k].class_index == m->class_index && region->matches[k].score >= SP_LEX_THRESHOLD;
-        if (member && m->score >= SP_LEX_THRESHOLD) in[ni++] = *m;
+        float r = membership(region, m->class_index);
+        if (r >= SP_LEX_THRESHOLD && m->score >= SP_LEX_THRESHOLD) ms[ni] = r, in[ni++] = *m;
         else out[no++] = *m;
     }
+    for (int i = 1; i < ni; i++) /* insertion sort: ties of the target by membership, stable */
+        for (int j = i; j > 0 && in[j].score == in[j - 1].score && ms[j] > ms[j - 1]; j--) {
+            sp_lex_class_match x = in[j];
+            float y = ms[j];
+            in[j] = in[j - 1], ms[j] = ms[j - 1];
+            in[j - 1] = x, ms[j - 1] = y;
+        }
     memcpy(target->matches, in, sizeof in[0] * (size_t)ni);
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
