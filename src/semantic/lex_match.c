@@ -368,6 +368,63 @@ static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, co
         }
 }
 
+/* 1 when table region r may hold class ci by its table entry: a member phrase ends in the
+ * class's head word ("patient bed" of the ward for the class "bed"... and the class "patient
+ * bed"), or the region's name is a word of the class's name (the kitchen of the kitchen table). */
+static int region_mentions(const sp_lex_vocab *v, const lex_region *r, int ci)
+{
+    const lex_class *c = &v->classes[ci];
+    if (!c->n_tok) return 0;
+    const char *head = c->tok[c->n_tok - 1];
+    for (int i = 0; i < r->n_members; i++) {
+        const char *sp = strrchr(r->members[i], ' ');
+        if (!strcmp(sp ? sp + 1 : r->members[i], head)) return 1;
+    }
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(r->name, c->tok[k])) return 1;
+    return 0;
+}
+
+/* "the chair next to the bed": the target's classes the taxonomy ties (the visitor chair, the
+ * waiting chair and the office chair are all chairs) are told apart by the company things keep:
+ * the one a room of the region table holds together with the anchor, each as strongly as the
+ * lesser of their memberships (the ward holds the patient bed and the visitor chair by name),
+ * comes first. An order among equals, not evidence; the score is unchanged. */
+static int prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor, sp_error *err)
+{
+    if (!anchor->n_matches || target->n_matches < 2 || anchor->matches[0].score < SP_LEX_THRESHOLD) return 0;
+    int ai = anchor->matches[0].class_index;
+    sp_lex_class_match *m = target->matches;
+    int nt = 1;
+    while (nt < target->n_matches && m[nt].score == m[0].score) nt++;
+    if (nt < 2) return 0;
+    float company[SP_LEX_MAX_CLASSES] = {0};
+    sp_lex_phrase *ph = malloc(sizeof *ph);
+    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = 0;
+    for (int r = 0; r < v->n_regions && !rc; r++) {
+        if (!region_mentions(v, &v->regions[r], ai)) continue;
+        if ((rc = lex_region_members(v, &v->regions[r], v->regions[r].name, NULL, ph, err))) break;
+        float a = membership(ph, ai);
+        if (a < SP_LEX_THRESHOLD) continue;
+        for (int i = 0; i < nt; i++) {
+            if (m[i].class_index == ai) continue;
+            float c = membership(ph, m[i].class_index), s = c < a ? c : a;
+            if (c >= SP_LEX_THRESHOLD && s > company[i]) company[i] = s;
+        }
+    }
+    free(ph);
+    int best = 0;
+    for (int i = 1; i < nt; i++)
+        if (company[i] > company[best]) best = i;
+    if (!rc && best > 0) {
+        sp_lex_class_match x = m[best];
+        memmove(&m[1], &m[0], sizeof m[0] * (size_t)best);
+        m[0] = x;
+    }
+    return rc;
+}
+
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
  * MIDDLE OF the living room", "at the far END OF the hallway", "in the CORNER OF the bedroom"):
  * the thing is in that part of the anchor, so the anchor is what follows "of". */
@@ -649,7 +706,10 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
-        else prefer_anchor_named(v, &trial->target, &trial->anchor);
+        else {
+            prefer_anchor_named(v, &trial->target, &trial->anchor);
+            if ((rc = prefer_company(v, &trial->target, &trial->anchor, err))) break;
+        }
         *res = *trial;
         split = 1;
     }
