@@ -47,6 +47,38 @@ static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->match
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
 
+/* 1 when table region r's name is made of np's modifiers and head ("the meeting room"). */
+static int region_by_mods(const lex_np *np, const lex_region *r)
+{
+    char name[64];
+    snprintf(name, sizeof name, "%s", r->name);
+    for (char *save = NULL, *w = strtok_r(name, " ", &save); w; w = strtok_r(NULL, " ", &save)) {
+        int in = !strcmp(w, np->head);
+        for (int i = 0; i < np->n_mods && !in; i++) in = !strcmp(w, np->mods[i]);
+        if (!in) return 0;
+    }
+    return 1;
+}
+
+/* *names = 1 when np's modifiers, read alone as an object phrase, name a class of the scene by
+ * its name or a synonym at the threshold. */
+static int mods_name_classes(const sp_lex_vocab *v, const lex_np *np, sp_lex_result *res, int depth, int *names,
+                             sp_error *err)
+{
+    *names = 0;
+    lex_tokens ct = {0, {{0}}};
+    for (int i = 0; i < np->n_mods && ct.n < LEX_MAX_TOKENS; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+    sp_lex_phrase *sub = malloc(sizeof *sub);
+    if (!sub) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = resolve(v, &ct, 0, ct.n, sub, NULL, depth + 2, err);
+    if (!rc && !sub->is_region && sub->n_matches && sub->matches[0].score >= SP_LEX_THRESHOLD &&
+        (sub->matches[0].kind == SP_LEX_EXACT || sub->matches[0].kind == SP_LEX_SYNONYM))
+        *names = 1;
+    (void)res;
+    free(sub);
+    return rc;
+}
+
 /* A phrase naming a region: a room of the table or of WordNet ("the kitchen", "bedroom"), or a
  * generic area defined by what follows a link word or by its modifiers ("area with appliances",
  * "the area that looks like a kitchen", "the kitchen area"). Sets *is_region. */
@@ -77,6 +109,16 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     for (int i = np->head_start + 1; np->placeholder && linked && i + 1 < t->n; i++)
         if (!strcmp(t->w[i], "to")) linked = 0;
     int table = r || (def && !generic);
+    /* "the sculpture hall", "the painting gallery": a place whose modifiers name classes of the
+     * scene (by name or synonym) is the area of those classes, not the table's room its head
+     * alone stands for (the hall is no hallway here); a table name its modifiers make ("the
+     * meeting room", "the locker room") stays the table's. */
+    if (!generic && depth == 0 && np->n_mods > 0 && !np->placeholder && !np->n_desc && lex_place_head(np) &&
+        !(r && region_by_mods(np, r))) {
+        int names = 0;
+        if ((rc = mods_name_classes(v, np, res, depth, &names, err))) return rc;
+        if (names) table = 0, r = NULL, def = NULL, generic = 1;
+    }
     if (table && by_wordnet_room) {
         /* "the sleeping corner" is WordNet's sleeping room, a bedroom; when the scene shows no
          * bedroom (one bed is not two of its kinds) it is still the corner where one sleeps */

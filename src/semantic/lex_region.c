@@ -110,7 +110,9 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 
 #define ROOM 4105893u      /* room.n.01 */
 #define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
-#define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
+#define WORKPLACE 4602044u
+#define FURNITURE 3405725u /* furniture.n.01 */
+#define CONTAINER 3094503u /* container.n.01 */ /* workplace.n.01: a place where work is done (workshop, laboratory) */
 
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
 {
@@ -347,6 +349,25 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
         }
     qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
     return 0;
+}
+
+int lex_place_head(const lex_np *np)
+{
+    if (lex_is_generic_region(np->head)) return 1;
+    /* its commonest physical sense is no piece of furniture and no container (a cabinet, a
+     * drawer is also a compartment, a room, in a later sense), and one of its first senses is a
+     * place (the hall: a hallway, an entrance hall, a large room; the gallery: a room where
+     * works of art are exhibited) */
+    int place = 0, first = 1;
+    for (int s = 0; s < np->n_senses && s < 4; s++) {
+        const lex_sense *se = &np->senses[s];
+        if (first && lex_sense_physical(se)) {
+            if (lex_anc_find(se, FURNITURE) >= 0 || lex_anc_find(se, CONTAINER) >= 0) return 0;
+            first = 0;
+        }
+        place |= place_sense(se, 1);
+    }
+    return place;
 }
 
 /* The definition a region's name gives: its first sense that is a place, else its first. */
