@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "lexical.h"
 
@@ -51,13 +52,14 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
 static int region_by_mods(const lex_np *np, const lex_region *r)
 {
     char name[64];
+    int by_mod = 0;
     snprintf(name, sizeof name, "%s", r->name);
     for (char *save = NULL, *w = strtok_r(name, " ", &save); w; w = strtok_r(NULL, " ", &save)) {
         int in = !strcmp(w, np->head);
-        for (int i = 0; i < np->n_mods && !in; i++) in = !strcmp(w, np->mods[i]);
+        for (int i = 0; i < np->n_mods && !in; i++) in = by_mod = !strcmp(w, np->mods[i]);
         if (!in) return 0;
     }
-    return 1;
+    return by_mod;
 }
 
 /* *names = 1 when np's modifiers, read alone as an object phrase, name a class of the scene by
@@ -410,61 +412,41 @@ static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, co
         }
 }
 
-/* 1 when table region r may hold class ci by its table entry: a member phrase ends in the
- * class's head word ("patient bed" of the ward for the class "bed"... and the class "patient
- * bed"), or the region's name is a word of the class's name (the kitchen of the kitchen table). */
-static int region_mentions(const sp_lex_vocab *v, const lex_region *r, int ci)
+/* 1 when table region r lists class ci by its very name ("visitor chair" in the ward). */
+static int region_lists(const sp_lex_vocab *v, const lex_region *r, int ci)
 {
-    const lex_class *c = &v->classes[ci];
-    if (!c->n_tok) return 0;
-    const char *head = c->tok[c->n_tok - 1];
-    for (int i = 0; i < r->n_members; i++) {
-        const char *sp = strrchr(r->members[i], ' ');
-        if (!strcmp(sp ? sp + 1 : r->members[i], head)) return 1;
-    }
-    for (int k = 0; k < c->n_tok; k++)
-        if (!strcmp(r->name, c->tok[k])) return 1;
+    const char *name = sp_lex_vocab_class(v, ci);
+    for (int i = 0; i < r->n_members; i++)
+        if (!strcasecmp(r->members[i], name)) return 1;
     return 0;
 }
 
 /* "the chair next to the bed": the target's classes the taxonomy ties (the visitor chair, the
  * waiting chair and the office chair are all chairs) are told apart by the company things keep:
- * the one a room of the region table holds together with the anchor, each as strongly as the
- * lesser of their memberships (the ward holds the patient bed and the visitor chair by name),
- * comes first. An order among equals, not evidence; the score is unchanged. */
-static int prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor, sp_error *err)
+ * one that a room of the region table lists by name together with the anchor (the ward lists
+ * the patient bed and the visitor chair) comes first, when it is the only such one. An order
+ * among equals, not evidence; the score is unchanged. By names only: a table entry is general
+ * knowledge of which things stand together, read without WordNet, so it costs no resolution. */
+static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor)
 {
-    if (!anchor->n_matches || target->n_matches < 2 || anchor->matches[0].score < SP_LEX_THRESHOLD) return 0;
+    if (!anchor->n_matches || target->n_matches < 2 || anchor->matches[0].score < SP_LEX_THRESHOLD) return;
     int ai = anchor->matches[0].class_index;
     sp_lex_class_match *m = target->matches;
     int nt = 1;
     while (nt < target->n_matches && m[nt].score == m[0].score) nt++;
-    if (nt < 2) return 0;
-    float company[SP_LEX_MAX_CLASSES] = {0};
-    sp_lex_phrase *ph = malloc(sizeof *ph);
-    if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-    int rc = 0;
-    for (int r = 0; r < v->n_regions && !rc; r++) {
-        if (!region_mentions(v, &v->regions[r], ai)) continue;
-        if ((rc = lex_region_members(v, &v->regions[r], v->regions[r].name, NULL, ph, err))) break;
-        float a = membership(ph, ai);
-        if (a < SP_LEX_THRESHOLD) continue;
-        for (int i = 0; i < nt; i++) {
-            if (m[i].class_index == ai) continue;
-            float c = membership(ph, m[i].class_index), s = c < a ? c : a;
-            if (c >= SP_LEX_THRESHOLD && s > company[i]) company[i] = s;
-        }
+    if (nt < 2) return;
+    int with[SP_LEX_MAX_CLASSES] = {0}, n_with = 0, best = -1;
+    for (int r = 0; r < v->n_regions; r++) {
+        if (!region_lists(v, &v->regions[r], ai)) continue;
+        for (int i = 0; i < nt; i++)
+            if (m[i].class_index != ai && !with[i] && region_lists(v, &v->regions[r], m[i].class_index))
+                with[i] = 1, n_with++, best = best < 0 ? i : best;
     }
-    free(ph);
-    int best = 0;
-    for (int i = 1; i < nt; i++)
-        if (company[i] > company[best]) best = i;
-    if (!rc && best > 0) {
+    if (n_with == 1 && best > 0) {
         sp_lex_class_match x = m[best];
         memmove(&m[1], &m[0], sizeof m[0] * (size_t)best);
         m[0] = x;
     }
-    return rc;
 }
 
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
@@ -750,7 +732,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
         else {
             prefer_anchor_named(v, &trial->target, &trial->anchor);
-            if ((rc = prefer_company(v, &trial->target, &trial->anchor, err))) break;
+            prefer_company(v, &trial->target, &trial->anchor);
         }
         *res = *trial;
         split = 1;
