@@ -685,6 +685,31 @@ static int where_description(const sp_lex_vocab *v, const lex_tokens *raw, sp_le
     return rc;
 }
 
+/* A class whose very name is a place of the region table ("nurses station", "charging
+ * station") is met by that name as the place it is: the query reads as the region, the class
+ * itself its first member (its name holds the region's), so "the nurses' station" is the
+ * station's area with its desk and computer, found by the station first. */
+static int named_place(const sp_lex_vocab *v, sp_lex_phrase *ph, sp_error *err)
+{
+    if (ph->is_region || !ph->n_matches || ph->matches[0].kind != SP_LEX_EXACT ||
+        ph->matches[0].score < SP_LEX_THRESHOLD)
+        return 0;
+    int ci = ph->matches[0].class_index;
+    const lex_region *r = lex_region_find(v, sp_lex_vocab_class(v, ci));
+    if (!r) return 0;
+    sp_lex_phrase *reg = malloc(sizeof *reg);
+    if (!reg) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    *reg = *ph;
+    int rc = lex_region_members(v, r, r->name, NULL, reg, err);
+    if (!rc && reg->n_matches && reg->matches[0].class_index == ci) {
+        reg->is_region = 1;
+        snprintf(reg->head, sizeof reg->head, "%s", r->name);
+        *ph = *reg;
+    }
+    free(reg);
+    return rc;
+}
+
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err)
 {
@@ -739,6 +764,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     }
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
+    if (!rc && !split) rc = named_place(v, &res->target, err);
     if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);
