@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "lexical.h"
 
@@ -47,6 +48,39 @@ static float best_of(const sp_lex_phrase *ph) { return ph->n_matches ? ph->match
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err);
 
+/* 1 when table region r's name is made of np's modifiers and head ("the meeting room"). */
+static int region_by_mods(const lex_np *np, const lex_region *r)
+{
+    char name[64];
+    int by_mod = 0;
+    snprintf(name, sizeof name, "%s", r->name);
+    for (char *save = NULL, *w = strtok_r(name, " ", &save); w; w = strtok_r(NULL, " ", &save)) {
+        int in = !strcmp(w, np->head);
+        for (int i = 0; i < np->n_mods && !in; i++) in = by_mod = !strcmp(w, np->mods[i]);
+        if (!in) return 0;
+    }
+    return by_mod;
+}
+
+/* *names = 1 when np's modifiers, read alone as an object phrase, name a class of the scene by
+ * its name or a synonym at the threshold. */
+static int mods_name_classes(const sp_lex_vocab *v, const lex_np *np, sp_lex_result *res, int depth, int *names,
+                             sp_error *err)
+{
+    *names = 0;
+    lex_tokens ct = {0, {{0}}};
+    for (int i = 0; i < np->n_mods && ct.n < LEX_MAX_TOKENS; i++) snprintf(ct.w[ct.n++], LEX_WORD, "%s", np->mods[i]);
+    sp_lex_phrase *sub = malloc(sizeof *sub);
+    if (!sub) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    int rc = resolve(v, &ct, 0, ct.n, sub, NULL, depth + 2, err);
+    if (!rc && !sub->is_region && sub->n_matches && sub->matches[0].score >= SP_LEX_THRESHOLD &&
+        (sub->matches[0].kind == SP_LEX_EXACT || sub->matches[0].kind == SP_LEX_SYNONYM))
+        *names = 1;
+    (void)res;
+    free(sub);
+    return rc;
+}
+
 /* A phrase naming a region: a room of the table or of WordNet ("the kitchen", "bedroom"), or a
  * generic area defined by what follows a link word or by its modifiers ("area with appliances",
  * "the area that looks like a kitchen", "the kitchen area"). Sets *is_region. */
@@ -77,6 +111,16 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     for (int i = np->head_start + 1; np->placeholder && linked && i + 1 < t->n; i++)
         if (!strcmp(t->w[i], "to")) linked = 0;
     int table = r || (def && !generic);
+    /* "the sculpture hall", "the painting gallery": a place whose modifiers name classes of the
+     * scene (by name or synonym) is the area of those classes, not the table's room its head
+     * alone stands for (the hall is no hallway here); a table name its modifiers make ("the
+     * meeting room", "the locker room") stays the table's. */
+    if (!generic && depth == 0 && np->n_mods > 0 && !np->placeholder && !np->n_desc && lex_place_head(np) &&
+        !(r && region_by_mods(np, r))) {
+        int names = 0;
+        if ((rc = mods_name_classes(v, np, res, depth, &names, err))) return rc;
+        if (names) table = 0, r = NULL, def = NULL, generic = 1;
+    }
     if (table && by_wordnet_room) {
         /* "the sleeping corner" is WordNet's sleeping room, a bedroom; when the scene shows no
          * bedroom (one bed is not two of its kinds) it is still the corner where one sleeps */
@@ -306,20 +350,37 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
 }
 
 
+/* How strongly class ci belongs to the region ph (its membership score; 0 when none). */
+static float membership(const sp_lex_phrase *region, int ci)
+{
+    for (int k = 0; k < region->n_matches; k++)
+        if (region->matches[k].class_index == ci) return region->matches[k].score;
+    return 0;
+}
+
 /* "the table in the dining room": among the target's matches, the classes that define the
- * anchor region come first (stable otherwise). */
+ * anchor region come first; among members the target ties (the taxonomy finds "chair" in the
+ * dining chair and the office chair alike), the one the region holds more strongly first ("the
+ * chair in the office": the office chair, a member by name, 1.0, before the dining chair, a
+ * member only as a kind of chair, 0.67); stable otherwise. */
 static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
 {
     sp_lex_class_match in[SP_LEX_MAX_CLASSES], out[SP_LEX_MAX_CLASSES];
+    float ms[SP_LEX_MAX_CLASSES];
     int ni = 0, no = 0;
     for (int i = 0; i < target->n_matches; i++) {
         const sp_lex_class_match *m = &target->matches[i];
-        int member = 0;
-        for (int k = 0; k < region->n_matches && !member; k++)
-            member = region->matches[k].class_index == m->class_index && region->matches[k].score >= SP_LEX_THRESHOLD;
-        if (member && m->score >= SP_LEX_THRESHOLD) in[ni++] = *m;
+        float r = membership(region, m->class_index);
+        if (r >= SP_LEX_THRESHOLD && m->score >= SP_LEX_THRESHOLD) ms[ni] = r, in[ni++] = *m;
         else out[no++] = *m;
     }
+    for (int i = 1; i < ni; i++) /* insertion sort: ties of the target by membership, stable */
+        for (int j = i; j > 0 && in[j].score == in[j - 1].score && ms[j] > ms[j - 1]; j--) {
+            sp_lex_class_match x = in[j];
+            float y = ms[j];
+            in[j] = in[j - 1], ms[j] = ms[j - 1];
+            in[j - 1] = x, ms[j - 1] = y;
+        }
     memcpy(target->matches, in, sizeof in[0] * (size_t)ni);
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
@@ -349,6 +410,43 @@ static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, co
             m[0] = x;
             return;
         }
+}
+
+/* 1 when table region r lists class ci by its very name ("visitor chair" in the ward). */
+static int region_lists(const sp_lex_vocab *v, const lex_region *r, int ci)
+{
+    const char *name = sp_lex_vocab_class(v, ci);
+    for (int i = 0; i < r->n_members; i++)
+        if (!strcasecmp(r->members[i], name)) return 1;
+    return 0;
+}
+
+/* "the chair next to the bed": the target's classes the taxonomy ties (the visitor chair, the
+ * waiting chair and the office chair are all chairs) are told apart by the company things keep:
+ * one that a room of the region table lists by name together with the anchor (the ward lists
+ * the patient bed and the visitor chair) comes first, when it is the only such one. An order
+ * among equals, not evidence; the score is unchanged. By names only: a table entry is general
+ * knowledge of which things stand together, read without WordNet, so it costs no resolution. */
+static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const sp_lex_phrase *anchor)
+{
+    if (!anchor->n_matches || target->n_matches < 2 || anchor->matches[0].score < SP_LEX_THRESHOLD) return;
+    int ai = anchor->matches[0].class_index;
+    sp_lex_class_match *m = target->matches;
+    int nt = 1;
+    while (nt < target->n_matches && m[nt].score == m[0].score) nt++;
+    if (nt < 2) return;
+    int with[SP_LEX_MAX_CLASSES] = {0}, n_with = 0, best = -1;
+    for (int r = 0; r < v->n_regions; r++) {
+        if (!region_lists(v, &v->regions[r], ai)) continue;
+        for (int i = 0; i < nt; i++)
+            if (m[i].class_index != ai && !with[i] && region_lists(v, &v->regions[r], m[i].class_index))
+                with[i] = 1, n_with++, best = best < 0 ? i : best;
+    }
+    if (n_with == 1 && best > 0) {
+        sp_lex_class_match x = m[best];
+        memmove(&m[1], &m[0], sizeof m[0] * (size_t)best);
+        m[0] = x;
+    }
 }
 
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the
@@ -587,6 +685,31 @@ static int where_description(const sp_lex_vocab *v, const lex_tokens *raw, sp_le
     return rc;
 }
 
+/* A class whose very name is a place of the region table ("nurses station", "charging
+ * station") is met by that name as the place it is: the query reads as the region, the class
+ * itself its first member (its name holds the region's), so "the nurses' station" is the
+ * station's area with its desk and computer, found by the station first. */
+static int named_place(const sp_lex_vocab *v, sp_lex_phrase *ph, sp_error *err)
+{
+    if (ph->is_region || !ph->n_matches || ph->matches[0].kind != SP_LEX_EXACT ||
+        ph->matches[0].score < SP_LEX_THRESHOLD)
+        return 0;
+    int ci = ph->matches[0].class_index;
+    const lex_region *r = lex_region_find(v, sp_lex_vocab_class(v, ci));
+    if (!r) return 0;
+    sp_lex_phrase *reg = malloc(sizeof *reg);
+    if (!reg) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    *reg = *ph;
+    int rc = lex_region_members(v, r, r->name, NULL, reg, err);
+    if (!rc && reg->n_matches && reg->matches[0].class_index == ci) {
+        reg->is_region = 1;
+        snprintf(reg->head, sizeof reg->head, "%s", r->name);
+        *ph = *reg;
+    }
+    free(reg);
+    return rc;
+}
+
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err)
 {
@@ -632,12 +755,16 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
-        else prefer_anchor_named(v, &trial->target, &trial->anchor);
+        else {
+            prefer_anchor_named(v, &trial->target, &trial->anchor);
+            prefer_company(v, &trial->target, &trial->anchor);
+        }
         *res = *trial;
         split = 1;
     }
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
+    if (!rc && !split) rc = named_place(v, &res->target, err);
     if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);

@@ -110,7 +110,9 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
 
 #define ROOM 4105893u      /* room.n.01 */
 #define AREA 2735688u      /* area.n.05: a part of a structure having some specific function */
-#define WORKPLACE 4602044u /* workplace.n.01: a place where work is done (workshop, laboratory) */
+#define WORKPLACE 4602044u
+#define FURNITURE 3405725u /* furniture.n.01 */
+#define CONTAINER 3094503u /* container.n.01 */ /* workplace.n.01: a place where work is done (workshop, laboratory) */
 
 int lex_region_for(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_phrase *region, sp_error *err)
 {
@@ -291,25 +293,38 @@ void lex_region_start(const sp_lex_vocab *v, sp_lex_phrase *ph)
     ph->n_matches = v->n;
 }
 
-/* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any. */
+/* Classes named after the region ("kitchen counter" belongs to the kitchen); returns 1 when any,
+ * 2 when a class's modifiers hold the region's whole name (the cafe's cafe table, the bathroom's
+ * bathroom sink, not the utility room's utility sink nor the shop floor's floor): such a class
+ * says by its name that it is of the place, 1.0; one named by a word of it, 0.9. */
 int lex_region_named_after(const sp_lex_vocab *v, const char *region, sp_lex_phrase *ph)
 {
     int any = 0;
-    char name[WN_LEMMA_MAX];
+    char name[WN_LEMMA_MAX], words[8][LEX_WORD];
+    int nw = 0;
     snprintf(name, sizeof name, "%s", region);
-    for (char *save = NULL, *w = strtok_r(name, "_ ", &save); w; w = strtok_r(NULL, "_ ", &save)) {
-        if (lex_is_generic_region(w)) continue;
-        for (int i = 0; i < v->n; i++)
-            for (int k = 0; k < v->classes[i].n_tok; k++) {
-                sp_lex_class_match *m = &ph->matches[i];
-                if (strcmp(v->classes[i].tok[k], w) || m->score >= 0.9f) continue;
-                memset(m, 0, sizeof *m);
-                m->class_index = i;
-                m->score = 0.9f;
-                m->kind = SP_LEX_REGION;
-                snprintf(m->path, sizeof m->path, "named after the region ('%s')", w);
-                any = 1;
-            }
+    for (char *save = NULL, *w = strtok_r(name, "_ ", &save); w; w = strtok_r(NULL, "_ ", &save))
+        if (!lex_is_generic_region(w) && nw < 8) snprintf(words[nw++], LEX_WORD, "%s", w);
+    for (int i = 0; i < v->n; i++) {
+        const lex_class *c = &v->classes[i];
+        sp_lex_class_match *m = &ph->matches[i];
+        int some = 0, all = nw > 0;
+        for (int a = 0; a < nw; a++) {
+            int in = 0, mod = 0;
+            for (int k = 0; k < c->n_tok; k++)
+                if (!strcmp(c->tok[k], words[a])) in = 1, mod |= k + 1 < c->n_tok;
+            some |= in;
+            all &= mod;
+        }
+        if (!some) continue;
+        float score = all ? 1.0f : 0.9f;
+        if (m->kind == SP_LEX_REGION ? m->score >= score : (!all && m->score >= score)) continue;
+        memset(m, 0, sizeof *m);
+        m->class_index = i;
+        m->score = score;
+        m->kind = SP_LEX_REGION;
+        snprintf(m->path, sizeof m->path, "named after the region ('%s')", region);
+        any = any > (all ? 2 : 1) ? any : (all ? 2 : 1);
     }
     return any;
 }
@@ -331,6 +346,10 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
         lex_tokenize(ph->region, &t);
         if ((rc = lex_region_activity(v, &t, ph, err)) < 0) return rc;
     }
+    /* A class named after the place says by its name that it is of it (1.0 for the whole
+     * name: the cafe's cafe table ranks with the table's first member, before the display case
+     * a cafe usually has; the first member, listed first as the place's defining object, keeps
+     * its place by kind) */
     lex_region_named_after(v, ph->region, ph);
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom; a
      * class named after the place says by its name that it is of it ("the shower stall" ->
@@ -347,6 +366,25 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
         }
     qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
     return 0;
+}
+
+int lex_place_head(const lex_np *np)
+{
+    if (lex_is_generic_region(np->head)) return 1;
+    /* its commonest physical sense is no piece of furniture and no container (a cabinet, a
+     * drawer is also a compartment, a room, in a later sense), and one of its first senses is a
+     * place (the hall: a hallway, an entrance hall, a large room; the gallery: a room where
+     * works of art are exhibited) */
+    int place = 0, first = 1;
+    for (int s = 0; s < np->n_senses && s < 4; s++) {
+        const lex_sense *se = &np->senses[s];
+        if (first && lex_sense_physical(se)) {
+            if (lex_anc_find(se, FURNITURE) >= 0 || lex_anc_find(se, CONTAINER) >= 0) return 0;
+            first = 0;
+        }
+        place |= place_sense(se, 1);
+    }
+    return place;
 }
 
 /* The definition a region's name gives: its first sense that is a place, else its first. */

@@ -283,6 +283,9 @@ int lex_regions_load(sp_lex_vocab *v, const char *path, sp_error *err);
  * found through a WordNet room named by a generic area's modifiers ("sleeping room"), else 0 or
  * a negative SP_E_* code. */
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r, sp_error *err);
+/* 1 when np's head names a place one can be in: a generic area word, or one of its first senses
+ * a room, a workplace or a functional part of a structure ("hall", "gallery"). */
+int lex_place_head(const lex_np *np);
 /* The definition of a region name's place sense (first sense that is a room, a functional area
  * or a workplace; for table entries any such sense, else the first), or NULL when none. */
 const char *lex_region_definition(const lex_np *np, int table_entry);

@@ -45,7 +45,8 @@
  * a stretching corner and changing rooms, by w16-blind) and the museum (phrases_museum.json,
  * data/worlds/museum.world: entrance hall, galleries, gift shop, cafe, by w17-blind), written by
  * helpers who had not read or run the encoder; their first runs (on phases 10 to 12, none of
- * which saw them) are in docs/DESIGN.md and phrases_*_first_run.txt. Run with an argument
+ * which saw them) are in docs/DESIGN.md and phrases_*_first_run.txt; since phase 13 (l15-lexical)
+ * they are development data too, with floors. Run with an argument
  * (house | bookstore | office | ward | garage | cafe | basement | classroom | hotel | grocery |
  * chemlab | pharmacy | salon | warehouse | apartment | hospital | smallhouse | gym | museum) to
  * print every phrase of one table, and a query after it to print its explanation. */
@@ -841,12 +842,18 @@ int main(int argc, char **argv)
      * development data too and get floors (211/265 and 40/47, 236/290 and 40/44 when set); the
      * others rise to just under their figures (garage 124/139, basement 29/34 absent, hotel
      * 145/170 and 35/40, grocery 172/200 and 35/36, pharmacy 149/190 and 34/35, salon 37/40) */
-    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.89, 0.82, 0.88, 0.86, 0.85, 0.85, 0.74, 0.78, 0.82, 0.79, 0.81},
-                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.85, 0.96, 0.87, 0.97, 0.94, 0.97, 0.92, 0.85, 0.9};
+    /* phase 13 (l15-lexical) read the hospital's, small house's, gym's and museum's misses: they
+     * are development data too and get floors just under their figures (hospital 229/302 and
+     * 47/53, small house 288/349 and 40/55, gym 178/229 and 24/32, museum 180/232 and 39/41 when
+     * set); the grocery's 0.85 holds at 171/200 */
+    const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.89, 0.82, 0.88, 0.86, 0.85, 0.85, 0.74, 0.78, 0.82, 0.79, 0.81,
+                               0.75, 0.82, 0.77, 0.77},
+                 floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.85, 0.96, 0.87, 0.97, 0.94, 0.97, 0.92, 0.85, 0.9,
+                                   0.88, 0.72, 0.75, 0.95};
     const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= n_floors) continue; /* a table added later: printed, no bar */
+        if (w >= n_floors) continue; /* a table added later: printed, no bar (none now) */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
