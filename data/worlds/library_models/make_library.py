@@ -487,7 +487,7 @@ class World:
 def childrens_corner(w):
     w.add("window_1", (1.6, T / 2 + 0.02, 1.5, N), base.window())
     w.add("window_2", (4.3, T / 2 + 0.02, 1.5, N), base.window())
-    w.add("window_3", (T / 2 + 0.02, 1.1, 1.6, E), base.window())
+    w.add("window_3", (T / 2 + 0.02, 0.95, 1.6, E), base.window())
     w.add("bookshelf_1", (T / 2 + 0.18, 2.5, 0, E), bookshelf(1.6, 1.2, 3, False, 11))  # a low one
     for i, x in enumerate((1.0, 2.1, 3.2), 1):
         w.add(f"picture_book_bin_{i}", (x, YS - T / 2 - 0.3, 0, S), picture_book_bin())
@@ -611,8 +611,8 @@ def lounge(w):
     w.add("floor_lamp", (19.55, 6.45, 0, N), floor_lamp())
     w.add("magazine_rack", (17.2, YSR - T / 2 - 0.2, 0, S), magazine_rack())
     w.add("water_fountain", (19.4, YS + T / 2, 0, N), water_fountain())
-    w.add("fire_extinguisher_3", (16.6, YSR - T / 2 - 0.1, 0, S), fire_extinguisher())
-    w.add("potted_plant_5", (19.6, 8.2, 0, N), base.plant())
+    w.add("fire_extinguisher_3", (18.2, YS + T / 2 + 0.1, 0, N), fire_extinguisher())
+    w.add("potted_plant_5", (19.5, 8.1, 0, N), base.plant())
 
 
 def study_rooms(w, chair_n):
