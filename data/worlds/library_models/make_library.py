@@ -496,7 +496,7 @@ def childrens_corner(w):
         w.add(f"kids_chair_{i}", (x, y, 0, yaw), kids_chair())
     w.add("bean_bag_1", (4.5, 3.75, 0, S), bean_bag("bean_orange"))
     w.add("bean_bag_2", (5.4, 3.2, 0, WEST), bean_bag("bean_purple"))
-    w.add("toy_box", (0.75, T / 2 + 0.25, 0, N), toy_box())
+    w.add("toy_box", (1.6, T / 2 + 0.25, 0, N), toy_box())  # under window_1
 
 
 def lobby(w):
