@@ -1,6 +1,6 @@
 #!/bin/sh
-# Prints the lexical encoder's figures on all 19 phrasing tables (tests/semantic/phrases_*.json):
-# per table present precision@1 and absent rejected, then the sums over all 19.
+# Prints the lexical encoder's figures on all 21 phrasing tables (tests/semantic/phrases_*.json):
+# per table present precision@1 and absent rejected, then the sums over all 21.
 # Usage: scripts/lexical_tables.sh [build-dir]   (default: $SP_BUILD_DIR or build)
 set -e
 cd "$(dirname "$0")/.."
@@ -8,7 +8,7 @@ B=${1:-${SP_BUILD_DIR:-build}}
 T="$B/semantic_test_lexical"
 [ -x "$T" ] || { echo "no $T: build it first (SP_BUILD_DIR=$B ./scripts/build.sh)" >&2; exit 1; }
 for w in house bookstore office ward garage cafe basement classroom hotel grocery chemlab pharmacy \
-         salon warehouse apartment hospital smallhouse gym museum; do
+         salon warehouse apartment hospital smallhouse gym museum library restaurant; do
     "$T" "$w" 2>/dev/null | grep -m1 "^$w: precision@1" || echo "$w: no figures"
 done | awk '
 {
@@ -18,5 +18,5 @@ done | awk '
     printf "%-10s present %4d/%-4d = %.3f   absent %3d/%-3d = %.3f\n", w, p[1], p[2], p[1] / p[2], a[1], a[2], a[1] / a[2]
 }
 END {
-    printf "%-10s present %4d/%-4d = %.3f   absent %3d/%-3d = %.3f\n", "all 19", pp, pt, pp / pt, ap, at, ap / at
+    printf "%-10s present %4d/%-4d = %.3f   absent %3d/%-3d = %.3f\n", "all " NR, pp, pt, pp / pt, ap, at, ap / at
 }'
