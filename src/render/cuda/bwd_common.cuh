@@ -175,15 +175,16 @@ __device__ __forceinline__ void stage_store(const stage_smem &s, const stage_reg
     }
 }
 
-/* The tile's v_image chunk into shared memory, read coalesced: pixel p's channel c at
+/* The tile's v_image chunk into shared memory, read coalesced (BOX: slots in warp boxes): pixel p's channel c at
  * s_vout[p * LDV + c] for c < CHP (zero for c >= CH, past D and outside the image). */
-template <int CH, int CHP, int LDV>
+template <int CH, int CHP, int LDV, bool BOX = false>
 __device__ __forceinline__ void load_vout(float *s_vout, const float *__restrict__ v_image, int W,
                                           int H, int D, int c0, int bx, int by, int tid)
 {
     for (int k = tid; k < BLOCK * CHP; k += BLOCK) {
         const int p = k / CHP, c = k - p * CHP;
-        const int x = bx + p % SP_TILE_SIZE, y = by + p / SP_TILE_SIZE;
+        const int x = bx + (BOX ? sp_cu_box_x(p) : p % SP_TILE_SIZE);
+        const int y = by + (BOX ? sp_cu_box_y(p) : p / SP_TILE_SIZE);
         s_vout[LDV == CHP ? k : p * LDV + c] = ((CHP == CH || c < CH) && x < W && y < H && c0 + c < D)
                                   ? v_image[((size_t)y * W + x) * D + c0 + c]
                                   : 0.f;

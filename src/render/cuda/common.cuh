@@ -207,22 +207,39 @@ __device__ __forceinline__ float sp_cu_alpha_flat(float4 co, float cut, float dx
  * warp's bits for the staged Gaussians base .. base + 31 of a batch of cnt (bit l: slot
  * base + l may be kept), all set where culling is off; lanes test one Gaussian each, so the
  * whole warp must call it, converged. */
-__device__ __forceinline__ unsigned sp_cu_band_bits(const float4 *s_conic, const float2 *s_xy,
+/* Pixel slots in 8 x 4 warp boxes (BOX): slot p of a tile is thread p's pixel, warp p / 32 covers
+ * the box of columns 8 (warp & 1) .. + 7 and rows 4 (warp >> 1) .. + 3, so a Gaussian's footprint
+ * meets fewer warps than with 16 x 2 bands (a disc of radius r meets a w x h box over
+ * (w + 2r)(h + 2r): at r = 6 px 320 against 392). */
+__device__ __forceinline__ int sp_cu_box_x(int p) { return ((p >> 5) & 1) * 8 + (p & 7); }
+__device__ __forceinline__ int sp_cu_box_y(int p) { return (p >> 6) * 4 + ((p >> 3) & 3); }
+
+/* The same for any pixel rectangle [x0, x1] x [y0, y1] (inclusive, already clipped to the image;
+ * empty when x0 > x1 or y0 > y1). */
+__device__ __forceinline__ unsigned sp_cu_rect_bits(const float4 *s_conic, const float2 *s_xy,
                                                     const float *s_cut, int base, int cnt,
-                                                    int cull, int tx, int ty, int band, int rh,
-                                                    int W, int H, int lane)
+                                                    int cull, int x0, int x1, int y0, int y1,
+                                                    int lane)
 {
     const int j = base + lane;
     bool hit = j < cnt;
     if (hit && cull) {
-        const int x0 = tx * SP_TILE_SIZE, x1 = min(x0 + SP_TILE_SIZE - 1, W - 1);
-        const int y0 = ty * SP_TILE_SIZE + band * rh, y1 = min(y0 + rh - 1, H - 1);
         const float4 co = s_conic[j];
         const float2 xy = s_xy[j];
         const float con[3] = {co.x, co.y, co.z};
         hit = y0 <= y1 && x0 <= x1 && sp_gm_tile_hit(con, s_cut[j], xy.x, xy.y, x0, x1, y0, y1);
     }
     return __ballot_sync(0xffffffffu, hit);
+}
+
+__device__ __forceinline__ unsigned sp_cu_band_bits(const float4 *s_conic, const float2 *s_xy,
+                                                    const float *s_cut, int base, int cnt,
+                                                    int cull, int tx, int ty, int band, int rh,
+                                                    int W, int H, int lane)
+{
+    const int x0 = tx * SP_TILE_SIZE, x1 = min(x0 + SP_TILE_SIZE - 1, W - 1);
+    const int y0 = ty * SP_TILE_SIZE + band * rh, y1 = min(y0 + rh - 1, H - 1);
+    return sp_cu_rect_bits(s_conic, s_xy, s_cut, base, cnt, cull, x0, x1, y0, y1, lane);
 }
 
 /* The rows a Gaussian can touch, for the cheap band test of wide forward chunks: [lo, hi] with

@@ -20,6 +20,11 @@
 
 #define GPW (NB / NWARPS)        /* Gaussians per warp in the product */
 
+/* 1: each warp's pixels are an 8 x 4 box of the tile (sp_cu_box_x), 0: two rows */
+#ifndef SP_MM_BOX
+#define SP_MM_BOX 1
+#endif
+
 /* blocks per SM the registers are bounded for: 3 for 32 channels (its shared memory allows 3),
  * else 2 */
 #define MM_MIN_BLOCKS(CH) ((CH) <= 32 ? 3 : 2)
@@ -58,7 +63,8 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
     const int lane = tid & 31, warp = tid >> 5;
     const int bx = blockIdx.x * SP_TILE_SIZE, by = blockIdx.y * SP_TILE_SIZE;
-    const int px_i = bx + threadIdx.x, py_i = by + threadIdx.y;
+    const int px_i = bx + (SP_MM_BOX ? sp_cu_box_x(tid) : (int)threadIdx.x);
+    const int py_i = by + (SP_MM_BOX ? sp_cu_box_y(tid) : (int)threadIdx.y);
     walk_px q;
     q.aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
     q.inside = px_i < W && py_i < H;
@@ -66,7 +72,7 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
     const size_t pix = q.inside ? (size_t)py_i * W + px_i : 0;
 
-    load_vout<CH, CH, CH>(s_vout, v_image, W, H, D, c0, bx, by, tid);
+    load_vout<CH, CH, CH, SP_MM_BOX>(s_vout, v_image, W, H, D, c0, bx, by, tid);
     q.Tf = q.inside ? t_final[pix] : 1.f;
     q.last = q.inside ? last_idx[pix] : range.x;
     if (tid == 0) s_block_last = range.x;
@@ -86,6 +92,7 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     q.warp_last = __reduce_max_sync(FULL_MASK, q.last);
     __syncthreads();
     const int block_last = s_block_last;
+    const int box_x0 = bx + (warp & 1) * 8, box_y0 = by + (warp >> 1) * 4;
 
     /* Stages are double-buffered through registers: the next stage's geometry and colours are
      * loaded while this one is composited, and stored while this one's product runs (after the
@@ -105,9 +112,12 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     for (int b_end = block_last, cb = 0; b_end > range.x; b_end -= NB, cb ^= 1) {
         const int cnt = min(NB, b_end - range.x);
         st.id = id_buf[cb], st.flag = flag_buf[cb];
-        /* warp culling (sp_cu_band_bits): the warp's 2 rows */
-        const unsigned bits = sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x,
-                                              blockIdx.y, warp, 2, W, H, lane);
+        /* warp culling: the warp's box (8 x 4) or band (2 rows) */
+        const unsigned bits =
+            SP_MM_BOX ? sp_cu_rect_bits(st.conic, st.xy, st.cut, 0, cnt, cull, box_x0, min(box_x0 + 7, W - 1),
+                                        box_y0, min(box_y0 + 3, H - 1), lane)
+                      : sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x, blockIdx.y,
+                                        warp, 2, W, H, lane);
         stage_walk_pairs(st, q, b_end, bits, s_fac, BLOCK,
                    [&](int t) {
                        /* four independent chains, so the sum waits on 8 multiply-adds, not 32 */

@@ -16,6 +16,12 @@
 
 #define BLOCK (SP_TILE_SIZE * SP_TILE_SIZE)
 
+/* 1: above 8 channels each warp's pixels are an 8 x 4 box of the tile (sp_cu_box_x) and its band
+ * test takes the Gaussian's columns too; 0: two rows */
+#ifndef SP_FWD_BOX
+#define SP_FWD_BOX 1
+#endif
+
 /* What compositing one tile of a view reads and writes (a kernel argument: by value for one
  * view, an array on the device for a batch). */
 typedef struct fwd_view {
@@ -37,6 +43,7 @@ typedef struct fwd_shared {
     float4 *conic;
     float2 *xy;
     float2 *yr; /* rows it can touch (sp_cu_y_extent), for the wide chunks' band test */
+    float2 *xr; /* columns it can touch (the same, x and y swapped), for the box test */
     float *z, *cut;
     int *id;
     float *col;     /* [NT][CH] */
@@ -50,7 +57,8 @@ __device__ __forceinline__ fwd_shared fwd_shared_at(float4 *base)
     s.conic = base;
     s.xy = (float2 *)(s.conic + NT);
     s.yr = s.xy + NT;
-    s.z = (float *)(s.yr + NT);
+    s.xr = s.yr + NT;
+    s.z = (float *)(s.xr + NT);
     s.cut = s.z + NT;
     s.id = (int *)(s.cut + NT);
     s.col = (float *)(s.id + NT);
@@ -75,6 +83,7 @@ __device__ __forceinline__ void fwd_stage(const fwd_view &v, const fwd_shared &s
         s.cut[tid] = cut;
         s.z[tid] = v.depths[g];
         if (YR) s.yr[tid] = sp_cu_y_extent(co, cut, xy.y);
+        if (YR && SP_FWD_BOX) s.xr[tid] = sp_cu_y_extent(make_float4(co.z, co.y, co.x, co.w), cut, xy.x);
     }
     __syncthreads();
     for (int k = tid; k < cnt * CH; k += NT) {
@@ -104,6 +113,22 @@ __device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, cons
         for (int c = 0; c < NW; c++) {
             const unsigned b = sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty, warp,
                                                RH, v.W, v.H, lane);
+            if (lane == 0) bits[c] = b;
+        }
+    } else if (TEST == 2 && SP_FWD_BOX && NT == BLOCK) {
+        /* the warp's 8 x 4 box (sp_cu_box_x): its pixel-centre rows and columns, clipped */
+        const int x0 = tx * SP_TILE_SIZE + (warp & 1) * 8, x1 = min(x0 + 7, v.W - 1);
+        const int y0 = ty * SP_TILE_SIZE + (warp >> 1) * 4, y1 = min(y0 + 3, v.H - 1);
+        const float cx0 = x0 + 0.5f, cx1 = x1 + 0.5f, cy0 = y0 + 0.5f, cy1 = y1 + 0.5f;
+#pragma unroll 1
+        for (int c = 0; c < NW; c++) {
+            const int j = 32 * c + lane;
+            bool hit = j < cnt;
+            if (hit && v.cull) {
+                const float2 yr = s.yr[j], xr = s.xr[j];
+                hit = y0 <= y1 && x0 <= x1 && yr.x <= cy1 && yr.y >= cy0 && xr.x <= cx1 && xr.y >= cx0;
+            }
+            const unsigned b = __ballot_sync(0xffffffffu, hit);
             if (lane == 0) bits[c] = b;
         }
     } else {
@@ -188,8 +213,9 @@ __device__ __forceinline__ void fwd_tile(const fwd_view &v, int tx, int ty,
     const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
 
     const int tid = threadIdx.y * SP_TILE_SIZE + threadIdx.x;
-    const int px_i = tx * SP_TILE_SIZE + threadIdx.x;
-    const int py_i = ty * SP_TILE_SIZE + threadIdx.y;
+    constexpr bool BOXED = SP_FWD_BOX && CH > 8; /* the box test's pixels (sp_cu_box_x) */
+    const int px_i = tx * SP_TILE_SIZE + (BOXED ? sp_cu_box_x(tid) : (int)threadIdx.x);
+    const int py_i = ty * SP_TILE_SIZE + (BOXED ? sp_cu_box_y(tid) : (int)threadIdx.y);
     const bool inside = px_i < v.W && py_i < v.H;
     const float px = px_i + 0.5f, py = py_i + 0.5f;
     const int2 range = v.ranges[ty * v.tiles_x + tx];
@@ -400,7 +426,7 @@ static fwd_view fwd_view_of(const sp_cuda_view *v, const sp_cuda_pass *p, int st
 static size_t fwd_smem(int ch, int px)
 {
     const size_t nt = BLOCK / px;
-    return nt * (sizeof(float4) + 2 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
+    return nt * (sizeof(float4) + 3 * sizeof(float2) + 2 * sizeof(float) + sizeof(int) +
                  sizeof(float) * ch) +
            (nt / 32) * (nt / 32) * sizeof(unsigned);
 }
