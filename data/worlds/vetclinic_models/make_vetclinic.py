@@ -457,8 +457,8 @@ def anaesthesia_machine():
 
 
 def scrub_sink(w=1.2, d=0.6):
-    """A stainless surgical scrub trough against the wall (behind it at -y): the deep trough, two
-    tall gooseneck taps with elbow levers, a backsplash, the soap and brush dispensers."""
+    """A stainless surgical scrub trough against the wall (behind it at -y) on short legs: the deep
+    trough, two tall gooseneck taps with elbow levers, a backsplash, the soap and brush dispensers."""
     v = [box("trough", "steel", 0, 0, 0.8, w, d, 0.3),
          box("basin", "dark_steel", 0, 0.03, 0.952, w - 0.1, d - 0.12, 0.005),
          box("backsplash", "steel", 0, -d / 2 + 0.02, 1.2, w, 0.04, 0.5),
@@ -468,7 +468,7 @@ def scrub_sink(w=1.2, d=0.6):
               box(f"gooseneck{i}", "steel", x, -d / 2 + 0.16, 1.5, 0.02, 0.18, 0.02),
               box(f"elbow_lever{i}", "steel", x + 0.1, -d / 2 + 0.1, 1.12, 0.2, 0.02, 0.02),
               box(f"dispenser{i}", "white", x + 0.3, -d / 2 + 0.06, 1.35, 0.1, 0.08, 0.2)]
-    return v
+    return v + legs("steel", w / 2 - 0.04, d / 2 - 0.04, 0.25)
 
 
 # ---- the kennel ward ----
