@@ -207,12 +207,48 @@ __device__ __forceinline__ float sp_cu_alpha_flat(float4 co, float cut, float dx
  * warp's bits for the staged Gaussians base .. base + 31 of a batch of cnt (bit l: slot
  * base + l may be kept), all set where culling is off; lanes test one Gaussian each, so the
  * whole warp must call it, converged. */
-/* Pixel slots in 8 x 4 warp boxes (BOX): slot p of a tile is thread p's pixel, warp p / 32 covers
- * the box of columns 8 (warp & 1) .. + 7 and rows 4 (warp >> 1) .. + 3, so a Gaussian's footprint
+/* Pixel slots in warp boxes (BOX), 8 x 4 by default: slot p of a tile is thread p's pixel, warp
+ * p / 32 covers the box of columns 8 (warp & 1) .. + 7 and rows 4 (warp >> 1) .. + 3, so a Gaussian's footprint
  * meets fewer warps than with 16 x 2 bands (a disc of radius r meets a w x h box over
  * (w + 2r)(h + 2r): at r = 6 px 320 against 392). */
-__device__ __forceinline__ int sp_cu_box_x(int p) { return ((p >> 5) & 1) * 8 + (p & 7); }
-__device__ __forceinline__ int sp_cu_box_y(int p) { return (p >> 6) * 4 + ((p >> 3) & 3); }
+#ifndef SP_BOX_W
+#define SP_BOX_W 8 /* box width: 8 (8 x 4), 4 (4 x 8) or 16 (16 x 2, the bands) */
+#endif
+#define SP_BOX_H (32 / SP_BOX_W)
+#define SP_BOXES_X (SP_TILE_SIZE / SP_BOX_W) /* boxes across a tile */
+__device__ __forceinline__ int sp_cu_box_x(int p) { return ((p >> 5) % SP_BOXES_X) * SP_BOX_W + p % SP_BOX_W; }
+__device__ __forceinline__ int sp_cu_box_y(int p) { return ((p >> 5) / SP_BOXES_X) * SP_BOX_H + (p & 31) / SP_BOX_W; }
+/* warp w's box in tile (tx, ty), clipped to the image: [x0, x1] x [y0, y1] (x0 > x1 or y0 > y1
+ * when it lies outside) */
+__device__ __forceinline__ void sp_cu_box_rect(int tx, int ty, int w, int W, int H, int *x0, int *x1,
+                                               int *y0, int *y1)
+{
+    *x0 = tx * SP_TILE_SIZE + (w % SP_BOXES_X) * SP_BOX_W, *x1 = min(*x0 + SP_BOX_W - 1, W - 1);
+    *y0 = ty * SP_TILE_SIZE + (w / SP_BOXES_X) * SP_BOX_H, *y1 = min(*y0 + SP_BOX_H - 1, H - 1);
+}
+
+/* Two pixels per thread (the narrow kernels' PX = 2, 128 threads, 4 warps): with SP_PX_BOX each
+ * warp owns an 8 x 8 box of the tile, its lane l the pixels (l % 4 + 4 q, l / 4), q < 2, of it (a
+ * thread's pixels still share a row); without, a 16 x 4 band, thread (x, y) pixels (x + 8 q, y). */
+#ifndef SP_PX_BOX
+#define SP_PX_BOX 1
+#endif
+__device__ __forceinline__ void sp_cu_px2_rect(int tx, int ty, int w, int W, int H, int *x0, int *x1,
+                                               int *y0, int *y1)
+{
+    *x0 = tx * SP_TILE_SIZE + (w & 1) * 8, *x1 = min(*x0 + 7, W - 1);
+    *y0 = ty * SP_TILE_SIZE + (w >> 1) * 8, *y1 = min(*y0 + 7, H - 1);
+}
+/* thread tid's first pixel's offset in its tile and the step to its next pixel (PX = 2) */
+__device__ __forceinline__ void sp_cu_px2_pixel(int tid, int *ox, int *oy, int *step)
+{
+    const int w = tid >> 5, l = tid & 31;
+    if (SP_PX_BOX) {
+        *ox = (w & 1) * 8 + (l & 3), *oy = (w >> 1) * 8 + (l >> 2), *step = 4;
+    } else {
+        *ox = tid & 7, *oy = tid >> 3, *step = 8;
+    }
+}
 
 /* The same for any pixel rectangle [x0, x1] x [y0, y1] (inclusive, already clipped to the image;
  * empty when x0 > x1 or y0 > y1). */

@@ -38,15 +38,16 @@
 /* The staged Gaussians 32 wd .. 32 wd + 31 this warp walks (the warp owns rows rh warp ..
  * rh warp + rh - 1 of its tile: sp_cu_band_bits; with BOX its 8 x 4 box, rh unused), from slot
  * t_first on (the ones behind every pixel of the warp's list ends are skipped). */
-template <bool BOX = false>
+template <int BOX = 0>
 __device__ __forceinline__ unsigned walk_bits(const float4 *s_conic, const float2 *s_xy,
                                               const float *s_cut, int wd, int t_first, int cnt,
                                               int cull, int rh, int W, int H, int tid)
 {
     const int warp = tid >> 5;
-    const int x0 = blockIdx.x * SP_TILE_SIZE + (warp & 1) * 8, y0 = blockIdx.y * SP_TILE_SIZE + (warp >> 1) * 4;
-    unsigned m = BOX ? sp_cu_rect_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, x0, min(x0 + 7, W - 1), y0,
-                                       min(y0 + 3, H - 1), tid & 31)
+    int x0, x1, y0, y1; /* BOX 1: sp_cu_box_rect, 2: sp_cu_px2_rect */
+    if (BOX == 2) sp_cu_px2_rect(blockIdx.x, blockIdx.y, warp, W, H, &x0, &x1, &y0, &y1);
+    else sp_cu_box_rect(blockIdx.x, blockIdx.y, warp, W, H, &x0, &x1, &y0, &y1);
+    unsigned m = BOX ? sp_cu_rect_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, x0, x1, y0, y1, tid & 31)
                      : sp_cu_band_bits(s_conic, s_xy, s_cut, 32 * wd, cnt, cull, blockIdx.x, blockIdx.y,
                                        warp, rh, W, H, tid & 31);
     return wd == t_first >> 5 ? m & (~0u << (t_first & 31)) : m;
@@ -133,7 +134,7 @@ k_raster_bwd(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         __syncthreads();
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-            unsigned m = walk_bits<SP_RS_BOX>(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2, W, H, tid);
+            unsigned m = walk_bits<SP_RS_BOX ? 1 : 0>(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2, W, H, tid);
             for (; m; m &= m - 1) {
                 const int t = 32 * wd + __ffs(m) - 1;
                 const int idx = b_end - 1 - t;
@@ -275,7 +276,10 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     const bool do_aux = aux && blockIdx.z == 0; /* depth and alpha terms in one chunk only */
     const int tid = threadIdx.y * BX + threadIdx.x;
     const int lane = tid & 31;
-    const int py_i = blockIdx.y * SP_TILE_SIZE + threadIdx.y;
+    constexpr bool PBOX = SP_PX_BOX && PX == 2; /* 8 x 8 warp boxes (sp_cu_px2_pixel) */
+    int ox = threadIdx.x, oy = threadIdx.y, step = BX;
+    if (PBOX) sp_cu_px2_pixel(tid, &ox, &oy, &step);
+    const int py_i = blockIdx.y * SP_TILE_SIZE + oy;
     const float py = py_i + 0.5f;
     const int2 range = ranges[blockIdx.y * tiles_x + blockIdx.x];
 
@@ -284,7 +288,7 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     int my_last = range.x;
 #pragma unroll
     for (int q = 0; q < PX; q++) {
-        const int px_i = blockIdx.x * SP_TILE_SIZE + threadIdx.x + q * BX;
+        const int px_i = blockIdx.x * SP_TILE_SIZE + ox + q * step;
         const bool inside = px_i < W && py_i < H;
         const size_t pix = inside ? (size_t)py_i * W + px_i : 0;
         px[q] = px_i + 0.5f;
@@ -335,7 +339,7 @@ k_raster_bwd_px(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         __syncthreads();
         const int t_first = max(0, b_end - warp_last);
         for (int wd = t_first >> 5; 32 * wd < cnt; wd++) {
-            unsigned m = walk_bits(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2 * PX, W, H, tid);
+            unsigned m = walk_bits<PBOX ? 2 : 0>(s_conic, s_xy, s_cut, wd, t_first, cnt, cull, 2 * PX, W, H, tid);
             for (; m; m &= m - 1) {
                 const int t = 32 * wd + __ffs(m) - 1;
                 const int idx = b_end - 1 - t;

@@ -92,7 +92,8 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
     q.warp_last = __reduce_max_sync(FULL_MASK, q.last);
     __syncthreads();
     const int block_last = s_block_last;
-    const int box_x0 = bx + (warp & 1) * 8, box_y0 = by + (warp >> 1) * 4;
+    int box_x0, box_x1, box_y0, box_y1;
+    sp_cu_box_rect(blockIdx.x, blockIdx.y, warp, W, H, &box_x0, &box_x1, &box_y0, &box_y1);
 
     /* Stages are double-buffered through registers: the next stage's geometry and colours are
      * loaded while this one is composited, and stored while this one's product runs (after the
@@ -114,8 +115,7 @@ k_raster_bwd_mm(int W, int H, int tiles_x, const int2 *__restrict__ ranges,
         st.id = id_buf[cb], st.flag = flag_buf[cb];
         /* warp culling: the warp's box (8 x 4) or band (2 rows) */
         const unsigned bits =
-            SP_MM_BOX ? sp_cu_rect_bits(st.conic, st.xy, st.cut, 0, cnt, cull, box_x0, min(box_x0 + 7, W - 1),
-                                        box_y0, min(box_y0 + 3, H - 1), lane)
+            SP_MM_BOX ? sp_cu_rect_bits(st.conic, st.xy, st.cut, 0, cnt, cull, box_x0, box_x1, box_y0, box_y1, lane)
                       : sp_cu_band_bits(st.conic, st.xy, st.cut, 0, cnt, cull, blockIdx.x, blockIdx.y,
                                         warp, 2, W, H, lane);
         stage_walk_pairs(st, q, b_end, bits, s_fac, BLOCK,

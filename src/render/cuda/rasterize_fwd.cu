@@ -108,7 +108,15 @@ __device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, cons
     constexpr int NW = NT / 32, RH = SP_TILE_SIZE / NW;
     const int warp = tid >> 5, lane = tid & 31;
     unsigned *bits = s.bits + warp * NW;
-    if (TEST == 1) {
+    if (TEST == 1 && SP_PX_BOX && NT == BLOCK / 2) { /* fwd_tile_px<CH, 2>: 8 x 8 boxes */
+        int x0, x1, y0, y1;
+        sp_cu_px2_rect(tx, ty, warp, v.W, v.H, &x0, &x1, &y0, &y1);
+#pragma unroll 1
+        for (int c = 0; c < NW; c++) {
+            const unsigned b = sp_cu_rect_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, x0, x1, y0, y1, lane);
+            if (lane == 0) bits[c] = b;
+        }
+    } else if (TEST == 1) {
 #pragma unroll 1
         for (int c = 0; c < NW; c++) {
             const unsigned b = sp_cu_band_bits(s.conic, s.xy, s.cut, 32 * c, cnt, v.cull, tx, ty, warp,
@@ -117,8 +125,8 @@ __device__ __forceinline__ const unsigned *fwd_band_bits(const fwd_view &v, cons
         }
     } else if (TEST == 2 && SP_FWD_BOX && NT == BLOCK) {
         /* the warp's 8 x 4 box (sp_cu_box_x): its pixel-centre rows and columns, clipped */
-        const int x0 = tx * SP_TILE_SIZE + (warp & 1) * 8, x1 = min(x0 + 7, v.W - 1);
-        const int y0 = ty * SP_TILE_SIZE + (warp >> 1) * 4, y1 = min(y0 + 3, v.H - 1);
+        int x0, x1, y0, y1;
+        sp_cu_box_rect(tx, ty, warp, v.W, v.H, &x0, &x1, &y0, &y1);
         const float cx0 = x0 + 0.5f, cx1 = x1 + 0.5f, cy0 = y0 + 0.5f, cy1 = y1 + 0.5f;
 #pragma unroll 1
         for (int c = 0; c < NW; c++) {
@@ -293,7 +301,10 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     const float *s_z = sh.z, *s_cut = sh.cut, *s_col = sh.col;
 
     const int tid = threadIdx.y * BX + threadIdx.x;
-    const int py_i = ty * SP_TILE_SIZE + threadIdx.y;
+    constexpr bool PBOX = SP_PX_BOX && PX == 2; /* 8 x 8 warp boxes (sp_cu_px2_pixel) */
+    int ox = threadIdx.x, oy = threadIdx.y, step = BX;
+    if (PBOX) sp_cu_px2_pixel(tid, &ox, &oy, &step);
+    const int py_i = ty * SP_TILE_SIZE + oy;
     const float py = py_i + 0.5f;
     const int2 range = v.ranges[ty * v.tiles_x + tx];
 
@@ -302,7 +313,7 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     bool done[PX], all_done = true;
 #pragma unroll
     for (int q = 0; q < PX; q++) {
-        const int px_i = tx * SP_TILE_SIZE + threadIdx.x + q * BX;
+        const int px_i = tx * SP_TILE_SIZE + ox + q * step;
         px[q] = px_i + 0.5f;
         done[q] = !(px_i < v.W && py_i < v.H);
         all_done = all_done && done[q];
@@ -354,7 +365,7 @@ __device__ __forceinline__ void fwd_tile_px(const fwd_view &v, int tx, int ty,
     }
 #pragma unroll
     for (int q = 0; q < PX; q++) {
-        const int px_i = tx * SP_TILE_SIZE + threadIdx.x + q * BX;
+        const int px_i = tx * SP_TILE_SIZE + ox + q * step;
         if (!(px_i < v.W && py_i < v.H)) continue;
         const size_t pix = (size_t)py_i * v.W + px_i;
 #pragma unroll
