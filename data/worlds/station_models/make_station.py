@@ -846,14 +846,14 @@ def waiting_room(out):
 
 def platform(out):
     add = lambda name, pose, vis: out.append(base.model(name, pose, vis))
-    wf = YB + T / 2  # the building's platform face
-    for i, x in enumerate((4.5, 8.5, 15.5, 19.5), 1):
+    wf = YB + T / 2  # the building's platform face; nothing stands beyond the yellow line (y 12.95)
+    for i, x in enumerate((4.5, 8.5, 15.5, 19.0), 1):
         add(f"pillar_{i}", (x, 12.2, 0, N), pillar())
     add("bench_3", (2.0 + 1.3, wf + 0.3, 0, N), bench(1.8, "heritage_green", "oak"))
     add("bench_4", (6.5, wf + 0.3, 0, N), bench(1.8, "heritage_green", "oak"))
     add("bench_5", (17.5, wf + 0.3, 0, N), bench(1.8, "heritage_green", "oak"))
-    add("shelter", (1.4, 12.4, 0, N), shelter())
-    add("bench_6", (1.4, 12.05, 0, N), bench(1.8, "heritage_green", "oak", back=False))  # in the shelter
+    add("shelter", (1.4, 12.3, 0, N), shelter())
+    add("bench_6", (1.4, 11.95, 0, N), bench(1.8, "heritage_green", "oak", back=False))  # in the shelter
     b0, b1 = BARRIERS
     add("departure_board_4", ((b0 + b1) / 2, 12.2, 2.75, N), departure_board(2.0, 0.6, 5, 0.45, True))
     add("clock_3", (8.5, 12.2 - 0.12 - 0.48, 2.9, E), clock(0.3, True, 0, 0.15))  # on a bracket off the pillar
@@ -864,10 +864,10 @@ def platform(out):
     add("litter_bin_8", (4.8, wf + 0.3, 0, N), litter_bin())
     add("litter_bin_9", (16.2, wf + 0.3, 0, N), litter_bin())
     add("recycling_bin_2", (16.3, 12.2, 0, N), recycling_bin())
-    add("luggage_trolley_1", (17.5, 12.6, 0, E), luggage_trolley())
-    add("luggage_trolley_2", (17.5, 13.3, 0, E), luggage_trolley())
-    add("cycle_rack_1", (20.6, 13.1, 0, N), cycle_rack())
-    add("cycle_rack_2", (23.0, 13.1, 0, N), cycle_rack())
+    add("luggage_trolley_1", (17.5, 11.9, 0, E), luggage_trolley())
+    add("luggage_trolley_2", (17.5, 12.55, 0, E), luggage_trolley())
+    add("cycle_rack_1", (20.0, 12.0, 0, N), cycle_rack(2))
+    add("cycle_rack_2", (22.9, 12.0, 0, N), cycle_rack(3))
     add("planter_1", (0.6, wf + 0.3, 0, N), planter())
     add("planter_2", (23.4, wf + 0.3, 0, N), planter())
     add("planter_3", (6.5, 12.2, 0, N), planter())
