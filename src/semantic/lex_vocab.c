@@ -469,9 +469,31 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
         support[s] = sum / (float)(v->n - 1);
         if (support[s] > best) best = support[s];
     }
+    /* a sense that is a part of the same whole as a sense of another class is the one meant:
+     * the parts of a whole stand together (the monitor beside the keyboard is the computer's
+     * display, both parts of a computer in WordNet, not the equipment that checks
+     * transmissions); a whole the scene has as a class is not meant (a capstone is a part of
+     * the walls the scene shows, not a thing standing beside them) */
+    int shared[LEX_MAX_SENSES] = {0}, any_shared = 0;
+    for (int s = 0; s < own; s++)
+        for (int h = 0; h < np->senses[s].n_holo && !shared[s]; h++) {
+            int whole_shown = 0;
+            for (int k = 0; k < v->n && !whole_shown; k++)
+                for (int j = 0; j < v->classes[k].np.n_senses && !whole_shown; j++)
+                    whole_shown = v->classes[k].np.senses[j].off == np->senses[s].holo[h];
+            if (whole_shown) continue;
+            for (int k = 0; k < v->n && !shared[s]; k++) {
+                if (k == ci) continue;
+                const lex_np *o = &v->classes[k].np;
+                for (int j = 0; j < o->n_senses && !shared[s]; j++)
+                    for (int g = 0; g < o->senses[j].n_holo && !shared[s]; g++)
+                        shared[s] = o->senses[j].holo[g] == np->senses[s].holo[h];
+            }
+        }
+    for (int s = 0; s < own; s++) any_shared |= shared[s];
     int kept = 0;
     for (int s = 0; s < np->n_senses; s++)
-        if (s >= own || support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+        if (s >= own || (any_shared ? shared[s] : support[s] >= best - 0.02f)) np->senses[kept++] = np->senses[s];
     np->n_senses = kept;
 }
 
