@@ -119,6 +119,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             if (dup) continue;
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
             tmp->attested = i == 0 || i < tagged;
+            tmp->certain = i < tagged || n == 1;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
             if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp) || lex_sense_animal(tmp) ||

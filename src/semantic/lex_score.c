@@ -1100,6 +1100,56 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
     return rc;
 }
 
+/* The sense of class c that is a part of synset whole (WordNet's part holonyms), or 0. */
+static uint32_t class_part_of(const lex_class *c, uint32_t whole)
+{
+    for (int j = 0; j < c->np.n_senses; j++)
+        for (int h = 0; h < c->np.senses[j].n_holo; h++)
+            if (c->np.senses[j].holo[h] == whole) return c->np.senses[j].off;
+    return 0;
+}
+
+/* A whole the scene does not name stands where its parts do: when two or more classes are parts
+ * of what a commonly used sense of the query's head is (or of a hypernym of it up to two steps:
+ * a PC is a computer), each of those classes matches it through one weak step, LEX_PART, as a
+ * part names its whole ("computer" -> the monitor and the keyboard, both parts of a computer in
+ * WordNet). One part alone says nothing (a keyboard is also part of a piano); the sense must be
+ * one the tagged corpora attest or the word's only one ("bulletin board" is no computer system). In matches
+ * indexed by class (before sorting). */
+static void whole_parts(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph)
+{
+    if (!np->head[0] || np->placeholder) return;
+    for (int i = 0; i < np->n_senses; i++) {
+        const lex_sense *q = &np->senses[i];
+        if (!q->certain) continue;
+        /* a device, a piece of equipment, a system: a building or a room is no whole of this
+         * kind (its walls and doors are not where a "toilet" or a "garage" stands) */
+        int inst = lex_anc_find(q, 3575240u); /* instrumentality.n.03 */
+        if (inst < 0) continue;
+        for (int a = 0; a < q->n_anc; a++) {
+            if (q->anc[a].dist > 2 || q->anc[a].depth <= q->anc[inst].depth) continue;
+            /* two different parts (two kinds of shelf are one part of a cupboard) */
+            uint32_t first = 0;
+            int n = 0;
+            for (int ci = 0; ci < v->n && n < 2; ci++) {
+                uint32_t p = class_part_of(&v->classes[ci], q->anc[a].off);
+                if (p && !first) first = p, n = 1;
+                else if (p && p != first) n = 2;
+            }
+            if (n < 2) continue;
+            for (int ci = 0; ci < v->n; ci++) {
+                sp_lex_class_match *m = &ph->matches[ci];
+                if (m->score >= LEX_PART || !class_part_of(&v->classes[ci], q->anc[a].off)) continue;
+                m->score = LEX_PART;
+                m->kind = SP_LEX_PART;
+                snprintf(m->query_sense, sizeof m->query_sense, "%s", q->anc[0].name);
+                snprintf(m->class_sense, sizeof m->class_sense, "%s", v->classes[ci].name);
+                snprintf(m->path, sizeof m->path, "%s is part of %s", v->classes[ci].name, q->anc[a].name);
+            }
+        }
+    }
+}
+
 static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
                         sp_error *err)
 {
@@ -1116,6 +1166,7 @@ static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *
             if (*p == '_') *p = ' ';
         ph->n_matches = v->n;
         for (int i = 0; i < v->n; i++) score_class(v, np, qp, i, &ph->matches[i], uses + 8 * i);
+        whole_parts(v, np, ph);
         qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
         if (mod_use && v->n) memcpy(mod_use, uses + 8 * ph->matches[0].class_index, sizeof(int) * (size_t)np->n_mods);
     }

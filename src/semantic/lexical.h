@@ -94,6 +94,8 @@ typedef struct lex_sense {
     uint32_t off;
     int rank;              /* sense number of the lemma (1 = commonest) */
     int attested;          /* the first sense, or one the tagged corpora attest */
+    int certain;           /* one the tagged corpora attest, or the word's only sense (the first of
+                            * untagged senses is only WordNet's order) */
     char definition[192];  /* its name is anc[0].name */
     int n_anc;
     lex_anc anc[LEX_MAX_ANC];
