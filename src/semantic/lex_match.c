@@ -308,6 +308,32 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     return any;
 }
 
+/* 1 when a sense of class ci is a room. */
+static int class_is_room(const sp_lex_vocab *v, int ci)
+{
+    const lex_np *np = &v->classes[ci].np;
+    for (int s = 0; s < np->n_senses; s++)
+        if (lex_sense_room(&np->senses[s])) return 1;
+    return 0;
+}
+
+/* Moves class ci to the front of region ph when it is a member at the threshold and the region
+ * is found (its best member at the threshold); 0 when not. */
+static int first_member(sp_lex_phrase *ph, int ci)
+{
+    if (best_of(ph) < SP_LEX_THRESHOLD) return 0;
+    for (int i = 0; i < ph->n_matches; i++) {
+        if (ph->matches[i].class_index != ci) continue;
+        if (ph->matches[i].score < SP_LEX_THRESHOLD) return 0;
+        sp_lex_class_match x = ph->matches[i];
+        if (x.score < ph->matches[0].score) x.score = ph->matches[0].score;
+        memmove(&ph->matches[1], &ph->matches[0], sizeof x * (size_t)i);
+        ph->matches[0] = x;
+        return 1;
+    }
+    return 0;
+}
+
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err)
 {
@@ -710,6 +736,38 @@ static int named_place(const sp_lex_vocab *v, sp_lex_phrase *ph, sp_error *err)
     return rc;
 }
 
+/* A bare word whose commonest sense is a room that the region table knows, met by a class
+ * through another sense ("the toilets": WordNet's first toilet is the room, a bathroom; the
+ * class is the fixture), is the room: its region, that class first among its members, when the
+ * scene shows it (the class a member at the threshold). A modifier keeps the thing ("the white
+ * toilet"), and so does a relation ("the toilet near the bath"). */
+static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_result *res, sp_error *err)
+{
+    sp_lex_phrase *ph = &res->target;
+    if (ph->is_region || !ph->n_matches || ph->matches[0].score < SP_LEX_THRESHOLD ||
+        (ph->matches[0].kind != SP_LEX_EXACT && ph->matches[0].kind != SP_LEX_SYNONYM) ||
+        class_is_room(v, ph->matches[0].class_index))
+        return 0;
+    lex_np np;
+    int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
+    const lex_region *r = NULL;
+    if (!rc && !np.placeholder && !np.n_mods && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
+        lex_sense_room(&np.senses[0]) && (rc = lex_region_named(v, &np, &r, err)) >= 0 && r) {
+        rc = 0;
+        sp_lex_phrase *reg = malloc(sizeof *reg);
+        int is_region = 0;
+        if (!reg) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        else {
+            *reg = *ph;
+            rc = resolve_region(v, &np, t, reg, res, 0, &is_region, err);
+            if (!rc && is_region && first_member(reg, ph->matches[0].class_index)) *ph = *reg;
+            free(reg);
+        }
+    }
+    lex_np_free(&np);
+    return rc < 0 ? rc : 0;
+}
+
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err)
 {
@@ -765,6 +823,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
     if (!rc && !split) rc = named_place(v, &res->target, err);
+    if (!rc && !split && !where) rc = room_reading(v, &t, res, err);
     if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);
