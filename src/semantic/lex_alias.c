@@ -101,9 +101,10 @@ static int names_a_class(const sp_lex_vocab *v, const lex_alias *a)
 /* The longest alias whose words are whole tokens from word p on (a WordNet collocation is not
  * broken up: "laundry cart" is WordNet's, its "cart" no alias) and that names no class of the
  * scene, or NULL. */
-static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p)
+static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p, int *span)
 {
     const lex_alias *best = NULL;
+    *span = 0;
     for (int k = 0; k < v->n_aliases; k++) {
         const lex_alias *a = &v->aliases[k];
         int e = p + a->n_words; /* one past the last word */
@@ -112,7 +113,17 @@ static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int
         int ok = 1;
         for (int j = 0; j < a->n_words && ok; j++)
             ok = j + 1 < a->n_words ? !strcmp(wl->w[p + j], a->words[j]) : word_or_plural(wl->w[p + j], a->words[j]);
-        if (ok && !names_a_class(v, a)) best = a;
+        if (ok && !names_a_class(v, a)) best = a, *span = a->n_words;
+    }
+    /* a name of two words WordNet writes as one ("hand basin", its handbasin, a bowl): the one
+     * word of the query that is the name's words joined is that name */
+    for (int k = 0; !best && k < v->n_aliases; k++) {
+        const lex_alias *a = &v->aliases[k];
+        if (a->n_words < 2 || (p + 1 < wl->n && wl->tok[p + 1] == wl->tok[p]) || (p > 0 && wl->tok[p - 1] == wl->tok[p]))
+            continue;
+        char joined[4 * LEX_WORD] = "";
+        for (int j = 0; j < a->n_words; j++) strncat(joined, a->words[j], sizeof joined - strlen(joined) - 1);
+        if (word_or_plural(wl->w[p], joined) && !names_a_class(v, a)) best = a, *span = 1;
     }
     return best;
 }
@@ -129,9 +140,10 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
     words_of(in, wl);
     out->n = 0;
     for (int p = 0; p < wl->n;) {
-        const lex_alias *a = (p == 0 || wl->tok[p] != wl->tok[p - 1]) ? alias_at(v, wl, p) : NULL;
+        int span = 0;
+        const lex_alias *a = (p == 0 || wl->tok[p] != wl->tok[p - 1]) ? alias_at(v, wl, p, &span) : NULL;
         if (!a || reading >= a->n_targets) { /* its tokens stay as they were */
-            int e = p + (a ? a->n_words : 1);
+            int e = p + (a ? span : 1);
             while (e < wl->n && wl->tok[e] == wl->tok[e - 1]) e++;
             for (int t = wl->tok[p]; t <= wl->tok[e - 1] && out->n < LEX_MAX_TOKENS; t++)
                 snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[t]);
@@ -148,7 +160,7 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
             int k = snprintf(used + o, cap - o, "%s'%s' = %s", o ? "; " : "", name, a->targets[reading]);
             if (k > 0) o += (size_t)k;
         }
-        p += a->n_words;
+        p += span;
         n++;
     }
     if (!n) *out = *in;
@@ -159,8 +171,9 @@ int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out
 {
     word_list words, *wl = &words;
     words_of(in, wl);
-    const lex_alias *a = wl->n ? alias_at(v, wl, 0) : NULL;
-    int rc = a && a->n_words == wl->n, noun = 1;
+    int span = 0;
+    const lex_alias *a = wl->n ? alias_at(v, wl, 0, &span) : NULL;
+    int rc = a && span == wl->n, noun = 1;
     if (rc) lex_tokenize(a->targets[0], out);
     else if (in->n > 1 && (noun = lex_is_pos(v->lx, WN_NOUN, in->w[in->n - 1], err)) < 0) rc = noun;
     else if (in->n > 1 && !noun) {
@@ -169,8 +182,8 @@ int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out
         lex_tokens last = {1, {{0}}}, read;
         snprintf(last.w[0], LEX_WORD, "%s", in->w[in->n - 1]);
         words_of(&last, wl);
-        a = alias_at(v, wl, 0);
-        if ((rc = a && a->n_words == wl->n)) {
+        a = alias_at(v, wl, 0, &span);
+        if ((rc = a && span == wl->n)) {
             *out = *in;
             out->n--;
             lex_tokenize(a->targets[0], &read);
