@@ -88,12 +88,18 @@ static void words_of(const lex_tokens *in, word_list *wl)
  * class by it, not the cash register the table reads the name as). */
 static int names_a_class(const sp_lex_vocab *v, const lex_alias *a)
 {
+    /* the words run together, hyphens dropped ("walk-in fridge" is the "walk in fridge") */
+    char an[4 * LEX_WORD] = "";
+    for (int j = 0; j < a->n_words; j++)
+        for (const char *q = a->words[j]; *q; q++)
+            if (*q != '-' && strlen(an) + 1 < sizeof an) strncat(an, q, 1);
     for (int c = 0; c < v->n; c++) {
         const lex_class *k = &v->classes[c];
-        if (k->n_tok != a->n_words) continue;
-        int same = 1;
-        for (int j = 0; j < a->n_words && same; j++) same = !strcmp(k->tok[j], a->words[j]);
-        if (same) return 1;
+        char kn[8 * LEX_WORD] = "";
+        for (int j = 0; j < k->n_tok; j++)
+            for (const char *q = k->tok[j]; *q; q++)
+                if (*q != '-' && strlen(kn) + 1 < sizeof kn) strncat(kn, q, 1);
+        if (!strcmp(an, kn)) return 1;
     }
     return 0;
 }
@@ -241,12 +247,37 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
     res->found = res->confidence >= SP_LEX_THRESHOLD;
 }
 
+/* A word and a preposition that a class's name holds side by side and WordNet joins with a
+ * hyphen ("walk in" of the "walk in fridge", WordNet's walk-in) are that one word in a query too,
+ * as the class name was read (class_prepare): "walk in fridge" is no walk in a fridge. */
+static void join_name_words(const sp_lex_vocab *v, lex_tokens *t)
+{
+    for (int i = 0; i + 1 < t->n; i++) {
+        if (lex_word_class_of(t->w[i + 1]) != LW_PREP && !lex_is_particle(t->w[i + 1])) continue;
+        int held = 0;
+        for (int c = 0; c < v->n && !held; c++) {
+            const lex_class *k = &v->classes[c];
+            if (!k->joined) continue;
+            for (int j = 0; j + 1 < k->n_tok && !held; j++)
+                held = !strcmp(k->tok[j], t->w[i]) && !strcmp(k->tok[j + 1], t->w[i + 1]);
+        }
+        if (!held) continue;
+        char hy[2 * LEX_WORD + 2];
+        snprintf(hy, sizeof hy, "%s-%s", t->w[i], t->w[i + 1]);
+        if (strlen(hy) >= LEX_WORD) continue;
+        snprintf(t->w[i], LEX_WORD, "%s", hy);
+        memmove(t->w[i + 1], t->w[i + 2], sizeof t->w[0] * (size_t)(t->n - i - 2));
+        t->n--;
+    }
+}
+
 int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
 {
     if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
     lex_tokens raw;
     lex_tokenize(text, &raw);
     lex_way_direction(&raw); /* before the alias readings: "the way out" is the exit, a door */
+    join_name_words(v, &raw);
     if (raw.n == 0) {
         memset(res, 0, sizeof *res);
         return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);

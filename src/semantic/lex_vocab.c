@@ -356,7 +356,28 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     snprintf(c->name, sizeof c->name, "%s", name);
     lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
-    int rc = lex_merge_collocations(lx, &raw, &t, err);
+    /* a name is no relation: a word and a preposition WordNet joins with a hyphen are that one
+     * word ("walk in fridge" is a walk-in fridge, not a walk in a fridge) */
+    lex_tokens joined = raw;
+    int rc = 0;
+    for (int i = 0; i + 2 < joined.n && !rc; i++) {
+        if (lex_word_class_of(joined.w[i + 1]) != LW_PREP && !lex_is_particle(joined.w[i + 1])) continue;
+        char hy[2 * LEX_WORD + 2];
+        snprintf(hy, sizeof hy, "%s-%s", joined.w[i], joined.w[i + 1]);
+        if (strlen(hy) >= LEX_WORD) continue;
+        int is = 0;
+        for (int p = 0; p < 2 && !is && !rc; p++) {
+            int k = lex_is_pos(lx, p == 0 ? WN_NOUN : WN_ADJ, hy, err);
+            if (k < 0) rc = k;
+            else is = k;
+        }
+        if (!is) continue;
+        snprintf(joined.w[i], LEX_WORD, "%s", hy);
+        memmove(joined.w[i + 1], joined.w[i + 2], sizeof joined.w[0] * (size_t)(joined.n - i - 2));
+        joined.n--;
+        c->joined = 1;
+    }
+    if (!rc) rc = lex_merge_collocations(lx, &joined, &t, err);
     if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
     /* a name that is wholly a name of the alias table also means what it usually means indoors
      * ("wheelie bin": a garbage can, its first target), and so does a head WordNet lacks ("hand

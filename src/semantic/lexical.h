@@ -223,6 +223,8 @@ typedef struct lex_class {
     char name[128];
     lex_np np;       /* the class name parsed (physical senses) */
     int spec;        /* its name has noun modifiers beside the head: one level more specific */
+    int joined;      /* its name holds a word and a preposition WordNet writes with a hyphen
+                      * ("walk in fridge": walk-in), read as that one word */
     lex_bag bag;     /* its names and definitions, with hypernyms' */
     int n_tok;
     char tok[8][LEX_WORD]; /* base forms of its name's words */
