@@ -271,6 +271,34 @@ static void join_name_words(const sp_lex_vocab *v, lex_tokens *t)
     }
 }
 
+/* A query that starts with a verb in its base form followed by a determiner (after a particle
+ * or not) is an instruction ("wash my hands", "keep the food cold", "throw away the scraps"):
+ * what it asks for is the thing to do it with, read as "something to wash my hands". */
+static int determiner(const char *w)
+{
+    static const char *const d[] = {"a", "an", "the", "my", "your", "our", "his", "her", "their", "its", "this",
+                                    "these", "those", "some", NULL};
+    for (int i = 0; d[i]; i++)
+        if (!strcmp(w, d[i])) return 1;
+    return 0;
+}
+
+static void imperative(const sp_lex_vocab *v, lex_tokens *t)
+{
+    if (t->n < 3 || t->n + 2 > LEX_MAX_TOKENS || lex_word_class_of(t->w[0]) != LW_CONTENT) return;
+    /* "wash MY hands", "throw away THE scraps"; not "trash can", "roll up door" */
+    if (!determiner(t->w[1]) && !(lex_is_particle(t->w[1]) && t->n > 3 && determiner(t->w[2]))) return;
+    sp_error err = {0};
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(v->lx, WN_VERB, t->w[0], b, &err), base = 0;
+    for (int i = 0; i < nb && !base; i++) base = !strcmp(b[i], t->w[0]);
+    if (!base) return;
+    memmove(t->w[2], t->w[0], sizeof t->w[0] * (size_t)t->n);
+    snprintf(t->w[0], LEX_WORD, "something");
+    snprintf(t->w[1], LEX_WORD, "to");
+    t->n += 2;
+}
+
 int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
 {
     if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
@@ -278,6 +306,7 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
     lex_tokenize(text, &raw);
     lex_way_direction(&raw); /* before the alias readings: "the way out" is the exit, a door */
     join_name_words(v, &raw);
+    imperative(v, &raw);
     if (raw.n == 0) {
         memset(res, 0, sizeof *res);
         return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);
