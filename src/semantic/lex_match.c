@@ -411,6 +411,23 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
 }
 
+/* "the toilet in the restroom": the region the target is in is known by its other things (the
+ * sink, the hand dryer); when the target's class heads the region's members, the next member at
+ * the threshold comes first (an order of the anchor's members; its extent is the same). */
+static void other_member_first(sp_lex_phrase *region, const sp_lex_phrase *target)
+{
+    if (!region->n_matches || !target->n_matches || region->matches[0].class_index != target->matches[0].class_index)
+        return;
+    for (int i = 1; i < region->n_matches; i++) {
+        if (region->matches[i].score < SP_LEX_THRESHOLD) return;
+        if (region->matches[i].class_index == target->matches[0].class_index) continue;
+        sp_lex_class_match x = region->matches[i];
+        memmove(&region->matches[1], &region->matches[0], sizeof x * (size_t)i);
+        region->matches[0] = x;
+        return;
+    }
+}
+
 /* 1 when class ci's name shares a word with class ai's name other than its last (its head). */
 static int shares_modifier(const sp_lex_vocab *v, int ci, int ai)
 {
@@ -812,7 +829,10 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
-        if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
+        if (trial->anchor.is_region) {
+            prefer_members(&trial->target, &trial->anchor);
+            other_member_first(&trial->anchor, &trial->target);
+        }
         else {
             prefer_anchor_named(v, &trial->target, &trial->anchor);
             prefer_company(v, &trial->target, &trial->anchor);
