@@ -135,7 +135,12 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
         if (nb < 0) rc = nb;
         if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0])) continue;
         snprintf(ph->text, sizeof ph->text, "%s", w);
-        if (!(rc = score_text(v, w, ph, err))) *support += lex_region_absorb(out, ph, "WordNet definition");
+        if ((rc = score_text(v, w, ph, err))) break;
+        /* a part the definition names is not what stands there ("a storage compartment ... has
+         * a LOCK": no door) */
+        for (int k = 0; k < ph->n_matches; k++)
+            if (ph->matches[k].kind == SP_LEX_PART) ph->matches[k].score = 0;
+        *support += lex_region_absorb(out, ph, "WordNet definition");
     }
     free(ph);
     return rc;
