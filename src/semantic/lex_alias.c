@@ -236,6 +236,11 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
                         break;
                     }
         }
+    } else if (res->target.is_region && !res->relation[0] && plain(alt) && res->target.n_matches &&
+               alt->target.n_matches && res->found &&
+               res->target.matches[0].class_index == alt->target.matches[0].class_index) {
+        /* the words as written name a region whose first thing is what the alias names ("the
+         * entrance": the entrance, its door first): the region says more */
     } else if (named || alt->confidence > res->confidence) {
         char text[sizeof res->text];
         snprintf(text, sizeof text, "%s", res->text);
