@@ -155,6 +155,7 @@ typedef struct lex_bag_word {
 } lex_bag_word;
 #define LEX_BAG_PATIENT 1
 #define LEX_BAG_AGENT 2
+#define LEX_BAG_PERSON 3 /* a verb of a person's clause ("for those who cannot WALK"): what people do */
 
 typedef struct lex_bag {
     int n, cap;
