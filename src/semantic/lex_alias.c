@@ -88,12 +88,18 @@ static void words_of(const lex_tokens *in, word_list *wl)
  * class by it, not the cash register the table reads the name as). */
 static int names_a_class(const sp_lex_vocab *v, const lex_alias *a)
 {
+    /* the words run together, hyphens dropped ("walk-in fridge" is the "walk in fridge") */
+    char an[4 * LEX_WORD] = "";
+    for (int j = 0; j < a->n_words; j++)
+        for (const char *q = a->words[j]; *q; q++)
+            if (*q != '-' && strlen(an) + 1 < sizeof an) strncat(an, q, 1);
     for (int c = 0; c < v->n; c++) {
         const lex_class *k = &v->classes[c];
-        if (k->n_tok != a->n_words) continue;
-        int same = 1;
-        for (int j = 0; j < a->n_words && same; j++) same = !strcmp(k->tok[j], a->words[j]);
-        if (same) return 1;
+        char kn[8 * LEX_WORD] = "";
+        for (int j = 0; j < k->n_tok; j++)
+            for (const char *q = k->tok[j]; *q; q++)
+                if (*q != '-' && strlen(kn) + 1 < sizeof kn) strncat(kn, q, 1);
+        if (!strcmp(an, kn)) return 1;
     }
     return 0;
 }
@@ -101,9 +107,10 @@ static int names_a_class(const sp_lex_vocab *v, const lex_alias *a)
 /* The longest alias whose words are whole tokens from word p on (a WordNet collocation is not
  * broken up: "laundry cart" is WordNet's, its "cart" no alias) and that names no class of the
  * scene, or NULL. */
-static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p)
+static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int p, int *span)
 {
     const lex_alias *best = NULL;
+    *span = 0;
     for (int k = 0; k < v->n_aliases; k++) {
         const lex_alias *a = &v->aliases[k];
         int e = p + a->n_words; /* one past the last word */
@@ -112,7 +119,17 @@ static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int
         int ok = 1;
         for (int j = 0; j < a->n_words && ok; j++)
             ok = j + 1 < a->n_words ? !strcmp(wl->w[p + j], a->words[j]) : word_or_plural(wl->w[p + j], a->words[j]);
-        if (ok && !names_a_class(v, a)) best = a;
+        if (ok && !names_a_class(v, a)) best = a, *span = a->n_words;
+    }
+    /* a name of two words WordNet writes as one ("hand basin", its handbasin, a bowl): the one
+     * word of the query that is the name's words joined is that name */
+    for (int k = 0; !best && k < v->n_aliases; k++) {
+        const lex_alias *a = &v->aliases[k];
+        if (a->n_words < 2 || (p + 1 < wl->n && wl->tok[p + 1] == wl->tok[p]) || (p > 0 && wl->tok[p - 1] == wl->tok[p]))
+            continue;
+        char joined[4 * LEX_WORD] = "";
+        for (int j = 0; j < a->n_words; j++) strncat(joined, a->words[j], sizeof joined - strlen(joined) - 1);
+        if (word_or_plural(wl->w[p], joined) && !names_a_class(v, a)) best = a, *span = 1;
     }
     return best;
 }
@@ -129,9 +146,10 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
     words_of(in, wl);
     out->n = 0;
     for (int p = 0; p < wl->n;) {
-        const lex_alias *a = (p == 0 || wl->tok[p] != wl->tok[p - 1]) ? alias_at(v, wl, p) : NULL;
+        int span = 0;
+        const lex_alias *a = (p == 0 || wl->tok[p] != wl->tok[p - 1]) ? alias_at(v, wl, p, &span) : NULL;
         if (!a || reading >= a->n_targets) { /* its tokens stay as they were */
-            int e = p + (a ? a->n_words : 1);
+            int e = p + (a ? span : 1);
             while (e < wl->n && wl->tok[e] == wl->tok[e - 1]) e++;
             for (int t = wl->tok[p]; t <= wl->tok[e - 1] && out->n < LEX_MAX_TOKENS; t++)
                 snprintf(out->w[out->n++], LEX_WORD, "%s", in->w[t]);
@@ -148,7 +166,7 @@ int lex_alias_rewrite(const sp_lex_vocab *v, const lex_tokens *in, int reading, 
             int k = snprintf(used + o, cap - o, "%s'%s' = %s", o ? "; " : "", name, a->targets[reading]);
             if (k > 0) o += (size_t)k;
         }
-        p += a->n_words;
+        p += span;
         n++;
     }
     if (!n) *out = *in;
@@ -159,8 +177,9 @@ int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out
 {
     word_list words, *wl = &words;
     words_of(in, wl);
-    const lex_alias *a = wl->n ? alias_at(v, wl, 0) : NULL;
-    int rc = a && a->n_words == wl->n, noun = 1;
+    int span = 0;
+    const lex_alias *a = wl->n ? alias_at(v, wl, 0, &span) : NULL;
+    int rc = a && span == wl->n, noun = 1;
     if (rc) lex_tokenize(a->targets[0], out);
     else if (in->n > 1 && (noun = lex_is_pos(v->lx, WN_NOUN, in->w[in->n - 1], err)) < 0) rc = noun;
     else if (in->n > 1 && !noun) {
@@ -169,8 +188,8 @@ int lex_alias_class(const sp_lex_vocab *v, const lex_tokens *in, lex_tokens *out
         lex_tokens last = {1, {{0}}}, read;
         snprintf(last.w[0], LEX_WORD, "%s", in->w[in->n - 1]);
         words_of(&last, wl);
-        a = alias_at(v, wl, 0);
-        if ((rc = a && a->n_words == wl->n)) {
+        a = alias_at(v, wl, 0, &span);
+        if ((rc = a && span == wl->n)) {
             *out = *in;
             out->n--;
             lex_tokenize(a->targets[0], &read);
@@ -217,6 +236,11 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
                         break;
                     }
         }
+    } else if (res->target.is_region && !res->relation[0] && plain(alt) && res->target.n_matches &&
+               alt->target.n_matches && res->found &&
+               res->target.matches[0].class_index == alt->target.matches[0].class_index) {
+        /* the words as written name a region whose first thing is what the alias names ("the
+         * entrance": the entrance, its door first): the region says more */
     } else if (named || alt->confidence > res->confidence) {
         char text[sizeof res->text];
         snprintf(text, sizeof text, "%s", res->text);
@@ -228,12 +252,66 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
     res->found = res->confidence >= SP_LEX_THRESHOLD;
 }
 
+/* A word and a preposition that a class's name holds side by side and WordNet joins with a
+ * hyphen ("walk in" of the "walk in fridge", WordNet's walk-in) are that one word in a query too,
+ * as the class name was read (class_prepare): "walk in fridge" is no walk in a fridge. */
+static void join_name_words(const sp_lex_vocab *v, lex_tokens *t)
+{
+    for (int i = 0; i + 1 < t->n; i++) {
+        if (lex_word_class_of(t->w[i + 1]) != LW_PREP && !lex_is_particle(t->w[i + 1])) continue;
+        int held = 0;
+        for (int c = 0; c < v->n && !held; c++) {
+            const lex_class *k = &v->classes[c];
+            if (!k->joined) continue;
+            for (int j = 0; j + 1 < k->n_tok && !held; j++)
+                held = !strcmp(k->tok[j], t->w[i]) && !strcmp(k->tok[j + 1], t->w[i + 1]);
+        }
+        if (!held) continue;
+        char hy[2 * LEX_WORD + 2];
+        snprintf(hy, sizeof hy, "%s-%s", t->w[i], t->w[i + 1]);
+        if (strlen(hy) >= LEX_WORD) continue;
+        snprintf(t->w[i], LEX_WORD, "%s", hy);
+        memmove(t->w[i + 1], t->w[i + 2], sizeof t->w[0] * (size_t)(t->n - i - 2));
+        t->n--;
+    }
+}
+
+/* A query that starts with a verb in its base form followed by a determiner (after a particle
+ * or not) is an instruction ("wash my hands", "keep the food cold", "throw away the scraps"):
+ * what it asks for is the thing to do it with, read as "something to wash my hands". */
+static int determiner(const char *w)
+{
+    static const char *const d[] = {"a", "an", "the", "my", "your", "our", "his", "her", "their", "its", "this",
+                                    "these", "those", "some", NULL};
+    for (int i = 0; d[i]; i++)
+        if (!strcmp(w, d[i])) return 1;
+    return 0;
+}
+
+static void imperative(const sp_lex_vocab *v, lex_tokens *t)
+{
+    if (t->n < 3 || t->n + 2 > LEX_MAX_TOKENS || lex_word_class_of(t->w[0]) != LW_CONTENT) return;
+    /* "wash MY hands", "throw away THE scraps"; not "trash can", "roll up door" */
+    if (!determiner(t->w[1]) && !(lex_is_particle(t->w[1]) && t->n > 3 && determiner(t->w[2]))) return;
+    sp_error err = {0};
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(v->lx, WN_VERB, t->w[0], b, &err), base = 0;
+    for (int i = 0; i < nb && !base; i++) base = !strcmp(b[i], t->w[0]);
+    if (!base) return;
+    memmove(t->w[2], t->w[0], sizeof t->w[0] * (size_t)t->n);
+    snprintf(t->w[0], LEX_WORD, "something");
+    snprintf(t->w[1], LEX_WORD, "to");
+    t->n += 2;
+}
+
 int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp_error *err)
 {
     if (!v || !text || !res) return sp_error_set(err, SP_E_ARG, "lexical: missing argument");
     lex_tokens raw;
     lex_tokenize(text, &raw);
     lex_way_direction(&raw); /* before the alias readings: "the way out" is the exit, a door */
+    join_name_words(v, &raw);
+    imperative(v, &raw);
     if (raw.n == 0) {
         memset(res, 0, sizeof *res);
         return sp_error_set(err, SP_E_ARG, "lexical: the query '%s' has no words", text);

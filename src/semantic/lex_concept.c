@@ -228,6 +228,21 @@ int lex_bag_add_lemmas(lex_bag *b, const char *lemmas, float weight, const char 
     return 0;
 }
 
+/* 1 when token i is the verb of a clause on persons: right after "who", or after "who" and an
+ * auxiliary or "not" ("those who cannot walk", "someone who is ill"). */
+static int persons_verb(const lex_tokens *t, int i)
+{
+    static const char *const aux[] = {"can", "cannot", "can't", "could", "do", "does", "did", "not", "will",
+                                      "would", "may", "might", "must", "should", "is", "are", "was", "were", NULL};
+    for (int j = i - 1; j >= 0 && j >= i - 3; j--) {
+        if (!strcmp(t->w[j], "who") || !strcmp(t->w[j], "whom")) return 1;
+        int is_aux = 0;
+        for (int k = 0; aux[k] && !is_aux; k++) is_aux = !strcmp(t->w[j], aux[k]);
+        if (!is_aux) return 0;
+    }
+    return 0;
+}
+
 int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weight, int kind,
                      const char *source, sp_error *err)
 {
@@ -253,14 +268,19 @@ int lex_bag_add_text(const lex_db *lx, lex_bag *b, const char *text, float weigh
         }
         if (agent && (agent = lex_bases(lx, WN_VERB, w, vb, err)) < 0) return agent;
         agent = agent > 0 ? LEX_BAG_AGENT : 0;
-        int rc = bag_put(b, w, weight, src, agent, kind, err);
+        int person = !agent && persons_verb(&t, i);
+        int rc = bag_put(b, w, weight, src, agent ? agent : person ? LEX_BAG_PERSON : 0, kind, err);
         for (int p = 0; p < 3 && !rc; p++) { /* nouns, verbs, adjectives */
             char bases[WN_MAX_BASES][WN_LEMMA_MAX];
             int nb = lex_bases(lx, (wn_pos)p, w, bases, err);
             if (nb < 0) return nb;
             for (int k = 0; k < nb && !rc; k++)
                 rc = bag_put(b, bases[k], weight, src,
-                             agent ? agent : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT : 0, kind, err);
+                             agent                                    ? agent
+                             : person                                 ? LEX_BAG_PERSON
+                             : p == WN_VERB && past_form(w, bases[k]) ? LEX_BAG_PATIENT
+                                                                      : 0,
+                             kind, err);
         }
         if (rc) return rc;
     }

@@ -308,6 +308,32 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     return any;
 }
 
+/* 1 when a sense of class ci is a room. */
+static int class_is_room(const sp_lex_vocab *v, int ci)
+{
+    const lex_np *np = &v->classes[ci].np;
+    for (int s = 0; s < np->n_senses; s++)
+        if (lex_sense_room(&np->senses[s])) return 1;
+    return 0;
+}
+
+/* Moves class ci to the front of region ph when it is a member at the threshold and the region
+ * is found (its best member at the threshold); 0 when not. */
+static int first_member(sp_lex_phrase *ph, int ci)
+{
+    if (best_of(ph) < SP_LEX_THRESHOLD) return 0;
+    for (int i = 0; i < ph->n_matches; i++) {
+        if (ph->matches[i].class_index != ci) continue;
+        if (ph->matches[i].score < SP_LEX_THRESHOLD) return 0;
+        sp_lex_class_match x = ph->matches[i];
+        if (x.score < ph->matches[0].score) x.score = ph->matches[0].score;
+        memmove(&ph->matches[1], &ph->matches[0], sizeof x * (size_t)i);
+        ph->matches[0] = x;
+        return 1;
+    }
+    return 0;
+}
+
 static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to, sp_lex_phrase *ph,
                    sp_lex_result *res, int depth, sp_error *err)
 {
@@ -383,6 +409,23 @@ static void prefer_members(sp_lex_phrase *target, const sp_lex_phrase *region)
         }
     memcpy(target->matches, in, sizeof in[0] * (size_t)ni);
     memcpy(target->matches + ni, out, sizeof out[0] * (size_t)no);
+}
+
+/* "the toilet in the restroom": the region the target is in is known by its other things (the
+ * sink, the hand dryer); when the target's class heads the region's members, the next member at
+ * the threshold comes first (an order of the anchor's members; its extent is the same). */
+static void other_member_first(sp_lex_phrase *region, const sp_lex_phrase *target)
+{
+    if (!region->n_matches || !target->n_matches || region->matches[0].class_index != target->matches[0].class_index)
+        return;
+    for (int i = 1; i < region->n_matches; i++) {
+        if (region->matches[i].score < SP_LEX_THRESHOLD) return;
+        if (region->matches[i].class_index == target->matches[0].class_index) continue;
+        sp_lex_class_match x = region->matches[i];
+        memmove(&region->matches[1], &region->matches[0], sizeof x * (size_t)i);
+        region->matches[0] = x;
+        return;
+    }
 }
 
 /* 1 when class ci's name shares a word with class ai's name other than its last (its head). */
@@ -710,6 +753,38 @@ static int named_place(const sp_lex_vocab *v, sp_lex_phrase *ph, sp_error *err)
     return rc;
 }
 
+/* A bare word whose commonest sense is a room that the region table knows, met by a class
+ * through another sense ("the toilets": WordNet's first toilet is the room, a bathroom; the
+ * class is the fixture), is the room: its region, that class first among its members, when the
+ * scene shows it (the class a member at the threshold). A modifier keeps the thing ("the white
+ * toilet"), and so does a relation ("the toilet near the bath"). */
+static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_result *res, sp_error *err)
+{
+    sp_lex_phrase *ph = &res->target;
+    if (ph->is_region || !ph->n_matches || ph->matches[0].score < SP_LEX_THRESHOLD ||
+        (ph->matches[0].kind != SP_LEX_EXACT && ph->matches[0].kind != SP_LEX_SYNONYM) ||
+        class_is_room(v, ph->matches[0].class_index))
+        return 0;
+    lex_np np;
+    int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
+    const lex_region *r = NULL;
+    if (!rc && !np.placeholder && !np.n_mods && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
+        lex_sense_room(&np.senses[0]) && (rc = lex_region_named(v, &np, &r, err)) >= 0 && r) {
+        rc = 0;
+        sp_lex_phrase *reg = malloc(sizeof *reg);
+        int is_region = 0;
+        if (!reg) rc = sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        else {
+            *reg = *ph;
+            rc = resolve_region(v, &np, t, reg, res, 0, &is_region, err);
+            if (!rc && is_region && first_member(reg, ph->matches[0].class_index)) *ph = *reg;
+            free(reg);
+        }
+    }
+    lex_np_free(&np);
+    return rc < 0 ? rc : 0;
+}
+
 int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens *raw,
                       sp_lex_result *res, sp_error *err)
 {
@@ -754,7 +829,10 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         if (best_of(&trial->anchor) < SP_LEX_THRESHOLD) continue;
         snprintf(trial->text, sizeof trial->text, "%s", text);
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
-        if (trial->anchor.is_region) prefer_members(&trial->target, &trial->anchor);
+        if (trial->anchor.is_region) {
+            prefer_members(&trial->target, &trial->anchor);
+            other_member_first(&trial->anchor, &trial->target);
+        }
         else {
             prefer_anchor_named(v, &trial->target, &trial->anchor);
             prefer_company(v, &trial->target, &trial->anchor);
@@ -765,6 +843,7 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
     free(trial);
     if (!rc && !split) rc = resolve(v, &t, 0, t.n, &res->target, res, 0, err);
     if (!rc && !split) rc = named_place(v, &res->target, err);
+    if (!rc && !split && !where) rc = room_reading(v, &t, res, err);
     if (!rc && where && !split && best_of(&res->target) < SP_LEX_THRESHOLD) rc = where_description(v, raw, res, err);
     if (rc) return rc;
     res->confidence = best_of(&res->target);

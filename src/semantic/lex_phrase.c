@@ -119,6 +119,7 @@ static int load_senses(const lex_db *lx, const char *lemma, int physical_only, i
             if (dup) continue;
             if ((rc = lex_sense_load(lx, offs[i], i + 1, tmp, err))) break;
             tmp->attested = i == 0 || i < tagged;
+            tmp->certain = i < tagged || n == 1;
             /* a class names a kind of thing, not a named individual (the Monitor, a ship) */
             if (physical_only && (!lex_sense_physical(tmp) || tmp->instance)) continue;
             if ((no_person & 1) && (lex_sense_person(tmp) || lex_sense_process(tmp) || lex_sense_animal(tmp) ||
@@ -224,7 +225,10 @@ static int head_senses(const lex_db *lx, const char *w, int physical_only, lex_n
             if (lex_sense_artifact(&np->senses[i]) && !lex_sense_room(&np->senses[i])) no_person |= 2;
         }
     }
-    if (!rc) rc = load_senses(lx, h, physical_only, physical_only, no_person, np, err);
+    /* a closed compound WordNet lacks ("whiteboard") is built on a common sense of its last
+     * word: the senses the corpora attest (no "board" that is a dining table) */
+    if (!rc) rc = load_senses(lx, h, physical_only, physical_only || np->split, no_person, np, err);
+    if (!rc && !physical_only && np->split && np->n_senses == 0) rc = load_senses(lx, h, 0, 0, no_person, np, err);
     /* attested senses that are neither artifacts nor living things ("radiator": any object that
      * radiates energy) while the name also names artifacts (the heater, the car's radiator): a
      * class is a thing made to stand there, its artifact senses are chosen by context */

@@ -16,19 +16,53 @@
  * class matches only with a modifier ignored (the TV stand is a rack, but no tool rack), the
  * scene lacks that kind and the phrase supports nothing (two such phrases made a storage room
  * or a laundry of any TV stand and trash can). */
-static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
+static int score_tokens(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_phrase *ph, int member, sp_error *err)
+{
+    lex_np np;
+    int use[8] = {0};
+    int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
+    if (!rc) rc = lex_score_np(v, &np, ph, use, err);
+    for (int i = 0; !rc && i < np.n_mods && i < 8; i++)
+        if (use[i] == LEX_MOD_IGNORED) ph->n_matches = 0;
+    /* a member names an object: with no noun for a head it is no description to match against
+     * every definition ("shelving unit" without the alias table is the verb shelve) */
+    if (!rc && member && (!np.head[0] || np.placeholder)) ph->n_matches = 0;
+    lex_np_free(&np);
+    return rc;
+}
+
+/* ... a member of the region table read as a query is: as written and through the alias table
+ * ("shelving" = shelf), each class at its best reading, never as a description. */
+static int score_text_as(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, int member, sp_error *err)
 {
     lex_tokens raw, t;
     lex_tokenize(text, &raw);
     int rc = lex_merge_collocations(v->lx, &raw, &t, err);
-    lex_np np;
-    int use[8] = {0};
-    if (!rc) rc = lex_np_parse(v->lx, &t, 0, t.n, 0, &np, err);
-    if (!rc) rc = lex_score_np(v, &np, ph, use, err);
-    for (int i = 0; !rc && i < np.n_mods && i < 8; i++)
-        if (use[i] == LEX_MOD_IGNORED) ph->n_matches = 0;
-    lex_np_free(&np);
+    if (!rc) rc = score_tokens(v, &t, ph, member, err);
+    sp_lex_phrase *alt = NULL;
+    for (int k = 0; member && k < 3 && !rc; k++) {
+        lex_tokens a;
+        if (lex_alias_rewrite(v, &t, k, &a, NULL, 0) == 0) break;
+        if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+        if ((rc = score_tokens(v, &a, alt, member, err))) break;
+        for (int i = 0; i < alt->n_matches; i++) {
+            int found = 0;
+            for (int j = 0; j < ph->n_matches && !found; j++)
+                if (ph->matches[j].class_index == alt->matches[i].class_index) {
+                    found = 1;
+                    if (alt->matches[i].score > ph->matches[j].score) ph->matches[j] = alt->matches[i];
+                }
+            if (!found && ph->n_matches < SP_LEX_MAX_CLASSES) ph->matches[ph->n_matches++] = alt->matches[i];
+        }
+        qsort(ph->matches, (size_t)ph->n_matches, sizeof ph->matches[0], lex_match_cmp);
+    }
+    free(alt);
     return rc;
+}
+
+static int score_text(const sp_lex_vocab *v, const char *text, sp_lex_phrase *ph, sp_error *err)
+{
+    return score_text_as(v, text, ph, 0, err);
 }
 
 /* Raises the membership of every class matching ph at or above the threshold (region->matches
@@ -77,7 +111,7 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
     int rc = 0;
     for (int i = 0; r && i < r->n_members && !rc; i++) {
         snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
-        if ((rc = score_text(v, r->members[i], ph, err))) break;
+        if ((rc = score_text_as(v, r->members[i], ph, 1, err))) break;
         /* the table lists a place's defining objects first (the entrance: its door before the
          * coat rack): among members that match equally, the earlier comes first (LEX_TIE, an
          * order, not evidence) */
@@ -101,7 +135,12 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
         if (nb < 0) rc = nb;
         if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0])) continue;
         snprintf(ph->text, sizeof ph->text, "%s", w);
-        if (!(rc = score_text(v, w, ph, err))) *support += lex_region_absorb(out, ph, "WordNet definition");
+        if ((rc = score_text(v, w, ph, err))) break;
+        /* a part the definition names is not what stands there ("a storage compartment ... has
+         * a LOCK": no door) */
+        for (int k = 0; k < ph->n_matches; k++)
+            if (ph->matches[k].kind == SP_LEX_PART) ph->matches[k].score = 0;
+        *support += lex_region_absorb(out, ph, "WordNet definition");
     }
     free(ph);
     return rc;

@@ -30,17 +30,27 @@ static void exp_add(expansion *e, const char *w, float f)
     e->f[e->n++] = f;
 }
 
+/* 1 when synset s is the commonest sense of lemma w: a synonym stands in for the word only
+ * where it would be read so ("pee" -> "water" of the urine synset: a definition's "water" is
+ * the liquid, not urine). */
+static int commonest_of(const lex_db *lx, const char *w, const wn_synset *s)
+{
+    uint32_t off;
+    sp_error err = {0};
+    return lx && wn_lookup(lx->db, (wn_pos)s->id.pos, w, &off, 1, NULL, &err) == 1 && off == s->id.offset;
+}
+
 /* Adds the single-word lemmas of synset s at f (lower case); heads: and the last word of the
- * others ("low_temperature" -> temperature). */
-static void exp_add_words(expansion *e, const wn_synset *s, float f, int heads)
+ * others ("low_temperature" -> temperature); lx: only lemmas whose commonest sense s is. */
+static void exp_add_words(const lex_db *lx, expansion *e, const wn_synset *s, float f, int heads)
 {
     for (int k = 0; k < s->n_words; k++) {
         char w[WN_LEMMA_MAX];
         snprintf(w, sizeof w, "%s", s->words[k]);
         for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
         const char *last = strrchr(w, '_');
-        if (!last) exp_add(e, w, f);
-        else if (heads) exp_add(e, last + 1, f);
+        if (!last && (!lx || commonest_of(lx, w, s))) exp_add(e, w, f);
+        else if (last && heads) exp_add(e, last + 1, f);
     }
 }
 
@@ -50,7 +60,7 @@ static int exp_add_synset(const lex_db *lx, wn_id id, expansion *e, float f, sp_
     wn_synset s;
     int rc = wn_read(lx->db, id, &s, err);
     if (rc) return rc;
-    exp_add_words(e, &s, f, 1);
+    exp_add_words(NULL, e, &s, f, 1);
     wn_synset_free(&s);
     return 0;
 }
@@ -96,7 +106,7 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
         wn_id id = {off, (uint8_t)p};
         int rc = wn_read(lx->db, id, &s, err);
         if (rc) return rc;
-        exp_add_words(e, &s, LEX_SYN, 0);
+        exp_add_words(lx, e, &s, LEX_SYN, 0);
         /* a verb's commonest sense also by the nouns WordNet derives from it ("+": type ->
          * typewriter, store -> storage), the same one weak step */
         for (int k = 0; p == WN_VERB && k < s.n_pointers && !rc; k++) {
@@ -104,7 +114,8 @@ static int expand(const lex_db *lx, const char *word, expansion *e, sp_error *er
             if (strcmp(pt->symbol, "+") || pt->target.pos != WN_NOUN || !pt->target_word) continue;
             wn_synset ns;
             if ((rc = wn_read(lx->db, pt->target, &ns, err))) break;
-            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_')) {
+            if (pt->target_word <= ns.n_words && !strchr(ns.words[pt->target_word - 1], '_') &&
+                commonest_of(lx, ns.words[pt->target_word - 1], &ns)) {
                 char w[WN_LEMMA_MAX];
                 snprintf(w, sizeof w, "%s", ns.words[pt->target_word - 1]);
                 for (char *q = w; *q; q++) *q = (char)(*q >= 'A' && *q <= 'Z' ? *q - 'A' + 'a' : *q);
@@ -141,20 +152,70 @@ static float bag_match(const lex_class *c, const expansion *e, const char *word,
     return best;
 }
 
-/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT). */
+/* Gloss overlap G = sum_d w_d m_d / sum_d w_d; pf scales patient entries (see LEX_PATIENT).
+ * A kind's definition (one level down, change 46) is evidence of one kind: words found in two
+ * kinds' definitions describe two different things ("what heats the house": the double
+ * glazing's "heat" and the bay window's "house" make no window that heats a house), so m_d is
+ * the best of the class's own entries and those of the one kind that explains the most. */
+typedef struct {
+    short src, word;
+    float v;
+} kind_hit;
+
 static float gloss_overlap(const lex_class *c, const expansion *exps, const float *w, int n,
                            const char (*words)[LEX_WORD], float pf, float af, char *why, size_t cap)
 {
-    float num = 0, den = 0;
-    size_t o = 0;
-    if (why && cap) why[0] = 0;
+    float own[24] = {0}, den = 0;
+    int own_src[24];
+    kind_hit kh[256];
+    int nk = 0;
+    if (n > 24) n = 24;
     for (int i = 0; i < n; i++) {
-        char one[256];
-        float m = bag_match(c, &exps[i], words[i], pf, af, 0, one, sizeof one);
-        num += w[i] * m;
+        own_src[i] = -1;
         den += w[i];
-        if (m > 0 && why && o + 1 < cap) {
-            int k = snprintf(why + o, cap - o, "%s%s", o ? "; " : "", one);
+        for (int k = 0; k < exps[i].n; k++)
+            for (int b = 0; b < c->bag.n; b++) {
+                const lex_bag_word *e = &c->bag.words[b];
+                /* one indirection at most: a synonym counts in the class's own definition only */
+                if ((exps[i].f[k] < 1.0f && e->weight < 1.0f) || strcmp(e->w, exps[i].w[k])) continue;
+                float f = e->patient == LEX_BAG_PATIENT ? pf : e->patient == LEX_BAG_AGENT ? af : 1.0f;
+                float v = e->weight * f * exps[i].f[k];
+                if (!e->kind) {
+                    if (v > own[i]) own[i] = v, own_src[i] = e->src;
+                    continue;
+                }
+                int j = 0;
+                while (j < nk && (kh[j].src != e->src || kh[j].word != i)) j++;
+                if (j == nk && nk < 256) kh[nk++] = (kind_hit){e->src, (short)i, 0};
+                if (j < nk && v > kh[j].v) kh[j].v = v;
+            }
+    }
+    float num = 0;
+    for (int i = 0; i < n; i++) num += w[i] * own[i];
+    int best_src = -1;
+    for (int j = 0; j < nk; j++) { /* each kind that some word was found in */
+        int seen = 0;
+        for (int q = 0; q < j; q++) seen |= kh[q].src == kh[j].src;
+        if (seen) continue;
+        float t = 0;
+        for (int i = 0; i < n; i++) {
+            float m = own[i];
+            for (int q = j; q < nk; q++)
+                if (kh[q].src == kh[j].src && kh[q].word == i && kh[q].v > m) m = kh[q].v;
+            t += w[i] * m;
+        }
+        if (t > num) num = t, best_src = kh[j].src;
+    }
+    if (why && cap) {
+        size_t o = 0;
+        why[0] = 0;
+        for (int i = 0; i < n && o + 1 < cap; i++) {
+            int src = own_src[i];
+            float m = own[i];
+            for (int q = 0; q < nk; q++)
+                if (kh[q].src == best_src && kh[q].word == i && kh[q].v > m) m = kh[q].v, src = best_src;
+            if (m <= 0 || src < 0) continue;
+            int k = snprintf(why + o, cap - o, "%s%s (%s)", o ? "; " : "", words[i], c->bag.src[src]);
             if (k > 0) o += (size_t)k;
         }
     }
@@ -505,6 +566,22 @@ static int prepare(const sp_lex_vocab *v, const lex_np *np, query_prep *qp, sp_e
  * verb (base or -ing form, not the past participle: "pictures can be PROJECTED" is no projector)
  * is one weak step (DELTA) away, times the share of the query's modifiers its definitions name.
  * Returns the score; why gets the evidence, used[i] whether modifier i was found. */
+/* 1 when the class's own definitions say the thing does verb: not as what it is acted on (a
+ * participle) nor as what its users do ("a wheelchair: ... for those who cannot WALK" is no
+ * walker). */
+static int agent_entry(const lex_bag *b, const char *verb, int *src)
+{
+    for (int i = 0; i < b->n; i++) {
+        const lex_bag_word *e = &b->words[i];
+        if (e->weight >= 1.0f && e->patient != LEX_BAG_PATIENT && e->patient != LEX_BAG_PERSON &&
+            !strcmp(e->w, verb)) {
+            *src = e->src;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static float agent_score(const lex_class *c, const lex_np *np, const query_prep *qp, int *used, char *why,
                          size_t cap)
 {
@@ -512,7 +589,7 @@ static float agent_score(const lex_class *c, const lex_np *np, const query_prep 
     for (int a = 0; a < qp->n_agent && src < 0; a++) {
         char one[1][WN_LEMMA_MAX];
         snprintf(one[0], WN_LEMMA_MAX, "%s", qp->agent[a]);
-        if (lex_bag_find(&c->bag, one, 1, 1.0f, 0.0f, 1.0f, 0, &src) <= 0) src = -1;
+        if (!agent_entry(&c->bag, qp->agent[a], &src)) src = -1;
         else if (why) snprintf(why, cap, "%s '%s' (%s)", np->head, qp->agent[a], c->bag.src[src]);
     }
     if (src < 0) return 0;
@@ -1100,6 +1177,56 @@ int lex_score_np(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int
     return rc;
 }
 
+/* The sense of class c that is a part of synset whole (WordNet's part holonyms), or 0. */
+static uint32_t class_part_of(const lex_class *c, uint32_t whole)
+{
+    for (int j = 0; j < c->np.n_senses; j++)
+        for (int h = 0; h < c->np.senses[j].n_holo; h++)
+            if (c->np.senses[j].holo[h] == whole) return c->np.senses[j].off;
+    return 0;
+}
+
+/* A whole the scene does not name stands where its parts do: when two or more classes are parts
+ * of what a commonly used sense of the query's head is (or of a hypernym of it up to two steps:
+ * a PC is a computer), each of those classes matches it through one weak step, LEX_PART, as a
+ * part names its whole ("computer" -> the monitor and the keyboard, both parts of a computer in
+ * WordNet). One part alone says nothing (a keyboard is also part of a piano); the sense must be
+ * one the tagged corpora attest or the word's only one ("bulletin board" is no computer system). In matches
+ * indexed by class (before sorting). */
+static void whole_parts(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph)
+{
+    if (!np->head[0] || np->placeholder) return;
+    for (int i = 0; i < np->n_senses; i++) {
+        const lex_sense *q = &np->senses[i];
+        if (!q->certain) continue;
+        /* a device, a piece of equipment, a system: a building or a room is no whole of this
+         * kind (its walls and doors are not where a "toilet" or a "garage" stands) */
+        int inst = lex_anc_find(q, 3575240u); /* instrumentality.n.03 */
+        if (inst < 0) continue;
+        for (int a = 0; a < q->n_anc; a++) {
+            if (q->anc[a].dist > 2 || q->anc[a].depth <= q->anc[inst].depth) continue;
+            /* two different parts (two kinds of shelf are one part of a cupboard) */
+            uint32_t first = 0;
+            int n = 0;
+            for (int ci = 0; ci < v->n && n < 2; ci++) {
+                uint32_t p = class_part_of(&v->classes[ci], q->anc[a].off);
+                if (p && !first) first = p, n = 1;
+                else if (p && p != first) n = 2;
+            }
+            if (n < 2) continue;
+            for (int ci = 0; ci < v->n; ci++) {
+                sp_lex_class_match *m = &ph->matches[ci];
+                if (m->score >= LEX_PART || !class_part_of(&v->classes[ci], q->anc[a].off)) continue;
+                m->score = LEX_PART;
+                m->kind = SP_LEX_PART;
+                snprintf(m->query_sense, sizeof m->query_sense, "%s", q->anc[0].name);
+                snprintf(m->class_sense, sizeof m->class_sense, "%s", v->classes[ci].name);
+                snprintf(m->path, sizeof m->path, "%s is part of %s", v->classes[ci].name, q->anc[a].name);
+            }
+        }
+    }
+}
+
 static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *ph, int *mod_use,
                         sp_error *err)
 {
@@ -1116,6 +1243,7 @@ static int score_senses(const sp_lex_vocab *v, const lex_np *np, sp_lex_phrase *
             if (*p == '_') *p = ' ';
         ph->n_matches = v->n;
         for (int i = 0; i < v->n; i++) score_class(v, np, qp, i, &ph->matches[i], uses + 8 * i);
+        whole_parts(v, np, ph);
         qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
         if (mod_use && v->n) memcpy(mod_use, uses + 8 * ph->matches[0].class_index, sizeof(int) * (size_t)np->n_mods);
     }

@@ -356,7 +356,28 @@ static int class_prepare(const sp_lex_vocab *v, lex_class *c, const char *name, 
     snprintf(c->name, sizeof c->name, "%s", name);
     lex_tokens raw, t, read;
     lex_tokenize(name, &raw);
-    int rc = lex_merge_collocations(lx, &raw, &t, err);
+    /* a name is no relation: a word and a preposition WordNet joins with a hyphen are that one
+     * word ("walk in fridge" is a walk-in fridge, not a walk in a fridge) */
+    lex_tokens joined = raw;
+    int rc = 0;
+    for (int i = 0; i + 2 < joined.n && !rc; i++) {
+        if (lex_word_class_of(joined.w[i + 1]) != LW_PREP && !lex_is_particle(joined.w[i + 1])) continue;
+        char hy[2 * LEX_WORD + 2];
+        snprintf(hy, sizeof hy, "%s-%s", joined.w[i], joined.w[i + 1]);
+        if (strlen(hy) >= LEX_WORD) continue;
+        int is = 0;
+        for (int p = 0; p < 2 && !is && !rc; p++) {
+            int k = lex_is_pos(lx, p == 0 ? WN_NOUN : WN_ADJ, hy, err);
+            if (k < 0) rc = k;
+            else is = k;
+        }
+        if (!is) continue;
+        snprintf(joined.w[i], LEX_WORD, "%s", hy);
+        memmove(joined.w[i + 1], joined.w[i + 2], sizeof joined.w[0] * (size_t)(joined.n - i - 2));
+        joined.n--;
+        c->joined = 1;
+    }
+    if (!rc) rc = lex_merge_collocations(lx, &joined, &t, err);
     if (!rc) rc = lex_np_parse(lx, &t, 0, t.n, 1, &c->np, err);
     /* a name that is wholly a name of the alias table also means what it usually means indoors
      * ("wheelie bin": a garbage can, its first target), and so does a head WordNet lacks ("hand
@@ -469,9 +490,31 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
         support[s] = sum / (float)(v->n - 1);
         if (support[s] > best) best = support[s];
     }
+    /* a sense that is a part of the same whole as a sense of another class is the one meant:
+     * the parts of a whole stand together (the monitor beside the keyboard is the computer's
+     * display, both parts of a computer in WordNet, not the equipment that checks
+     * transmissions); a whole the scene has as a class is not meant (a capstone is a part of
+     * the walls the scene shows, not a thing standing beside them) */
+    int shared[LEX_MAX_SENSES] = {0}, any_shared = 0;
+    for (int s = 0; s < own; s++)
+        for (int h = 0; h < np->senses[s].n_holo && !shared[s]; h++) {
+            int whole_shown = 0;
+            for (int k = 0; k < v->n && !whole_shown; k++)
+                for (int j = 0; j < v->classes[k].np.n_senses && !whole_shown; j++)
+                    whole_shown = v->classes[k].np.senses[j].off == np->senses[s].holo[h];
+            if (whole_shown) continue;
+            for (int k = 0; k < v->n && !shared[s]; k++) {
+                if (k == ci) continue;
+                const lex_np *o = &v->classes[k].np;
+                for (int j = 0; j < o->n_senses && !shared[s]; j++)
+                    for (int g = 0; g < o->senses[j].n_holo && !shared[s]; g++)
+                        shared[s] = o->senses[j].holo[g] == np->senses[s].holo[h];
+            }
+        }
+    for (int s = 0; s < own; s++) any_shared |= shared[s];
     int kept = 0;
     for (int s = 0; s < np->n_senses; s++)
-        if (s >= own || support[s] >= best - 0.02f) np->senses[kept++] = np->senses[s];
+        if (s >= own || (any_shared ? shared[s] : support[s] >= best - 0.02f)) np->senses[kept++] = np->senses[s];
     np->n_senses = kept;
 }
 

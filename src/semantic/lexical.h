@@ -94,6 +94,8 @@ typedef struct lex_sense {
     uint32_t off;
     int rank;              /* sense number of the lemma (1 = commonest) */
     int attested;          /* the first sense, or one the tagged corpora attest */
+    int certain;           /* one the tagged corpora attest, or the word's only sense (the first of
+                            * untagged senses is only WordNet's order) */
     char definition[192];  /* its name is anc[0].name */
     int n_anc;
     lex_anc anc[LEX_MAX_ANC];
@@ -153,6 +155,7 @@ typedef struct lex_bag_word {
 } lex_bag_word;
 #define LEX_BAG_PATIENT 1
 #define LEX_BAG_AGENT 2
+#define LEX_BAG_PERSON 3 /* a verb of a person's clause ("for those who cannot WALK"): what people do */
 
 typedef struct lex_bag {
     int n, cap;
@@ -221,6 +224,8 @@ typedef struct lex_class {
     char name[128];
     lex_np np;       /* the class name parsed (physical senses) */
     int spec;        /* its name has noun modifiers beside the head: one level more specific */
+    int joined;      /* its name holds a word and a preposition WordNet writes with a hyphen
+                      * ("walk in fridge": walk-in), read as that one word */
     lex_bag bag;     /* its names and definitions, with hypernyms' */
     int n_tok;
     char tok[8][LEX_WORD]; /* base forms of its name's words */

@@ -49,8 +49,9 @@
  * they are development data too, with floors. The library (phrases_library.json,
  * data/worlds/library.world: a public library with its children's corner and workroom, by
  * w18-blind) and the restaurant (phrases_restaurant.json, data/worlds/restaurant.world: dining
- * room, bar, kitchen, store and office, by w19-blind) are printed after the floors with no bar;
- * their first runs on phase 13, which never saw them, are in phrases_*_first_run.txt. Run with an argument
+ * room, bar, kitchen, store and office, by w19-blind) were first run on phase 13, which never
+ * saw them (phrases_*_first_run.txt); since phase 14 (l16-lexical) they are development data too,
+ * with floors. Run with an argument
  * (house | bookstore | office | ward | garage | cafe | basement | classroom | hotel | grocery |
  * chemlab | pharmacy | salon | warehouse | apartment | hospital | smallhouse | gym | museum | library | restaurant) to
  * print every phrase of one table, and a query after it to print its explanation. */
@@ -851,14 +852,17 @@ int main(int argc, char **argv)
      * are development data too and get floors just under their figures (hospital 229/302 and
      * 47/53, small house 288/349 and 40/55, gym 178/229 and 24/32, museum 180/232 and 39/41 when
      * set); the grocery's 0.85 holds at 171/200 */
+    /* phase 14 (l16-lexical) read the library's and the restaurant's misses: they are development
+     * data too and get floors just under their figures (library 287/394 and 51/58, restaurant
+     * 305/393 and 45/50 when set); the other floors stand */
     const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.89, 0.82, 0.88, 0.86, 0.85, 0.85, 0.74, 0.78, 0.82, 0.79, 0.81,
-                               0.75, 0.82, 0.77, 0.77},
+                               0.75, 0.82, 0.77, 0.77, 0.72, 0.77},
                  floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.85, 0.96, 0.87, 0.97, 0.94, 0.97, 0.92, 0.85, 0.9,
-                                   0.88, 0.72, 0.75, 0.95};
+                                   0.88, 0.72, 0.75, 0.95, 0.87, 0.89};
     const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= n_floors) continue; /* a table added later: printed, no bar (library, restaurant) */
+        if (w >= n_floors) continue; /* a table added later: printed, no bar */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
