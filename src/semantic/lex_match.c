@@ -757,7 +757,7 @@ static int named_place(const sp_lex_vocab *v, sp_lex_phrase *ph, sp_error *err)
  * through another sense ("the toilets": WordNet's first toilet is the room, a bathroom; the
  * class is the fixture), is the room: its region, that class first among its members, when the
  * scene shows it (the class a member at the threshold). A modifier keeps the thing ("the white
- * toilet"), and so does a relation ("the toilet near the bath"). */
+ * toilet"), and so does a relation ("the toilet near the bath"), and the class's own name. */
 static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_result *res, sp_error *err)
 {
     sp_lex_phrase *ph = &res->target;
@@ -765,6 +765,11 @@ static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_resul
         (ph->matches[0].kind != SP_LEX_EXACT && ph->matches[0].kind != SP_LEX_SYNONYM) ||
         class_is_room(v, ph->matches[0].class_index))
         return 0;
+    /* the class's own name as written, singular ("toilet", "the toilet"), is the thing: the
+     * robot is sent to it, not to the middle of its room */
+    const char *last = strrchr(res->text, ' ');
+    last = last ? last + 1 : res->text;
+    if (!strcasecmp(last, sp_lex_vocab_class(v, ph->matches[0].class_index))) return 0;
     lex_np np;
     int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
     const lex_region *r = NULL;
