@@ -101,6 +101,13 @@ static int definition_genus(const lex_db *lx, const lex_tokens *t, int *genus, s
     return 0;
 }
 
+/* The surfaces every room has ("a small area set off by WALLS", "the FLOOR of a hall"): they
+ * define no room, so a definition naming them adds no member. */
+static int building_surface(const char *base)
+{
+    return !strcmp(base, "wall") || !strcmp(base, "floor") || !strcmp(base, "ceiling");
+}
+
 /* Members of a named region: the table's phrases and the nouns of its WordNet definition;
  * *support counts the phrases that found a class. */
 static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
@@ -133,7 +140,9 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
         char base[WN_MAX_BASES][WN_LEMMA_MAX];
         int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
         if (nb < 0) rc = nb;
-        if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0])) continue;
+        if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0]) ||
+            building_surface(base[0]))
+            continue;
         snprintf(ph->text, sizeof ph->text, "%s", w);
         if ((rc = score_text(v, w, ph, err))) break;
         /* a part the definition names is not what stands there ("a storage compartment ... has
