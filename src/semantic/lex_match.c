@@ -64,8 +64,7 @@ static int region_by_mods(const lex_np *np, const lex_region *r)
 
 /* *names = 1 when np's modifiers, read alone as an object phrase, name a class of the scene by
  * its name or a synonym at the threshold. */
-static int mods_name_classes(const sp_lex_vocab *v, const lex_np *np, sp_lex_result *res, int depth, int *names,
-                             sp_error *err)
+static int mods_name_classes(const sp_lex_vocab *v, const lex_np *np, int depth, int *names, sp_error *err)
 {
     *names = 0;
     lex_tokens ct = {0, {{0}}};
@@ -76,7 +75,6 @@ static int mods_name_classes(const sp_lex_vocab *v, const lex_np *np, sp_lex_res
     if (!rc && !sub->is_region && sub->n_matches && sub->matches[0].score >= SP_LEX_THRESHOLD &&
         (sub->matches[0].kind == SP_LEX_EXACT || sub->matches[0].kind == SP_LEX_SYNONYM))
         *names = 1;
-    (void)res;
     free(sub);
     return rc;
 }
@@ -118,7 +116,7 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     if (!generic && depth == 0 && np->n_mods > 0 && !np->placeholder && !np->n_desc && lex_place_head(np) &&
         !(r && region_by_mods(np, r))) {
         int names = 0;
-        if ((rc = mods_name_classes(v, np, res, depth, &names, err))) return rc;
+        if ((rc = mods_name_classes(v, np, depth, &names, err))) return rc;
         if (names) table = 0, r = NULL, def = NULL, generic = 1;
     }
     if (table && by_wordnet_room) {
@@ -308,6 +306,14 @@ static int category_reading(const sp_lex_vocab *v, const lex_np *np, sp_lex_phra
     return any;
 }
 
+/* Moves m[i] to the front, the matches before it one place back (an order, the scores kept). */
+static void match_to_front(sp_lex_class_match *m, int i)
+{
+    sp_lex_class_match x = m[i];
+    memmove(&m[1], &m[0], sizeof x * (size_t)i);
+    m[0] = x;
+}
+
 /* 1 when a sense of class ci is a room. */
 static int class_is_room(const sp_lex_vocab *v, int ci)
 {
@@ -325,10 +331,8 @@ static int first_member(sp_lex_phrase *ph, int ci)
     for (int i = 0; i < ph->n_matches; i++) {
         if (ph->matches[i].class_index != ci) continue;
         if (ph->matches[i].score < SP_LEX_THRESHOLD) return 0;
-        sp_lex_class_match x = ph->matches[i];
-        if (x.score < ph->matches[0].score) x.score = ph->matches[0].score;
-        memmove(&ph->matches[1], &ph->matches[0], sizeof x * (size_t)i);
-        ph->matches[0] = x;
+        if (ph->matches[i].score < ph->matches[0].score) ph->matches[i].score = ph->matches[0].score;
+        match_to_front(ph->matches, i);
         return 1;
     }
     return 0;
@@ -421,9 +425,7 @@ static void other_member_first(sp_lex_phrase *region, const sp_lex_phrase *targe
     for (int i = 1; i < region->n_matches; i++) {
         if (region->matches[i].score < SP_LEX_THRESHOLD) return;
         if (region->matches[i].class_index == target->matches[0].class_index) continue;
-        sp_lex_class_match x = region->matches[i];
-        memmove(&region->matches[1], &region->matches[0], sizeof x * (size_t)i);
-        region->matches[0] = x;
+        match_to_front(region->matches, i);
         return;
     }
 }
@@ -448,9 +450,7 @@ static void prefer_anchor_named(const sp_lex_vocab *v, sp_lex_phrase *target, co
     sp_lex_class_match *m = target->matches;
     for (int i = 1; i < target->n_matches && m[i].score == m[0].score && m[i].kind == m[0].kind; i++)
         if (shares_modifier(v, m[i].class_index, ai) && !shares_modifier(v, m[0].class_index, ai)) {
-            sp_lex_class_match x = m[i];
-            memmove(&m[1], &m[0], sizeof m[0] * (size_t)i);
-            m[0] = x;
+            match_to_front(m, i);
             return;
         }
 }
@@ -485,11 +485,7 @@ static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const s
             if (m[i].class_index != ai && !with[i] && region_lists(v, &v->regions[r], m[i].class_index))
                 with[i] = 1, n_with++, best = best < 0 ? i : best;
     }
-    if (n_with == 1 && best > 0) {
-        sp_lex_class_match x = m[best];
-        memmove(&m[1], &m[0], sizeof m[0] * (size_t)best);
-        m[0] = x;
-    }
+    if (n_with == 1 && best > 0) match_to_front(m, best);
 }
 
 /* Where the anchor phrase starting at a begins: after a part of a place it names ("in the

@@ -218,13 +218,21 @@ __device__ __forceinline__ float sp_cu_alpha_flat(float4 co, float cut, float dx
 #define SP_BOXES_X (SP_TILE_SIZE / SP_BOX_W) /* boxes across a tile */
 __device__ __forceinline__ int sp_cu_box_x(int p) { return ((p >> 5) % SP_BOXES_X) * SP_BOX_W + p % SP_BOX_W; }
 __device__ __forceinline__ int sp_cu_box_y(int p) { return ((p >> 5) / SP_BOXES_X) * SP_BOX_H + (p & 31) / SP_BOX_W; }
-/* warp w's box in tile (tx, ty), clipped to the image: [x0, x1] x [y0, y1] (x0 > x1 or y0 > y1
- * when it lies outside) */
+/* warp w's BW x BH box in tile (tx, ty) (boxes row by row), clipped to the image: [x0, x1] x
+ * [y0, y1] (x0 > x1 or y0 > y1 when it lies outside) */
+template <int BW, int BH>
+__device__ __forceinline__ void sp_cu_warp_box(int tx, int ty, int w, int W, int H, int *x0, int *x1,
+                                               int *y0, int *y1)
+{
+    constexpr int NX = SP_TILE_SIZE / BW;
+    *x0 = tx * SP_TILE_SIZE + (w % NX) * BW, *x1 = min(*x0 + BW - 1, W - 1);
+    *y0 = ty * SP_TILE_SIZE + (w / NX) * BH, *y1 = min(*y0 + BH - 1, H - 1);
+}
+/* the one-pixel kernels' boxes (sp_cu_box_x) */
 __device__ __forceinline__ void sp_cu_box_rect(int tx, int ty, int w, int W, int H, int *x0, int *x1,
                                                int *y0, int *y1)
 {
-    *x0 = tx * SP_TILE_SIZE + (w % SP_BOXES_X) * SP_BOX_W, *x1 = min(*x0 + SP_BOX_W - 1, W - 1);
-    *y0 = ty * SP_TILE_SIZE + (w / SP_BOXES_X) * SP_BOX_H, *y1 = min(*y0 + SP_BOX_H - 1, H - 1);
+    sp_cu_warp_box<SP_BOX_W, SP_BOX_H>(tx, ty, w, W, H, x0, x1, y0, y1);
 }
 
 /* Two pixels per thread (the narrow kernels' PX = 2, 128 threads, 4 warps): with SP_PX_BOX each
@@ -236,8 +244,7 @@ __device__ __forceinline__ void sp_cu_box_rect(int tx, int ty, int w, int W, int
 __device__ __forceinline__ void sp_cu_px2_rect(int tx, int ty, int w, int W, int H, int *x0, int *x1,
                                                int *y0, int *y1)
 {
-    *x0 = tx * SP_TILE_SIZE + (w & 1) * 8, *x1 = min(*x0 + 7, W - 1);
-    *y0 = ty * SP_TILE_SIZE + (w >> 1) * 8, *y1 = min(*y0 + 7, H - 1);
+    sp_cu_warp_box<8, 8>(tx, ty, w, W, H, x0, x1, y0, y1);
 }
 /* thread tid's first pixel's offset in its tile and the step to its next pixel (PX = 2) */
 __device__ __forceinline__ void sp_cu_px2_pixel(int tid, int *ox, int *oy, int *step)
