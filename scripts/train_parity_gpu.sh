@@ -4,7 +4,9 @@
 # from data/worlds/), builds gsplat from shared/bench/anchors and trains gsplat's recipe
 # (scripts/gsplat_reference.py) and ours (`semsplat train --steps 7000 --device cuda`) on them,
 # printing held-out PSNR, Gaussians and seconds per run.
-#   here:  scripts/pack_gpu_runtime.sh build   (semsplat with synth, built with CUDA, into .gl/rt.txz)
+#   here:  cmake -S . -B build-rt -DCMAKE_BUILD_TYPE=Release -DSP_ROUND2_DEPS=OFF &&
+#          cmake --build build-rt --target semsplat_cli && scripts/pack_gpu_runtime.sh build-rt
+#          (semsplat with synth and CUDA, without the round-2 media/ROS libraries: 7.7 MB)
 #          tar -cf - .gpu-shared | xz > .gl/gs.txz   (.gpu-shared/anchors: a copy of shared/bench/anchors)
 #   there: scripts/train_parity_gpu.sh [-- EXTRA TRAIN FLAGS]   (carry .gl/rt.txz and .gl/gs.txz)
 # PLAN (optional): runs in order, separated by ';': "gs WORLD" (gsplat's recipe) or
