@@ -46,6 +46,8 @@ sys.dont_write_bytecode = True  # leave no __pycache__ in the repo
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "office_models"))
 import make_office as base  # noqa: E402  (primitives, lights, the SDF document, door, desk, chairs)
+sys.path.insert(0, os.path.join(HERE, "..", "restaurant_models"))
+import make_restaurant as rest  # noqa: E402  (washroom fittings, extinguisher, exit sign)
 
 W, D, H = 26.0, 18.0, 3.5  # floor width (x), depth (y), wall height
 T = 0.1                    # wall thickness
@@ -108,19 +110,8 @@ base.COL.update({
     "poster_grey": "0.4 0.42 0.45", "poster_white": "0.95 0.95 0.92", "poster_black": "0.05 0.05 0.06",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails, lenses and knobs are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):
-    return turned(v, "1.5708 0 0")
+toilet, fire_extinguisher, exit_sign = rest.toilet, rest.fire_extinguisher, rest.exit_sign
+turned, along_x, along_y = base.turned, base.along_x, base.along_y
 
 
 # ---- the box office (local frames: x right, y forward = the side a person uses, z up) ----
@@ -526,15 +517,6 @@ def workbench(w=1.6, d=0.6):
 
 
 # ---- the toilets ----
-def toilet():
-    """A toilet: the cistern against the wall (-y), the bowl, seat and lid in front of it."""
-    return [box("cistern", "porcelain", 0, -0.22, 0.62, 0.42, 0.18, 0.4),
-            cyl("bowl", "porcelain", 0, 0.05, 0.2, 0.19, 0.4),
-            cyl("seat", "porcelain", 0, 0.06, 0.41, 0.21, 0.03),
-            turned(cyl("lid", "porcelain", 0, -0.12, 0.62, 0.2, 0.02), "-0.25 0 0"),
-            box("flush", "steel", 0, -0.22, 0.83, 0.1, 0.06, 0.02)]
-
-
 def sink():
     """A wall-hung wash basin (the wall behind at -y) with its tap and a soap dispenser."""
     return [box("basin", "porcelain", 0, 0.22, 0.8, 0.5, 0.42, 0.15),
@@ -677,24 +659,6 @@ def trash_can(front_open=True):
     if front_open:
         return v + [sph("dome", "bin_grey", 0, 0, 0.78, 0.22), box("flap", "bin_black", 0, 0.16, 0.86, 0.2, 0.1, 0.1)]
     return v + [cyl("bag", "bin_black", 0, 0, 0.79, 0.2, 0.02)]
-
-
-def fire_extinguisher():
-    """A red extinguisher on its wall bracket (the wall behind at -y)."""
-    return [box("bracket", "dark_metal", 0, -0.08, 0.85, 0.1, 0.02, 0.3),
-            cyl("body", "extinguisher_red", 0, 0, 0.8, 0.08, 0.5),
-            sph("shoulder", "extinguisher_red", 0, 0, 1.05, 0.08),
-            cyl("head", "black", 0, 0, 1.15, 0.025, 0.08),
-            box("handle", "black", 0, 0.04, 1.19, 0.03, 0.12, 0.02),
-            turned(cyl("hose", "black", 0.07, 0.03, 1.0, 0.012, 0.3), "0 0.3 0"),
-            box("tag", "paper", 0, 0.081, 0.75, 0.06, 0.002, 0.09)]
-
-
-def exit_sign():
-    """The green illuminated exit sign over a door (the wall behind at -y): the running man."""
-    return [box("body", "exit_green", 0, 0, 0, 0.42, 0.05, 0.16),
-            box("man", "white", -0.1, 0.026, 0, 0.06, 0.004, 0.11),
-            box("arrow", "white", 0.08, 0.026, 0, 0.16, 0.004, 0.04)]
 
 
 def window(w=1.3, h=1.2):

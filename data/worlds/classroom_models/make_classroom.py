@@ -31,11 +31,7 @@ base.COL.update({
     "book_red": "0.7 0.15 0.15", "book_blue": "0.15 0.3 0.6", "book_green": "0.2 0.5 0.25",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; a globe's axis is tilted)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
+turned = base.turned
 
 
 # ---- the things (local frames: x right, y forward = away from the user, z up) ----

@@ -51,19 +51,7 @@ base.COL.update({
     "reader": "0.1 0.1 0.12", "stack_black": "0.1 0.1 0.1",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place: cylinders are upright in SDF, wheels, bars and plates are not."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):  # a cylinder's axis along x
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):  # a cylinder's axis along y
-    return turned(v, "1.5708 0 0")
+turned, along_x, along_y = base.turned, base.along_x, base.along_y
 
 
 def at(x0, y0, yaw, lx, ly):

@@ -69,23 +69,10 @@ base.COL.update({
     "magazine_b": "0.25 0.55 0.8", "magazine_c": "0.95 0.75 0.2", "magazine_d": "0.4 0.7 0.45",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
+turned, along_x, castors = base.turned, base.along_x, base.castors
 
 BOOKS = ("book_red", "book_blue", "book_green", "book_ochre", "book_cream", "book_black", "book_teal",
          "book_plum")
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; lamp shades and wheels are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def castors(hx, hy, r=0.04):
-    return [sph(f"castor{i}", "rubber", sx * hx, sy * hy, r, r)
-            for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
 
 
 # ---- the things (local frames: x right, y forward = the side a user faces, z up) ----

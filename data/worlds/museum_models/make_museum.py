@@ -67,15 +67,7 @@ base.COL.update({
     "acrylic": "0.8 0.9 0.95", "umbrella": "0.1 0.2 0.35", "leaflet": "0.95 0.75 0.2",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails and ropes are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
+turned, along_x = base.turned, base.along_x
 
 
 # ---- the things (local frames: x right, y forward = the side a visitor faces, z up) ----

@@ -55,6 +55,24 @@ def legs(c, hx, hy, h, s=0.04):
 
 
 # ---- the things (local frames: x right, y forward = away from the user, z up) ----
+def turned(v, rpy):
+    """A visual rotated in place (cylinders are upright in SDF; rails, knobs and wheels are not)."""
+    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
+
+
+def along_x(v):
+    return turned(v, "0 1.5708 0")
+
+
+def along_y(v):
+    return turned(v, "1.5708 0 0")
+
+
+def castors(hx, hy, r=0.04):
+    return [sph(f"castor{i}", "rubber", sx * hx, sy * hy, r, r)
+            for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
+
+
 def desk():
     return [box("top", "light_wood", 0, 0, 0.73, 1.4, 0.7, 0.04)] + legs("dark_metal", 0.66, 0.31, 0.71)
 

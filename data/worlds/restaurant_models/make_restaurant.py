@@ -78,24 +78,7 @@ base.COL.update({
     "paper": "0.96 0.96 0.94", "chair_black": "0.1 0.1 0.1",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails, knobs and wheels are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):
-    return turned(v, "1.5708 0 0")
-
-
-def castors(hx, hy, r=0.04):
-    return [sph(f"castor{i}", "rubber", sx * hx, sy * hy, r, r)
-            for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
+turned, along_x, along_y, castors = base.turned, base.along_x, base.along_y, base.castors
 
 
 # ---- the entrance (local frames: x right, y forward = the side a person uses, z up) ----

@@ -90,24 +90,7 @@ base.COL.update({
     "cabinet_grey": "0.7 0.72 0.74",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails, knobs and wheels are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):
-    return turned(v, "1.5708 0 0")
-
-
-def castors(hx, hy, r=0.04):
-    return [sph(f"castor{i}", "rubber", sx * hx, sy * hy, r, r)
-            for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1)))]
+turned, along_x, along_y, castors = base.turned, base.along_x, base.along_y, base.castors
 
 
 def star_base(r=0.28, z=0.06, c="dark_steel", n=5):

@@ -27,11 +27,7 @@ base.COL.update({
     "screen_green": "0.1 0.35 0.25", "seat_blue": "0.25 0.35 0.6", "ceramic": "0.96 0.96 0.97",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place: cylinders are upright in SDF, wheels and taps are not."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
+turned = base.turned
 
 
 def wheel(name, c, x, y, z, r, width):  # axle along x
