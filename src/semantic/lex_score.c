@@ -886,6 +886,36 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
     }
 }
 
+/* 1 when every modifier of class c's name (its words before the last) is a word of the query: a
+ * modifier's part ("ticket" of "ticket_office window") or a word of the head collocation before
+ * its last ("reception" of WordNet's reception_desk). */
+static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX])
+{
+    if (!c->spec || c->n_tok < 2 || c->joined) return 0;
+    char q[LEX_MAX_TOKENS][WN_LEMMA_MAX];
+    int n = 0;
+    for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++) {
+        char mod[WN_LEMMA_MAX];
+        snprintf(mod, sizeof mod, "%s", mod_base[i]);
+        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+            snprintf(q[n++], WN_LEMMA_MAX, "%s", t);
+    }
+    char head[WN_LEMMA_MAX];
+    snprintf(head, sizeof head, "%s", np->head);
+    char *last = strrchr(head, '_');
+    if (last) {
+        *last = 0;
+        for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+            snprintf(q[n++], WN_LEMMA_MAX, "%s", t);
+    }
+    for (int k = 0; k + 1 < c->n_tok; k++) {
+        int in = 0;
+        for (int i = 0; i < n && !in; i++) in = !strcmp(q[i], c->tok[k]);
+        if (!in) return 0;
+    }
+    return 1;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -939,6 +969,29 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * class one level below them, as for a name WordNet lacks. */
     if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
     if (has_head && m->kind != SP_LEX_EXACT) level_tax(v, c, np, qp, &base, m);
+    /* The query's words hold the class's modifiers ("ticket desk", "reception desk" against the
+     * ticket counter, the reception counter): the same kind named by the same words, so the heads
+     * are compared without the class's extra level, and heads that are siblings by their commonest
+     * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
+    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses && mods_agree(np, c, qp->mod_base);
+    if (agree) {
+        for (int i = 0; i < np->n_senses; i++)
+            for (int j = 0; j < c->np.n_senses; j++) {
+                lex_tax t = lex_compare(&np->senses[i], &c->np.senses[j]);
+                if (t.kind == SP_LEX_NONE) continue;
+                float sc = t.score;
+                if (t.kind == SP_LEX_RELATED) {
+                    if (!np->senses[i].attested) continue;
+                    sc = lex_wup(&np->senses[i], &c->np.senses[j]);
+                }
+                if (sc <= base) continue;
+                base = sc;
+                m->kind = t.kind == SP_LEX_RELATED ? SP_LEX_HYPERNYM : t.kind;
+                describe_tax(m, &t, &np->senses[i], &c->np.senses[j]);
+                snprintf(m->path, sizeof m->path, "'%s' and '%s' share the modifiers; heads %.2f alike", np->head,
+                         c->name, sc);
+            }
+    }
     /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
      * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
      * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
@@ -1017,6 +1070,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
+        if (use == LEX_MOD_IGNORED && agree && (strchr(qp->mod_base[i], '_') || strchr(qp->mod_base[i], '-'))) {
+            char buf[WN_LEMMA_MAX];
+            snprintf(buf, sizeof buf, "%s", qp->mod_base[i]);
+            for (char *save = NULL, *t = strtok_r(buf, "_-", &save); t && use == LEX_MOD_IGNORED; t = strtok_r(NULL, "_-", &save))
+                for (int k = 0; k + 1 < c->n_tok; k++)
+                    if (!strcmp(c->tok[k], t)) use = LEX_MOD_USED;
+        }
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
@@ -1046,6 +1106,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
+        if (agree && s < 1.0f) s = s + LEX_TIE > 1.0f ? 1.0f : s + LEX_TIE; /* named by the query's words: first among equals */
         m->score = s;
         int used[8] = {0};
         char awhy[192] = "";
