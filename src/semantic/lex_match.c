@@ -113,8 +113,15 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * scene (by name or synonym) is the area of those classes, not the table's room its head
      * alone stands for (the hall is no hallway here); a table name its modifiers make ("the
      * meeting room", "the locker room") stays the table's. */
+    int surface = 0; /* "wall cupboard": a thing mounted on the walls, not the walls' area */
+    for (int i = 0; i < np->n_mods; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(v->lx, WN_NOUN, np->mods[i], b, err);
+        if (nb < 0) return nb;
+        surface |= lex_building_surface(nb > 0 ? b[0] : np->mods[i]);
+    }
     if (!generic && depth == 0 && np->n_mods > 0 && !np->placeholder && !np->n_desc && lex_place_head(np) &&
-        !(r && region_by_mods(np, r))) {
+        !(r && region_by_mods(np, r)) && !surface) {
         int names = 0;
         if ((rc = mods_name_classes(v, np, depth, &names, err))) return rc;
         if (names) table = 0, r = NULL, def = NULL, generic = 1;

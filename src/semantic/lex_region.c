@@ -103,7 +103,7 @@ static int definition_genus(const lex_db *lx, const lex_tokens *t, int *genus, s
 
 /* The surfaces every room has ("a small area set off by WALLS", "the FLOOR of a hall"): they
  * define no room, so a definition naming them adds no member. */
-static int building_surface(const char *base)
+int lex_building_surface(const char *base)
 {
     return !strcmp(base, "wall") || !strcmp(base, "floor") || !strcmp(base, "ceiling");
 }
@@ -141,7 +141,7 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
         int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
         if (nb < 0) rc = nb;
         if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0]) ||
-            building_surface(base[0]))
+            lex_building_surface(base[0]))
             continue;
         snprintf(ph->text, sizeof ph->text, "%s", w);
         if ((rc = score_text(v, w, ph, err))) break;
