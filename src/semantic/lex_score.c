@@ -992,6 +992,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                          c->name, sc);
             }
     }
+    /* a part of any counter is one of the reception counter too: a class whose name says more
+     * than the query comes after the bare one (an order, not evidence) */
+    if (m->kind == SP_LEX_PART && c->n_tok > 1 && !agree) base -= LEX_TIE;
     /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
      * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
      * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
