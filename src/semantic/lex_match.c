@@ -92,6 +92,10 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
     int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
     if (rc < 0) return rc;
     int by_wordnet_room = rc == 1; /* through a WordNet room's synonym: "sleeping room" */
+    /* a table name is written as people say it: "the ladies", "the stacks" are no lady, no stack */
+    if (!r && !np->placeholder && np->head_end == np->head_start + 1 && np->n_mods == 0 &&
+        strcmp(t->w[np->head_start], np->head))
+        r = lex_region_find(v, t->w[np->head_start]), by_wordnet_room = 0;
     rc = 0;
     /* A room of WordNet when its commonest sense is one ("kitchen"; not "car", whose fourth
      * sense is an elevator's cabin). */
