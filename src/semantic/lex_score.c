@@ -889,7 +889,8 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
 /* 1 when every modifier of class c's name (its words before the last) is a word of the query: a
  * modifier's part ("ticket" of "ticket_office window") or a word of the head collocation before
  * its last ("reception" of WordNet's reception_desk). */
-static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX])
+static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX],
+                      const expansion *mod_exp)
 {
     if (!c->spec || c->n_tok < 2 || c->joined) return 0;
     char q[LEX_MAX_TOKENS][WN_LEMMA_MAX];
@@ -908,12 +909,19 @@ static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_bas
         for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
             snprintf(q[n++], WN_LEMMA_MAX, "%s", t);
     }
+    int syn = 0;
     for (int k = 0; k + 1 < c->n_tok; k++) {
         int in = 0;
         for (int i = 0; i < n && !in; i++) in = !strcmp(q[i], c->tok[k]);
+        /* or a lemma of a modifier's commonest sense ("baggage" of "luggage trolley") */
+        for (int i = 0; i < np->n_mods - np->split && !in && mod_exp; i++)
+            for (int e = 1; e < mod_exp[i].n && !in; e++) in = !strcmp(mod_exp[i].w[e], c->tok[k]);
         if (!in) return 0;
+        int exact = 0;
+        for (int i = 0; i < n && !exact; i++) exact = !strcmp(q[i], c->tok[k]);
+        syn |= !exact;
     }
-    return 1;
+    return syn ? 2 : 1;
 }
 
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
@@ -973,7 +981,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * ticket counter, the reception counter): the same kind named by the same words, so the heads
      * are compared without the class's extra level, and heads that are siblings by their commonest
      * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
-    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses && mods_agree(np, c, qp->mod_base);
+    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp) : 0;
     if (agree) {
         for (int i = 0; i < np->n_senses; i++)
             for (int j = 0; j < c->np.n_senses; j++) {
@@ -984,6 +992,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                     if (!np->senses[i].attested) continue;
                     sc = lex_wup(&np->senses[i], &c->np.senses[j]);
                 }
+                if (agree == 2) sc *= LEX_SYN; /* agreeing through a synonym: one weak step */
                 if (sc <= base) continue;
                 base = sc;
                 m->kind = t.kind == SP_LEX_RELATED ? SP_LEX_HYPERNYM : t.kind;
@@ -1073,6 +1082,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
+        for (int e = 1; use == LEX_MOD_IGNORED && agree == 2 && e < qp->mod_exp[i].n; e++)
+            for (int k = 0; k + 1 < c->n_tok; k++)
+                if (!strcmp(c->tok[k], qp->mod_exp[i].w[e])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && agree && (strchr(qp->mod_base[i], '_') || strchr(qp->mod_base[i], '-'))) {
             char buf[WN_LEMMA_MAX];
             snprintf(buf, sizeof buf, "%s", qp->mod_base[i]);
