@@ -488,7 +488,26 @@ static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const s
     sp_lex_class_match *m = target->matches;
     int nt = 1;
     while (nt < target->n_matches && m[nt].score == m[0].score) nt++;
-    if (nt < 2) return;
+    if (nt < 2) {
+        /* "the chair at the desk": the bare class named first, a kind of it by name (the office
+         * chair) that a room lists with the anchor is the one meant, when it is the only such */
+        const char *top = sp_lex_vocab_class(v, m[0].class_index);
+        if (strchr(top, ' ')) return;
+        size_t nl = strlen(top);
+        int found = -1, n_found = 0;
+        for (int i = 1; i < target->n_matches && m[i].score >= SP_LEX_THRESHOLD; i++) {
+            const char *nm = sp_lex_vocab_class(v, m[i].class_index);
+            size_t n = strlen(nm);
+            if (m[i].class_index == ai || n <= nl + 1 || nm[n - nl - 1] != ' ' || strcmp(nm + n - nl, top)) continue;
+            int listed = 0;
+            for (int r = 0; r < v->n_regions && !listed; r++)
+                listed = region_lists(v, &v->regions[r], ai) && region_lists(v, &v->regions[r], m[i].class_index) &&
+                         !region_lists(v, &v->regions[r], m[0].class_index);
+            if (listed) found = i, n_found++;
+        }
+        if (n_found == 1) match_to_front(m, found);
+        return;
+    }
     int with[SP_LEX_MAX_CLASSES] = {0}, n_with = 0, best = -1;
     for (int r = 0; r < v->n_regions; r++) {
         if (!region_lists(v, &v->regions[r], ai)) continue;
