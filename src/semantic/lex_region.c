@@ -111,14 +111,19 @@ int lex_building_surface(const char *base)
 /* Members of a named region: the table's phrases and the nouns of its WordNet definition;
  * *support counts the phrases that found a class. */
 static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
-                          sp_lex_phrase *out, int *support, sp_error *err)
+                          sp_lex_phrase *out, int *support, int *first, sp_error *err)
 {
+    *first = -1;
     sp_lex_phrase *ph = malloc(sizeof *ph);
     if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     int rc = 0;
     for (int i = 0; r && i < r->n_members && !rc; i++) {
         snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
         if ((rc = score_text_as(v, r->members[i], ph, 1, err))) break;
+        /* the class the table's first member names exactly: the place's defining object */
+        if (i == 0 && ph->n_matches && ph->matches[0].score >= SP_LEX_THRESHOLD && ph->matches[0].kind == SP_LEX_EXACT &&
+            (ph->n_matches < 2 || ph->matches[1].score < ph->matches[0].score))
+            *first = ph->matches[0].class_index;
         /* the table lists a place's defining objects first (the entrance: its door before the
          * coat rack): among members that match equally, the earlier comes first (LEX_TIE, an
          * order, not evidence) */
@@ -387,7 +392,7 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
     snprintf(ph->region, sizeof ph->region, "%s", name);
     for (char *p = ph->region; *p; p++)
         if (*p == '_') *p = ' ';
-    int support = 0, rc = region_members(v, r, definition, ph, &support, err);
+    int support = 0, first = -1, rc = region_members(v, r, definition, ph, &support, &first, err);
     if (rc) return rc;
     if (!r) { /* a place WordNet knows and the table does not: also what its name says is done */
         lex_tokens t;
@@ -402,11 +407,14 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom; a
      * class named after the place says by its name that it is of it ("the shower stall" ->
      * the shower, "a booth for taking a shower") and stays. */
+    /* ... unless that one is the object the table lists first by its very name (the laundry's
+     * washing machine, the bike parking's cycle rack): the place's defining object stands for it */
     int kinds = 0;
     for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
     if (kinds < 2)
         for (int i = 0; i < v->n; i++) {
             if (ph->matches[i].kind == SP_LEX_REGION) continue;
+            if (kinds == 1 && ph->matches[i].class_index == first && ph->matches[i].score >= SP_LEX_THRESHOLD) continue;
             ph->matches[i].score *= LEX_MU;
             if (ph->matches[i].score > 0)
                 snprintf(ph->matches[i].gloss_words, sizeof ph->matches[i].gloss_words,
