@@ -890,7 +890,7 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
  * modifier's part ("ticket" of "ticket_office window") or a word of the head collocation before
  * its last ("reception" of WordNet's reception_desk). */
 static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX],
-                      const expansion *mod_exp)
+                      const expansion *mod_exp, const lex_np *mod_np)
 {
     if (!c->spec || c->n_tok < 2 || c->joined) return 0;
     char q[LEX_MAX_TOKENS][WN_LEMMA_MAX];
@@ -916,6 +916,13 @@ static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_bas
         /* or a lemma of a modifier's commonest sense ("baggage" of "luggage trolley") */
         for (int i = 0; i < np->n_mods - np->split && !in && mod_exp; i++)
             for (int e = 1; e < mod_exp[i].n && !in; e++) in = !strcmp(mod_exp[i].w[e], c->tok[k]);
+        /* or a kind of it by the modifier's commonest sense ("espresso" of "coffee machine") */
+        for (int j = 0; j < c->n_kind && !in && mod_np; j++) {
+            if (strcmp(c->kind_np[j].head, c->tok[k])) continue;
+            for (int i = 0; i < np->n_mods - np->split && !in; i++)
+                for (int b = 0; b < c->kind_np[j].n_senses && b < 2 && !in && mod_np[i].n_senses; b++)
+                    in = lex_anc_find(&mod_np[i].senses[0], c->kind_np[j].senses[b].off) > 0;
+        }
         if (!in) return 0;
         int exact = 0;
         for (int i = 0; i < n && !exact; i++) exact = !strcmp(q[i], c->tok[k]);
@@ -981,7 +988,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * ticket counter, the reception counter): the same kind named by the same words, so the heads
      * are compared without the class's extra level, and heads that are siblings by their commonest
      * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
-    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp) : 0;
+    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp, qp->mod_np) : 0;
     if (agree) {
         for (int i = 0; i < np->n_senses; i++)
             for (int j = 0; j < c->np.n_senses; j++) {
@@ -1085,6 +1092,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         for (int e = 1; use == LEX_MOD_IGNORED && agree == 2 && e < qp->mod_exp[i].n; e++)
             for (int k = 0; k + 1 < c->n_tok; k++)
                 if (!strcmp(c->tok[k], qp->mod_exp[i].w[e])) use = LEX_MOD_USED;
+        for (int j = 0; use == LEX_MOD_IGNORED && agree == 2 && j < c->n_kind && qp->mod_np[i].n_senses; j++)
+            for (int b = 0; b < c->kind_np[j].n_senses && b < 2; b++)
+                if (lex_anc_find(&qp->mod_np[i].senses[0], c->kind_np[j].senses[b].off) > 0) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && agree && (strchr(qp->mod_base[i], '_') || strchr(qp->mod_base[i], '-'))) {
             char buf[WN_LEMMA_MAX];
             snprintf(buf, sizeof buf, "%s", qp->mod_base[i]);
