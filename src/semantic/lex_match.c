@@ -799,7 +799,17 @@ static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_resul
     lex_np np;
     int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
     const lex_region *r = NULL;
-    if (!rc && !np.placeholder && !np.n_mods && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
+    /* whose room it is does not make it a thing: "the men's toilets", "the ladies' loos" */
+    int persons = !rc && np.n_mods > 0;
+    for (int i = 0; persons && i < np.n_mods; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX]; /* by any base: "men" is also WordNet's troops */
+        int nb = lex_bases(v->lx, WN_NOUN, np.mods[i], b, err), p = 0;
+        if (nb < 0) rc = nb;
+        for (int k = 0; k < nb && !p && !rc; k++)
+            if ((p = names_person(v, b[k], err)) < 0) rc = p;
+        persons = p > 0;
+    }
+    if (!rc && !np.placeholder && (!np.n_mods || persons) && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
         lex_sense_room(&np.senses[0]) && (rc = lex_region_named(v, &np, &r, err)) >= 0 && r) {
         rc = 0;
         sp_lex_phrase *reg = malloc(sizeof *reg);
