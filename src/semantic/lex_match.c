@@ -87,7 +87,23 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                           sp_error *err)
 {
     *is_region = 0;
-    if (np->head_start < 0) return 0;
+    if (np->head_start < 0) {
+        /* a table region's name WordNet lacks ("the cattery"): the region by its name as written */
+        char name[64] = "";
+        for (int i = 0; i < np->n_words; i++) {
+            strncat(name, i ? " " : "", sizeof name - strlen(name) - 1);
+            strncat(name, np->words[i], sizeof name - strlen(name) - 1);
+        }
+        const lex_region *nr = np->n_words && !np->placeholder ? lex_region_find(v, name) : NULL;
+        if (!nr) return 0;
+        int rc = lex_region_members(v, nr, name, NULL, ph, err);
+        if (rc) return rc;
+        if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
+        ph->is_region = 1;
+        snprintf(ph->head, sizeof ph->head, "%s", name);
+        *is_region = 1;
+        return 0;
+    }
     const lex_region *r = NULL;
     int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
     if (rc < 0) return rc;
