@@ -278,6 +278,23 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         strncat(name, np->head, sizeof name - strlen(name) - 1);
         *r = lex_region_find(v, name);
     }
+    /* a plural WordNet keeps as a lemma of its own ("rooms", an apartment): the table's name is
+     * by the singular ("the consulting rooms" -> "consulting room") */
+    char hb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nhb = !*r && np->head[0] && n_mods > 0 ? lex_bases(v->lx, WN_NOUN, np->head, hb, err) : 0;
+    if (nhb < 0) return nhb;
+    for (int b = 0; b < nhb && !*r; b++) {
+        if (!strcmp(hb[b], np->head)) continue;
+        for (int from = 0; !*r && from < n_mods; from++) {
+            char name[64] = "";
+            for (int i = from; i < n_mods; i++) {
+                strncat(name, np->mods[i], sizeof name - strlen(name) - 1);
+                strncat(name, " ", sizeof name - strlen(name) - 1);
+            }
+            strncat(name, hb[b], sizeof name - strlen(name) - 1);
+            *r = lex_region_find(v, name);
+        }
+    }
     /* The kind of area is a word of style: "the utility corner" is the table's "utility room",
      * "the work space" its "work area" (only after a generic head: a "locker" is no locker room). */
     if (!*r && lex_is_generic_region(np->head)) {
