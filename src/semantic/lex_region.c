@@ -265,9 +265,10 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
                              sp_error *err)
 {
-    *r = lex_region_find(v, np->head);
+    *r = NULL;
     /* A table name WordNet does not join ("meeting room", "break room"): the head with its last
-     * modifiers, longest first ("the big meeting room" -> "meeting room"). */
+     * modifiers, longest first ("the big meeting room" -> "meeting room"), before the head alone
+     * ("the booking office" is the table's booking office, not any office). */
     int n_mods = np->n_mods - np->split;
     for (int from = 0; !*r && np->head[0] && from < n_mods; from++) {
         char name[64] = "";
@@ -278,6 +279,7 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         strncat(name, np->head, sizeof name - strlen(name) - 1);
         *r = lex_region_find(v, name);
     }
+    if (!*r) *r = lex_region_find(v, np->head);
     /* a plural WordNet keeps as a lemma of its own ("rooms", an apartment): the table's name is
      * by the singular ("the consulting rooms" -> "consulting room") */
     char hb[WN_MAX_BASES][WN_LEMMA_MAX];
