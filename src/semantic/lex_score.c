@@ -997,6 +997,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                 float sc = t.score;
                 if (t.kind == SP_LEX_RELATED) {
                     if (!np->senses[i].attested || strchr(np->head, '_')) continue;
+                    /* through an ancestor as general as an artifact, a structure, an
+                     * instrumentality (depth < 6) they are no siblings ("safety barrier" / safety cone) */
+                    if (c->np.senses[j].anc[t.c_anc].depth < 6) continue;
                     sc = LEX_DELTA * lex_wup(&np->senses[i], &c->np.senses[j]); /* another head: one weak step */
                 }
                 if (agree == 2) sc *= LEX_SYN; /* agreeing through a synonym: one weak step */
