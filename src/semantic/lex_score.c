@@ -989,6 +989,12 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * are compared without the class's extra level, and heads that are siblings by their commonest
      * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
     int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp, qp->mod_np) : 0;
+    int sibling = 0; /* the score is that of another head through the shared modifiers */
+    /* a modifier that is itself a class of the scene ("DESK chair" beside the desk) says where
+     * the thing is or what it serves, not a name two kinds share: no sibling reading */
+    int mod_is_class = 0;
+    for (int i = 0; agree && i < np->n_mods - np->split && !mod_is_class; i++)
+        for (int j = 0; j < v->n && !mod_is_class; j++) mod_is_class = !strcmp(v->classes[j].name, qp->mod_base[i]);
     if (agree) {
         for (int i = 0; i < np->n_senses; i++)
             for (int j = 0; j < c->np.n_senses; j++) {
@@ -996,7 +1002,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                 if (t.kind == SP_LEX_NONE) continue;
                 float sc = t.score;
                 if (t.kind == SP_LEX_RELATED) {
-                    if (!np->senses[i].attested || strchr(np->head, '_')) continue;
+                    if (!np->senses[i].attested || strchr(np->head, '_') || mod_is_class) continue;
                     /* through an ancestor as general as an artifact, a structure, an
                      * instrumentality (depth < 6) they are no siblings ("safety barrier" / safety cone) */
                     if (c->np.senses[j].anc[t.c_anc].depth < 6) continue;
@@ -1005,6 +1011,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                 if (agree == 2) sc *= LEX_SYN; /* agreeing through a synonym: one weak step */
                 if (sc <= base) continue;
                 base = sc;
+                sibling = t.kind == SP_LEX_RELATED;
                 m->kind = t.kind == SP_LEX_RELATED ? SP_LEX_HYPERNYM : t.kind;
                 describe_tax(m, &t, &np->senses[i], &c->np.senses[j]);
                 snprintf(m->path, sizeof m->path, "'%s' and '%s' share the modifiers; heads %.2f alike", np->head,
@@ -1134,7 +1141,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
-        if (agree && s < 1.0f) s = s + LEX_TIE > 1.0f ? 1.0f : s + LEX_TIE; /* named by the query's words: first among equals */
+        /* named by the query's words: first among equals; through another head, last */
+        if (agree && !sibling && s < 1.0f) s = s + LEX_TIE > 1.0f ? 1.0f : s + LEX_TIE;
+        else if (sibling) s -= LEX_TIE;
         m->score = s;
         int used[8] = {0};
         char awhy[192] = "";
