@@ -931,6 +931,29 @@ static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_bas
     return syn ? 2 : 1;
 }
 
+/* 1 when class c ("office chair") is the query's head word with other modifiers and a room of the
+ * region table lists c by name together with the query's one other modifier as a thing ("desk
+ * chair": the office lists the desk and the office chair): the chair that stands with a desk. */
+static int company_agree(const sp_lex_vocab *v, const lex_np *np, const lex_class *c, const query_prep *qp)
+{
+    if (!c->spec || c->n_tok < 2 || np->n_mods - np->split != 1 || np->split || strchr(np->head, '_') ||
+        strcmp(c->tok[c->n_tok - 1], np->head))
+        return 0;
+    const char *m = qp->mod_base[0];
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(c->tok[k], m)) return 0;
+    for (int r = 0; r < v->n_regions; r++) {
+        const lex_region *g = &v->regions[r];
+        int has_c = 0, has_m = 0;
+        for (int i = 0; i < g->n_members; i++) {
+            has_c |= !strcasecmp(g->members[i], c->name);
+            has_m |= !strcasecmp(g->members[i], m);
+        }
+        if (has_c && has_m) return 1;
+    }
+    return 0;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -989,6 +1012,18 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * are compared without the class's extra level, and heads that are siblings by their commonest
      * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
     int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp, qp->mod_np) : 0;
+    /* the thing that stands with what the modifier names: "desk chair" -> the office chair, one
+     * weak step (LEX_SYN) from the head's own sense */
+    int company = has_head && m->kind != SP_LEX_EXACT && !agree && c->np.n_senses && company_agree(v, np, c, qp);
+    for (int i = 0; company && i < np->n_senses; i++)
+        for (int j = 0; j < c->np.n_senses; j++) {
+            lex_tax t = lex_compare(&np->senses[i], &c->np.senses[j]);
+            if (t.kind != SP_LEX_SYNONYM || LEX_SYN * t.score <= base) continue;
+            base = LEX_SYN * t.score;
+            m->kind = SP_LEX_HYPERNYM;
+            describe_tax(m, &t, &np->senses[i], &c->np.senses[j]);
+            snprintf(m->path, sizeof m->path, "a room lists the %s with the %s", c->name, qp->mod_base[0]);
+        }
     int sibling = 0; /* the score is that of another head through the shared modifiers */
     /* a modifier that is itself a class of the scene ("DESK chair" beside the desk) says where
      * the thing is or what it serves, not a name two kinds share: no sibling reading */
@@ -1095,7 +1130,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             if (mod_use) mod_use[i] = LEX_MOD_USED;
             continue;
         }
-        if (i == held_mod) use = LEX_MOD_USED;
+        if (i == held_mod || (company && i == 0)) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
