@@ -888,7 +888,8 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
 
 /* 1 when every modifier of class c's name (its words before the last) is a word of the query: a
  * modifier's part ("ticket" of "ticket_office window") or a word of the head collocation before
- * its last ("reception" of WordNet's reception_desk). */
+ * its last ("reception" of WordNet's reception_desk); 2 when some agree only through a lemma of a
+ * query modifier's commonest sense or as a kind of it ("baggage", "espresso"); 0 otherwise. */
 static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX],
                       const expansion *mod_exp, const lex_np *mod_np)
 {
@@ -1009,8 +1010,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     if (has_head && m->kind != SP_LEX_EXACT) level_tax(v, c, np, qp, &base, m);
     /* The query's words hold the class's modifiers ("ticket desk", "reception desk" against the
      * ticket counter, the reception counter): the same kind named by the same words, so the heads
-     * are compared without the class's extra level, and heads that are siblings by their commonest
-     * or attested senses ("desk", "counter": both furniture) by plain Wu-Palmer, not as cousins. */
+     * are compared without the class's extra level, and heads that are siblings by the query's
+     * commonest or attested sense ("desk", "counter": both furniture) by Wu-Palmer one weak step
+     * (DELTA), not as cousins (MU). */
     int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp, qp->mod_np) : 0;
     /* the thing that stands with what the modifier names: "desk chair" -> the office chair, one
      * weak step (LEX_SYN) from the head's own sense */
