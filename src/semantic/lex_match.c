@@ -521,6 +521,16 @@ static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const s
                          !region_lists(v, &v->regions[r], m[0].class_index);
             if (listed) found = i, n_found++;
         }
+        /* or, listed nowhere, the one kind named with the anchor's word ("the chairs by the kids
+         * table": the kids chair) */
+        int named = -1, n_named = 0;
+        for (int i = 1; n_found == 0 && i < target->n_matches && m[i].score >= SP_LEX_THRESHOLD; i++) {
+            const char *nm = sp_lex_vocab_class(v, m[i].class_index);
+            size_t n = strlen(nm);
+            if (m[i].class_index == ai || n <= nl + 1 || nm[n - nl - 1] != ' ' || strcmp(nm + n - nl, top)) continue;
+            if (shares_modifier(v, m[i].class_index, ai)) named = i, n_named++;
+        }
+        if (n_found == 0 && n_named == 1) found = named, n_found = 1;
         if (n_found == 1) match_to_front(m, found);
         return;
     }

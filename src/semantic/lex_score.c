@@ -944,14 +944,9 @@ static int company_agree(const sp_lex_vocab *v, const lex_np *np, const lex_clas
     const char *m = qp->mod_base[0];
     for (int k = 0; k < c->n_tok; k++)
         if (!strcmp(c->tok[k], m)) return 0;
-    char room[WN_LEMMA_MAX];
-    snprintf(room, sizeof room, "%s", m);
-    for (char *p = room; *p; p++)
-        if (*p == '_') *p = ' ';
     for (int r = 0; r < v->n_regions; r++) {
         const lex_region *g = &v->regions[r];
-        /* or the modifier is the room itself ("living room table": the living room's coffee table) */
-        int has_c = 0, has_m = !strcasecmp(g->name, room);
+        int has_c = 0, has_m = 0;
         for (int i = 0; i < g->n_members; i++) {
             has_c |= !strcasecmp(g->members[i], c->name);
             has_m |= !strcasecmp(g->members[i], m);
