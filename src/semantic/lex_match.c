@@ -898,6 +898,11 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) {
             prefer_members(&trial->target, &trial->anchor);
+            /* a target the region does not hold is told apart by the company of the region's
+             * first thing ("the chair in the patient room": the ward lists the patient bed and
+             * the visitor chair) */
+            if (trial->target.n_matches && membership(&trial->anchor, trial->target.matches[0].class_index) < SP_LEX_THRESHOLD)
+                prefer_company(v, &trial->target, &trial->anchor);
             other_member_first(&trial->anchor, &trial->target);
         }
         else {
