@@ -87,11 +87,31 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
                           sp_error *err)
 {
     *is_region = 0;
-    if (np->head_start < 0) return 0;
+    if (np->head_start < 0) {
+        /* a table region's name WordNet lacks ("the cattery"): the region by its name as written */
+        char name[64] = "";
+        for (int i = 0; i < np->n_words; i++) {
+            strncat(name, i ? " " : "", sizeof name - strlen(name) - 1);
+            strncat(name, np->words[i], sizeof name - strlen(name) - 1);
+        }
+        const lex_region *nr = np->n_words && !np->placeholder ? lex_region_find(v, name) : NULL;
+        if (!nr) return 0;
+        int rc = lex_region_members(v, nr, name, NULL, ph, err);
+        if (rc) return rc;
+        if (!sub_sorted(ph)) qsort(ph->matches, (size_t)v->n, sizeof ph->matches[0], lex_match_cmp);
+        ph->is_region = 1;
+        snprintf(ph->head, sizeof ph->head, "%s", name);
+        *is_region = 1;
+        return 0;
+    }
     const lex_region *r = NULL;
     int rc = np->placeholder ? 0 : lex_region_named(v, np, &r, err);
     if (rc < 0) return rc;
     int by_wordnet_room = rc == 1; /* through a WordNet room's synonym: "sleeping room" */
+    /* a table name is written as people say it: "the ladies", "the stacks" are no lady, no stack */
+    if (!r && !np->placeholder && np->head_end == np->head_start + 1 && np->n_mods == 0 &&
+        strcmp(t->w[np->head_start], np->head))
+        r = lex_region_find(v, t->w[np->head_start]), by_wordnet_room = 0;
     rc = 0;
     /* A room of WordNet when its commonest sense is one ("kitchen"; not "car", whose fourth
      * sense is an elevator's cabin). */
@@ -113,8 +133,15 @@ static int resolve_region(const sp_lex_vocab *v, const lex_np *np, const lex_tok
      * scene (by name or synonym) is the area of those classes, not the table's room its head
      * alone stands for (the hall is no hallway here); a table name its modifiers make ("the
      * meeting room", "the locker room") stays the table's. */
+    int surface = 0; /* "wall cupboard": a thing mounted on the walls, not the walls' area */
+    for (int i = 0; i < np->n_mods; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX];
+        int nb = lex_bases(v->lx, WN_NOUN, np->mods[i], b, err);
+        if (nb < 0) return nb;
+        surface |= lex_building_surface(nb > 0 ? b[0] : np->mods[i]);
+    }
     if (!generic && depth == 0 && np->n_mods > 0 && !np->placeholder && !np->n_desc && lex_place_head(np) &&
-        !(r && region_by_mods(np, r))) {
+        !(r && region_by_mods(np, r)) && !surface) {
         int names = 0;
         if ((rc = mods_name_classes(v, np, depth, &names, err))) return rc;
         if (names) table = 0, r = NULL, def = NULL, generic = 1;
@@ -477,7 +504,36 @@ static void prefer_company(const sp_lex_vocab *v, sp_lex_phrase *target, const s
     sp_lex_class_match *m = target->matches;
     int nt = 1;
     while (nt < target->n_matches && m[nt].score == m[0].score) nt++;
-    if (nt < 2) return;
+    if (nt < 2) {
+        /* "the chair at the desk": the bare class named first, a kind of it by name (the office
+         * chair) that a room lists with the anchor is the one meant, when it is the only such */
+        const char *top = sp_lex_vocab_class(v, m[0].class_index);
+        if (strchr(top, ' ')) return;
+        size_t nl = strlen(top);
+        int found = -1, n_found = 0;
+        for (int i = 1; i < target->n_matches && m[i].score >= SP_LEX_THRESHOLD; i++) {
+            const char *nm = sp_lex_vocab_class(v, m[i].class_index);
+            size_t n = strlen(nm);
+            if (m[i].class_index == ai || n <= nl + 1 || nm[n - nl - 1] != ' ' || strcmp(nm + n - nl, top)) continue;
+            int listed = 0;
+            for (int r = 0; r < v->n_regions && !listed; r++)
+                listed = region_lists(v, &v->regions[r], ai) && region_lists(v, &v->regions[r], m[i].class_index) &&
+                         !region_lists(v, &v->regions[r], m[0].class_index);
+            if (listed) found = i, n_found++;
+        }
+        /* or, listed nowhere, the one kind named with the anchor's word ("the chairs by the kids
+         * table": the kids chair) */
+        int named = -1, n_named = 0;
+        for (int i = 1; n_found == 0 && i < target->n_matches && m[i].score >= SP_LEX_THRESHOLD; i++) {
+            const char *nm = sp_lex_vocab_class(v, m[i].class_index);
+            size_t n = strlen(nm);
+            if (m[i].class_index == ai || n <= nl + 1 || nm[n - nl - 1] != ' ' || strcmp(nm + n - nl, top)) continue;
+            if (shares_modifier(v, m[i].class_index, ai)) named = i, n_named++;
+        }
+        if (n_found == 0 && n_named == 1) found = named, n_found = 1;
+        if (n_found == 1) match_to_front(m, found);
+        return;
+    }
     int with[SP_LEX_MAX_CLASSES] = {0}, n_with = 0, best = -1;
     for (int r = 0; r < v->n_regions; r++) {
         if (!region_lists(v, &v->regions[r], ai)) continue;
@@ -769,7 +825,17 @@ static int room_reading(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_resul
     lex_np np;
     int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
     const lex_region *r = NULL;
-    if (!rc && !np.placeholder && !np.n_mods && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
+    /* whose room it is does not make it a thing: "the men's toilets", "the ladies' loos" */
+    int persons = !rc && np.n_mods > 0;
+    for (int i = 0; persons && i < np.n_mods; i++) {
+        char b[WN_MAX_BASES][WN_LEMMA_MAX]; /* by any base: "men" is also WordNet's troops */
+        int nb = lex_bases(v->lx, WN_NOUN, np.mods[i], b, err), p = 0;
+        if (nb < 0) rc = nb;
+        for (int k = 0; k < nb && !p && !rc; k++)
+            if ((p = names_person(v, b[k], err)) < 0) rc = p;
+        persons = p > 0;
+    }
+    if (!rc && !np.placeholder && (!np.n_mods || persons) && !np.n_desc && np.n_senses > 0 && np.senses[0].rank == 1 &&
         lex_sense_room(&np.senses[0]) && (rc = lex_region_named(v, &np, &r, err)) >= 0 && r) {
         rc = 0;
         sp_lex_phrase *reg = malloc(sizeof *reg);
@@ -832,6 +898,11 @@ int lex_match_reading(const sp_lex_vocab *v, const char *text, const lex_tokens 
         snprintf(trial->relation, sizeof trial->relation, "%s", name);
         if (trial->anchor.is_region) {
             prefer_members(&trial->target, &trial->anchor);
+            /* a target the region does not hold is told apart by the company of the region's
+             * first thing ("the chair in the patient room": the ward lists the patient bed and
+             * the visitor chair) */
+            if (trial->target.n_matches && membership(&trial->anchor, trial->target.matches[0].class_index) < SP_LEX_THRESHOLD)
+                prefer_company(v, &trial->target, &trial->anchor);
             other_member_first(&trial->anchor, &trial->target);
         }
         else {

@@ -103,7 +103,7 @@ static int definition_genus(const lex_db *lx, const lex_tokens *t, int *genus, s
 
 /* The surfaces every room has ("a small area set off by WALLS", "the FLOOR of a hall"): they
  * define no room, so a definition naming them adds no member. */
-static int building_surface(const char *base)
+int lex_building_surface(const char *base)
 {
     return !strcmp(base, "wall") || !strcmp(base, "floor") || !strcmp(base, "ceiling");
 }
@@ -111,14 +111,19 @@ static int building_surface(const char *base)
 /* Members of a named region: the table's phrases and the nouns of its WordNet definition;
  * *support counts the phrases that found a class. */
 static int region_members(const sp_lex_vocab *v, const lex_region *r, const char *definition,
-                          sp_lex_phrase *out, int *support, sp_error *err)
+                          sp_lex_phrase *out, int *support, int *first, sp_error *err)
 {
+    *first = -1;
     sp_lex_phrase *ph = malloc(sizeof *ph);
     if (!ph) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     int rc = 0;
     for (int i = 0; r && i < r->n_members && !rc; i++) {
         snprintf(ph->text, sizeof ph->text, "%s", r->members[i]);
         if ((rc = score_text_as(v, r->members[i], ph, 1, err))) break;
+        /* the class the table's first member names exactly: the place's defining object */
+        if (i == 0 && ph->n_matches && ph->matches[0].score >= SP_LEX_THRESHOLD && ph->matches[0].kind == SP_LEX_EXACT &&
+            (ph->n_matches < 2 || ph->matches[1].score < ph->matches[0].score))
+            *first = ph->matches[0].class_index;
         /* the table lists a place's defining objects first (the entrance: its door before the
          * coat rack): among members that match equally, the earlier comes first (LEX_TIE, an
          * order, not evidence) */
@@ -141,7 +146,7 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
         int nb = lex_bases(v->lx, WN_NOUN, w, base, err);
         if (nb < 0) rc = nb;
         if (rc || nb == 0 || lex_word_class_of(w) != LW_CONTENT || lex_is_generic_region(base[0]) ||
-            building_surface(base[0]))
+            lex_building_surface(base[0]))
             continue;
         snprintf(ph->text, sizeof ph->text, "%s", w);
         if ((rc = score_text(v, w, ph, err))) break;
@@ -260,9 +265,10 @@ int lex_region_activity(const sp_lex_vocab *v, const lex_tokens *words, sp_lex_p
 int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region **r,
                              sp_error *err)
 {
-    *r = lex_region_find(v, np->head);
+    *r = NULL;
     /* A table name WordNet does not join ("meeting room", "break room"): the head with its last
-     * modifiers, longest first ("the big meeting room" -> "meeting room"). */
+     * modifiers, longest first ("the big meeting room" -> "meeting room"), before the head alone
+     * ("the booking office" is the table's booking office, not any office). */
     int n_mods = np->n_mods - np->split;
     for (int from = 0; !*r && np->head[0] && from < n_mods; from++) {
         char name[64] = "";
@@ -272,6 +278,24 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         }
         strncat(name, np->head, sizeof name - strlen(name) - 1);
         *r = lex_region_find(v, name);
+    }
+    if (!*r) *r = lex_region_find(v, np->head);
+    /* a plural WordNet keeps as a lemma of its own ("rooms", an apartment): the table's name is
+     * by the singular ("the consulting rooms" -> "consulting room") */
+    char hb[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nhb = !*r && np->head[0] && n_mods > 0 ? lex_bases(v->lx, WN_NOUN, np->head, hb, err) : 0;
+    if (nhb < 0) return nhb;
+    for (int b = 0; b < nhb && !*r; b++) {
+        if (!strcmp(hb[b], np->head)) continue;
+        for (int from = 0; !*r && from < n_mods; from++) {
+            char name[64] = "";
+            for (int i = from; i < n_mods; i++) {
+                strncat(name, np->mods[i], sizeof name - strlen(name) - 1);
+                strncat(name, " ", sizeof name - strlen(name) - 1);
+            }
+            strncat(name, hb[b], sizeof name - strlen(name) - 1);
+            *r = lex_region_find(v, name);
+        }
     }
     /* The kind of area is a word of style: "the utility corner" is the table's "utility room",
      * "the work space" its "work area" (only after a generic head: a "locker" is no locker room). */
@@ -387,7 +411,7 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
     snprintf(ph->region, sizeof ph->region, "%s", name);
     for (char *p = ph->region; *p; p++)
         if (*p == '_') *p = ' ';
-    int support = 0, rc = region_members(v, r, definition, ph, &support, err);
+    int support = 0, first = -1, rc = region_members(v, r, definition, ph, &support, &first, err);
     if (rc) return rc;
     if (!r) { /* a place WordNet knows and the table does not: also what its name says is done */
         lex_tokens t;
@@ -402,11 +426,14 @@ static int members_compute(const sp_lex_vocab *v, const lex_region *r, const cha
     /* A room is known by its furniture: one kind of object alone (a sink) makes no bathroom; a
      * class named after the place says by its name that it is of it ("the shower stall" ->
      * the shower, "a booth for taking a shower") and stays. */
+    /* ... unless that one is the object the table lists first by its very name (the laundry's
+     * washing machine, the bike parking's cycle rack): the place's defining object stands for it */
     int kinds = 0;
     for (int i = 0; i < v->n; i++) kinds += ph->matches[i].score >= SP_LEX_THRESHOLD;
     if (kinds < 2)
         for (int i = 0; i < v->n; i++) {
             if (ph->matches[i].kind == SP_LEX_REGION) continue;
+            if (kinds == 1 && ph->matches[i].class_index == first && ph->matches[i].score >= SP_LEX_THRESHOLD) continue;
             ph->matches[i].score *= LEX_MU;
             if (ph->matches[i].score > 0)
                 snprintf(ph->matches[i].gloss_words, sizeof ph->matches[i].gloss_words,

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "lexical.h"
 
@@ -886,6 +887,75 @@ static void level_tax(const sp_lex_vocab *v, const lex_class *c, const lex_np *n
     }
 }
 
+/* 1 when every modifier of class c's name (its words before the last) is a word of the query: a
+ * modifier's part ("ticket" of "ticket_office window") or a word of the head collocation before
+ * its last ("reception" of WordNet's reception_desk); 2 when some agree only through a lemma of a
+ * query modifier's commonest sense or as a kind of it ("baggage", "espresso"); 0 otherwise. */
+static int mods_agree(const lex_np *np, const lex_class *c, const char (*mod_base)[WN_LEMMA_MAX],
+                      const expansion *mod_exp, const lex_np *mod_np)
+{
+    if (!c->spec || c->n_tok < 2 || c->joined) return 0;
+    char q[LEX_MAX_TOKENS][WN_LEMMA_MAX];
+    int n = 0;
+    for (int i = 0; i < np->n_mods - np->split && n < LEX_MAX_TOKENS; i++) {
+        char mod[WN_LEMMA_MAX];
+        snprintf(mod, sizeof mod, "%s", mod_base[i]);
+        for (char *save = NULL, *t = strtok_r(mod, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+            snprintf(q[n++], WN_LEMMA_MAX, "%s", t);
+    }
+    char head[WN_LEMMA_MAX];
+    snprintf(head, sizeof head, "%s", np->head);
+    char *last = strrchr(head, '_');
+    if (last) {
+        *last = 0;
+        for (char *save = NULL, *t = strtok_r(head, "_-", &save); t && n < LEX_MAX_TOKENS; t = strtok_r(NULL, "_-", &save))
+            snprintf(q[n++], WN_LEMMA_MAX, "%s", t);
+    }
+    int syn = 0;
+    for (int k = 0; k + 1 < c->n_tok; k++) {
+        int in = 0;
+        for (int i = 0; i < n && !in; i++) in = !strcmp(q[i], c->tok[k]);
+        /* or a lemma of a modifier's commonest sense ("baggage" of "luggage trolley") */
+        for (int i = 0; i < np->n_mods - np->split && !in && mod_exp; i++)
+            for (int e = 1; e < mod_exp[i].n && !in; e++) in = !strcmp(mod_exp[i].w[e], c->tok[k]);
+        /* or a kind of it by the modifier's commonest sense ("espresso" of "coffee machine") */
+        for (int j = 0; j < c->n_kind && !in && mod_np; j++) {
+            if (strcmp(c->kind_np[j].head, c->tok[k])) continue;
+            for (int i = 0; i < np->n_mods - np->split && !in; i++)
+                for (int b = 0; b < c->kind_np[j].n_senses && b < 2 && !in && mod_np[i].n_senses; b++)
+                    in = lex_anc_find(&mod_np[i].senses[0], c->kind_np[j].senses[b].off) > 0;
+        }
+        if (!in) return 0;
+        int exact = 0;
+        for (int i = 0; i < n && !exact; i++) exact = !strcmp(q[i], c->tok[k]);
+        syn |= !exact;
+    }
+    return syn ? 2 : 1;
+}
+
+/* 1 when class c ("office chair") is the query's head word with other modifiers and a room of the
+ * region table lists c by name together with the query's one other modifier as a thing ("desk
+ * chair": the office lists the desk and the office chair): the chair that stands with a desk. */
+static int company_agree(const sp_lex_vocab *v, const lex_np *np, const lex_class *c, const query_prep *qp)
+{
+    if (!c->spec || c->n_tok < 2 || np->n_mods - np->split != 1 || np->split || strchr(np->head, '_') ||
+        strcmp(c->tok[c->n_tok - 1], np->head))
+        return 0;
+    const char *m = qp->mod_base[0];
+    for (int k = 0; k < c->n_tok; k++)
+        if (!strcmp(c->tok[k], m)) return 0;
+    for (int r = 0; r < v->n_regions; r++) {
+        const lex_region *g = &v->regions[r];
+        int has_c = 0, has_m = 0;
+        for (int i = 0; i < g->n_members; i++) {
+            has_c |= !strcasecmp(g->members[i], c->name);
+            has_m |= !strcasecmp(g->members[i], m);
+        }
+        if (has_c && has_m) return 1;
+    }
+    return 0;
+}
+
 /* Scores class c; mod_use [n_mods] gets what each modifier did. */
 static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_prep *qp, int ci,
                         sp_lex_class_match *m, int *mod_use)
@@ -939,6 +1009,56 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
      * class one level below them, as for a name WordNet lacks. */
     if (has_head && m->kind != SP_LEX_EXACT && c->name_head.n_senses) name_head_tax(np, c, &base, m);
     if (has_head && m->kind != SP_LEX_EXACT) level_tax(v, c, np, qp, &base, m);
+    /* The query's words hold the class's modifiers ("ticket desk", "reception desk" against the
+     * ticket counter, the reception counter): the same kind named by the same words, so the heads
+     * are compared without the class's extra level, and heads that are siblings by the query's
+     * commonest or attested sense ("desk", "counter": both furniture) by Wu-Palmer one weak step
+     * (DELTA), not as cousins (MU). */
+    int agree = has_head && m->kind != SP_LEX_EXACT && c->np.n_senses ? mods_agree(np, c, qp->mod_base, qp->mod_exp, qp->mod_np) : 0;
+    /* the thing that stands with what the modifier names: "desk chair" -> the office chair, one
+     * weak step (LEX_SYN) from the head's own sense */
+    int company = has_head && m->kind != SP_LEX_EXACT && !agree && c->np.n_senses && company_agree(v, np, c, qp);
+    for (int i = 0; company && i < np->n_senses; i++)
+        for (int j = 0; j < c->np.n_senses; j++) {
+            lex_tax t = lex_compare(&np->senses[i], &c->np.senses[j]);
+            if (t.kind != SP_LEX_SYNONYM || LEX_SYN * t.score <= base) continue;
+            base = LEX_SYN * t.score;
+            m->kind = SP_LEX_HYPERNYM;
+            describe_tax(m, &t, &np->senses[i], &c->np.senses[j]);
+            snprintf(m->path, sizeof m->path, "a room lists the %s with the %s", c->name, qp->mod_base[0]);
+        }
+    int sibling = 0; /* the score is that of another head through the shared modifiers */
+    /* a modifier that is itself a class of the scene ("DESK chair" beside the desk) says where
+     * the thing is or what it serves, not a name two kinds share: no sibling reading */
+    int mod_is_class = 0;
+    for (int i = 0; agree && i < np->n_mods - np->split && !mod_is_class; i++)
+        for (int j = 0; j < v->n && !mod_is_class; j++) mod_is_class = !strcmp(v->classes[j].name, qp->mod_base[i]);
+    if (agree) {
+        for (int i = 0; i < np->n_senses; i++)
+            for (int j = 0; j < c->np.n_senses; j++) {
+                lex_tax t = lex_compare(&np->senses[i], &c->np.senses[j]);
+                if (t.kind == SP_LEX_NONE) continue;
+                float sc = t.score;
+                if (t.kind == SP_LEX_RELATED) {
+                    if (!np->senses[i].attested || strchr(np->head, '_') || mod_is_class) continue;
+                    /* through an ancestor as general as an artifact, a structure, an
+                     * instrumentality (depth < 6) they are no siblings ("safety barrier" / safety cone) */
+                    if (c->np.senses[j].anc[t.c_anc].depth < 6) continue;
+                    sc = LEX_DELTA * lex_wup(&np->senses[i], &c->np.senses[j]); /* another head: one weak step */
+                }
+                if (agree == 2) sc *= LEX_SYN; /* agreeing through a synonym: one weak step */
+                if (sc <= base) continue;
+                base = sc;
+                sibling = t.kind == SP_LEX_RELATED;
+                m->kind = t.kind == SP_LEX_RELATED ? SP_LEX_HYPERNYM : t.kind;
+                describe_tax(m, &t, &np->senses[i], &c->np.senses[j]);
+                snprintf(m->path, sizeof m->path, "'%s' and '%s' share the modifiers; heads %.2f alike", np->head,
+                         c->name, sc);
+            }
+    }
+    /* a part of any counter is one of the reception counter too: a class whose name says more
+     * than the query comes after the bare one (an order, not evidence) */
+    if (m->kind == SP_LEX_PART && c->n_tok > 1 && !agree) base -= LEX_TIE;
     /* The query names what a holder class's modifier names, or a hypernym of it, and nothing
      * else ("dumbbells", "weights" -> the dumbbell rack): the thing the class holds is found
      * there, two weak steps away (LEX_HOLDS times the taxonomy's score). */
@@ -1013,10 +1133,23 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             if (mod_use) mod_use[i] = LEX_MOD_USED;
             continue;
         }
-        if (i == held_mod) use = LEX_MOD_USED;
+        if (i == held_mod || (company && i == 0)) use = LEX_MOD_USED;
         for (int k = 0; k < c->n_tok && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->tok[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && parts_in_name(qp->mod_base[i], c)) use = LEX_MOD_USED;
+        for (int e = 1; use == LEX_MOD_IGNORED && agree == 2 && e < qp->mod_exp[i].n; e++)
+            for (int k = 0; k + 1 < c->n_tok; k++)
+                if (!strcmp(c->tok[k], qp->mod_exp[i].w[e])) use = LEX_MOD_USED;
+        for (int j = 0; use == LEX_MOD_IGNORED && agree == 2 && j < c->n_kind && qp->mod_np[i].n_senses; j++)
+            for (int b = 0; b < c->kind_np[j].n_senses && b < 2; b++)
+                if (lex_anc_find(&qp->mod_np[i].senses[0], c->kind_np[j].senses[b].off) > 0) use = LEX_MOD_USED;
+        if (use == LEX_MOD_IGNORED && agree && (strchr(qp->mod_base[i], '_') || strchr(qp->mod_base[i], '-'))) {
+            char buf[WN_LEMMA_MAX];
+            snprintf(buf, sizeof buf, "%s", qp->mod_base[i]);
+            for (char *save = NULL, *t = strtok_r(buf, "_-", &save); t && use == LEX_MOD_IGNORED; t = strtok_r(NULL, "_-", &save))
+                for (int k = 0; k + 1 < c->n_tok; k++)
+                    if (!strcmp(c->tok[k], t)) use = LEX_MOD_USED;
+        }
         for (int k = 0; k < c->n_part && use == LEX_MOD_IGNORED; k++)
             if (!strcmp(c->part[k], qp->mod_base[i])) use = LEX_MOD_USED;
         if (use == LEX_MOD_IGNORED && lex_vocab_has_word(v, qp->mod_base[i])) use = LEX_MOD_CONTRARY;
@@ -1046,6 +1179,9 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             s *= 1.0f - LEX_GAMMA + LEX_GAMMA * g;
             snprintf(m->gloss_words, sizeof m->gloss_words, "%s", why);
         }
+        /* named by the query's words: first among equals; through another head, last */
+        if (agree && !sibling && s < 1.0f) s = s + LEX_TIE > 1.0f ? 1.0f : s + LEX_TIE;
+        else if (sibling) s -= LEX_TIE;
         m->score = s;
         int used[8] = {0};
         char awhy[192] = "";

@@ -312,6 +312,9 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
 /* 1 when np's head names a place one can be in: a generic area word, or one of its first senses
  * a room, a workplace or a functional part of a structure ("hall", "gallery"). */
 int lex_place_head(const lex_np *np);
+/* 1 for the surfaces every room has (wall, floor, ceiling): they define no room, and a thing
+ * named after one ("wall cupboard", "ceiling fan") is mounted on it, not its area. */
+int lex_building_surface(const char *base);
 /* The definition of a region name's place sense (first sense that is a room, a functional area
  * or a workplace; for table entries any such sense, else the first), or NULL when none. */
 const char *lex_region_definition(const lex_np *np, int table_entry);
