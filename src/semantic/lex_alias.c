@@ -253,7 +253,8 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
 }
 
 /* Folds the reading of an activity's thing into res: a class that is the thing or a kind of it
- * (named, a synonym, a kind by WordNet or by its name, at most one weak step from the thing:
+ * (named, a synonym, a kind by WordNet or by its name, not a more general thing: a recliner is
+ * for lying down, not every chair; at most one weak step from the thing:
  * score >= LEX_DELTA) keeps the reading, one weak step (LEX_USE) below its own score, when that
  * is better; definitions, parts, relatives and kinds with other modifiers ("ticket counter" is
  * no kiosk counter) do not count. */
@@ -273,9 +274,7 @@ static void fold_use(sp_lex_result *res, const sp_lex_result *alt, const lex_use
     for (int i = 0; i < alt->target.n_matches; i++) {
         const sp_lex_class_match *m = &alt->target.matches[i];
         sp_lex_class_match *r = by_class[m->class_index];
-        if (m->kind != SP_LEX_EXACT && m->kind != SP_LEX_SYNONYM && m->kind != SP_LEX_HYPERNYM &&
-            m->kind != SP_LEX_HYPONYM)
-            continue;
+        if (m->kind != SP_LEX_EXACT && m->kind != SP_LEX_SYNONYM && m->kind != SP_LEX_HYPERNYM) continue;
         if (m->score < LEX_DELTA) continue;
         float s = m->score * LEX_USE;
         if (!r || s <= r->score) continue;

@@ -68,8 +68,9 @@ static int inflects(const sp_lex_vocab *v, wn_pos pos, const char *w, const char
  * wash", "where can I wash", "somewhere WE can eat", "a place FOR washing"). */
 static int verb_cue(const char *w)
 {
-    static const char *const cue[] = {"to", "i", "we", "you", "one", "can", "could", "do", "should", "would",
-                                      "will", "must", "may", "might", "lets", "let's", "for", "me", "us", NULL};
+    static const char *const cue[] = {"to",    "i",     "we",  "you",   "they", "people", "someone", "somebody",
+                                      "one",   "can",   "could", "do",  "should", "would", "will",  "must",
+                                      "may",   "might", "lets", "let's", "for",   "me",     "us",     NULL};
     for (int i = 0; cue[i]; i++)
         if (!strcmp(w, cue[i])) return 1;
     return 0;
