@@ -252,6 +252,45 @@ static void fold(sp_lex_result *res, sp_lex_result *alt, const char *used)
     res->found = res->confidence >= SP_LEX_THRESHOLD;
 }
 
+/* Folds the reading of an activity's thing into res: a class that is the thing or a kind of it
+ * (named, a synonym, a kind by WordNet or by its name, not a more general thing: a recliner is
+ * for lying down, not every chair; at most one weak step from the thing:
+ * score >= LEX_DELTA) keeps the reading, one weak step (LEX_USE) below its own score, when that
+ * is better; definitions, parts, relatives and kinds with other modifiers ("ticket counter" is
+ * no kiosk counter) do not count. */
+static void fold_use(sp_lex_result *res, const sp_lex_result *alt, const lex_use *u, const char *thing)
+{
+    if (!plain(res) || !plain(alt)) return;
+    sp_lex_class_match *by_class[SP_LEX_MAX_CLASSES] = {0};
+    for (int i = 0; i < res->target.n_matches; i++) by_class[res->target.matches[i].class_index] = &res->target.matches[i];
+    char used[160] = "";
+    for (int k = 0; k < u->n_words; k++) {
+        size_t o = strlen(used);
+        snprintf(used + o, sizeof used - o, "%s%s", k ? " " : "'", u->words[k]);
+    }
+    size_t o = strlen(used);
+    snprintf(used + o, sizeof used - o, "' is done with %s", thing);
+    int changed = 0;
+    for (int i = 0; i < alt->target.n_matches; i++) {
+        const sp_lex_class_match *m = &alt->target.matches[i];
+        sp_lex_class_match *r = by_class[m->class_index];
+        if (m->kind != SP_LEX_EXACT && m->kind != SP_LEX_SYNONYM && m->kind != SP_LEX_HYPERNYM) continue;
+        if (m->score < LEX_DELTA) continue;
+        float s = m->score * LEX_USE;
+        if (!r || s <= r->score) continue;
+        *r = *m;
+        r->score = s;
+        char p[sizeof r->path];
+        snprintf(p, sizeof p, "%s", r->path);
+        snprintf(r->path, sizeof r->path, "activity %s%s%s", used, p[0] ? "; " : "", p);
+        changed = 1;
+    }
+    if (!changed) return;
+    qsort(res->target.matches, (size_t)res->target.n_matches, sizeof res->target.matches[0], lex_match_cmp);
+    res->confidence = res->target.n_matches ? res->target.matches[0].score : 0;
+    res->found = res->confidence >= SP_LEX_THRESHOLD;
+}
+
 /* A word and a preposition that a class's name holds side by side and WordNet joins with a
  * hyphen ("walk in" of the "walk in fridge", WordNet's walk-in) are that one word in a query too,
  * as the class name was read (class_prepare): "walk in fridge" is no walk in a fridge. */
@@ -327,6 +366,16 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
         if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
         if (!(rc = lex_match_reading(v, text, &t, alt, err))) fold(res, alt, used);
     }
+    const lex_use *uses[4];
+    int nu = rc ? 0 : lex_uses_find(v, &raw, uses, 4, err);
+    if (nu < 0) rc = nu;
+    for (int k = 0; k < nu && !rc; k++)
+        for (int j = 0; j < uses[k]->n_targets && !rc; j++) {
+            lex_tokens t;
+            lex_tokenize(uses[k]->targets[j], &t);
+            if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+            if (!(rc = lex_match_reading(v, text, &t, alt, err))) fold_use(res, alt, uses[k], uses[k]->targets[j]);
+        }
     free(alt);
     return rc;
 }

@@ -44,6 +44,7 @@ void sp_lex_vocab_free(sp_lex_vocab *v)
     for (int i = 0; i < v->n_regions; i++) free(v->regions[i].cache);
     free(v->regions);
     free(v->aliases);
+    free(v->uses);
     pthread_mutex_destroy(&v->region_lock);
     free(v);
 }
@@ -518,18 +519,20 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     np->n_senses = kept;
 }
 
-/* The alias table (data/semantic/aliases.json), and a user's aliases.json beside a region table
- * given by path, when there is one. */
-static int load_aliases(sp_lex_vocab *v, const char *regions_path, sp_error *err)
+/* A table of data/semantic/ (name: "aliases.json", "uses.json"), and the user's file of that
+ * name beside a region table given by path, when there is one. */
+static int load_table(sp_lex_vocab *v, const char *regions_path, const char *name,
+                      int (*load)(sp_lex_vocab *, const char *, sp_error *), sp_error *err)
 {
-    char path[2048], mine[2048];
-    sp_path_join(path, sizeof path, sp_data_dir(), "semantic/aliases.json");
-    int rc = lex_aliases_load(v, path, err);
+    char path[2048], mine[2048], rel[64];
+    snprintf(rel, sizeof rel, "semantic/%s", name);
+    sp_path_join(path, sizeof path, sp_data_dir(), rel);
+    int rc = load(v, path, err);
     const char *slash = regions_path ? strrchr(regions_path, '/') : NULL;
     if (rc || !regions_path || !regions_path[0]) return rc;
-    if (slash) snprintf(mine, sizeof mine, "%.*s/aliases.json", (int)(slash - regions_path), regions_path);
-    else snprintf(mine, sizeof mine, "aliases.json");
-    if (strcmp(mine, path) && sp_file_exists(mine)) rc = lex_aliases_load(v, mine, err);
+    if (slash) snprintf(mine, sizeof mine, "%.*s/%s", (int)(slash - regions_path), regions_path, name);
+    else snprintf(mine, sizeof mine, "%s", name);
+    if (strcmp(mine, path) && sp_file_exists(mine)) rc = load(v, mine, err);
     return rc;
 }
 
@@ -549,7 +552,8 @@ int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *co
     v->lx = lx;
     v->classes = calloc(n ? (size_t)n : 1, sizeof *v->classes);
     int rc = v->classes ? 0 : sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-    if (!rc) rc = load_aliases(v, regions_path, err);
+    if (!rc) rc = load_table(v, regions_path, "aliases.json", lex_aliases_load, err);
+    if (!rc) rc = load_table(v, regions_path, "uses.json", lex_uses_load, err);
     for (int i = 0; i < n && !rc; i++) {
         if (!classes[i] || !classes[i][0]) {
             rc = sp_error_set(err, SP_E_ARG, "lexical: class %d has an empty name", i);

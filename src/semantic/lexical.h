@@ -25,6 +25,9 @@
  * verb is done; a definition naming the class as what the verb acts on (a past participle,
  * "a WRITTEN work") is then one weak step (DELTA) of evidence, not a full match. */
 #define LEX_PATIENT LEX_DELTA
+/* A thing read from the activity table (data/semantic/uses.json: "wash hand" -> washbasin):
+ * general knowledge of what affords what, one weak step from the user's words. */
+#define LEX_USE LEX_DELTA
 
 #define LEX_MAX_TOKENS 32
 #define LEX_WORD 48
@@ -264,10 +267,21 @@ typedef struct lex_alias {
     char targets[3][64];     /* WordNet noun lemmas, words separated by spaces */
 } lex_alias;
 
+/* An activity and the things that afford it, from data/semantic/uses.json: a query asking to
+ * do it ("where can I wash my hands") is also read as each thing's name. */
+typedef struct lex_use {
+    int n_words;
+    char words[4][LEX_WORD]; /* the verb (base form), then the nouns of its object (singular) */
+    int n_targets;
+    char targets[4][64];     /* names of things, read as queries */
+} lex_use;
+
 struct sp_lex_vocab {
     const lex_db *lx;
     int n_aliases;
     lex_alias *aliases;
+    int n_uses;
+    lex_use *uses;
     int n;
     lex_class *classes;
     int n_vocab_words;
@@ -278,6 +292,13 @@ struct sp_lex_vocab {
 };
 
 int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
+/* Loads an activity table (JSON {"uses": {"verb noun...": [names]}}) into v. */
+int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err);
+/* The activity entries a query asks for: its verb used as a verb (after "to", a subject or a
+ * modal: "something to wash", "where can I wash", "I need to wash") and every other word of the
+ * entry among the query's words after it (any inflection). Only the most specific entries (most
+ * words) are kept; returns how many, at most max, or a negative SP_E_* code. */
+int lex_uses_find(const sp_lex_vocab *v, const lex_tokens *t, const lex_use **out, int max, sp_error *err);
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
 /* The table region named stem, or "stem G" with G a generic area word ("utility" -> "utility
  * room"), or NULL. */

@@ -233,6 +233,51 @@ static int rules_vocab(const sp_lexicon *lx, const char **names, int n, sp_lex_v
     return 1;
 }
 
+/* The activity table (data/semantic/uses.json): every entry has a verb first and 1-4 names; a
+ * query asking to do a thing finds what affords it, one weak step below a named thing; the verb
+ * only counts used as a verb ("cash machine" is no "get cash"); kinds with another modifier do not
+ * take the reading; a thing the scene lacks finds nothing through it. */
+static void test_uses(const sp_lexicon *lx)
+{
+    char path[2048];
+    sp_path_join(path, sizeof path, sp_data_dir(), "semantic/uses.json");
+    cJSON *js = NULL;
+    sp_error err = {0};
+    CHECK_OK(sp_json_read_file(path, &js, &err), &err);
+    const cJSON *uses = cJSON_GetObjectItemCaseSensitive(js, "uses"), *it;
+    int n = 0;
+    cJSON_ArrayForEach(it, uses) {
+        n++;
+        char first[64];
+        sscanf(it->string, "%63s", first);
+        CHECK_MSG(lex_is_pos((const lex_db *)lx, WN_VERB, first, &err) > 0, "use '%s': '%s' is no WordNet verb",
+                  it->string, first);
+        CHECK_MSG(cJSON_GetArraySize(it) >= 1 && cJSON_GetArraySize(it) <= 4, "use '%s': 1 to 4 names", it->string);
+    }
+    cJSON_Delete(js);
+    CHECK_MSG(n >= 100, "%d activities", n);
+    const char *classes[] = {"sink", "toilet", "ticket machine", "kiosk counter", "cash machine", "bed"};
+    sp_lex_vocab *v = NULL;
+    sp_lex_result *res = NULL;
+    if (rules_vocab(lx, classes, 6, &v, &res)) return;
+    CHECK(!strcmp(found_class(v, "where can I wash my hands", res), "sink"));
+    CHECK(strstr(res->target.matches[0].path, "activity 'wash hand' is done with") != NULL);
+    CHECK(res->confidence <= LEX_USE + 1e-6f);
+    CHECK(!strcmp(found_class(v, "where do I buy a ticket", res), "ticket machine"));
+    for (int i = 0; i < res->target.n_matches; i++) /* no reading through "counter" alone */
+        if (!strcmp(sp_lex_vocab_class(v, res->target.matches[i].class_index), "kiosk counter"))
+            CHECK(!strstr(res->target.matches[i].path, "activity"));
+    CHECK(!strcmp(found_class(v, "cash machine", res), "cash machine"));
+    CHECK(!strstr(res->target.matches[0].path, "activity"));
+    sp_lex_vocab_free(v);
+    free(res);
+    const char *none[] = {"bed", "wardrobe"};
+    if (rules_vocab(lx, none, 2, &v, &res)) return;
+    CHECK(!strcmp(found_class(v, "where can I wash my hands", res), ""));
+    sp_lex_vocab_free(v);
+    free(res);
+}
+
 /* The alias table (data/semantic/aliases.json, issue 17 phase 6): every target is a WordNet noun
  * (no scene's class strings), no name is a class of the five development tables, and names are
  * another reading: whole words, plurals, never inside a WordNet collocation, whole class names. */
@@ -830,6 +875,7 @@ int main(int argc, char **argv)
     test_phase9_rules(lx);
     test_phase10_rules(lx);
     test_phase11_rules(lx);
+    test_uses(lx);
     const char *worlds[] = {"house", "bookstore", "office", "ward", "garage", "cafe", "basement", "classroom", "hotel",
                             "grocery", "chemlab", "pharmacy", "salon", "warehouse", "apartment", "hospital", "smallhouse", "gym", "museum",
                             "library", "restaurant", "vetclinic", "station", "cinema", "firestation", "bowling", "airport"};

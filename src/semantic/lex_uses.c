@@ -1,0 +1,112 @@
+/* What affords what: "where can I wash my hands", "something to charge my phone", "I need to
+ * print this" ask for a thing by what one does with it, and a building's things are named, not
+ * defined: WordNet's definitions rarely say that a washbasin is where hands are washed or a
+ * charging point where a phone is charged. A curated table (data/semantic/uses.json, written from
+ * general knowledge of activities in buildings, as ConceptNet's UsedFor / AtLocation relations
+ * are) maps an activity, a verb and the nouns of its object, to the names of the things that
+ * afford it; a query that asks to do it is also read as each of those names (lex_alias.c folds the
+ * readings), and a class counts when it is that thing or a kind of it. */
+#include <cjson/cJSON.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "lexical.h"
+#include "semsplat/io.h"
+
+static int add_use(sp_lex_vocab *v, const char *path, const cJSON *it, sp_error *err)
+{
+    lex_tokens t;
+    lex_tokenize(it->string, &t);
+    if (t.n < 1 || t.n > 4 || !cJSON_IsArray(it) || cJSON_GetArraySize(it) < 1)
+        return sp_error_set(err, SP_E_FORMAT, "%s: use '%s': an activity of 1 to 4 words with a list of names",
+                            path, it->string);
+    lex_use *nu = realloc(v->uses, sizeof *nu * (size_t)(v->n_uses + 1));
+    if (!nu) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    v->uses = nu;
+    lex_use *u = memset(&nu[v->n_uses], 0, sizeof *nu);
+    u->n_words = t.n;
+    for (int i = 0; i < t.n; i++) snprintf(u->words[i], LEX_WORD, "%s", t.w[i]);
+    const cJSON *m;
+    cJSON_ArrayForEach(m, it) {
+        if (!cJSON_IsString(m) || !m->valuestring[0] || strlen(m->valuestring) >= sizeof u->targets[0])
+            return sp_error_set(err, SP_E_FORMAT, "%s: use '%s': names must be strings under %zu bytes", path,
+                                it->string, sizeof u->targets[0]);
+        if (u->n_targets < 4) snprintf(u->targets[u->n_targets++], sizeof u->targets[0], "%s", m->valuestring);
+    }
+    v->n_uses++;
+    return 0;
+}
+
+int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err)
+{
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return sp_error_prefix(err, "lexical: activity table: ");
+    const cJSON *uses = cJSON_GetObjectItemCaseSensitive(js, "uses"), *it;
+    if (!cJSON_IsObject(uses)) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing object \"uses\"", path);
+    cJSON_ArrayForEach(it, uses) {
+        if (rc) break;
+        if (it->string && it->string[0] != '_') rc = add_use(v, path, it, err);
+    }
+    cJSON_Delete(js);
+    return rc;
+}
+
+/* 1 when w is key or an inflection of it as pos ("washing" -> wash, "hands" -> hand). */
+static int inflects(const sp_lex_vocab *v, wn_pos pos, const char *w, const char *key, sp_error *err)
+{
+    if (!strcmp(w, key)) return 1;
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int nb = lex_bases(v->lx, pos, w, b, err);
+    for (int i = 0; i < nb; i++)
+        if (!strcmp(b[i], key)) return 1;
+    return nb < 0 ? nb : 0;
+}
+
+/* A word before a verb that makes it one: the purpose "to", a subject, a modal ("something TO
+ * wash", "where can I wash", "somewhere WE can eat", "a place FOR washing"). */
+static int verb_cue(const char *w)
+{
+    static const char *const cue[] = {"to",    "i",     "we",  "you",   "they", "people", "someone", "somebody",
+                                      "one",   "can",   "could", "do",  "should", "would", "will",  "must",
+                                      "may",   "might", "lets", "let's", "for",   "me",     "us",     NULL};
+    for (int i = 0; cue[i]; i++)
+        if (!strcmp(w, cue[i])) return 1;
+    return 0;
+}
+
+/* 1 when the query asks to do u: its verb after a cue, its other words among what follows. */
+static int asks_for(const sp_lex_vocab *v, const lex_tokens *t, const lex_use *u, sp_error *err)
+{
+    for (int i = 1; i < t->n; i++) {
+        if (!verb_cue(t->w[i - 1])) continue;
+        int rc = inflects(v, WN_VERB, t->w[i], u->words[0], err);
+        if (rc < 0) return rc;
+        if (!rc) continue;
+        int all = 1;
+        for (int k = 1; k < u->n_words && all; k++) {
+            int found = 0;
+            for (int j = i + 1; j < t->n && !found; j++)
+                if ((found = inflects(v, WN_NOUN, t->w[j], u->words[k], err)) < 0) return found;
+            all = found;
+        }
+        if (all) return 1;
+    }
+    return 0;
+}
+
+int lex_uses_find(const sp_lex_vocab *v, const lex_tokens *t, const lex_use **out, int max, sp_error *err)
+{
+    int n = 0, best = 0;
+    for (int k = 0; k < v->n_uses; k++) {
+        const lex_use *u = &v->uses[k];
+        if (u->n_words < best) continue;
+        int rc = asks_for(v, t, u, err);
+        if (rc < 0) return rc;
+        if (!rc) continue;
+        if (u->n_words > best) best = u->n_words, n = 0;
+        if (n < max) out[n++] = u;
+    }
+    return n;
+}
