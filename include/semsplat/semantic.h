@@ -533,8 +533,9 @@ void sp_lexicon_free(sp_lexicon *lx);
 /* Prepares a scene's class names (n <= SP_LEX_MAX_CLASSES; each index keeps its name) against lx,
  * which must outlive the vocabulary. regions_path: a region table (JSON object: region name ->
  * array of object phrases), NULL = sp_data_dir()/semantic/regions.json ("" = none); the alias
- * table sp_data_dir()/semantic/aliases.json is always read, and an aliases.json beside a given
- * regions_path adds its names. Resolves the
+ * table sp_data_dir()/semantic/aliases.json and the activity table .../semantic/uses.json are
+ * always read, and an aliases.json or uses.json beside a given regions_path adds its entries.
+ * Resolves the
  * table's regions once (house, 25 classes: about 60 ms). */
 int sp_lex_vocab_create(sp_lex_vocab **out, const sp_lexicon *lx, const char *const *classes,
                         int n, const char *regions_path, sp_error *err);

@@ -275,6 +275,28 @@ static void test_uses(const sp_lexicon *lx)
     if (rules_vocab(lx, none, 2, &v, &res)) return;
     CHECK(!strcmp(found_class(v, "where can I wash my hands", res), ""));
     sp_lex_vocab_free(v);
+    /* a user's uses.json beside the region table they pass adds its activities; a bad one fails */
+    const char *dir = test_tmpdir("lex_uses");
+    char rp[1200], up[1200];
+    snprintf(rp, sizeof rp, "%s/regions.json", dir);
+    snprintf(up, sizeof up, "%s/uses.json", dir);
+    FILE *f = fopen(rp, "w");
+    if (f) fputs("{\"lounge\": [\"sofa\"]}", f), fclose(f);
+    f = fopen(up, "w");
+    if (f) fputs("{\"uses\": {\"juggle ball\": [\"toy box\"]}}", f), fclose(f);
+    const char *mine[] = {"toy box", "sink"};
+    v = NULL;
+    CHECK_OK(sp_lex_vocab_create(&v, lx, mine, 2, rp, &err), &err);
+    if (v && res) {
+        CHECK_OK(sp_lex_match(v, "where can I juggle some balls", res, &err), &err);
+        CHECK(res->found && !strcmp(sp_lex_vocab_class(v, res->target.matches[0].class_index), "toy box"));
+        CHECK(strstr(res->target.matches[0].path, "activity 'juggle ball'") != NULL);
+    }
+    sp_lex_vocab_free(v);
+    f = fopen(up, "w");
+    if (f) fputs("{\"uses\": {\"juggle ball\": \"toy box\"}}", f), fclose(f);
+    v = NULL;
+    CHECK_FAILS(sp_lex_vocab_create(&v, lx, mine, 2, rp, &err), SP_E_FORMAT, &err, "juggle ball");
     free(res);
 }
 
