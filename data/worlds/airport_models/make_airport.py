@@ -116,19 +116,7 @@ base.COL.update({
     "apron_glass": "0.55 0.72 0.85", "window_frame": "0.3 0.32 0.35",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails, rollers and wheels are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):
-    return turned(v, "1.5708 0 0")
+turned, along_x, along_y = base.turned, base.along_x, base.along_y
 
 
 # ---- the check-in hall (local frames: x right, y forward = the side a person uses, z up) ----

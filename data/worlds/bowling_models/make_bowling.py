@@ -51,6 +51,8 @@ sys.dont_write_bytecode = True  # leave no __pycache__ in the repo
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "office_models"))
 import make_office as base  # noqa: E402  (primitives, lights, the SDF document, door, window, desk)
+sys.path.insert(0, os.path.join(HERE, "..", "restaurant_models"))
+import make_restaurant as rest  # noqa: E402  (washroom fittings, extinguisher, exit sign)
 
 W, D, H = 30.0, 20.0, 3.5  # floor width (x), depth (y), wall height
 T = 0.1                    # wall thickness
@@ -119,22 +121,12 @@ base.COL.update({
     "paper": "0.96 0.96 0.94", "number_white": "0.95 0.95 0.95",
 })
 box, cyl, sph, legs = base.box, base.cyl, base.sph, base.legs
+hand_dryer, fire_extinguisher, exit_sign = rest.hand_dryer, rest.fire_extinguisher, rest.exit_sign
+toilet, urinal, sink, mirror = rest.toilet, rest.urinal, rest.sink, rest.mirror
+turned, along_x, along_y = base.turned, base.along_x, base.along_y
 
 PIN_ROW = 0.264    # rows of the pin triangle, one behind the other
 PIN_SPACE = 0.3048  # pins 12 in apart within a row
-
-
-def turned(v, rpy):
-    """A visual rotated in place (cylinders are upright in SDF; rails, knobs and wheels are not)."""
-    return v.replace(" 0 0 0</pose>", f" {rpy}</pose>", 1)
-
-
-def along_x(v):
-    return turned(v, "0 1.5708 0")
-
-
-def along_y(v):
-    return turned(v, "1.5708 0 0")
 
 
 def castors(hx, hy, r=0.04):
@@ -550,47 +542,6 @@ def tv():
 
 
 # ---- the toilets ----
-def toilet():
-    """A toilet: the cistern against the wall (-y), the bowl, seat and lid in front of it."""
-    return [box("cistern", "porcelain", 0, -0.22, 0.62, 0.42, 0.18, 0.4),
-            cyl("bowl", "porcelain", 0, 0.05, 0.2, 0.19, 0.4),
-            cyl("seat", "porcelain", 0, 0.06, 0.41, 0.21, 0.03),
-            turned(cyl("lid", "porcelain", 0, -0.12, 0.62, 0.2, 0.02), "-0.25 0 0"),
-            box("flush", "steel", 0, -0.22, 0.83, 0.1, 0.06, 0.02)]
-
-
-def urinal():
-    """A wall-hung urinal (the wall behind at -y) with its chrome flush valve above."""
-    return [box("back", "porcelain", 0, 0.02, 0.85, 0.38, 0.08, 0.7),
-            cyl("bowl", "porcelain", 0, 0.14, 0.72, 0.16, 0.36),
-            box("lip", "porcelain", 0, 0.22, 0.88, 0.3, 0.06, 0.05),
-            cyl("valve", "steel", 0, 0.05, 1.35, 0.02, 0.25),
-            box("lever", "steel", 0.05, 0.08, 1.25, 0.08, 0.02, 0.02)]
-
-
-def sink():
-    """A wall-hung wash basin (the wall behind at -y) with its tap and a soap dispenser."""
-    return [box("basin", "porcelain", 0, 0.22, 0.8, 0.5, 0.42, 0.15),
-            box("bowl", "tile", 0, 0.24, 0.86, 0.38, 0.3, 0.04),
-            cyl("tap", "steel", 0, 0.06, 0.95, 0.02, 0.16),
-            box("spout", "steel", 0, 0.12, 1.02, 0.03, 0.12, 0.02),
-            cyl("trap", "steel", 0, 0.1, 0.55, 0.03, 0.35),
-            box("soap", "white", 0.3, 0.045, 1.15, 0.1, 0.08, 0.18)]
-
-
-def mirror(w=0.6, h=0.8):
-    """A washroom mirror on the wall (behind at -y), centred on the model's height."""
-    return [box("frame", "steel", 0, 0, 0, w + 0.04, 0.02, h + 0.04),
-            box("glass", "mirror", 0, 0.011, 0, w, 0.004, h)]
-
-
-def hand_dryer():
-    """A wall-mounted electric hand dryer (the wall behind at -y), its nozzle pointing down."""
-    return [box("body", "porcelain", 0, 0.08, 1.2, 0.28, 0.16, 0.3),
-            box("nozzle", "steel", 0, 0.1, 1.03, 0.08, 0.08, 0.05),
-            box("badge", "dark_metal", 0, 0.161, 1.26, 0.1, 0.002, 0.04)]
-
-
 # ---- the mechanic's room ----
 def workbench(length=2.0, d=0.75):
     """A mechanic's workbench against the wall (behind it at -y): a thick wooden top on a steel
@@ -672,24 +623,6 @@ def trash_can():
     return [cyl("body", "grey_bin", 0, 0, 0.37, 0.22, 0.74),
             cyl("lid", "grey_bin", 0, 0, 0.76, 0.23, 0.04),
             box("flap", "black", 0, 0.12, 0.72, 0.2, 0.01, 0.1)]
-
-
-def fire_extinguisher():
-    """A red extinguisher on its wall bracket (the wall behind at -y)."""
-    return [box("bracket", "dark_metal", 0, -0.08, 0.85, 0.1, 0.02, 0.3),
-            cyl("body", "extinguisher_red", 0, 0, 0.8, 0.08, 0.5),
-            sph("shoulder", "extinguisher_red", 0, 0, 1.05, 0.08),
-            cyl("head", "black", 0, 0, 1.15, 0.025, 0.08),
-            box("handle", "black", 0, 0.04, 1.19, 0.03, 0.12, 0.02),
-            turned(cyl("hose", "black", 0.07, 0.03, 1.0, 0.012, 0.3), "0 0.3 0"),
-            box("tag", "paper", 0, 0.081, 0.75, 0.06, 0.002, 0.09)]
-
-
-def exit_sign():
-    """The green illuminated exit sign over a door (the wall behind at -y): the running man."""
-    return [box("body", "exit_green", 0, 0, 0, 0.42, 0.05, 0.16),
-            box("man", "white", -0.1, 0.026, 0, 0.06, 0.004, 0.11),
-            box("arrow", "white", 0.08, 0.026, 0, 0.16, 0.004, 0.04)]
 
 
 # ---- the building ----
