@@ -1,6 +1,6 @@
 #!/bin/sh
-# Prints the lexical encoder's figures on all 28 phrasing tables (tests/semantic/phrases_*.json):
-# per table present precision@1 and absent rejected, then the sums over all 28.
+# Prints the lexical encoder's figures on all 29 phrasing tables (tests/semantic/phrases_*.json):
+# per table present precision@1 and absent rejected, then the sums over all 29.
 # Usage: scripts/lexical_tables.sh [build-dir]   (default: $SP_BUILD_DIR or build)
 set -e
 cd "$(dirname "$0")/.."
@@ -9,7 +9,7 @@ T="$B/semantic_test_lexical"
 [ -x "$T" ] || { echo "no $T: build it first (SP_BUILD_DIR=$B ./scripts/build.sh)" >&2; exit 1; }
 for w in house bookstore office ward garage cafe basement classroom hotel grocery chemlab pharmacy \
          salon warehouse apartment hospital smallhouse gym museum library restaurant \
-         vetclinic station cinema firestation bowling airport openoffice; do
+         vetclinic station cinema firestation bowling airport openoffice familyhome; do
     "$T" "$w" 2>/dev/null | grep -m1 "^$w: precision@1" || echo "$w: no figures"
 done | awk '
 {
