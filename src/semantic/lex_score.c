@@ -442,10 +442,30 @@ static int prepare_any(const lex_db *lx, const lex_np *np, query_prep *qp, sp_er
  * no adjective reading: it says which kind of the head is meant ("WINE rack"), so it is no
  * attribute to ignore. A substance or material ("leather", "glass", "oak" whose commonest sense is
  * the wood), a colour, an act or a person stays an attribute. *s gets that sense. */
+/* 1 when word reads as an adjective: it has an adjective base that the tagged corpora attest,
+ * or a noun base they do not ("coffee" the colour is no corpus's reading beside coffee the
+ * drink: WordNet's order only); negative on read errors. */
+static int adj_reading(const lex_db *lx, const char *word, const char *base, sp_error *err)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int n = wn_morphy(lx->db, WN_ADJ, word, b, err);
+    if (n <= 0) return n;
+    uint32_t off;
+    int at = 0, nt = 0;
+    for (int i = 0; i < n; i++) {
+        int t = 0, k = wn_lookup(lx->db, WN_ADJ, b[i], &off, 1, &t, err);
+        if (k < 0) return k;
+        at += t;
+    }
+    int k = wn_lookup(lx->db, WN_NOUN, base, &off, 1, &nt, err);
+    if (k < 0) return k;
+    return at > 0 || nt == 0;
+}
+
 static int kind_modifier(const lex_db *lx, const char *word, const char *base, lex_np *np, lex_bag *bag,
                          sp_error *err)
 {
-    int adj = lex_is_pos(lx, WN_ADJ, word, err);
+    int adj = adj_reading(lx, word, base, err);
     if (adj) return adj < 0 ? adj : 0;
     /* an -ing form of a verb describes ("hanging" lamp, "serving" counter): a participle */
     size_t n = strlen(word);
