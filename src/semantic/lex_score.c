@@ -690,6 +690,8 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     /* a name WordNet joins is a kind of its head by WordNet's own word, whatever its modifier
      * names ("vending machine", "washing machine", "double bed") */
     kind |= c->np.n_mods == 0 && strchr(c->np.head, '_') != NULL;
+    /* and so is a name the alias table reads as a WordNet kind ("arcade machine": a slot machine) */
+    kind |= c->np.n_alias > 0;
     if (!kind) return 0;
     const lex_np *m = &qp->mod_np[i];
     char parts[WN_LEMMA_MAX], one[1][WN_LEMMA_MAX];
