@@ -343,6 +343,9 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         *r = lex_region_find_stem(v, stem);
     }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
+        /* a synonym by a sense that is no physical thing names no place ("post", a job, is
+         * an "office") */
+        if (!lex_sense_physical(&np->senses[s])) continue;
         wn_synset syn;
         wn_id id = {np->senses[s].off, WN_NOUN};
         int rc = wn_read(v->lx->db, id, &syn, err);
