@@ -987,6 +987,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     m->class_index = ci;
     int has_head = np->head[0] && !np->placeholder && np->n_senses > 0;
     float base = 0;
+    int rare = 0; /* the head matched only through a sense no corpus attests, after its first */
     if (has_head && is_exact(np, c, qp->mod_base)) {
         base = 1.0f;
         m->kind = SP_LEX_EXACT;
@@ -999,6 +1000,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+        rare = bq >= 0 && !np->senses[bq].attested && np->senses[bq].rank > 1;
     }
     /* A query sense defined as any thing of a kind meeting a condition ("light: any device
      * serving as a source of illumination") names the classes below its hypernym that meet it:
@@ -1186,6 +1188,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(m->path + o, sizeof m->path - o, "%s'%s' names another kind than %s: a sibling", o ? "; " : "",
                      np->mods[i], c->name);
         } else if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
+        /* a modifier naming a kind of thing ("BAR stool") on a head read in a sense no corpus
+         * attests (the stool that is a toilet), which the class's definitions do not mention:
+         * the words name another thing by their commonest reading, a cousin (MU) */
+        if (use == LEX_MOD_IGNORED && rare && qp->mod_kind[i] && !c->spec) {
+            use = LEX_MOD_CONTRARY;
+            fmod *= LEX_MU;
+        }
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
     }
