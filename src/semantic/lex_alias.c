@@ -394,7 +394,10 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
             lex_tokens t;
             lex_tokenize(uses[k]->targets[j], &t);
             if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-            if (!(rc = lex_match_reading(v, text, &t, alt, err))) fold_use(res, alt, uses[k], uses[k]->targets[j]);
+            lex_everyday_name = 1;
+            rc = lex_match_reading(v, text, &t, alt, err);
+            lex_everyday_name = 0;
+            if (!rc) fold_use(res, alt, uses[k], uses[k]->targets[j]);
         }
     free(alt);
     return rc;
