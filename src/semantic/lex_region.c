@@ -171,6 +171,10 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
          * a LOCK": no door) */
         for (int k = 0; k < ph->n_matches; k++)
             if (ph->matches[k].kind == SP_LEX_PART) ph->matches[k].score = 0;
+        /* and after the table's members that match equally (the bathroom's toilet, first in
+         * the table, before the shower its definition names): an order, not evidence */
+        for (int k = 0; r && k < ph->n_matches; k++)
+            if (ph->matches[k].score >= SP_LEX_THRESHOLD + LEX_TIE) ph->matches[k].score -= LEX_TIE;
         *support += lex_region_absorb(out, ph, "WordNet definition");
     }
     free(ph);
