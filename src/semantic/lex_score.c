@@ -1264,7 +1264,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                              0, c->spec, &bq, &bc);
         if (t.kind == SP_LEX_RELATED) continue;
         float w = best_wup(np->senses, np->n_senses, c->np.senses, c->np.n_senses);
-        float s = t.score * w * w;
+        /* the query's other modifiers weigh as in every reading (an attribute not shown, EPS) */
+        float s = t.score * w * w * fmod;
         if (s > m->score) {
             m->score = s;
             m->kind = SP_LEX_MODIFIER;
