@@ -113,13 +113,33 @@ static const lex_alias *alias_at(const sp_lex_vocab *v, const word_list *wl, int
     *span = 0;
     for (int k = 0; k < v->n_aliases; k++) {
         const lex_alias *a = &v->aliases[k];
-        int e = p + a->n_words; /* one past the last word */
-        if (e > wl->n || (best && a->n_words <= best->n_words)) continue;
+        if (best && a->n_words <= best->n_words) continue;
+        /* an alias word written with a hyphen is also the words it joins ("x-ray scanner" is the
+         * class "x ray scanner") */
+        int q = p, ok = 1;
+        for (int j = 0; j < a->n_words && ok; j++) {
+            int last = j + 1 == a->n_words;
+            if (q < wl->n && (last ? word_or_plural(wl->w[q], a->words[j]) : !strcmp(wl->w[q], a->words[j]))) {
+                q++;
+                continue;
+            }
+            ok = 0;
+            if (!strchr(a->words[j], '-')) break;
+            char parts[LEX_WORD];
+            snprintf(parts, sizeof parts, "%s", a->words[j]);
+            int r = q, good = 1;
+            char *save = NULL, *t = strtok_r(parts, "-", &save);
+            while (t && good) {
+                char *next = strtok_r(NULL, "-", &save);
+                good = r < wl->n && (last && !next ? word_or_plural(wl->w[r], t) : !strcmp(wl->w[r], t));
+                r++, t = next;
+            }
+            if (good) ok = 1, q = r;
+        }
+        int e = q; /* one past the last word */
+        if (!ok || e > wl->n) continue;
         if (e < wl->n && wl->tok[e] == wl->tok[e - 1]) continue; /* ends inside a token */
-        int ok = 1;
-        for (int j = 0; j < a->n_words && ok; j++)
-            ok = j + 1 < a->n_words ? !strcmp(wl->w[p + j], a->words[j]) : word_or_plural(wl->w[p + j], a->words[j]);
-        if (ok && !names_a_class(v, a)) best = a, *span = a->n_words;
+        if (!names_a_class(v, a)) best = a, *span = e - p;
     }
     /* a name of two words WordNet writes as one ("hand basin", its handbasin, a bowl): the one
      * word of the query that is the name's words joined is that name */
@@ -374,7 +394,10 @@ int sp_lex_match(const sp_lex_vocab *v, const char *text, sp_lex_result *res, sp
             lex_tokens t;
             lex_tokenize(uses[k]->targets[j], &t);
             if (!alt && !(alt = malloc(sizeof *alt))) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
-            if (!(rc = lex_match_reading(v, text, &t, alt, err))) fold_use(res, alt, uses[k], uses[k]->targets[j]);
+            lex_everyday_name = 1;
+            rc = lex_match_reading(v, text, &t, alt, err);
+            lex_everyday_name = 0;
+            if (!rc) fold_use(res, alt, uses[k], uses[k]->targets[j]);
         }
     free(alt);
     return rc;

@@ -373,6 +373,7 @@ static int resolve(const sp_lex_vocab *v, const lex_tokens *t, int from, int to,
     lex_np np;
     int use[8] = {0};
     int rc = lex_np_parse(v->lx, t, from, to, 0, &np, err);
+    if (!rc && lex_everyday_name) lex_np_commonest(&np);
     if (!rc) rc = lex_score_np(v, &np, ph, use, err);
     /* The object reading wins when the scene has the thing by name ("closet" is a room in
      * WordNet and the wardrobe's synonym); otherwise a phrase that names a region is one. */

@@ -11,6 +11,22 @@
 #include "lexical.h"
 #include "semsplat/io.h"
 
+_Thread_local int lex_everyday_name;
+
+/* The general tables (the region table's members, the activity table's things) name things by
+ * everyday words, in their commonest sense when that is an attested artifact: their "bench" is
+ * the seat, not WordNet's later workbench. Keeps only the first senses of a one-word head. */
+void lex_np_commonest(lex_np *np)
+{
+    if (np->n_mods || strchr(np->head, '_') || np->n_senses < 2 || np->senses[0].rank != 1 ||
+        !np->senses[0].attested || !lex_sense_artifact(&np->senses[0]))
+        return;
+    int k = 1;
+    for (int i = 1; i < np->n_senses; i++)
+        if (np->senses[i].rank == 1) np->senses[k++] = np->senses[i];
+    np->n_senses = k;
+}
+
 /* Scores text (an object phrase) into ph; the region resolution's building block. A member
  * phrase names a particular kind ("tool rack", "drying rack", "kitchen cabinet"): when its best
  * class matches only with a modifier ignored (the TV stand is a rack, but no tool rack), the
@@ -21,6 +37,7 @@ static int score_tokens(const sp_lex_vocab *v, const lex_tokens *t, sp_lex_phras
     lex_np np;
     int use[8] = {0};
     int rc = lex_np_parse(v->lx, t, 0, t->n, 0, &np, err);
+    if (!rc && member) lex_np_commonest(&np);
     if (!rc) rc = lex_score_np(v, &np, ph, use, err);
     for (int i = 0; !rc && i < np.n_mods && i < 8; i++)
         if (use[i] == LEX_MOD_IGNORED) ph->n_matches = 0;
@@ -154,6 +171,10 @@ static int region_members(const sp_lex_vocab *v, const lex_region *r, const char
          * a LOCK": no door) */
         for (int k = 0; k < ph->n_matches; k++)
             if (ph->matches[k].kind == SP_LEX_PART) ph->matches[k].score = 0;
+        /* and after the table's members that match equally (the bathroom's toilet, first in
+         * the table, before the shower its definition names): an order, not evidence */
+        for (int k = 0; r && k < ph->n_matches; k++)
+            if (ph->matches[k].score >= SP_LEX_THRESHOLD + LEX_TIE) ph->matches[k].score -= LEX_TIE;
         *support += lex_region_absorb(out, ph, "WordNet definition");
     }
     free(ph);
@@ -334,6 +355,9 @@ int lex_region_named(const sp_lex_vocab *v, const lex_np *np, const lex_region *
         *r = lex_region_find_stem(v, stem);
     }
     for (int s = 0; !*r && s < np->n_senses && s < 3; s++) {
+        /* a synonym by a sense that is no physical thing names no place ("post", a job, is
+         * an "office") */
+        if (!lex_sense_physical(&np->senses[s])) continue;
         wn_synset syn;
         wn_id id = {np->senses[s].off, WN_NOUN};
         int rc = wn_read(v->lx->db, id, &syn, err);

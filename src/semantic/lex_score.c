@@ -442,10 +442,30 @@ static int prepare_any(const lex_db *lx, const lex_np *np, query_prep *qp, sp_er
  * no adjective reading: it says which kind of the head is meant ("WINE rack"), so it is no
  * attribute to ignore. A substance or material ("leather", "glass", "oak" whose commonest sense is
  * the wood), a colour, an act or a person stays an attribute. *s gets that sense. */
+/* 1 when word reads as an adjective: it has an adjective base that the tagged corpora attest,
+ * or a noun base they do not ("coffee" the colour is no corpus's reading beside coffee the
+ * drink: WordNet's order only); negative on read errors. */
+static int adj_reading(const lex_db *lx, const char *word, const char *base, sp_error *err)
+{
+    char b[WN_MAX_BASES][WN_LEMMA_MAX];
+    int n = wn_morphy(lx->db, WN_ADJ, word, b, err);
+    if (n <= 0) return n;
+    uint32_t off;
+    int at = 0, nt = 0;
+    for (int i = 0; i < n; i++) {
+        int t = 0, k = wn_lookup(lx->db, WN_ADJ, b[i], &off, 1, &t, err);
+        if (k < 0) return k;
+        at += t;
+    }
+    int k = wn_lookup(lx->db, WN_NOUN, base, &off, 1, &nt, err);
+    if (k < 0) return k;
+    return at > 0 || nt == 0;
+}
+
 static int kind_modifier(const lex_db *lx, const char *word, const char *base, lex_np *np, lex_bag *bag,
                          sp_error *err)
 {
-    int adj = lex_is_pos(lx, WN_ADJ, word, err);
+    int adj = adj_reading(lx, word, base, err);
     if (adj) return adj < 0 ? adj : 0;
     /* an -ing form of a verb describes ("hanging" lamp, "serving" counter): a participle */
     size_t n = strlen(word);
@@ -670,6 +690,8 @@ static int another_kind(const lex_class *c, const lex_np *np, const query_prep *
     /* a name WordNet joins is a kind of its head by WordNet's own word, whatever its modifier
      * names ("vending machine", "washing machine", "double bed") */
     kind |= c->np.n_mods == 0 && strchr(c->np.head, '_') != NULL;
+    /* and so is a name the alias table reads as a WordNet kind ("arcade machine": a slot machine) */
+    kind |= c->np.n_alias > 0;
     if (!kind) return 0;
     const lex_np *m = &qp->mod_np[i];
     char parts[WN_LEMMA_MAX], one[1][WN_LEMMA_MAX];
@@ -965,6 +987,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
     m->class_index = ci;
     int has_head = np->head[0] && !np->placeholder && np->n_senses > 0;
     float base = 0;
+    int rare = 0; /* the head matched only through a sense no corpus attests, after its first */
     if (has_head && is_exact(np, c, qp->mod_base)) {
         base = 1.0f;
         m->kind = SP_LEX_EXACT;
@@ -977,6 +1000,7 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
         base = t.score;
         m->kind = t.kind;
         if (bq >= 0) describe_tax(m, &t, &np->senses[bq], &c->np.senses[bc]);
+        rare = bq >= 0 && !np->senses[bq].attested && np->senses[bq].rank > 1;
     }
     /* A query sense defined as any thing of a kind meeting a condition ("light: any device
      * serving as a source of illumination") names the classes below its hypernym that meet it:
@@ -1164,6 +1188,13 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
             snprintf(m->path + o, sizeof m->path - o, "%s'%s' names another kind than %s: a sibling", o ? "; " : "",
                      np->mods[i], c->name);
         } else if (use == LEX_MOD_CONTRARY) fmod *= 1.0f - LEX_BETA;
+        /* a modifier naming a kind of thing ("BAR stool") on a head read in a sense no corpus
+         * attests (the stool that is a toilet), which the class's definitions do not mention:
+         * the words name another thing by their commonest reading, a cousin (MU) */
+        if (use == LEX_MOD_IGNORED && rare && qp->mod_kind[i] && !c->spec) {
+            use = LEX_MOD_CONTRARY;
+            fmod *= LEX_MU;
+        }
         if (use == LEX_MOD_IGNORED) fmod *= 1.0f - LEX_EPS;
         if (mod_use) mod_use[i] = use;
     }
@@ -1233,7 +1264,8 @@ static void score_class(const sp_lex_vocab *v, const lex_np *np, const query_pre
                              0, c->spec, &bq, &bc);
         if (t.kind == SP_LEX_RELATED) continue;
         float w = best_wup(np->senses, np->n_senses, c->np.senses, c->np.n_senses);
-        float s = t.score * w * w;
+        /* the query's other modifiers weigh as in every reading (an attribute not shown, EPS) */
+        float s = t.score * w * w * fmod;
         if (s > m->score) {
             m->score = s;
             m->kind = SP_LEX_MODIFIER;

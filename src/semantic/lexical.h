@@ -300,6 +300,10 @@ int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err);
  * words) are kept; returns how many, at most max, or a negative SP_E_* code. */
 int lex_uses_find(const sp_lex_vocab *v, const lex_tokens *t, const lex_use **out, int max, sp_error *err);
 const lex_region *lex_region_find(const sp_lex_vocab *v, const char *name);
+/* Set while a name from the general tables is read (lex_np_commonest then applies to it). */
+extern _Thread_local int lex_everyday_name;
+/* Keeps only the commonest senses of a one-word head whose first sense is an attested artifact. */
+void lex_np_commonest(lex_np *np);
 /* The table region named stem, or "stem G" with G a generic area word ("utility" -> "utility
  * room"), or NULL. */
 const lex_region *lex_region_find_stem(const sp_lex_vocab *v, const char *stem);

@@ -58,10 +58,11 @@
  * (phrases_cinema.json, by w22-blind) and the fire station (phrases_firestation.json, by
  * w23-blind) were first run on main a1be5f5's encoder, the bowling centre (phrases_bowling.json,
  * by w24-blind) and the airport terminal (phrases_airport.json, by w25-blind) on main f5d5db6
- * (that encoder with a17-lexicon's general aliases and regions); they are printed after the
- * floors with no bar; so are the open-plan office (phrases_openoffice.json, by w27-blind) and the
- * family home (phrases_familyhome.json, by w26-blind), first run on main 682ca96's encoder (with
- * the activity table). Run with an argument
+ * (that encoder with a17-lexicon's general aliases and regions); since phase 16 (l18-lexical)
+ * they are development data too, with floors. The open-plan office (phrases_openoffice.json, by
+ * w27-blind) and the family home (phrases_familyhome.json, by w26-blind) were first run on main
+ * 682ca96's encoder (with the activity table), which never saw them; they are printed after the
+ * floors with no bar. Run with an argument
  * (house | bookstore | office | ward | garage | cafe | basement | classroom | hotel | grocery |
  * chemlab | pharmacy | salon | warehouse | apartment | hospital | smallhouse | gym | museum | library | restaurant |
  * vetclinic | station | cinema | firestation | bowling | airport | openoffice | familyhome) to
@@ -937,14 +938,18 @@ int main(int argc, char **argv)
     /* phase 15 (l17-lexical) read the vet clinic's and the station's misses: they are development
      * data too and get floors just under their figures (vetclinic 288/399 and 41/50, station
      * 305/398 and 45/52 when set); the other floors stand */
+    /* phase 16 (l18-lexical) read the cinema's, fire station's, bowling centre's and airport's
+     * misses: they are development data too and get floors just under their figures (cinema
+     * 354/434 and 42/52, fire station 334/442 and 40/51, bowling 353/456 and 40/56, airport
+     * 336/435 and 39/50 when set); the other floors stand */
     const double floor_p1[] = {0.9, 0.9, 0.9, 0.83, 0.89, 0.82, 0.88, 0.86, 0.85, 0.85, 0.74, 0.78, 0.82, 0.79, 0.81,
-                               0.75, 0.82, 0.77, 0.77, 0.72, 0.77, 0.72, 0.76},
+                               0.75, 0.82, 0.77, 0.77, 0.72, 0.77, 0.72, 0.76, 0.81, 0.75, 0.77, 0.77},
                  floor_absent[] = {0.9, 0.9, 0.9, 0.9, 0.9, 0.94, 0.85, 0.96, 0.87, 0.97, 0.94, 0.97, 0.92, 0.85, 0.9,
-                                   0.88, 0.72, 0.75, 0.95, 0.87, 0.89, 0.82, 0.86};
+                                   0.88, 0.72, 0.75, 0.95, 0.87, 0.89, 0.82, 0.86, 0.80, 0.78, 0.71, 0.77};
     const int n_floors = (int)(sizeof floor_p1 / sizeof floor_p1[0]);
     for (int w = 0; w < n_worlds; w++) {
         tally t = run_table(lx, worlds[w], 0, NULL);
-        if (w >= n_floors) continue; /* a table added later: printed, no bar (cinema, firestation, bowling, airport, openoffice, familyhome) */
+        if (w >= n_floors) continue; /* a table added later: printed, no bar (openoffice, familyhome) */
         CHECK_MSG(t.present_ok >= floor_p1[w] * t.present, "%s: precision@1 below %.2f", worlds[w], floor_p1[w]);
         CHECK_MSG(t.absent_ok >= floor_absent[w] * t.absent, "%s: fewer than %.0f%% of absent phrasings rejected",
                   worlds[w], 100 * floor_absent[w]);
