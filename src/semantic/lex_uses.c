@@ -53,15 +53,29 @@ int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err)
     return rc;
 }
 
-/* 1 when w is key or an inflection of it as pos ("washing" -> wash, "hands" -> hand). */
-static int inflects(const sp_lex_vocab *v, wn_pos pos, const char *w, const char *key, sp_error *err)
+/* A query's words with their base forms as a verb and as a noun (WordNet's morphy), found once
+ * per query: the table has over a thousand entries. */
+typedef struct {
+    int n;
+    int cued[LEX_MAX_TOKENS]; /* a cue word stands before it */
+    int n_verb[LEX_MAX_TOKENS], n_noun[LEX_MAX_TOKENS];
+    char verb[LEX_MAX_TOKENS][WN_MAX_BASES + 1][WN_LEMMA_MAX];
+    char noun[LEX_MAX_TOKENS][WN_MAX_BASES + 1][WN_LEMMA_MAX];
+} query_forms;
+
+/* The word itself and its bases as pos into out; returns the count or a negative SP_E_* code. */
+static int forms_of(const sp_lex_vocab *v, wn_pos pos, const char *w, char out[][WN_LEMMA_MAX], sp_error *err)
 {
-    if (!strcmp(w, key)) return 1;
-    char b[WN_MAX_BASES][WN_LEMMA_MAX];
-    int nb = lex_bases(v->lx, pos, w, b, err);
-    for (int i = 0; i < nb; i++)
-        if (!strcmp(b[i], key)) return 1;
-    return nb < 0 ? nb : 0;
+    snprintf(out[0], WN_LEMMA_MAX, "%s", w);
+    int nb = lex_bases(v->lx, pos, w, out + 1, err);
+    return nb < 0 ? nb : nb + 1;
+}
+
+static int has_form(char forms[][WN_LEMMA_MAX], int n, const char *key)
+{
+    for (int i = 0; i < n; i++)
+        if (!strcmp(forms[i], key)) return 1;
+    return 0;
 }
 
 /* A word before a verb that makes it one: the purpose "to", a subject, a modal ("something TO
@@ -77,18 +91,15 @@ static int verb_cue(const char *w)
 }
 
 /* 1 when the query asks to do u: its verb after a cue, its other words among what follows. */
-static int asks_for(const sp_lex_vocab *v, const lex_tokens *t, const lex_use *u, sp_error *err)
+static int asks_for(const query_forms *q, const lex_use *u)
 {
-    for (int i = 1; i < t->n; i++) {
-        if (!verb_cue(t->w[i - 1])) continue;
-        int rc = inflects(v, WN_VERB, t->w[i], u->words[0], err);
-        if (rc < 0) return rc;
-        if (!rc) continue;
+    for (int i = 1; i < q->n; i++) {
+        if (!q->cued[i] || !has_form((char (*)[WN_LEMMA_MAX])q->verb[i], q->n_verb[i], u->words[0])) continue;
         int all = 1;
         for (int k = 1; k < u->n_words && all; k++) {
             int found = 0;
-            for (int j = i + 1; j < t->n && !found; j++)
-                if ((found = inflects(v, WN_NOUN, t->w[j], u->words[k], err)) < 0) return found;
+            for (int j = i + 1; j < q->n && !found; j++)
+                found = has_form((char (*)[WN_LEMMA_MAX])q->noun[j], q->n_noun[j], u->words[k]);
             all = found;
         }
         if (all) return 1;
@@ -98,15 +109,27 @@ static int asks_for(const sp_lex_vocab *v, const lex_tokens *t, const lex_use *u
 
 int lex_uses_find(const sp_lex_vocab *v, const lex_tokens *t, const lex_use **out, int max, sp_error *err)
 {
+    if (!v->n_uses) return 0;
+    query_forms *q = calloc(1, sizeof *q);
+    if (!q) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
+    q->n = t->n;
+    int rc = 0, any = 0;
+    for (int i = 1; i < t->n && rc >= 0; i++) {
+        q->cued[i] = verb_cue(t->w[i - 1]);
+        any |= q->cued[i];
+    }
+    /* a verb needs a cue before it; its objects' words follow it */
+    for (int i = 1; any && i < t->n && rc >= 0; i++) {
+        if (q->cued[i] && (rc = forms_of(v, WN_VERB, t->w[i], q->verb[i], err)) >= 0) q->n_verb[i] = rc;
+        if (rc >= 0 && (rc = forms_of(v, WN_NOUN, t->w[i], q->noun[i], err)) >= 0) q->n_noun[i] = rc;
+    }
     int n = 0, best = 0;
-    for (int k = 0; k < v->n_uses; k++) {
+    for (int k = 0; any && rc >= 0 && k < v->n_uses; k++) {
         const lex_use *u = &v->uses[k];
-        if (u->n_words < best) continue;
-        int rc = asks_for(v, t, u, err);
-        if (rc < 0) return rc;
-        if (!rc) continue;
+        if (u->n_words < best || !asks_for(q, u)) continue;
         if (u->n_words > best) best = u->n_words, n = 0;
         if (n < max) out[n++] = u;
     }
-    return n;
+    free(q);
+    return rc < 0 ? rc : n;
 }
