@@ -64,9 +64,14 @@ static size_t explain_phrase(const sp_lex_phrase *ph, const sp_lex_vocab *v, con
     if (ph->is_region)
         snprintf(line, sizeof line, "%s '%s': the region '%s', the extent of its objects:\n", role,
                  ph->text, ph->region);
-    else
+    else {
+        /* the best class found through the activity table (lex_uses.c) was not matched by definitions */
+        int activity = ph->n_matches && !strncmp(ph->matches[0].path, "activity ", 9);
         snprintf(line, sizeof line, "%s '%s'%s%s%s:\n", role, ph->text, ph->head[0] ? " (head noun '" : "",
-                 ph->head, ph->head[0] ? "')" : " (no head noun: matched by definitions)");
+                 ph->head, ph->head[0]  ? "')"
+                           : activity ? " (no head noun: matched by the activity table and definitions)"
+                                      : " (no head noun: matched by definitions)");
+    }
     o = put(out, cap, o, "%s%s", line, "");
     int shown = 0;
     for (int i = 0; i < ph->n_matches && shown < 6; i++) {
