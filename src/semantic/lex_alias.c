@@ -41,17 +41,7 @@ static int add_alias(sp_lex_vocab *v, const char *path, const cJSON *it, sp_erro
 
 int lex_aliases_load(sp_lex_vocab *v, const char *path, sp_error *err)
 {
-    cJSON *js = NULL;
-    int rc = sp_json_read_file(path, &js, err);
-    if (rc) return sp_error_prefix(err, "lexical: alias table: ");
-    const cJSON *names = cJSON_GetObjectItemCaseSensitive(js, "names"), *it;
-    if (!cJSON_IsObject(names)) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing object \"names\"", path);
-    cJSON_ArrayForEach(it, names) {
-        if (rc) break;
-        if (it->string && it->string[0] != '_') rc = add_alias(v, path, it, err);
-    }
-    cJSON_Delete(js);
-    return rc;
+    return lex_entries_load(v, path, "names", "alias table", add_alias, err);
 }
 
 /* 1 when w is key or one of its plurals (-s, -es, -y -> -ies). */

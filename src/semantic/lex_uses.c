@@ -40,17 +40,7 @@ static int add_use(sp_lex_vocab *v, const char *path, const cJSON *it, sp_error 
 
 int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err)
 {
-    cJSON *js = NULL;
-    int rc = sp_json_read_file(path, &js, err);
-    if (rc) return sp_error_prefix(err, "lexical: activity table: ");
-    const cJSON *uses = cJSON_GetObjectItemCaseSensitive(js, "uses"), *it;
-    if (!cJSON_IsObject(uses)) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing object \"uses\"", path);
-    cJSON_ArrayForEach(it, uses) {
-        if (rc) break;
-        if (it->string && it->string[0] != '_') rc = add_use(v, path, it, err);
-    }
-    cJSON_Delete(js);
-    return rc;
+    return lex_entries_load(v, path, "uses", "activity table", add_use, err);
 }
 
 /* A query's words with their base forms as a verb and as a noun (WordNet's morphy), found once
@@ -109,22 +99,21 @@ static int asks_for(const query_forms *q, const lex_use *u)
 
 int lex_uses_find(const sp_lex_vocab *v, const lex_tokens *t, const lex_use **out, int max, sp_error *err)
 {
-    if (!v->n_uses) return 0;
+    int any = 0; /* a verb needs a cue before it: without one the query asks for no activity */
+    for (int i = 1; i < t->n && !any; i++) any = verb_cue(t->w[i - 1]);
+    if (!v->n_uses || !any) return 0;
     query_forms *q = calloc(1, sizeof *q);
     if (!q) return sp_error_set(err, SP_E_NOMEM, "lexical: out of memory");
     q->n = t->n;
-    int rc = 0, any = 0;
+    int rc = 0;
+    for (int i = 1; i < t->n; i++) q->cued[i] = verb_cue(t->w[i - 1]);
+    /* the verb's forms where a cue stands before it; every word's noun forms (its objects) */
     for (int i = 1; i < t->n && rc >= 0; i++) {
-        q->cued[i] = verb_cue(t->w[i - 1]);
-        any |= q->cued[i];
-    }
-    /* a verb needs a cue before it; its objects' words follow it */
-    for (int i = 1; any && i < t->n && rc >= 0; i++) {
         if (q->cued[i] && (rc = forms_of(v, WN_VERB, t->w[i], q->verb[i], err)) >= 0) q->n_verb[i] = rc;
         if (rc >= 0 && (rc = forms_of(v, WN_NOUN, t->w[i], q->noun[i], err)) >= 0) q->n_noun[i] = rc;
     }
     int n = 0, best = 0;
-    for (int k = 0; any && rc >= 0 && k < v->n_uses; k++) {
+    for (int k = 0; rc >= 0 && k < v->n_uses; k++) {
         const lex_use *u = &v->uses[k];
         if (u->n_words < best || !asks_for(q, u)) continue;
         if (u->n_words > best) best = u->n_words, n = 0;

@@ -1,5 +1,6 @@
 /* A scene's vocabulary for the lexical text encoder: each class name parsed once (head noun and
  * its physical senses, hypernym closures, the words of its definitions), and the region table. */
+#include <cjson/cJSON.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -517,6 +518,22 @@ static void choose_by_context(sp_lex_vocab *v, int ci)
     for (int s = 0; s < np->n_senses; s++)
         if (s >= own || (any_shared ? shared[s] : support[s] >= best - 0.02f)) np->senses[kept++] = np->senses[s];
     np->n_senses = kept;
+}
+
+int lex_entries_load(sp_lex_vocab *v, const char *path, const char *member, const char *what,
+                     int (*add)(sp_lex_vocab *, const char *, const struct cJSON *, sp_error *), sp_error *err)
+{
+    cJSON *js = NULL;
+    int rc = sp_json_read_file(path, &js, err);
+    if (rc) return sp_error_prefix(err, "lexical: %s: ", what);
+    const cJSON *entries = cJSON_GetObjectItemCaseSensitive(js, member), *it;
+    if (!cJSON_IsObject(entries)) rc = sp_error_set(err, SP_E_FORMAT, "%s: missing object \"%s\"", path, member);
+    cJSON_ArrayForEach(it, entries) {
+        if (rc) break;
+        if (it->string && it->string[0] != '_') rc = add(v, path, it, err);
+    }
+    cJSON_Delete(js);
+    return rc;
 }
 
 /* A table of data/semantic/ (name: "aliases.json", "uses.json"), and the user's file of that

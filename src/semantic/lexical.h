@@ -292,6 +292,12 @@ struct sp_lex_vocab {
 };
 
 int lex_vocab_has_word(const sp_lex_vocab *v, const char *w);
+struct cJSON;
+/* Reads the JSON object path's member (a table of named entries: "names" of the alias table,
+ * "uses" of the activity table) and calls add for each entry whose name does not start with '_';
+ * what names the table in errors. */
+int lex_entries_load(sp_lex_vocab *v, const char *path, const char *member, const char *what,
+                     int (*add)(sp_lex_vocab *, const char *, const struct cJSON *, sp_error *), sp_error *err);
 /* Loads an activity table (JSON {"uses": {"verb noun...": [names]}}) into v. */
 int lex_uses_load(sp_lex_vocab *v, const char *path, sp_error *err);
 /* The activity entries a query asks for: its verb used as a verb (after "to", a subject or a
